@@ -1,0 +1,9 @@
+# Flags for what this repository builds itself (tool, tests); never exported.
+add_library(influence2d_developer_flags INTERFACE)
+target_compile_options(influence2d_developer_flags INTERFACE
+    -ffp-contract=off -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion)
+if(INFLUENCE2D_SANITIZE)
+    target_compile_options(influence2d_developer_flags INTERFACE
+        -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+    target_link_options(influence2d_developer_flags INTERFACE -fsanitize=address,undefined)
+endif()

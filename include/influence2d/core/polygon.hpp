@@ -1,0 +1,153 @@
+#pragma once
+// The polygon model: any number of closed rings of double coordinates.
+
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "influence2d/core/box.hpp"
+#include "influence2d/core/point.hpp"
+#include "influence2d/number/expansion.hpp"
+
+namespace influence2d {
+
+/// Raised for input the library cannot interpret; `what()` names the place
+/// (ring and vertex) and the readers in io/ prefix the file.
+class invalid_input : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+enum class ring_role : std::uint8_t { outer, hole };
+
+/// One ring as read: its vertices without the closing repetition of the first.
+struct ring_input {
+    std::vector<point<double>> vertices;
+    ring_role role = ring_role::outer;
+};
+
+/// A polygon: outer rings and holes, possibly several outer rings, possibly
+/// touching at vertices. Rings are stored with the interior on the left (outer
+/// rings counter-clockwise, holes clockwise); the ring orientation is decided
+/// exactly. Vertices of all rings are stored in one array, ring after ring; the
+/// edge with index i goes from vertex i to vertex next(i). Repeated vertices are
+/// kept as zero-length edges so that edge numbers stay those of the input.
+class polygon {
+public:
+    polygon() = default;
+
+    /// Builds the polygon; throws invalid_input naming ring and vertex for a
+    /// non-finite coordinate or a ring with fewer than three distinct vertices.
+    explicit polygon(std::vector<ring_input> rings) {
+        if (rings.empty()) throw invalid_input("polygon has no ring");
+        for (std::size_t r = 0; r < rings.size(); ++r) add_ring(r, std::move(rings[r]));
+        ring_begin_.push_back(vertices_.size());
+        centroid_ = compute_centroid();
+        for (const auto& v : vertices_) bounds_.add(v);
+    }
+
+    std::size_t size() const { return vertices_.size(); }
+    const std::vector<point<double>>& vertices() const { return vertices_; }
+    const point<double>& vertex(std::size_t i) const { return vertices_[i]; }
+    /// The index of the end vertex of edge i (the next vertex on its ring).
+    std::size_t next(std::size_t i) const { return next_[i]; }
+    std::size_t ring_count() const { return ring_begin_.size() - 1; }
+    std::size_t ring_begin(std::size_t r) const { return ring_begin_[r]; }
+    std::size_t ring_end(std::size_t r) const { return ring_begin_[r + 1]; }
+    ring_role role(std::size_t r) const { return roles_[r]; }
+    /// The input's number of edge i: its position in the input order of the
+    /// vertices, ring after ring, before any reorientation.
+    std::size_t source_edge(std::size_t i) const { return source_edge_[i]; }
+    /// The area centroid (the vertex mean for a polygon of zero area), rounded
+    /// to double once so that every number type uses the same point.
+    const point<double>& centroid() const { return centroid_; }
+    const box& bounds() const { return bounds_; }
+    /// Signed area in long double, after reorientation (non-negative for a
+    /// valid polygon).
+    long double area() const { return area_; }
+
+private:
+    void add_ring(std::size_t r, ring_input ring) {
+        auto& vs = ring.vertices;
+        for (std::size_t k = 0; k < vs.size(); ++k) {
+            if (!std::isfinite(vs[k].x) || !std::isfinite(vs[k].y))
+                throw invalid_input("ring " + std::to_string(r) + ", vertex " + std::to_string(k) +
+                                    ": coordinate is not a finite number");
+        }
+        if (count_distinct(vs) < 3)
+            throw invalid_input("ring " + std::to_string(r) + ": fewer than three distinct vertices");
+        const int sign = signed_area_sign(vs);
+        const bool want_ccw = ring.role == ring_role::outer;
+        const bool reverse = sign != 0 && ((sign > 0) != want_ccw);
+        const std::size_t n = vs.size(), base = vertices_.size();
+        ring_begin_.push_back(base);
+        roles_.push_back(ring.role);
+        for (std::size_t k = 0; k < n; ++k) {
+            // Reversed ring: internal edge k runs along input edge n-2-k (mod n).
+            vertices_.push_back(reverse ? vs[n - 1 - k] : vs[k]);
+            next_.push_back(k + 1 < n ? base + k + 1 : base);
+            source_edge_.push_back(base + (reverse ? (2 * n - 2 - k) % n : k));
+        }
+    }
+
+    static std::size_t count_distinct(const std::vector<point<double>>& vs) {
+        std::vector<point<double>> seen;
+        for (const auto& v : vs) {
+            bool found = false;
+            for (const auto& s : seen) found = found || s == v;
+            if (!found) seen.push_back(v);
+            if (seen.size() >= 3) break;
+        }
+        return seen.size();
+    }
+
+    /// The exact sign of a ring's signed area (shoelace sum evaluated exactly).
+    static int signed_area_sign(const std::vector<point<double>>& vs) {
+        expansion::accumulator acc;
+        for (std::size_t k = 0; k < vs.size(); ++k) {
+            const auto& a = vs[k];
+            const auto& b = vs[(k + 1) % vs.size()];
+            acc.add_product(a.x, b.y);
+            acc.add_product(-a.y, b.x);
+        }
+        return acc.sign();
+    }
+
+    point<double> compute_centroid() {
+        // Relative to the first vertex, so that large offsets do not cost precision.
+        const point<double> o = vertices_.front();
+        long double a2 = 0, cx = 0, cy = 0, mx = 0, my = 0;
+        for (std::size_t i = 0; i < vertices_.size(); ++i) {
+            const long double ax = static_cast<long double>(vertices_[i].x) - o.x;
+            const long double ay = static_cast<long double>(vertices_[i].y) - o.y;
+            const long double bx = static_cast<long double>(vertices_[next_[i]].x) - o.x;
+            const long double by = static_cast<long double>(vertices_[next_[i]].y) - o.y;
+            const long double cr = ax * by - ay * bx;
+            a2 += cr;
+            cx += (ax + bx) * cr;
+            cy += (ay + by) * cr;
+            mx += ax;
+            my += ay;
+        }
+        area_ = a2 / 2;
+        const long double n = static_cast<long double>(vertices_.size());
+        if (a2 == 0 || !std::isfinite(static_cast<double>(cx / (3 * a2))))
+            return point<double>{static_cast<double>(o.x + mx / n), static_cast<double>(o.y + my / n)};
+        return point<double>{static_cast<double>(o.x + cx / (3 * a2)),
+                             static_cast<double>(o.y + cy / (3 * a2))};
+    }
+
+    std::vector<point<double>> vertices_;
+    std::vector<std::size_t> next_;
+    std::vector<std::size_t> ring_begin_;
+    std::vector<ring_role> roles_;
+    std::vector<std::size_t> source_edge_;
+    point<double> centroid_;
+    box bounds_;
+    long double area_ = 0;
+};
+
+}  // namespace influence2d

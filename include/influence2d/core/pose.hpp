@@ -1,0 +1,43 @@
+#pragma once
+// Rigid poses of the moving polygon (method.md section 1).
+
+#include <cmath>
+
+#include "influence2d/core/point.hpp"
+#include "influence2d/number/traits.hpp"
+
+namespace influence2d {
+
+/// A rigid pose: rotation by `theta` radians about the moving polygon's own
+/// origin, then translation by (tx, ty).
+struct pose {
+    double tx = 0;
+    double ty = 0;
+    double theta = 0;
+};
+
+/// The pose with its rotation taken as the doubles c = std::cos(theta) and
+/// s = std::sin(theta). Every number type poses with these same doubles, so an
+/// exact type poses the polygon exactly and all types answer one question.
+struct rotation_pose {
+    double c = 1;
+    double s = 0;
+    double tx = 0;
+    double ty = 0;
+
+    explicit rotation_pose(const pose& p)
+        : c(std::cos(p.theta)), s(std::sin(p.theta)), tx(p.tx), ty(p.ty) {}
+
+    /// q posed in number type NT: x' = c*qx - s*qy + tx, y' = s*qx + c*qy + ty,
+    /// every operation an NT operation on the input doubles.
+    template <class NT>
+    point<NT> apply(const point<double>& q) const {
+        using tr = number_traits<NT>;
+        const NT cx = tr::from_double(c), sx = tr::from_double(s);
+        const NT qx = tr::from_double(q.x), qy = tr::from_double(q.y);
+        return point<NT>{cx * qx - sx * qy + tr::from_double(tx),
+                         sx * qx + cx * qy + tr::from_double(ty)};
+    }
+};
+
+}  // namespace influence2d

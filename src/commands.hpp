@@ -1,0 +1,13 @@
+#pragma once
+// The subcommands of the influence2d tool, one source file each.
+
+#include <CLI/CLI.hpp>
+
+namespace influence2d::cli {
+
+/// `influence2d collide`: run a detector over a sequence of poses.
+void register_collide(CLI::App& app);
+/// `influence2d generate`: write the paper's polygon families as WKT.
+void register_generate(CLI::App& app);
+
+}  // namespace influence2d::cli
