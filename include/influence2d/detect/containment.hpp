@@ -1,0 +1,34 @@
+#pragma once
+// Containment without boundary contact (method.md section 7).
+
+#include <optional>
+
+#include "influence2d/covering/inclusion.hpp"
+#include "influence2d/detect/scene.hpp"
+
+namespace influence2d {
+
+/// Whether the regions of A and the posed B meet, given that their boundaries
+/// do not. Each ring of B then lies wholly inside or outside A, and each ring
+/// of A wholly inside or outside B, and the regions meet exactly when one
+/// vertex of some ring of one lies in the other region. Given `reach` (a bound
+/// of B's radius, with any rounding margin), a ring of A whose first vertex is
+/// farther than that from B's centroid is skipped without a test.
+template <class NT>
+bool one_contains_other(const static_scene<NT>& a, const posed_polygon<NT>& b,
+                        std::optional<double> reach = std::nullopt) {
+    const polygon& bs = b.shape();
+    for (std::size_t r = 0; r < bs.ring_count(); ++r)
+        if (locate(a.covering, b.vertex(bs.ring_begin(r))) != location::outside) return true;
+    const NT reach_nt = number_traits<NT>::from_double(reach.value_or(0));
+    const NT reach2 = reach_nt * reach_nt;
+    const polygon& as = a.shape;
+    for (std::size_t r = 0; r < as.ring_count(); ++r) {
+        const point<NT>& v = a.covering.start(as.ring_begin(r));
+        if (reach && squared_distance(v, b.centroid()) > reach2) continue;
+        if (locate(bs, b.vertices(), b.centroid(), v) != location::outside) return true;
+    }
+    return false;
+}
+
+}  // namespace influence2d

@@ -1,0 +1,33 @@
+#pragma once
+// Pair bookkeeping shared by the detectors.
+
+#include <algorithm>
+#include <vector>
+
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/detect/result.hpp"
+
+namespace influence2d::detail {
+
+/// Collects (static edge, moving edge) pairs in stored numbering and hands
+/// them out in input numbering, sorted and without repeats.
+class pair_collector {
+public:
+    void clear() { pairs_.clear(); }
+    void add(std::size_t i, std::size_t j) { pairs_.push_back({i, j}); }
+    bool empty() const { return pairs_.empty(); }
+
+    std::vector<edge_pair> in_input_numbering(const polygon& a, const polygon& b) const {
+        std::vector<edge_pair> out;
+        out.reserve(pairs_.size());
+        for (const auto& p : pairs_) out.push_back({a.source_edge(p.static_edge), b.source_edge(p.moving_edge)});
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+        return out;
+    }
+
+private:
+    std::vector<edge_pair> pairs_;
+};
+
+}  // namespace influence2d::detail

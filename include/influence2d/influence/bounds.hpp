@@ -1,0 +1,41 @@
+#pragma once
+// Bounding radii as upper bounds in double (method.md section 9: radii carry
+// square roots, so filters use bounds, never the roots themselves).
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "influence2d/core/point.hpp"
+#include "influence2d/core/polygon.hpp"
+
+namespace influence2d {
+
+/// An upper bound of sqrt(x) for x >= 0 given in long double, as a double.
+inline double upper_sqrt(long double x) {
+    const double r = static_cast<double>(std::sqrt(x));
+    return std::nextafter(r * (1 + 1e-12), std::numeric_limits<double>::infinity());
+}
+
+/// An upper bound of the largest distance from `center` to a vertex of `shape`,
+/// and so of the radius of the circle about `center` that encloses it. It
+/// also bounds the radius of the polygon posed with rotation doubles c, s,
+/// whose scale sqrt(c^2 + s^2) differs from 1 by less than 1e-15.
+inline double bounding_radius(const polygon& shape, const point<double>& center) {
+    long double r2 = 0;
+    for (const auto& v : shape.vertices()) {
+        const long double dx = static_cast<long double>(v.x) - center.x;
+        const long double dy = static_cast<long double>(v.y) - center.y;
+        r2 = std::max(r2, dx * dx + dy * dy);
+    }
+    return upper_sqrt(r2);
+}
+
+/// The largest absolute coordinate of the polygon: the scale that rounding
+/// errors of its coordinates are relative to.
+inline double coordinate_scale(const polygon& shape) {
+    const box& b = shape.bounds();
+    return std::max({std::fabs(b.min_x), std::fabs(b.max_x), std::fabs(b.min_y), std::fabs(b.max_y)});
+}
+
+}  // namespace influence2d

@@ -1,0 +1,116 @@
+#pragma once
+// A uniform grid over the static polygon, in its own (fixed) frame, listing for
+// each cell the edges that may come within a reach of a point of the cell. It
+// answers "which edges can be within the reach of p" without a scan of all
+// edges; a conservative filter in double, never a decision.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "influence2d/core/box.hpp"
+#include "influence2d/core/point.hpp"
+#include "influence2d/core/polygon.hpp"
+
+namespace influence2d {
+
+/// A read-only view of a run of edge indices.
+struct edge_list {
+    const std::uint32_t* first = nullptr;
+    const std::uint32_t* last = nullptr;
+    const std::uint32_t* begin() const { return first; }
+    const std::uint32_t* end() const { return last; }
+    bool empty() const { return first == last; }
+    std::size_t size() const { return static_cast<std::size_t>(last - first); }
+};
+
+/// Distance from p to the segment [a, b] in double, for filters only.
+inline double segment_distance(const point<double>& p, const point<double>& a, const point<double>& b) {
+    const double abx = b.x - a.x, aby = b.y - a.y, apx = p.x - a.x, apy = p.y - a.y;
+    const double ab2 = abx * abx + aby * aby;
+    double t = ab2 > 0 ? (abx * apx + aby * apy) / ab2 : 0;
+    t = std::min(1.0, std::max(0.0, t));
+    return std::hypot(apx - t * abx, apy - t * aby);
+}
+
+class edge_grid {
+public:
+    edge_grid() = default;
+
+    /// Indexes the edges of `shape` for queries of reach `reach`: a point p
+    /// whose distance to an edge is at most `reach` finds that edge in the list
+    /// of its cell. `slack` is an absolute margin added for double rounding.
+    edge_grid(const polygon& shape, double reach, double slack) {
+        const double r = reach + slack;
+        area_ = shape.bounds().inflated(r);
+        const double w = area_.max_x - area_.min_x, h = area_.max_y - area_.min_y;
+        const double n = static_cast<double>(shape.size());
+        // Cells about as wide as the reach, but no more than ~8 per edge.
+        double cell = std::max({r, std::sqrt(w * h / (8 * n)), std::max(w, h) / 4096});
+        if (!(cell > 0) || !std::isfinite(cell)) cell = std::max(w, h) > 0 ? std::max(w, h) : 1;
+        nx_ = static_cast<std::size_t>(std::clamp(std::ceil(w / cell), 1.0, 4096.0));
+        ny_ = static_cast<std::size_t>(std::clamp(std::ceil(h / cell), 1.0, 4096.0));
+        sx_ = w > 0 ? static_cast<double>(nx_) / w : 0;
+        sy_ = h > 0 ? static_cast<double>(ny_) / h : 0;
+        const double cw = w / static_cast<double>(nx_), ch = h / static_cast<double>(ny_);
+        const double half_diagonal = 0.5 * std::hypot(cw, ch);
+
+        // Two passes (count, fill) into one compressed array.
+        std::vector<std::uint32_t> count(nx_ * ny_ + 1, 0);
+        auto for_each_cell = [&](std::size_t e, auto&& visit) {
+            const point<double>& a = shape.vertex(e);
+            const point<double>& b = shape.vertex(shape.next(e));
+            box eb;
+            eb.add(a);
+            eb.add(b);
+            eb = eb.inflated(r);
+            const std::size_t x0 = cell_x(eb.min_x), x1 = cell_x(eb.max_x);
+            const std::size_t y0 = cell_y(eb.min_y), y1 = cell_y(eb.max_y);
+            for (std::size_t y = y0; y <= y1; ++y)
+                for (std::size_t x = x0; x <= x1; ++x) {
+                    const point<double> c{area_.min_x + (static_cast<double>(x) + 0.5) * cw,
+                                          area_.min_y + (static_cast<double>(y) + 0.5) * ch};
+                    // Points of the cell are within half a diagonal of its centre.
+                    if (segment_distance(c, a, b) <= r + half_diagonal * (1 + 1e-12) + slack)
+                        visit(y * nx_ + x);
+                }
+        };
+        for (std::size_t e = 0; e < shape.size(); ++e)
+            for_each_cell(e, [&](std::size_t c) { ++count[c + 1]; });
+        for (std::size_t c = 0; c < nx_ * ny_; ++c) count[c + 1] += count[c];
+        offsets_ = count;
+        edges_.resize(offsets_.back());
+        for (std::size_t e = 0; e < shape.size(); ++e)
+            for_each_cell(e, [&](std::size_t c) { edges_[count[c]++] = static_cast<std::uint32_t>(e); });
+    }
+
+    /// The edges that may lie within the reach of p (none when p is outside
+    /// the indexed area, which is the polygon's box grown by the reach).
+    edge_list query(const point<double>& p) const {
+        if (offsets_.empty() || !area_.contains(p)) return {};
+        const std::size_t c = cell_y(p.y) * nx_ + cell_x(p.x);
+        return {edges_.data() + offsets_[c], edges_.data() + offsets_[c + 1]};
+    }
+
+    std::size_t cell_count() const { return nx_ * ny_; }
+    std::size_t entry_count() const { return edges_.size(); }
+
+private:
+    std::size_t cell_x(double x) const {
+        const double f = std::floor((x - area_.min_x) * sx_);
+        return static_cast<std::size_t>(std::clamp(f, 0.0, static_cast<double>(nx_ - 1)));
+    }
+    std::size_t cell_y(double y) const {
+        const double f = std::floor((y - area_.min_y) * sy_);
+        return static_cast<std::size_t>(std::clamp(f, 0.0, static_cast<double>(ny_ - 1)));
+    }
+
+    box area_;
+    std::size_t nx_ = 0, ny_ = 0;
+    double sx_ = 0, sy_ = 0;
+    std::vector<std::uint32_t> offsets_;
+    std::vector<std::uint32_t> edges_;
+};
+
+}  // namespace influence2d

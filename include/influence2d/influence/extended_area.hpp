@@ -1,0 +1,42 @@
+#pragma once
+// Extended influence areas of length n (method.md section 5): exact membership
+// of a point, in either shape. Both contain every point within n of the edge.
+
+#include "influence2d/core/point.hpp"
+#include "influence2d/detect/result.hpp"
+#include "influence2d/predicates/segments.hpp"
+
+namespace influence2d {
+
+/// The ideal area: points within n of the segment [a, b] (a capsule).
+/// `n2` is n squared.
+template <class NT>
+bool in_capsule(const point<NT>& p, const point<NT>& a, const point<NT>& b, const NT& n2) {
+    return point_segment_within(p, a, b, n2);
+}
+
+/// The paper's area: the band between the two parallels to [a, b] at distance n,
+/// cut by two axis-parallel lines at distance n beyond the end vertices:
+/// vertical ones when |slope| <= 1, horizontal ones otherwise.
+template <class NT>
+bool in_band(const point<NT>& p, const point<NT>& a, const point<NT>& b, const NT& n, const NT& n2) {
+    const NT abx = b.x - a.x, aby = b.y - a.y;
+    const NT cross = abx * (p.y - a.y) - aby * (p.x - a.x);
+    if (cross * cross > n2 * (abx * abx + aby * aby)) return false;
+    const bool vertical_caps = !(aby * aby > abx * abx);
+    const NT& pa = vertical_caps ? a.x : a.y;
+    const NT& pb = vertical_caps ? b.x : b.y;
+    const NT& pp = vertical_caps ? p.x : p.y;
+    const NT& lo = pa < pb ? pa : pb;
+    const NT& hi = pa < pb ? pb : pa;
+    return !(pp < lo - n) && !(pp > hi + n);
+}
+
+/// Membership in the chosen shape of extended area.
+template <class NT>
+bool in_extended_area(extended_area shape, const point<NT>& p, const point<NT>& a, const point<NT>& b,
+                      const NT& n, const NT& n2) {
+    return shape == extended_area::capsule ? in_capsule(p, a, b, n2) : in_band(p, a, b, n, n2);
+}
+
+}  // namespace influence2d

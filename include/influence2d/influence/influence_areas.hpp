@@ -1,0 +1,148 @@
+#pragma once
+// Influence areas (the cones from the covering origin through each edge) and
+// the influence mask of a point (method.md section 4).
+
+#include <cmath>
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "influence2d/core/point.hpp"
+#include "influence2d/covering/covering.hpp"
+#include "influence2d/number/traits.hpp"
+
+namespace influence2d {
+
+/// Whether P lies in the closed influence area of edge i: beta_i >= 0 and
+/// gamma_i >= 0. The area of an edge collinear with the origin is empty.
+template <class NT>
+bool in_influence_area(const triangle_covering<NT>& cov, std::size_t i, const point<NT>& p) {
+    const int s = cov.sigma(i);
+    if (s == 0) return false;
+    return orientation(cov.origin(), p, cov.end(i)) * s >= 0 &&
+           orientation(cov.origin(), cov.start(i), p) * s >= 0;
+}
+
+/// One bit per edge of the static polygon.
+class influence_mask {
+public:
+    influence_mask() = default;
+    explicit influence_mask(std::size_t edges) : words_((edges + 63) / 64, 0) {}
+
+    void clear() { std::fill(words_.begin(), words_.end(), std::uint64_t{0}); }
+    void set(std::size_t i) { words_[i / 64] |= std::uint64_t{1} << (i % 64); }
+    bool test(std::size_t i) const { return (words_[i / 64] >> (i % 64)) & 1u; }
+    bool any() const {
+        for (auto w : words_) if (w) return true;
+        return false;
+    }
+    /// Whether some area of `before` is not in this mask: the point left it.
+    bool left_some_area_of(const influence_mask& before) const {
+        for (std::size_t k = 0; k < words_.size(); ++k)
+            if (before.words_[k] & ~words_[k]) return true;
+        return false;
+    }
+    bool operator==(const influence_mask& o) const { return words_ == o.words_; }
+
+private:
+    std::vector<std::uint64_t> words_;
+};
+
+/// Finds the influence areas containing a point without testing every edge:
+/// the directions around the origin are cut into equal angular buckets, each
+/// listing the cones that overlap it (widened, so the list is conservative);
+/// membership is then decided exactly, by barycentric signs, for the cones of
+/// the point's bucket only. A point at or very near the origin, where its
+/// direction is not known well enough in double, tests every cone.
+template <class NT>
+class influence_areas {
+public:
+    influence_areas() = default;
+
+    explicit influence_areas(const triangle_covering<NT>& cov) : cov_(&cov) {
+        constexpr double two_pi = 6.283185307179586;
+        const std::size_t n = cov.size();
+        buckets_ = 16;
+        while (buckets_ < 2 * n && buckets_ < (std::size_t{1} << 20)) buckets_ *= 2;
+        const double widen = number_traits<NT>::filter_slack + 1e-12;
+        std::vector<std::vector<std::uint32_t>> lists(buckets_);
+        const point<double> o = to_double_point(cov.origin());
+        for (std::size_t i = 0; i < n; ++i) {
+            const int s = cov.sigma(i);
+            if (s == 0) continue;
+            const point<double> a = to_double_point(cov.start(i)), b = to_double_point(cov.end(i));
+            // The cone turns counter-clockwise from `from` to `to`, by less than pi.
+            const point<double>& from = s > 0 ? a : b;
+            const point<double>& to = s > 0 ? b : a;
+            // The directions from o are rounded: widen by their possible error.
+            const double spread = widen + direction_error(from, o) + direction_error(to, o);
+            double lo = std::atan2(from.y - o.y, from.x - o.x) - spread;
+            double hi = std::atan2(to.y - o.y, to.x - o.x) + spread;
+            if (hi < lo) hi += two_pi;
+            if (!(spread < 0.5)) hi = lo + two_pi;
+            const double k = static_cast<double>(buckets_) / two_pi;
+            const long first = static_cast<long>(std::floor((lo + 3.141592653589793) * k));
+            const long last = static_cast<long>(std::floor((hi + 3.141592653589793) * k));
+            for (long b_index = first; b_index <= last && b_index < first + static_cast<long>(buckets_); ++b_index) {
+                const long wrapped = ((b_index % static_cast<long>(buckets_)) + static_cast<long>(buckets_)) %
+                                     static_cast<long>(buckets_);
+                lists[static_cast<std::size_t>(wrapped)].push_back(static_cast<std::uint32_t>(i));
+            }
+            all_.push_back(static_cast<std::uint32_t>(i));
+        }
+        offsets_.assign(buckets_ + 1, 0);
+        for (std::size_t b = 0; b < buckets_; ++b) offsets_[b + 1] = offsets_[b] + static_cast<std::uint32_t>(lists[b].size());
+        cones_.reserve(offsets_.back());
+        for (auto& l : lists) cones_.insert(cones_.end(), l.begin(), l.end());
+        origin_scale_ = std::fabs(o.x) + std::fabs(o.y);
+    }
+
+    /// Calls visit(i) for every edge i whose influence area contains P.
+    template <class Visit>
+    void for_each_containing(const point<NT>& p, Visit&& visit) const {
+        using tr = number_traits<NT>;
+        const double dx = tr::to_double(p.x - cov_->origin().x);
+        const double dy = tr::to_double(p.y - cov_->origin().y);
+        const double scale = origin_scale_ + std::fabs(tr::to_double(p.x)) + std::fabs(tr::to_double(p.y));
+        const bool direction_known = std::fabs(dx) + std::fabs(dy) > 1e3 * tr::filter_slack * scale;
+        const std::uint32_t* first = all_.data();
+        const std::uint32_t* last = all_.data() + all_.size();
+        if (direction_known) {
+            constexpr double two_pi = 6.283185307179586;
+            const double f = std::floor((std::atan2(dy, dx) + 3.141592653589793) * static_cast<double>(buckets_) / two_pi);
+            const std::size_t b = static_cast<std::size_t>(std::clamp(f, 0.0, static_cast<double>(buckets_ - 1)));
+            first = cones_.data() + offsets_[b];
+            last = cones_.data() + offsets_[b + 1];
+        }
+        for (const std::uint32_t* it = first; it != last; ++it)
+            if (in_influence_area(*cov_, *it, p)) visit(static_cast<std::size_t>(*it));
+    }
+
+    /// The influence mask of P: one bit per edge, set for the areas containing P.
+    void mask(const point<NT>& p, influence_mask& out) const {
+        out.clear();
+        for_each_containing(p, [&](std::size_t i) { out.set(i); });
+    }
+
+private:
+    /// A bound of the angular error of the direction o->q computed in double.
+    static double direction_error(const point<double>& q, const point<double>& o) {
+        const double len = std::fabs(q.x - o.x) + std::fabs(q.y - o.y);
+        const double mag = std::fabs(q.x) + std::fabs(q.y) + std::fabs(o.x) + std::fabs(o.y);
+        return len > 0 ? 8 * std::numeric_limits<double>::epsilon() * mag / len : 1.0;
+    }
+
+    static point<double> to_double_point(const point<NT>& q) {
+        return {number_traits<NT>::to_double(q.x), number_traits<NT>::to_double(q.y)};
+    }
+
+    const triangle_covering<NT>* cov_ = nullptr;
+    std::size_t buckets_ = 0;
+    std::vector<std::uint32_t> offsets_;
+    std::vector<std::uint32_t> cones_;
+    std::vector<std::uint32_t> all_;
+    double origin_scale_ = 0;
+};
+
+}  // namespace influence2d

@@ -1,0 +1,24 @@
+#pragma once
+// influence2d: collision detection between 2D polygons with triangle coverings
+// and influence areas. Include this header for everything but the CGAL adapter
+// (influence2d/number/cgal.hpp) and the readers (influence2d/io/).
+
+#include "influence2d/core/box.hpp"
+#include "influence2d/core/point.hpp"
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/core/pose.hpp"
+#include "influence2d/covering/covering.hpp"
+#include "influence2d/covering/inclusion.hpp"
+#include "influence2d/detect/brute_force.hpp"
+#include "influence2d/detect/detector.hpp"
+#include "influence2d/detect/paper_detector.hpp"
+#include "influence2d/detect/result.hpp"
+#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/influence/bounds.hpp"
+#include "influence2d/influence/edge_grid.hpp"
+#include "influence2d/influence/extended_area.hpp"
+#include "influence2d/influence/influence_areas.hpp"
+#include "influence2d/number/expansion.hpp"
+#include "influence2d/number/traits.hpp"
+#include "influence2d/predicates/orientation.hpp"
+#include "influence2d/predicates/segments.hpp"

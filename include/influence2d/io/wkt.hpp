@@ -1,0 +1,267 @@
+#pragma once
+// Polygons as WKT text: POLYGON and MULTIPOLYGON, read with Boost.Geometry's
+// WKT reader and checked for what that reader lets through (unclosed rings,
+// points without exactly two coordinates, empty list elements).
+
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <exception>
+#include <fstream>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include <boost/geometry/geometries/multi_polygon.hpp>
+#include <boost/geometry/geometries/point_xy.hpp>
+#include <boost/geometry/geometries/polygon.hpp>
+#include <boost/geometry/io/wkt/read.hpp>
+
+#include "influence2d/core/point.hpp"
+#include "influence2d/core/polygon.hpp"
+
+namespace influence2d {
+
+/// Files larger than this are refused by read_wkt_file.
+inline constexpr std::size_t max_wkt_file_bytes = std::size_t{512} << 20;
+
+namespace wkt_detail {
+
+using bg_point = boost::geometry::model::d2::point_xy<double>;
+using bg_polygon = boost::geometry::model::polygon<bg_point>;
+using bg_multi_polygon = boost::geometry::model::multi_polygon<bg_polygon>;
+using bg_ring = bg_polygon::ring_type;
+
+[[noreturn]] inline void fail(std::string_view source, const std::string& what) {
+    throw invalid_input(std::string(source) + ": " + what);
+}
+
+inline std::string ring_place(std::size_t ring) { return "ring " + std::to_string(ring); }
+
+inline std::string vertex_place(std::size_t ring, std::size_t vertex) {
+    return ring_place(ring) + ", vertex " + std::to_string(vertex);
+}
+
+inline std::string format_coordinate(double x) {
+    std::array<char, 32> buf{};
+    const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), x);
+    return std::string(buf.data(), res.ptr);
+}
+
+/// Boost's tokenizer separates on the space character only: other white space
+/// would end up inside number tokens. Every white-space character becomes a
+/// space, a UTF-8 byte-order mark is dropped, and the ends are trimmed.
+inline std::string normalise(std::string_view text) {
+    if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+    std::string out(text);
+    for (char& c : out) {
+        if (c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f') c = ' ';
+    }
+    const auto first = out.find_first_not_of(' ');
+    if (first == std::string::npos) return {};
+    const auto last = out.find_last_not_of(' ');
+    return out.substr(first, last - first + 1);
+}
+
+/// Boost's reader fills missing coordinates with zero, turns extra
+/// coordinates into extra points and accepts an empty element before ')'.
+/// This pass, run on text Boost has accepted, checks that every point at
+/// the ring level has exactly two coordinates and that no list ends in ','.
+/// Rings are numbered in text order, as the polygon numbers them.
+inline void check_coordinate_tuples(std::string_view source, const std::string& text,
+                                    int ring_depth) {
+    int depth = 0;
+    std::size_t ring = 0, vertex = 0, words = 0;
+    bool any_ring = false;
+    char prev = '\0';
+    std::size_t i = 0;
+    while (i < text.size()) {
+        const char c = text[i];
+        if (c == ' ') {
+            ++i;
+            continue;
+        }
+        if (c != '(' && c != ')' && c != ',') {
+            while (i < text.size() && text[i] != ' ' && text[i] != '(' && text[i] != ')' &&
+                   text[i] != ',')
+                ++i;
+            ++words;
+            continue;
+        }
+        ++i;
+        if (c == '(') {
+            ++depth;
+            if (depth == ring_depth) {
+                ring = any_ring ? ring + 1 : 0;
+                any_ring = true;
+                vertex = 0;
+            }
+        } else {
+            const bool in_ring = depth == ring_depth && any_ring;
+            if (c == ')' && prev == ',')
+                fail(source, (in_ring ? ring_place(ring) + ": " : std::string()) +
+                                 "empty element after ','");
+            if (in_ring && !(c == ')' && prev == '(' && words == 0)) {
+                if (words == 0) fail(source, vertex_place(ring, vertex) + ": missing coordinates");
+                if (words != 2)
+                    fail(source, vertex_place(ring, vertex) + ": " + std::to_string(words) +
+                                     " coordinates, expected 2 (only x y is supported)");
+                ++vertex;
+            }
+            if (c == ')') --depth;
+        }
+        words = 0;
+        prev = c;
+    }
+}
+
+/// Appends the ring as a ring_input after checking it: not empty, finite
+/// coordinates, closed (first point repeated at the end, which is dropped).
+inline void append_ring(std::string_view source, const bg_ring& r, ring_role role,
+                        std::vector<ring_input>& rings) {
+    const std::size_t index = rings.size();
+    if (r.empty()) fail(source, ring_place(index) + ": empty ring");
+    for (std::size_t k = 0; k < r.size(); ++k) {
+        if (!std::isfinite(r[k].x()) || !std::isfinite(r[k].y()))
+            fail(source, vertex_place(index, k) + ": coordinate is not a finite number");
+    }
+    const bg_point& a = r.front();
+    const bg_point& b = r.back();
+    if (r.size() < 2 || a.x() != b.x() || a.y() != b.y())
+        fail(source, ring_place(index) + " is not closed: first point (" +
+                         format_coordinate(a.x()) + " " + format_coordinate(a.y()) +
+                         ") differs from last point (" + format_coordinate(b.x()) + " " +
+                         format_coordinate(b.y()) + ")");
+    ring_input in;
+    in.role = role;
+    in.vertices.reserve(r.size() - 1);
+    for (std::size_t k = 0; k + 1 < r.size(); ++k) in.vertices.push_back({r[k].x(), r[k].y()});
+    rings.push_back(std::move(in));
+}
+
+inline void append_polygon(std::string_view source, const bg_polygon& p,
+                           std::vector<ring_input>& rings) {
+    append_ring(source, p.outer(), ring_role::outer, rings);
+    for (const auto& hole : p.inners()) append_ring(source, hole, ring_role::hole, rings);
+}
+
+}  // namespace wkt_detail
+
+/// Reads a polygon from WKT text: `POLYGON` (first ring outer, the others
+/// holes) or `MULTIPOLYGON` (each part's exterior outer, its interiors holes),
+/// keywords in any case, surrounding white space allowed. Rings must be
+/// closed; the closing point is dropped. Rings are numbered 0, 1, ... in text
+/// order across the whole geometry and vertices 0, 1, ... within a ring.
+/// Throws invalid_input with a message starting with `source`.
+inline polygon read_wkt(std::string_view text, std::string_view source = "<text>") {
+    namespace bg = boost::geometry;
+    using namespace wkt_detail;
+    const std::string wkt = normalise(text);
+    if (wkt.empty()) fail(source, "empty input: expected POLYGON or MULTIPOLYGON");
+
+    std::size_t kw_end = 0;
+    while (kw_end < wkt.size() && std::isalpha(static_cast<unsigned char>(wkt[kw_end]))) ++kw_end;
+    std::string keyword = wkt.substr(0, kw_end);
+    for (char& c : keyword) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    const bool multi = keyword == "MULTIPOLYGON";
+    if (!multi && keyword != "POLYGON") {
+        std::string found = wkt.substr(0, wkt.find_first_of(" (", kw_end == 0 ? 1 : kw_end));
+        if (found.size() > 40) found = found.substr(0, 40) + "...";
+        fail(source, "expected POLYGON or MULTIPOLYGON, found '" + found + "'");
+    }
+
+    std::vector<ring_input> rings;
+    try {
+        if (multi) {
+            bg_multi_polygon mp;
+            bg::read_wkt(wkt, mp);
+            if (mp.empty()) fail(source, "MULTIPOLYGON is empty");
+            check_coordinate_tuples(source, wkt, 3);
+            for (const auto& p : mp) append_polygon(source, p, rings);
+        } else {
+            bg_polygon p;
+            bg::read_wkt(wkt, p);
+            if (p.outer().empty() && p.inners().empty()) fail(source, "POLYGON is empty");
+            check_coordinate_tuples(source, wkt, 2);
+            append_polygon(source, p, rings);
+        }
+    } catch (const invalid_input&) {
+        throw;
+    } catch (const std::exception& e) {
+        fail(source, std::string("parse error: ") + e.what());
+    }
+
+    try {
+        return polygon(std::move(rings));
+    } catch (const invalid_input& e) {
+        fail(source, e.what());
+    }
+}
+
+/// Reads a polygon from a WKT file (see read_wkt); messages start with `path`.
+/// Files over max_wkt_file_bytes are refused.
+inline polygon read_wkt_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) wkt_detail::fail(path, "cannot open file");
+    std::string text;
+    std::array<char, 1 << 16> buf{};
+    while (in) {
+        in.read(buf.data(), static_cast<std::streamsize>(buf.size()));
+        const auto got = static_cast<std::size_t>(in.gcount());
+        if (text.size() + got > max_wkt_file_bytes)
+            wkt_detail::fail(path, "file is larger than " +
+                                       std::to_string(max_wkt_file_bytes >> 20) + " MiB");
+        text.append(buf.data(), got);
+    }
+    if (in.bad()) wkt_detail::fail(path, "read error");
+    return read_wkt(text, path);
+}
+
+/// Writes the polygon as WKT with every coordinate in its shortest form that
+/// reads back to the same double; rings are closed and in stored orientation
+/// (outer counter-clockwise, holes clockwise). One outer ring gives a POLYGON;
+/// several give a MULTIPOLYGON, each hole going with the closest preceding
+/// outer ring in storage order (the order they were read in).
+inline std::string to_wkt(const polygon& poly) {
+    const std::size_t rings = poly.ring_count();
+    if (rings == 0) throw invalid_input("to_wkt: polygon has no ring");
+    if (poly.role(0) != ring_role::outer)
+        throw invalid_input("to_wkt: ring 0 is a hole; WKT needs an outer ring first");
+    std::size_t outers = 0;
+    for (std::size_t r = 0; r < rings; ++r) outers += poly.role(r) == ring_role::outer;
+    const bool multi = outers > 1;
+
+    std::string out = multi ? "MULTIPOLYGON(" : "POLYGON";
+    auto write_ring = [&](std::size_t r) {
+        out += '(';
+        for (std::size_t i = poly.ring_begin(r); i < poly.ring_end(r); ++i) {
+            out += wkt_detail::format_coordinate(poly.vertex(i).x);
+            out += ' ';
+            out += wkt_detail::format_coordinate(poly.vertex(i).y);
+            out += ',';
+        }
+        const auto& first = poly.vertex(poly.ring_begin(r));
+        out += wkt_detail::format_coordinate(first.x);
+        out += ' ';
+        out += wkt_detail::format_coordinate(first.y);
+        out += ')';
+    };
+    for (std::size_t r = 0; r < rings; ++r) {
+        if (poly.role(r) == ring_role::outer) {
+            if (r > 0) out += "),";
+            out += '(';
+        } else {
+            out += ',';
+        }
+        write_ring(r);
+    }
+    out += ')';
+    if (multi) out += ')';
+    return out;
+}
+
+}  // namespace influence2d

@@ -1,0 +1,67 @@
+#pragma once
+// Closed segment-segment questions: intersection and distance bounds.
+
+#include "influence2d/core/point.hpp"
+#include "influence2d/predicates/orientation.hpp"
+
+namespace influence2d {
+
+/// Whether the closed segments [a, b] and [c, d] share a point, given
+/// o_c = orientation(a, b, c) and o_d = orientation(a, b, d) already evaluated
+/// (the detector has them from its straddle test). Degenerate segments allowed.
+template <class NT>
+bool segments_intersect(int o_c, int o_d, const point<NT>& a, const point<NT>& b,
+                        const point<NT>& c, const point<NT>& d) {
+    if (o_c * o_d > 0) return false;
+    if (o_c == 0 && o_d == 0) {
+        // [c, d] lies on the line of [a, b] (or a == b): compare extents, unless
+        // a == b and that point is off the line of [c, d].
+        if (orientation(c, d, a) != 0 || orientation(c, d, b) != 0) return false;
+        const auto overlap = [](const NT& p0, const NT& p1, const NT& q0, const NT& q1) {
+            const NT& pmin = p0 < p1 ? p0 : p1;
+            const NT& pmax = p0 < p1 ? p1 : p0;
+            const NT& qmin = q0 < q1 ? q0 : q1;
+            const NT& qmax = q0 < q1 ? q1 : q0;
+            return !(pmax < qmin) && !(qmax < pmin);
+        };
+        return overlap(a.x, b.x, c.x, d.x) && overlap(a.y, b.y, c.y, d.y);
+    }
+    return orientation(c, d, a) * orientation(c, d, b) <= 0;
+}
+
+/// Whether the closed segments [a, b] and [c, d] share a point.
+template <class NT>
+bool segments_intersect(const point<NT>& a, const point<NT>& b, const point<NT>& c,
+                        const point<NT>& d) {
+    return segments_intersect(orientation(a, b, c), orientation(a, b, d), a, b, c, d);
+}
+
+/// Whether dist(p, [a, b])^2 <= d2, with ring operations only:
+/// beyond an end the distance is to that end; in between it is
+/// |ab x ap|^2 / |ab|^2, compared after multiplying by |ab|^2.
+template <class NT>
+bool point_segment_within(const point<NT>& p, const point<NT>& a, const point<NT>& b, const NT& d2) {
+    const NT abx = b.x - a.x, aby = b.y - a.y;
+    const NT apx = p.x - a.x, apy = p.y - a.y;
+    const NT t = abx * apx + aby * apy;
+    const NT ab2 = abx * abx + aby * aby;
+    if (!(t > NT(0)) || ab2 == NT(0)) return !(apx * apx + apy * apy > d2);
+    if (!(t < ab2)) {
+        const NT bpx = p.x - b.x, bpy = p.y - b.y;
+        return !(bpx * bpx + bpy * bpy > d2);
+    }
+    const NT cross = abx * apy - aby * apx;
+    return !(cross * cross > d2 * ab2);
+}
+
+/// Whether dist([a, b], [c, d])^2 <= d2: the segments meet, or an endpoint of
+/// one is within the distance of the other.
+template <class NT>
+bool segments_within(const point<NT>& a, const point<NT>& b, const point<NT>& c,
+                     const point<NT>& d, const NT& d2) {
+    return segments_intersect(a, b, c, d) || point_segment_within(a, c, d, d2) ||
+           point_segment_within(b, c, d, d2) || point_segment_within(c, a, b, d2) ||
+           point_segment_within(d, a, b, d2);
+}
+
+}  // namespace influence2d
