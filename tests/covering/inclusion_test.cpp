@@ -1,0 +1,91 @@
+#include <catch2/catch.hpp>
+
+#include "influence2d/covering/inclusion.hpp"
+#include "support/shapes.hpp"
+
+using namespace influence2d;
+
+template <class NT>
+location where(const triangle_covering<NT>& cov, double x, double y) {
+    return locate(cov, point<NT>{number_traits<NT>::from_double(x), number_traits<NT>::from_double(y)});
+}
+
+TEMPLATE_TEST_CASE("inclusion: square with a hole", "[inclusion]", INFLUENCE2D_NUMBER_TYPES) {
+    //  +--------+ 8
+    //  |  +--+  |
+    //  |  |  |  |   hole [2,6]^2; the centroid (4,4) lies in the hole
+    //  |  +--+  |
+    //  +--------+ 0
+    const polygon p = test_shapes::square_with_hole();
+    const triangle_covering<TestType> cov(p, p.centroid());
+    CHECK(where(cov, 1, 1) == location::inside);
+    CHECK(where(cov, 7, 4) == location::inside);
+    CHECK(where(cov, 4, 4) == location::outside);  // the origin itself, in the hole
+    CHECK(where(cov, 3, 5) == location::outside);
+    CHECK(where(cov, 2, 3) == location::boundary);  // on the hole's edge
+    CHECK(where(cov, 6, 6) == location::boundary);  // a hole vertex
+    CHECK(where(cov, 0, 8) == location::boundary);
+    CHECK(where(cov, 9, 4) == location::outside);
+    CHECK(where(cov, 1, 4) == location::inside);  // level with O, between the outer and hole edges
+    CHECK(where(cov, 1, 7) == location::inside);  // on the side O-(0,8): counted half twice
+}
+
+TEMPLATE_TEST_CASE("inclusion: points on the sides O-V_i count half in each triangle", "[inclusion]",
+                   INFLUENCE2D_NUMBER_TYPES) {
+    // Square [0,4]^2, origin (2,2): the diagonals are the shared sides O-V_i.
+    //   (0,4)+-----+(4,4)
+    //        | \ / |
+    //        |  O  |   P = (1,1) lies on O-(0,0): half of T_3 and half of T_0
+    //        | / \ |
+    //   (0,0)+-----+(4,0)
+    const polygon sq = test_shapes::square(0, 0, 4);
+    const triangle_covering<TestType> cov(sq, sq.centroid());
+    CHECK(where(cov, 1, 1) == location::inside);
+    CHECK(where(cov, 3, 3) == location::inside);
+    CHECK(where(cov, 2, 2) == location::inside);  // the origin: summed from a vertex instead
+    CHECK(where(cov, 5, 5) == location::outside);  // on the diagonal's extension
+}
+
+TEMPLATE_TEST_CASE("inclusion: centroid outside the polygon", "[inclusion]", INFLUENCE2D_NUMBER_TYPES) {
+    const polygon c = test_shapes::c_shape();
+    const triangle_covering<TestType> cov(c, c.centroid());
+    REQUIRE(c.centroid().x > 1);  // in the opening
+    CHECK(where(cov, c.centroid().x, c.centroid().y) == location::outside);
+    CHECK(where(cov, 0.5, 3) == location::inside);
+    CHECK(where(cov, 5, 0.5) == location::inside);
+    CHECK(where(cov, 5, 3) == location::outside);
+    CHECK(where(cov, 1, 3) == location::boundary);
+}
+
+TEMPLATE_TEST_CASE("inclusion: non-manifold rings touching at a vertex", "[inclusion]", INFLUENCE2D_NUMBER_TYPES) {
+    //        +--+ (2,2)
+    //        |  |
+    //   +----+--+ (1,1) shared vertex
+    //   |  |
+    //   +--+ (0,0)
+    const polygon p({test_shapes::square_ring(0, 0, 1), test_shapes::square_ring(1, 1, 1)});
+    const triangle_covering<TestType> cov(p, p.centroid());  // origin (1,1): the shared vertex
+    CHECK(where(cov, 1, 1) == location::boundary);
+    CHECK(where(cov, 0.5, 0.5) == location::inside);
+    CHECK(where(cov, 1.5, 1.5) == location::inside);
+    CHECK(where(cov, 0.5, 1.5) == location::outside);
+    CHECK(where(cov, 1.5, 0.5) == location::outside);
+}
+
+TEMPLATE_TEST_CASE("inclusion: collinear runs and repeated vertices", "[inclusion]", INFLUENCE2D_NUMBER_TYPES) {
+    // (0,0) (1,0) (1,0) (2,0) (4,0) (4,4) (0,4): a repeated vertex and a collinear run.
+    const polygon p({test_shapes::ring({{0, 0}, {1, 0}, {1, 0}, {2, 0}, {4, 0}, {4, 4}, {0, 4}})});
+    const triangle_covering<TestType> cov(p, p.centroid());
+    CHECK(where(cov, 1, 0) == location::boundary);
+    CHECK(where(cov, 3, 0) == location::boundary);
+    CHECK(where(cov, 1, 1) == location::inside);
+    CHECK(where(cov, 1, -1) == location::outside);
+}
+
+TEST_CASE("inclusion: exact on a point 2^-60 inside an edge", "[inclusion]") {
+    const polygon sq = test_shapes::square(0, 0, 1);
+    const triangle_covering<exact_rational> cov(sq, sq.centroid());
+    CHECK(where(cov, 0.5, 0x1p-60) == location::inside);
+    CHECK(where(cov, 0.5, -0x1p-60) == location::outside);
+    CHECK(where(cov, 0.5, 0) == location::boundary);
+}

@@ -1,0 +1,173 @@
+#include <catch2/catch.hpp>
+
+#include <random>
+
+#include "influence2d/detect/brute_force.hpp"
+#include "influence2d/detect/detector.hpp"
+#include "support/shapes.hpp"
+
+using namespace influence2d;
+using test_shapes::square;
+
+namespace {
+
+template <class NT>
+struct answers {
+    frame_result sound, sound_no_coherence, sound_band, brute;
+};
+
+/// Runs one pose through every configuration of the sound detector and the
+/// brute-force reference (fresh detectors: no coherence carried in).
+template <class NT>
+answers<NT> ask(const polygon& a, const polygon& b, pose p, double d = 0) {
+    detector_options o;
+    o.witness = true;
+    o.distance = d;
+    answers<NT> r;
+    r.sound = detector<NT>(a, b, o).collide(p);
+    r.brute = brute_force_detector<NT>(a, b, o).collide(p);
+    o.temporal_coherence = false;
+    r.sound_no_coherence = detector<NT>(a, b, o).collide(p);
+    o.shape = extended_area::band;
+    r.sound_band = detector<NT>(a, b, o).collide(p);
+    return r;
+}
+
+template <class NT>
+void check_same(const answers<NT>& r) {
+    CHECK(r.sound.collides == r.brute.collides);
+    CHECK(r.sound.pairs == r.brute.pairs);
+    CHECK(r.sound_no_coherence.pairs == r.brute.pairs);
+    CHECK(r.sound_band.pairs == r.brute.pairs);
+    CHECK(r.sound_no_coherence.collides == r.brute.collides);
+    CHECK(r.sound_band.collides == r.brute.collides);
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("detector: contacts between two squares", "[detector]", INFLUENCE2D_NUMBER_TYPES) {
+    using NT = TestType;
+    const polygon a = square(0, 0, 4), b = square(0, 0, 2);
+    SECTION("apart") {
+        const auto r = ask<NT>(a, b, {5, 0, 0});
+        check_same(r);
+        CHECK_FALSE(r.sound.collides);
+    }
+    SECTION("touching at a vertex") {
+        //        +--+
+        //        |B |
+        //  +-----+--+  B's corner (0,0) on A's corner (4,4)
+        //  |  A  |
+        const auto r = ask<NT>(a, b, {4, 4, 0});
+        check_same(r);
+        CHECK(r.sound.collides);
+        // A's edges 1 and 2 meet B's edges 3 and 0 at the shared corner.
+        CHECK(r.sound.pairs == std::vector<edge_pair>{{1, 0}, {1, 3}, {2, 0}, {2, 3}});
+    }
+    SECTION("touching along an edge") {
+        const auto r = ask<NT>(a, b, {4, 1, 0});
+        check_same(r);
+        CHECK(r.sound.collides);
+    }
+    SECTION("vertex on the interior of an edge") {
+        // B rotated by 45 degrees would not be exact; use a triangle instead.
+        const polygon t({test_shapes::ring({{0, 0}, {1, -1}, {1, 1}})});
+        const auto r = ask<NT>(a, t, {4, 2, 0});  // its vertex (0,0) at (4,2)
+        check_same(r);
+        CHECK(r.sound.collides);
+    }
+    SECTION("B inside A, no boundary contact") {
+        const auto r = ask<NT>(a, b, {1, 1, 0});
+        check_same(r);
+        CHECK(r.sound.collides);
+        CHECK(r.sound.pairs.empty());
+    }
+    SECTION("A inside B") {
+        const auto r = ask<NT>(square(0, 0, 1), square(0, 0, 6), {-2, -2, 0});
+        check_same(r);
+        CHECK(r.sound.collides);
+        CHECK(r.sound.pairs.empty());
+    }
+}
+
+TEMPLATE_TEST_CASE("detector: holes", "[detector]", INFLUENCE2D_NUMBER_TYPES) {
+    using NT = TestType;
+    const polygon a = test_shapes::square_with_hole();  // hole [2,6]^2
+    const polygon b = square(0, 0, 2);
+    SECTION("B inside the hole does not collide") {
+        const auto r = ask<NT>(a, b, {3, 3, 0});
+        check_same(r);
+        CHECK_FALSE(r.sound.collides);
+    }
+    SECTION("B touching the hole's boundary from inside collides") {
+        const auto r = ask<NT>(a, b, {4, 3, 0});
+        check_same(r);
+        CHECK(r.sound.collides);
+    }
+    SECTION("B across the hole's boundary") {
+        const auto r = ask<NT>(a, b, {5, 3, 0});
+        check_same(r);
+        CHECK(r.sound.collides);
+    }
+    SECTION("separation distance inside the hole") {
+        // B in [3,5]^2: 1 from every side of the hole.
+        check_same(ask<NT>(a, b, {3, 3, 0}, 1.0));
+        CHECK(ask<NT>(a, b, {3, 3, 0}, 1.0).sound.collides);
+        CHECK_FALSE(ask<NT>(a, b, {3, 3, 0}, 0.75).sound.collides);
+    }
+}
+
+TEMPLATE_TEST_CASE("detector: separation distance", "[detector]", INFLUENCE2D_NUMBER_TYPES) {
+    using NT = TestType;
+    const polygon a = square(0, 0, 4), b = square(0, 0, 2);
+    // Gap of exactly 0.5 between x = 4 and x = 4.5.
+    CHECK(ask<NT>(a, b, {4.5, 1, 0}, 0.5).sound.collides);
+    CHECK_FALSE(ask<NT>(a, b, {4.5, 1, 0}, 0.25).sound.collides);
+    CHECK_FALSE(ask<NT>(a, b, {4.5, 1, 0}, 0).sound.collides);
+    check_same(ask<NT>(a, b, {4.5, 1, 0}, 0.5));
+    // Diagonal gap: corner (4,4) to corner (5,5) is sqrt(2) apart.
+    CHECK(ask<NT>(a, b, {5, 5, 0}, 1.5).sound.collides);
+    CHECK_FALSE(ask<NT>(a, b, {5, 5, 0}, 1.25).sound.collides);
+}
+
+TEST_CASE("detector: a near miss by 2^-40 is not a collision, exactly", "[detector]") {
+    const polygon a = square(0, 0, 4), b = square(0, 0, 2);
+    const auto r = ask<exact_rational>(a, b, {4 + 0x1p-40, 1, 0});
+    check_same(r);
+    CHECK_FALSE(r.sound.collides);
+    CHECK(ask<exact_rational>(a, b, {4 - 0x1p-40, 1, 0}).sound.collides);
+}
+
+TEMPLATE_TEST_CASE("detector: temporal coherence over a sequence equals the reference", "[detector]", double,
+                   influence2d::exact_rational) {
+    using NT = TestType;
+    const polygon a = test_shapes::c_shape();
+    const polygon b({test_shapes::ring({{0, 0}, {0.5, 0}, {0.5, 0.25}, {0.25, 0.5}, {0, 0.25}})});
+    for (const double d : {0.0, 0.25}) {
+        detector_options o;
+        o.witness = true;
+        o.distance = d;
+        detector<NT> sound(a, b, o);
+        brute_force_detector<NT> brute(a, b, o);
+        std::mt19937_64 rng(11);
+        // A random walk through and around the C, small steps and jumps.
+        double x = -1, y = 3, th = 0;
+        int collisions = 0;
+        for (int k = 0; k < 3000; ++k) {
+            const double step = (k % 97 == 0) ? 3.0 : 0.05;
+            x = std::clamp(x + step * (static_cast<double>(rng() % 2001) / 1000 - 1), -2.0, 8.0);
+            y = std::clamp(y + step * (static_cast<double>(rng() % 2001) / 1000 - 1), -2.0, 8.0);
+            th += 0.01;
+            const pose p{x, y, th};
+            const auto s = sound.collide(p);
+            const auto r = brute.collide(p);
+            INFO("frame " << k << " pose " << x << ", " << y << ", " << th << " d " << d);
+            REQUIRE(s.collides == r.collides);
+            REQUIRE(s.pairs == r.pairs);
+            collisions += r.collides;
+        }
+        CHECK(collisions > 300);
+        CHECK(collisions < 2700);
+        CHECK(sound.statistics().candidate_rebuilds < sound.statistics().frames);
+    }
+}

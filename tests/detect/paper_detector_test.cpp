@@ -1,0 +1,82 @@
+// The paper-literal variant fails exactly where method.md section 7 says it
+// must; the sound detector answers each of these cases correctly.
+
+#include <catch2/catch.hpp>
+
+#include "influence2d/detect/brute_force.hpp"
+#include "influence2d/detect/detector.hpp"
+#include "influence2d/detect/paper_detector.hpp"
+#include "support/shapes.hpp"
+
+using namespace influence2d;
+using test_shapes::square;
+
+TEMPLATE_TEST_CASE("paper-literal: an unchanged mask skips the test and misses the collision", "[paper]", double,
+                   influence2d::exact_rational) {
+    using NT = TestType;
+    // B slides left along y = 2 into A, its centroid always in the cone of A's
+    // right edge: the mask never changes after the first tested frame.
+    //   +------+
+    //   |  A   |      <-- [B]
+    //   +------+
+    const polygon a = square(0, 0, 4), b = square(0, 0, 1);
+    paper_detector<NT> paper(a, b);
+    detector<NT> sound(a, b);
+    bool paper_hit = false, sound_hit = false;
+    for (int k = 0; k <= 70; ++k) {
+        const pose p{10 - 0.1 * k, 1.5, 0};  // ends with B over [3,4] x [1.5,2.5]
+        paper_hit = paper.collide(p).collides;
+        sound_hit = sound.collide(p).collides;
+    }
+    CHECK(sound_hit);
+    CHECK_FALSE(paper_hit);
+}
+
+TEMPLATE_TEST_CASE("paper-literal: the length-r gate misses a contact on a non-convex polygon", "[paper]", double,
+                   influence2d::exact_rational) {
+    using NT = TestType;
+    // B overlaps the end of the C's lower arm, its centroid in the opening,
+    // where no influence area of the C reaches (the cones leave the opening bare).
+    //   +------+
+    //   | +----+
+    //   | |
+    //   | +---[B]
+    //   +------+
+    const polygon a = test_shapes::c_shape(), b = square(0, 0, 0.4);
+    const pose p{5.9, 0.9, 0};  // B = [5.9,6.3] x [0.9,1.3]
+    CHECK(brute_force_detector<NT>(a, b).collide(p).collides);
+    CHECK(detector<NT>(a, b).collide(p).collides);
+    CHECK_FALSE(paper_detector<NT>(a, b).collide(p).collides);
+}
+
+TEMPLATE_TEST_CASE("paper-literal: straddling an edge's line beyond its end is a false collision", "[paper]",
+                   double, influence2d::exact_rational) {
+    using NT = TestType;
+    //          [B]  B = [4.3,4.5] x [3.5,4.5] crosses the line y = 4 at x > 4
+    //   +------+ ....
+    //   |  A   |
+    const polygon a = square(0, 0, 4);
+    const polygon b({test_shapes::ring({{0, 0}, {0.2, 0}, {0.2, 1}, {0, 1}})});
+    const pose p{4.3, 3.5, 0};
+    CHECK_FALSE(brute_force_detector<NT>(a, b).collide(p).collides);
+    CHECK_FALSE(detector<NT>(a, b).collide(p).collides);
+    CHECK(paper_detector<NT>(a, b).collide(p).collides);
+}
+
+TEMPLATE_TEST_CASE("paper-literal: containment without boundary contact is missed", "[paper]", double,
+                   influence2d::exact_rational) {
+    using NT = TestType;
+    const polygon a = square(0, 0, 4), b = square(0, 0, 1);
+    const pose p{1.5, 1.5, 0};  // B in the middle of A
+    CHECK(detector<NT>(a, b).collide(p).collides);
+    CHECK_FALSE(paper_detector<NT>(a, b).collide(p).collides);
+}
+
+TEMPLATE_TEST_CASE("paper-literal: where its premises hold it answers correctly", "[paper]", double,
+                   influence2d::exact_rational) {
+    using NT = TestType;
+    const polygon a = square(0, 0, 4), b = square(0, 0, 1);
+    // Far away: the circles reject; crossing the right edge on the first frame.
+    CHECK_FALSE(paper_detector<NT>(a, b).collide({9, 1.5, 0}).collides);
+    CHECK(paper_detector<NT>(a, b).collide({3.5, 1.5, 0}).collides);
+}

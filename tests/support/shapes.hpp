@@ -1,0 +1,46 @@
+#pragma once
+// Small polygons for the unit tests.
+
+#include <vector>
+
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/number/cgal.hpp"
+
+namespace test_shapes {
+
+using influence2d::point;
+using influence2d::polygon;
+using influence2d::ring_input;
+using influence2d::ring_role;
+
+/// Every number type the detector is tested with.
+#define INFLUENCE2D_NUMBER_TYPES float, double, long double, influence2d::exact_rational
+
+inline ring_input ring(std::vector<point<double>> v, ring_role role = ring_role::outer) {
+    return ring_input{std::move(v), role};
+}
+
+/// The axis-parallel square [x, x+s] x [y, y+s], counter-clockwise from (x, y).
+inline ring_input square_ring(double x, double y, double s, ring_role role = ring_role::outer) {
+    return ring({{x, y}, {x + s, y}, {x + s, y + s}, {x, y + s}}, role);
+}
+
+inline polygon square(double x, double y, double s) { return polygon({square_ring(x, y, s)}); }
+
+/// A square [0,8]^2 with the square hole [2,6]^2.
+inline polygon square_with_hole() {
+    return polygon({square_ring(0, 0, 8), square_ring(2, 2, 4, ring_role::hole)});
+}
+
+/// A C shape whose centroid lies in its opening:
+///   (0,6)+------+(6,6)
+///        | +----+(6,5)
+///        | |(1,5)
+///        | |(1,1)
+///        | +----+(6,1)
+///   (0,0)+------+(6,0)
+inline polygon c_shape() {
+    return polygon({ring({{0, 0}, {6, 0}, {6, 1}, {1, 1}, {1, 5}, {6, 5}, {6, 6}, {0, 6}})});
+}
+
+}  // namespace test_shapes
