@@ -10,6 +10,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <filesystem>
 #include <fstream>
 #include <ostream>
 #include <string>
@@ -87,8 +88,14 @@ inline std::string format_number(double x) {
 inline std::vector<pose> read_poses_csv(const std::string& path) {
     using namespace csv_detail;
     auto fail = [&](const std::string& what) -> void { throw invalid_input(path + ": " + what); };
+    const std::string too_large =
+        "file is larger than " + std::to_string(max_csv_file_bytes >> 20) + " MiB";
     std::ifstream in(path, std::ios::binary);
     if (!in) fail("cannot open file");
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) fail("is a directory");
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec && size > max_csv_file_bytes) fail(too_large);
 
     std::vector<pose> poses;
     std::string line;
@@ -97,8 +104,7 @@ inline std::vector<pose> read_poses_csv(const std::string& path) {
     while (std::getline(in, line)) {
         ++line_no;
         bytes += line.size() + 1;
-        if (bytes > max_csv_file_bytes + 1)
-            fail("file is larger than " + std::to_string(max_csv_file_bytes >> 20) + " MiB");
+        if (bytes > max_csv_file_bytes + 1) fail(too_large);
         const std::string place = "line " + std::to_string(line_no);
         std::string_view text = line;
         if (line_no == 1 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <exception>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <string_view>
@@ -102,7 +103,7 @@ inline void check_coordinate_tuples(std::string_view source, const std::string& 
             }
         } else {
             const bool in_ring = depth == ring_depth && any_ring;
-            if (c == ')' && prev == ',')
+            if (c == ')' && prev == ',' && words == 0)
                 fail(source, (in_ring ? ring_place(ring) + ": " : std::string()) +
                                  "empty element after ','");
             if (in_ring && !(c == ')' && prev == '(' && words == 0)) {
@@ -131,7 +132,7 @@ inline void append_ring(std::string_view source, const bg_ring& r, ring_role rol
     }
     const bg_point& a = r.front();
     const bg_point& b = r.back();
-    if (r.size() < 2 || a.x() != b.x() || a.y() != b.y())
+    if (a.x() != b.x() || a.y() != b.y())
         fail(source, ring_place(index) + " is not closed: first point (" +
                          format_coordinate(a.x()) + " " + format_coordinate(a.y()) +
                          ") differs from last point (" + format_coordinate(b.x()) + " " +
@@ -205,16 +206,20 @@ inline polygon read_wkt(std::string_view text, std::string_view source = "<text>
 /// Reads a polygon from a WKT file (see read_wkt); messages start with `path`.
 /// Files over max_wkt_file_bytes are refused.
 inline polygon read_wkt_file(const std::string& path) {
+    const std::string too_large =
+        "file is larger than " + std::to_string(max_wkt_file_bytes >> 20) + " MiB";
     std::ifstream in(path, std::ios::binary);
     if (!in) wkt_detail::fail(path, "cannot open file");
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) wkt_detail::fail(path, "is a directory");
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec && size > max_wkt_file_bytes) wkt_detail::fail(path, too_large);
     std::string text;
     std::array<char, 1 << 16> buf{};
     while (in) {
         in.read(buf.data(), static_cast<std::streamsize>(buf.size()));
         const auto got = static_cast<std::size_t>(in.gcount());
-        if (text.size() + got > max_wkt_file_bytes)
-            wkt_detail::fail(path, "file is larger than " +
-                                       std::to_string(max_wkt_file_bytes >> 20) + " MiB");
+        if (text.size() + got > max_wkt_file_bytes) wkt_detail::fail(path, too_large);
         text.append(buf.data(), got);
     }
     if (in.bad()) wkt_detail::fail(path, "read error");

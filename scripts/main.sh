@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# The main job: installs what is missing, builds, and runs the paper's worst
+# case (irregular contour polygons) on the circular and the linear trajectory,
+# in double and in exact arithmetic, with the sound and the paper-literal
+# detectors, and prints a summary table. Outputs go to build/main-job/.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+bash "$root/scripts/deps.sh"
+cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$root/build" -j "$(nproc)" --target influence2d_cli >/dev/null
+tool="$root/build/src/influence2d"
+data="$root/data/families"
+out="$root/build/main-job"
+rm -rf "$out"
+mkdir -p "$out"
+
+# run NAME ARGS...: one collide run; prints one table row from its summary.
+run() {
+    local name=$1
+    shift
+    local log="$out/$name.log"
+    "$tool" collide "$@" --out "$out/$name.csv" >"$log"
+    local frames collisions first per_frame
+    frames=$(awk -F': *' '/^frames:/ {print $2}' "$log")
+    collisions=$(awk -F': *' '/^collisions:/ {print $2}' "$log")
+    first=$(awk -F': *' '/^first collision:/ {print $2}' "$log")
+    per_frame=$(awk -F': *' '/^time per frame:/ {print $2}' "$log")
+    printf '%-34s %8s %10s %-16s %s\n' "$name" "$frames" "$collisions" "${first:-none}" "$per_frame"
+}
+
+# agree A B: frames on which two runs' answers differ.
+agree() {
+    paste -d, "$out/$1.csv" "$out/$2.csv" | awk -F, 'NR > 1 && $2 != $4 {n++} END {print n + 0}'
+}
+
+echo "influence2d main job: contour polygons (the paper's hardest family), $(date -u +%Y-%m-%d)"
+echo "machine: $(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2 / 1048576}' /proc/meminfo), $(uname -m)"
+echo
+printf '%-34s %8s %10s %-16s %s\n' run frames collisions "first collision" "time per frame"
+for pair in "64 64" "1024 8" "8 1024" "256 256"; do
+    set -- $pair
+    s=$1 m=$2
+    for traj in circular linear; do
+        for nt in double exact; do
+            run "${traj}_${s}x${m}_${nt}" --static "$data/contour_$s.wkt" --moving "$data/contour_$m.wkt" \
+                --trajectory "$traj" --number-type "$nt"
+        done
+        run "${traj}_${s}x${m}_paper" --static "$data/contour_$s.wkt" --moving "$data/contour_$m.wkt" \
+            --trajectory "$traj" --number-type double --algorithm paper
+    done
+done
+echo
+echo "disagreements with the exact answer (frames):"
+for pair in "64 64" "1024 8" "8 1024" "256 256"; do
+    set -- $pair
+    for traj in circular linear; do
+        base="${traj}_$1x$2"
+        printf '  %-22s double: %s   paper-literal: %s\n' "$base" "$(agree "${base}_double" "${base}_exact")" \
+            "$(agree "${base}_paper" "${base}_exact")"
+    done
+done
+echo
+echo "per-frame answers: $out/*.csv"

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds, and runs the test suite twice: an optimised
+# build, then an AddressSanitizer + UBSan build.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+bash "$root/scripts/deps.sh"
+bash "$root/scripts/build.sh" "$root/build"
+(cd "$root/build" && ctest --output-on-failure -j "$(nproc)")
+bash "$root/scripts/build.sh" "$root/build-sanitize" -DINFLUENCE2D_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
+(cd "$root/build-sanitize" && ctest --output-on-failure -j "$(nproc)")

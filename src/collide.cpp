@@ -1,0 +1,299 @@
+// `influence2d collide`: runs a detector over a sequence of poses of the moving
+// polygon and reports the frames that collide.
+
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "commands.hpp"
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/core/pose.hpp"
+#include "influence2d/detect/brute_force.hpp"
+#include "influence2d/detect/detector.hpp"
+#include "influence2d/detect/paper_detector.hpp"
+#include "influence2d/detect/result.hpp"
+#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/io/csv.hpp"
+#include "influence2d/io/wkt.hpp"
+#include "influence2d/number/cgal.hpp"
+
+namespace influence2d::cli {
+
+namespace {
+
+struct collide_options {
+    std::string static_path;
+    std::string moving_path;
+    std::string poses_path;
+    std::string trajectory;
+    std::size_t frames = 0;  // 0: the trajectory's default
+    double gap = 9.0;
+    std::string number_type = "double";
+    std::string algorithm = "sound";
+    std::string shape = "capsule";
+    double distance = 0.0;
+    bool witness = false;
+    std::string out;
+};
+
+struct run_result {
+    std::vector<frame_result> frames;
+    double seconds = 0;
+};
+
+/// Builds the detector (not timed), then times the frame loop alone.
+template <template <class> class Detector, class NT>
+run_result run_frames(const polygon& a, const polygon& b, const std::vector<pose>& poses,
+                      const detector_options& options) {
+    Detector<NT> det(a, b, options);
+    run_result r;
+    r.frames.resize(poses.size());
+    const auto start = std::chrono::steady_clock::now();
+    for (std::size_t i = 0; i < poses.size(); ++i) r.frames[i] = det.collide(poses[i]);
+    const auto stop = std::chrono::steady_clock::now();
+    r.seconds = std::chrono::duration<double>(stop - start).count();
+    return r;
+}
+
+template <class NT>
+run_result run_algorithm(const std::string& algorithm, const polygon& a, const polygon& b,
+                         const std::vector<pose>& poses, const detector_options& options) {
+    if (algorithm == "paper") return run_frames<paper_detector, NT>(a, b, poses, options);
+    if (algorithm == "brute-force") return run_frames<brute_force_detector, NT>(a, b, poses, options);
+    return run_frames<detector, NT>(a, b, poses, options);
+}
+
+run_result run(const std::string& number_type, const std::string& algorithm, const polygon& a,
+               const polygon& b, const std::vector<pose>& poses, const detector_options& options) {
+    if (number_type == "float") return run_algorithm<float>(algorithm, a, b, poses, options);
+    if (number_type == "long-double")
+        return run_algorithm<long double>(algorithm, a, b, poses, options);
+    if (number_type == "exact") return run_algorithm<exact_rational>(algorithm, a, b, poses, options);
+    return run_algorithm<double>(algorithm, a, b, poses, options);
+}
+
+/// Checks that `out` can be created: its directory exists and it is not a
+/// directory itself. Returns the reason it cannot, or "".
+std::string check_output_path(const std::string& out) {
+    namespace fs = std::filesystem;
+    const fs::path path(out);
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) return out + ": is a directory";
+    const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+    if (!fs::is_directory(dir, ec)) return out + ": directory " + dir.string() + " does not exist";
+    return {};
+}
+
+/// Writes the frames to `out` through `out.tmp` in the same directory, renamed
+/// into place: a failure leaves neither a partial nor a changed file.
+void write_frames_file(const std::string& out, const std::vector<frame_result>& frames,
+                       bool witness) {
+    const std::string temp = out + ".tmp";
+    std::error_code ec;
+    {
+        std::ofstream file(temp, std::ios::binary | std::ios::trunc);
+        if (!file) throw std::runtime_error(temp + ": cannot open file for writing");
+        write_frames_csv(file, frames, witness);
+        file.close();
+        if (!file) {
+            std::filesystem::remove(temp, ec);
+            throw std::runtime_error(temp + ": write error");
+        }
+    }
+    std::filesystem::rename(temp, out, ec);
+    if (ec) {
+        const std::string why = ec.message();
+        std::filesystem::remove(temp, ec);
+        throw std::runtime_error(out + ": cannot rename " + temp + " into place: " + why);
+    }
+}
+
+std::string format_fixed(double x, int digits) {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(digits) << x;
+    return s.str();
+}
+
+void run_collide(const collide_options& o) {
+    // Read every input and check the output path first; report all problems at once.
+    std::vector<std::string> errors;
+    polygon a, b;
+    std::vector<pose> poses;
+    try {
+        a = read_wkt_file(o.static_path);
+    } catch (const invalid_input& e) {
+        errors.emplace_back(e.what());
+    }
+    try {
+        b = read_wkt_file(o.moving_path);
+    } catch (const invalid_input& e) {
+        errors.emplace_back(e.what());
+    }
+    if (!o.poses_path.empty()) {
+        try {
+            poses = read_poses_csv(o.poses_path);
+        } catch (const invalid_input& e) {
+            errors.emplace_back(e.what());
+        }
+    }
+    if (!o.out.empty()) {
+        const std::string why = check_output_path(o.out);
+        if (!why.empty()) errors.push_back(why);
+    }
+    if (!errors.empty()) {
+        std::string all = errors.front();
+        for (std::size_t i = 1; i < errors.size(); ++i) all += "\n" + errors[i];
+        throw invalid_input(all);
+    }
+    if (o.poses_path.empty()) {
+        const bool circular = o.trajectory == "circular";
+        const std::size_t frames = o.frames != 0 ? o.frames : circular ? 90000 : 9000;
+        poses = circular ? circular_trajectory(a, b, frames, o.gap)
+                         : linear_trajectory(a, b, frames, o.gap);
+    }
+
+    detector_options options;
+    options.distance = o.distance;
+    options.witness = o.witness;
+    options.shape = o.shape == "band" ? extended_area::band : extended_area::capsule;
+
+    const run_result r = run(o.number_type, o.algorithm, a, b, poses, options);
+
+    std::size_t collisions = 0, first = 0;
+    bool any = false;
+    for (std::size_t i = 0; i < r.frames.size(); ++i) {
+        if (!r.frames[i].collides) continue;
+        if (!any) first = i;
+        any = true;
+        ++collisions;
+    }
+
+    if (!o.out.empty()) write_frames_file(o.out, r.frames, o.witness);
+
+    const double total_ms = r.seconds * 1e3;
+    std::cout << "frames:          " << r.frames.size() << "\n"
+              << "collisions:      " << collisions << "\n"
+              << "first collision: " << (any ? "frame " + std::to_string(first) : "none") << "\n"
+              << "number type:     " << o.number_type << "\n"
+              << "algorithm:       " << o.algorithm << "\n"
+              << "time per frame:  "
+              << (r.frames.empty()
+                      ? std::string("n/a")
+                      : format_fixed(r.seconds * 1e6 / static_cast<double>(r.frames.size()), 3) +
+                            " us")
+              << "   (total " << format_fixed(total_ms, total_ms >= 1 ? 1 : 3) << " ms)\n";
+    if (!o.out.empty()) std::cout << "frames written:  " << o.out << "\n";
+}
+
+/// A CLI11 check: the value is a finite number >= 0.
+CLI::Validator finite_non_negative() {
+    return CLI::Validator(
+        [](std::string& value) -> std::string {
+            const char* begin = value.c_str();
+            char* end = nullptr;
+            const double x = std::strtod(begin, &end);
+            if (end == begin || *end != '\0' || !std::isfinite(x) || x < 0)
+                return "must be a finite number >= 0, got '" + value + "'";
+            return {};
+        },
+        "FINITE>=0");
+}
+
+}  // namespace
+
+void register_collide(CLI::App& app) {
+    auto o = std::make_shared<collide_options>();
+    CLI::App* sub = app.add_subcommand(
+        "collide",
+        "Run a collision detector between a static polygon and a moving polygon over a "
+        "sequence of poses of the moving one (from a CSV file or one of the paper's "
+        "trajectories); print a summary and optionally write one line per frame.");
+
+    sub->add_option("--static", o->static_path,
+                    "WKT file (POLYGON or MULTIPOLYGON) of the static polygon A")
+        ->required()
+        ->type_name("A.wkt");
+    sub->add_option("--moving", o->moving_path,
+                    "WKT file (POLYGON or MULTIPOLYGON) of the moving polygon B, in its own frame")
+        ->required()
+        ->type_name("B.wkt");
+
+    CLI::Option_group* motion =
+        sub->add_option_group("Poses", "Where the moving polygon is at each frame (give exactly one)");
+    CLI::Option* poses_opt =
+        motion
+            ->add_option("--poses", o->poses_path,
+                         "CSV file with the header tx,ty,theta and one pose per line: B is "
+                         "rotated by theta radians about its own origin, then moved by (tx, ty)")
+            ->type_name("POSES.csv");
+    CLI::Option* trajectory_opt =
+        motion
+            ->add_option("--trajectory", o->trajectory,
+                         "The paper's trajectories: circular (B orbits A close by without "
+                         "touching, 90000 frames) or linear (B approaches A and ends in "
+                         "collision, 9000 frames)")
+            ->check(CLI::IsMember({"circular", "linear"}))
+            ->type_name("KIND");
+    motion->require_option(1);
+    poses_opt->excludes(trajectory_opt);
+
+    sub->add_option("--frames", o->frames,
+                    "Number of frames of the trajectory (only with --trajectory; default 90000 "
+                    "for circular, 9000 for linear)")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
+        ->needs(trajectory_opt)
+        ->type_name("N");
+    sub->add_option("--gap", o->gap,
+                    "Distance between the bounding circles of A and B at the start of the "
+                    "trajectory (only with --trajectory)")
+        ->capture_default_str()
+        ->check(finite_non_negative())
+        ->needs(trajectory_opt)
+        ->type_name("G");
+    sub->add_option("--number-type", o->number_type,
+                    "Arithmetic of the detector's decisions: float, double, long-double, or exact "
+                    "(CGAL rationals: exact answers, slower)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"float", "double", "long-double", "exact"}))
+        ->type_name("TYPE");
+    sub->add_option("--algorithm", o->algorithm,
+                    "Detector: sound (the method with its defects fixed), paper (Algorithm 3 "
+                    "as published, which can miss or invent collisions) or brute-force (every "
+                    "edge pair, the reference)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"sound", "paper", "brute-force"}))
+        ->type_name("ALGO");
+    sub->add_option("--extended-area", o->shape,
+                    "Shape of the extended influence area of an edge: capsule (points within "
+                    "the reach of the segment) or band (the paper's band with axis-parallel caps)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"capsule", "band"}))
+        ->type_name("SHAPE");
+    sub->add_option("--distance", o->distance,
+                    "Separation distance D: a frame collides when the polygons are at distance "
+                    "<= D (0: they intersect or touch)")
+        ->capture_default_str()
+        ->check(finite_non_negative())
+        ->type_name("D");
+    sub->add_flag("--witness", o->witness,
+                  "Also report, per frame, the pairs (static edge : moving edge) within the "
+                  "distance, edges numbered in input order from 0, rings one after another");
+    sub->add_option("--out", o->out,
+                    "Write one CSV line per frame (frame,collides[,edges]) to this file; it is "
+                    "replaced only when the whole run succeeds")
+        ->type_name("FRAMES.csv");
+
+    sub->callback([o] { run_collide(*o); });
+}
+
+}  // namespace influence2d::cli

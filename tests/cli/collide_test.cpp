@@ -1,0 +1,296 @@
+// `influence2d collide`, run as a separate process on files in a temporary directory.
+
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string cli_path = INFLUENCE2D_CLI_PATH;
+
+const char* const unit_square = "POLYGON((0 0,1 0,1 1,0 1,0 0))\n";
+// Overlapping, touching along x = 1, apart.
+const char* const three_poses = "tx,ty,theta\n0.5,0,0\n1,0,0\n2.5,0,0\n";
+
+std::string quote(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+/// A fresh directory under the system's temporary directory, removed at the end.
+class temp_dir {
+public:
+    temp_dir() {
+        static std::atomic<int> counter{0};
+        const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
+        path_ = fs::temp_directory_path() /
+                ("influence2d_cli_" + std::to_string(stamp) + "_" + std::to_string(counter++));
+        fs::create_directories(path_);
+    }
+    ~temp_dir() {
+        std::error_code ec;
+        fs::remove_all(path_, ec);
+    }
+    temp_dir(const temp_dir&) = delete;
+    temp_dir& operator=(const temp_dir&) = delete;
+
+    fs::path file(const std::string& name, const std::string& content) const {
+        const fs::path p = path_ / name;
+        std::ofstream(p, std::ios::binary) << content;
+        return p;
+    }
+    fs::path operator/(const std::string& name) const { return path_ / name; }
+
+private:
+    fs::path path_;
+};
+
+struct run_result {
+    int exit_code = -1;
+    std::string out;
+    std::string err;
+};
+
+/// Runs the tool with `args` (already quoted), capturing stdout and stderr.
+run_result run_cli(const temp_dir& dir, const std::string& args) {
+    REQUIRE(!cli_path.empty());
+    const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+    const std::string command =
+        quote(cli_path) + " " + args + " >" + quote(out.string()) + " 2>" + quote(err.string());
+    const int status = std::system(command.c_str());
+    run_result r;
+    REQUIRE(status != -1);
+    REQUIRE(WIFEXITED(status));
+    r.exit_code = WEXITSTATUS(status);
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+}
+
+std::string scene_args(const fs::path& a, const fs::path& b) {
+    return "collide --static " + quote(a.string()) + " --moving " + quote(b.string());
+}
+
+}  // namespace
+
+TEST_CASE("cli collide: poses file gives a frames file with header and one row per pose", "[cli]") {
+    const temp_dir dir;
+    const auto a = dir.file("A.wkt", unit_square);
+    const auto poses = dir.file("poses.csv", three_poses);
+    const auto frames = dir / "frames.csv";
+
+    const auto r = run_cli(dir, scene_args(a, a) + " --poses " + quote(poses.string()) +
+                                    " --out " + quote(frames.string()));
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.err.empty());
+    CHECK(r.out.find("frames:          3\n") != std::string::npos);
+    CHECK(r.out.find("collisions:      2\n") != std::string::npos);
+    CHECK(r.out.find("first collision: frame 0\n") != std::string::npos);
+    CHECK(r.out.find("number type:     double\n") != std::string::npos);
+    CHECK(r.out.find("algorithm:       sound\n") != std::string::npos);
+    CHECK(r.out.find("time per frame:  ") != std::string::npos);
+    const auto lines = lines_of(slurp(frames));
+    REQUIRE(lines.size() == 4);
+    CHECK(lines[0] == "frame,collides");
+    CHECK(lines[1] == "0,1");
+    CHECK(lines[2] == "1,1");
+    CHECK(lines[3] == "2,0");
+    CHECK(!fs::exists(frames.string() + ".tmp"));
+}
+
+TEST_CASE("cli collide: trajectories give the requested number of frames", "[cli]") {
+    const temp_dir dir;
+    const auto a = dir.file("A.wkt", "POLYGON((0 0,10 0,10 10,0 10,0 0))");
+    const auto b = dir.file("B.wkt", "POLYGON((0 0,2 0,1 2,0 0))");
+    const auto frames = dir / "frames.csv";
+
+    auto r = run_cli(dir, scene_args(a, b) + " --trajectory linear --frames 40 --witness --out " +
+                              quote(frames.string()));
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    auto lines = lines_of(slurp(frames));
+    REQUIRE(lines.size() == 41);
+    CHECK(lines[0] == "frame,collides,edges");
+    CHECK(lines[1] == "0,0,");                      // starts apart
+    CHECK(lines[40].rfind("39,1", 0) == 0);          // ends in collision
+
+    r = run_cli(dir, scene_args(a, b) + " --trajectory circular --frames 64 --gap 1 --out " +
+                         quote(frames.string()));
+    REQUIRE(r.exit_code == 0);
+    lines = lines_of(slurp(frames));
+    REQUIRE(lines.size() == 65);
+    CHECK(r.out.find("collisions:      0\n") != std::string::npos);
+    CHECK(r.out.find("first collision: none\n") != std::string::npos);
+}
+
+TEST_CASE("cli collide: the tiny scene for every number type with sound and brute-force", "[cli]") {
+    const temp_dir dir;
+    const auto a = dir.file("A.wkt", unit_square);
+    const auto poses = dir.file("poses.csv", three_poses);
+    const auto frames = dir / "frames.csv";
+    const std::regex pair_list(R"(\d+:\d+(;\d+:\d+)*)");
+    for (const char* type : {"float", "double", "long-double", "exact"}) {
+        for (const char* algorithm : {"sound", "brute-force"}) {
+            for (const bool witness : {false, true}) {
+                INFO(type << " " << algorithm << (witness ? " --witness" : ""));
+                const auto r = run_cli(dir, scene_args(a, a) + " --poses " + quote(poses.string()) +
+                                                " --number-type " + type + " --algorithm " +
+                                                algorithm + (witness ? " --witness" : "") +
+                                                " --out " + quote(frames.string()));
+                INFO(r.err);
+                REQUIRE(r.exit_code == 0);
+                CHECK(r.out.find(std::string("number type:     ") + type + "\n") !=
+                      std::string::npos);
+                CHECK(r.out.find(std::string("algorithm:       ") + algorithm + "\n") !=
+                      std::string::npos);
+                const auto lines = lines_of(slurp(frames));
+                REQUIRE(lines.size() == 4);
+                if (!witness) {
+                    CHECK(lines[0] == "frame,collides");
+                    CHECK(lines[1] == "0,1");
+                    CHECK(lines[2] == "1,1");
+                    CHECK(lines[3] == "2,0");
+                    continue;
+                }
+                CHECK(lines[0] == "frame,collides,edges");
+                REQUIRE(lines[1].rfind("0,1,", 0) == 0);
+                CHECK(std::regex_match(lines[1].substr(4), pair_list));
+                // Touching along x = 1: static edges 0 (bottom), 1 (right), 2 (top)
+                // meet moving edges 0 (bottom), 2 (top), 3 (left, on x = 1).
+                CHECK(lines[2] == "1,1,0:0;0:3;1:0;1:2;1:3;2:2;2:3");
+                CHECK(lines[3] == "2,0,");
+            }
+        }
+    }
+}
+
+TEST_CASE("cli collide: the paper's algorithm runs", "[cli]") {
+    const temp_dir dir;
+    const auto a = dir.file("A.wkt", unit_square);
+    const auto poses = dir.file("poses.csv", three_poses);
+    for (const char* shape : {"capsule", "band"}) {
+        const auto r = run_cli(dir, scene_args(a, a) + " --poses " + quote(poses.string()) +
+                                        " --algorithm paper --extended-area " + shape);
+        INFO(r.err);
+        CHECK(r.exit_code == 0);
+        CHECK(r.out.find("algorithm:       paper\n") != std::string::npos);
+    }
+}
+
+TEST_CASE("cli collide: bad WKT exits 2 naming the place and writes no output file", "[cli]") {
+    const temp_dir dir;
+    const auto a = dir.file("A.wkt", unit_square);
+    const auto bad = dir.file("bad.wkt", "POLYGON((0 0,1 0,1 1,0 1))");
+    const auto poses = dir.file("poses.csv", three_poses);
+    const auto frames = dir / "frames.csv";
+    const auto r = run_cli(dir, scene_args(a, bad) + " --poses " + quote(poses.string()) +
+                                    " --out " + quote(frames.string()));
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("influence2d: error: " + bad.string() + ": ring 0 is not closed") !=
+          std::string::npos);
+    CHECK(r.out.empty());
+    CHECK(!fs::exists(frames));
+    CHECK(!fs::exists(frames.string() + ".tmp"));
+}
+
+TEST_CASE("cli collide: bad CSV exits 2 leaving the output untouched and reports every error",
+          "[cli]") {
+    const temp_dir dir;
+    const auto a = dir.file("A.wkt", unit_square);
+    const auto bad_wkt = dir.file("bad.wkt", "POLYGON((0 0,1 0,nan 1,0 0))");
+    const auto poses = dir.file("poses.csv", "tx,ty,theta\n1,2,3\n1,2,abc\n");
+    const auto frames = dir.file("frames.csv", "previous content\n");
+
+    auto r = run_cli(dir, scene_args(a, a) + " --poses " + quote(poses.string()) + " --out " +
+                              quote(frames.string()));
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("influence2d: error: " + poses.string() +
+                     ": line 3, column theta: \"abc\" is not a number") != std::string::npos);
+    CHECK(slurp(frames) == "previous content\n");
+    CHECK(!fs::exists(frames.string() + ".tmp"));
+
+    // Every bad input is reported in one run.
+    r = run_cli(dir, scene_args(bad_wkt, a) + " --poses " + quote(poses.string()) + " --out " +
+                         quote(frames.string()));
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find(bad_wkt.string() + ": ring 0, vertex 2: coordinate is not a finite number") !=
+          std::string::npos);
+    CHECK(r.err.find(poses.string() + ": line 3") != std::string::npos);
+    CHECK(slurp(frames) == "previous content\n");
+
+    // A missing poses file and an output directory that does not exist.
+    r = run_cli(dir, scene_args(a, a) + " --poses " + quote((dir / "none.csv").string()) +
+                         " --out " + quote((dir / "no_dir" / "f.csv").string()));
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("none.csv: cannot open file") != std::string::npos);
+    CHECK(r.err.find("does not exist") != std::string::npos);
+    CHECK(!fs::exists(dir / "no_dir"));
+}
+
+TEST_CASE("cli collide: usage errors exit 2", "[cli]") {
+    const temp_dir dir;
+    const auto a = dir.file("A.wkt", unit_square);
+    const auto poses = dir.file("poses.csv", three_poses);
+    const std::string base = scene_args(a, a);
+    const std::string p = " --poses " + quote(poses.string());
+    CHECK(run_cli(dir, "").exit_code == 2);                                     // no subcommand
+    CHECK(run_cli(dir, base).exit_code == 2);                                   // no poses
+    CHECK(run_cli(dir, base + p + " --trajectory linear").exit_code == 2);      // both
+    CHECK(run_cli(dir, base + p + " --frames 10").exit_code == 2);              // frames w/o trajectory
+    CHECK(run_cli(dir, base + " --trajectory spiral").exit_code == 2);
+    CHECK(run_cli(dir, base + " --trajectory linear --frames 0").exit_code == 2);
+    CHECK(run_cli(dir, base + p + " --distance -1").exit_code == 2);
+    CHECK(run_cli(dir, base + p + " --distance nan").exit_code == 2);
+    CHECK(run_cli(dir, base + p + " --distance inf").exit_code == 2);
+    CHECK(run_cli(dir, base + p + " --number-type int").exit_code == 2);
+    CHECK(run_cli(dir, base + p + " --algorithm fast").exit_code == 2);
+    CHECK(run_cli(dir, base + p + " --extended-area disk").exit_code == 2);
+    CHECK(run_cli(dir, "collide --moving " + quote(a.string()) + p).exit_code == 2);
+    // And the same arguments with a valid distance succeed.
+    CHECK(run_cli(dir, base + p + " --distance 0.25").exit_code == 0);
+}
+
+TEST_CASE("cli collide: --help exits 0 and documents every option", "[cli]") {
+    const temp_dir dir;
+    const auto r = run_cli(dir, "collide --help");
+    CHECK(r.exit_code == 0);
+    for (const char* option :
+         {"--static", "--moving", "--poses", "--trajectory", "--frames", "--gap", "--number-type",
+          "--algorithm", "--extended-area", "--distance", "--witness", "--out", "circular",
+          "linear", "float", "long-double", "exact", "brute-force", "paper", "capsule", "band"}) {
+        INFO(option);
+        CHECK(r.out.find(option) != std::string::npos);
+    }
+    const auto top = run_cli(dir, "--help");
+    CHECK(top.exit_code == 0);
+    CHECK(top.out.find("collide") != std::string::npos);
+    CHECK(top.out.find("generate") != std::string::npos);
+}

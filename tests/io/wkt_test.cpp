@@ -1,0 +1,217 @@
+// Reading and writing polygons as WKT.
+
+#include <catch2/catch.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "influence2d/io/wkt.hpp"
+
+using namespace influence2d;
+
+namespace {
+
+/// The message of the invalid_input thrown by f, or "" when none is thrown.
+template <class F>
+std::string error_of(F&& f) {
+    try {
+        f();
+    } catch (const invalid_input& e) {
+        return e.what();
+    }
+    return "";
+}
+
+std::string wkt_error(const std::string& text) {
+    return error_of([&] { (void)read_wkt(text); });
+}
+
+std::filesystem::path temp_file(const std::string& name, const std::string& content) {
+    static std::atomic<int> counter{0};
+    const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
+    const auto path = std::filesystem::temp_directory_path() /
+                      ("influence2d_wkt_" + std::to_string(stamp) + "_" +
+                       std::to_string(counter++) + "_" + name);
+    std::ofstream(path, std::ios::binary) << content;
+    return path;
+}
+
+}  // namespace
+
+TEST_CASE("wkt: POLYGON with a hole", "[io][wkt]") {
+    const polygon p = read_wkt("POLYGON((0 0,10 0,10 10,0 10,0 0),(2 2,2 4,4 4,4 2,2 2))");
+    REQUIRE(p.ring_count() == 2);
+    CHECK(p.role(0) == ring_role::outer);
+    CHECK(p.role(1) == ring_role::hole);
+    CHECK(p.ring_end(0) - p.ring_begin(0) == 4);  // closing point dropped
+    CHECK(p.ring_end(1) - p.ring_begin(1) == 4);
+    CHECK(p.size() == 8);
+    CHECK(p.area() == Approx(96.0L));
+}
+
+TEST_CASE("wkt: keywords in any case with surrounding and inner white space", "[io][wkt]") {
+    const polygon p = read_wkt(" \n\tpolygon (\n(0 0,\t1 0,\r\n1 1,0 0)\n)\r\n ");
+    REQUIRE(p.size() == 3);
+    CHECK(p.vertex(1).x == 1.0);
+    const polygon m = read_wkt("MultiPolygon(((0 0,1 0,1 1,0 0)))");
+    CHECK(m.size() == 3);
+}
+
+TEST_CASE("wkt: MULTIPOLYGON rings in text order with exteriors outer and interiors holes",
+          "[io][wkt]") {
+    const polygon p = read_wkt(
+        "MULTIPOLYGON(((0 0,10 0,10 10,0 10,0 0),(2 2,2 4,4 4,4 2,2 2)),"
+        "((20 0,30 0,30 10,20 0)))");
+    REQUIRE(p.ring_count() == 3);
+    CHECK(p.role(0) == ring_role::outer);
+    CHECK(p.role(1) == ring_role::hole);
+    CHECK(p.role(2) == ring_role::outer);
+    CHECK(p.ring_end(2) - p.ring_begin(2) == 3);
+    CHECK(p.vertex(p.ring_begin(2)).x == 20.0);
+}
+
+TEST_CASE("wkt: a clockwise outer ring is stored counter-clockwise and source_edge maps back",
+          "[io][wkt]") {
+    // Input edges: 0 (0 0)-(0 1), 1 (0 1)-(1 1), 2 (1 1)-(1 0), 3 (1 0)-(0 0): clockwise.
+    const std::vector<point<double>> in{{0, 0}, {0, 1}, {1, 1}, {1, 0}};
+    const polygon p = read_wkt("POLYGON((0 0,0 1,1 1,1 0,0 0))");
+    REQUIRE(p.size() == 4);
+    CHECK(p.area() > 0);
+    // Stored counter-clockwise: the input order reversed.
+    CHECK(p.vertex(0) == in[3]);
+    CHECK(p.vertex(1) == in[2]);
+    CHECK(p.vertex(2) == in[1]);
+    CHECK(p.vertex(3) == in[0]);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const std::size_t s = p.source_edge(i);
+        REQUIRE(s < 4);
+        // Stored edge i is input edge s run backwards.
+        CHECK(p.vertex(i) == in[(s + 1) % 4]);
+        CHECK(p.vertex(p.next(i)) == in[s]);
+    }
+    CHECK(p.source_edge(0) == 2);
+
+    // A counter-clockwise hole is stored clockwise.
+    const polygon h = read_wkt("POLYGON((0 0,10 0,10 10,0 10,0 0),(2 2,4 2,4 4,2 4,2 2))");
+    CHECK(h.vertex(4) == point<double>{2, 4});
+    CHECK(h.source_edge(4) == 4 + 2);
+}
+
+TEST_CASE("wkt: rejects an unclosed ring and names it", "[io][wkt]") {
+    const std::string e = wkt_error("POLYGON((0 0,1 0,1 1))");
+    CHECK(e.find("<text>: ring 0 is not closed") == 0);
+    const std::string h = wkt_error("POLYGON((0 0,9 0,9 9,0 0),(1 1,2 1,2 2,1 1),(3 3,4 3,4 4))");
+    CHECK(h.find("ring 2 is not closed") != std::string::npos);
+    const std::string m = wkt_error("MULTIPOLYGON(((0 0,1 0,1 1,0 0)),((5 5,6 5,6 6)))");
+    CHECK(m.find("ring 1 is not closed") != std::string::npos);
+}
+
+TEST_CASE("wkt: rejects nan and inf and names ring and vertex", "[io][wkt]") {
+    CHECK(wkt_error("POLYGON((0 0,1 0,1 nan,0 0))") ==
+          "<text>: ring 0, vertex 2: coordinate is not a finite number");
+    CHECK(wkt_error("POLYGON((0 0,9 0,9 9,0 0),(1 1,inf 1,2 2,1 1))") ==
+          "<text>: ring 1, vertex 1: coordinate is not a finite number");
+    // A non-finite first point is reported as such, not as an unclosed ring.
+    CHECK(wkt_error("POLYGON((nan 0,1 0,1 1,nan 0))") ==
+          "<text>: ring 0, vertex 0: coordinate is not a finite number");
+    CHECK(wkt_error("POLYGON((0 0,1 0,1 1e999,0 0))").find("<text>: parse error") == 0);
+}
+
+TEST_CASE("wkt: rejects a ring with fewer than three distinct vertices", "[io][wkt]") {
+    CHECK(wkt_error("POLYGON((0 0,1 0,0 0))") ==
+          "<text>: ring 0: fewer than three distinct vertices");
+    CHECK(wkt_error("POLYGON((0 0,1 1,1 1,0 0,0 0))") ==
+          "<text>: ring 0: fewer than three distinct vertices");
+    CHECK(wkt_error("POLYGON((0 0,9 0,9 9,0 0),(1 1))") ==
+          "<text>: ring 1: fewer than three distinct vertices");
+}
+
+TEST_CASE("wkt: rejects other geometry types and empty input", "[io][wkt]") {
+    CHECK(wkt_error("LINESTRING(0 0,1 1)") ==
+          "<text>: expected POLYGON or MULTIPOLYGON, found 'LINESTRING'");
+    CHECK(wkt_error("POINT(1 2)").find("found 'POINT'") != std::string::npos);
+    CHECK(wkt_error("GEOMETRYCOLLECTION(POLYGON((0 0,1 0,1 1,0 0)))")
+              .find("found 'GEOMETRYCOLLECTION'") != std::string::npos);
+    CHECK(wkt_error("") == "<text>: empty input: expected POLYGON or MULTIPOLYGON");
+    CHECK(wkt_error(" \n\t ") == "<text>: empty input: expected POLYGON or MULTIPOLYGON");
+    CHECK(wkt_error("POLYGON EMPTY") == "<text>: POLYGON is empty");
+    CHECK(wkt_error("multipolygon empty") == "<text>: MULTIPOLYGON is empty");
+    CHECK(wkt_error("POLYGON((),(0 0,1 0,1 1,0 0))") == "<text>: ring 0: empty ring");
+}
+
+TEST_CASE("wkt: rejects truncated text and trailing garbage", "[io][wkt]") {
+    CHECK(wkt_error("POLYGON((0 0,1 0").find("<text>: parse error: ") == 0);
+    CHECK(wkt_error("POLYGON((0 0,1 0,1 1,0 0)) garbage").find("<text>: parse error: ") == 0);
+    CHECK(wkt_error("POLYGON((0 0,1 0,1 1,0 0)))").find("<text>: parse error: ") == 0);
+    CHECK(wkt_error("POLYGON((0 0,1 0,1 1,0 0));").find("<text>: parse error: ") == 0);
+    CHECK(wkt_error("POLYGON((0 0,1 0,1 1,0 0))POLYGON((0 0,1 0,1 1,0 0))")
+              .find("<text>: parse error: ") == 0);
+    CHECK(wkt_error("POLYGON((0 0,1 0,1 x,0 0))").find("<text>: parse error: ") == 0);
+}
+
+TEST_CASE("wkt: rejects points without exactly two coordinates and empty elements",
+          "[io][wkt]") {
+    // Boost's reader would zero-fill, split into extra points or skip these.
+    CHECK(wkt_error("POLYGON((0 0,1 0,1 1 5,0 0))") ==
+          "<text>: ring 0, vertex 2: 3 coordinates, expected 2 (only x y is supported)");
+    CHECK(wkt_error("POLYGON((0 0,1,1 1,0 0))") ==
+          "<text>: ring 0, vertex 1: 1 coordinates, expected 2 (only x y is supported)");
+    CHECK(wkt_error("POLYGON((0 0,,1 0,1 1,0 0))") == "<text>: ring 0, vertex 1: missing coordinates");
+    CHECK(wkt_error("POLYGON((0 0,1 0,1 1,0 0,))") == "<text>: ring 0: empty element after ','");
+    CHECK(wkt_error("POLYGON((0 0,1 0,1 1,0 0),)") == "<text>: empty element after ','");
+    CHECK(wkt_error("MULTIPOLYGON(((0 0,1 0,1 1,0 0)),((5 5,6 5,6 6 6,5 5)))") ==
+          "<text>: ring 1, vertex 2: 3 coordinates, expected 2 (only x y is supported)");
+    CHECK(wkt_error("POLYGON M((0 0 1,1 0 1,1 1 1,0 0 1))").find("3 coordinates") !=
+          std::string::npos);
+}
+
+TEST_CASE("wkt: files name the source and missing files are reported", "[io][wkt]") {
+    const auto good = temp_file("good.wkt", "POLYGON((0 0,1 0,1 1,0 0))\n");
+    CHECK(read_wkt_file(good.string()).size() == 3);
+    const auto bad = temp_file("bad.wkt", "POLYGON((0 0,1 0,1 1,0 0),\n(0 0,1 0,nan 1,0 0))\n");
+    CHECK(error_of([&] { (void)read_wkt_file(bad.string()); }) ==
+          bad.string() + ": ring 1, vertex 2: coordinate is not a finite number");
+    const auto missing = std::filesystem::temp_directory_path() / "influence2d_no_such_file.wkt";
+    CHECK(error_of([&] { (void)read_wkt_file(missing.string()); }) ==
+          missing.string() + ": cannot open file");
+    std::filesystem::remove(good);
+    std::filesystem::remove(bad);
+    CHECK(error_of([] { (void)read_wkt_file(std::filesystem::temp_directory_path().string()); })
+              .find(": is a directory") != std::string::npos);
+}
+
+TEST_CASE("wkt: files over the size cap are refused before reading", "[io][wkt]") {
+    // A sparse file: no disk space used, refused on its size alone.
+    const auto huge = temp_file("huge.wkt", "POLYGON((0 0,1 0,1 1,0 0))");
+    std::filesystem::resize_file(huge, max_wkt_file_bytes + 1);
+    CHECK(error_of([&] { (void)read_wkt_file(huge.string()); }) ==
+          huge.string() + ": file is larger than 512 MiB");
+    std::filesystem::remove(huge);
+}
+
+TEST_CASE("wkt: to_wkt round-trips exactly with closed rings in stored orientation", "[io][wkt]") {
+    const double third = 1.0 / 3.0;
+    const polygon p(std::vector<ring_input>{
+        {{{0, 0}, {0, 10}, {10, 10}, {10, 0}}, ring_role::outer},  // clockwise
+        {{{2, 2}, {2, third}, {0.1, 0.2}}, ring_role::hole},
+    });
+    const std::string text = to_wkt(p);
+    CHECK(text.rfind("POLYGON((10 0,10 10,0 10,0 0,10 0),(", 0) == 0);
+    const polygon q = read_wkt(text);
+    REQUIRE(q.size() == p.size());
+    REQUIRE(q.ring_count() == 2);
+    for (std::size_t i = 0; i < p.size(); ++i) CHECK(q.vertex(i) == p.vertex(i));
+    CHECK(q.role(1) == ring_role::hole);
+
+    const polygon m = read_wkt(
+        "MULTIPOLYGON(((0 0,10 0,10 10,0 0),(1 0.5,9 8,9 0.5,1 0.5)),((20 0,30 0,30 1e-300,20 0)))");
+    const std::string mt = to_wkt(m);
+    CHECK(mt == "MULTIPOLYGON(((0 0,10 0,10 10,0 0),(1 0.5,9 8,9 0.5,1 0.5)),"
+                "((20 0,30 0,30 1e-300,20 0)))");
+    const polygon m2 = read_wkt(mt);
+    REQUIRE(m2.ring_count() == 3);
+    CHECK(m2.role(2) == ring_role::outer);
+}
