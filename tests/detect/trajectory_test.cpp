@@ -6,18 +6,27 @@
 
 using namespace influence2d;
 
-TEST_CASE("trajectory: circular orbit keeps the bounding circles apart and returns to the start", "[trajectory]") {
+TEST_CASE("trajectory: circular orbit stays gap-close without colliding, and returns to the start",
+          "[trajectory]") {
     const polygon a = test_shapes::c_shape(), b = test_shapes::square(0, 0, 1);
-    const auto poses = circular_trajectory(a, b, 3600, 9.0);
+    const double gap = 0.5;
+    const auto poses = circular_trajectory(a, b, 3600, gap);
     REQUIRE(poses.size() == 3600);
-    const double rho = bounding_radius(a, a.centroid()) + bounding_radius(b, b.centroid()) + 9.0;
+    // B's leftmost side is 0.5 from its centroid: the orbit radius is R_A + gap + 0.5.
+    const double rho = bounding_radius(a, a.centroid()) + gap + 0.5;
     detector<exact_rational> sound(a, b);
-    for (std::size_t k = 0; k < poses.size(); k += 7) {
+    detector_options near;
+    near.distance = gap * 1.01;
+    detector<double> within(a, b, near);
+    int close_frames = 0;
+    for (std::size_t k = 0; k < poses.size(); k += 3) {
         const rotation_pose t(poses[k]);
         const auto c = t.apply<double>(b.centroid());
         CHECK(std::hypot(c.x - a.centroid().x, c.y - a.centroid().y) == Approx(rho).epsilon(1e-12));
         CHECK_FALSE(sound.collide(poses[k]).collides);
+        close_frames += within.collide(poses[k]).collides;
     }
+    CHECK(close_frames > 0);  // A's far corners sweep past within about the gap
     CHECK(poses.front().theta == 0);
     CHECK(poses.back().theta == Approx(2 * 3.141592653589793 * 3599 / 3600));
 }

@@ -1,6 +1,7 @@
 #pragma once
 // The paper's trajectories (method.md section 8) as sequences of poses.
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -11,15 +12,21 @@
 
 namespace influence2d {
 
-/// B orbits A's centroid O_A: frame k is the rigid rotation by phi_k = 2 pi k / frames
-/// about O_A of B placed with its centroid at distance rho = R_A + r_B + gap to
-/// the right of O_A (R_A, r_B the bounding radii about the centroids). B turns
-/// with the orbit; the last frame is one step before the start. With gap > 0
-/// the bounding circles never meet, so no frame collides.
+/// B orbits A's centroid O_A, turning with the orbit: frame k is the rigid
+/// rotation by phi_k = 2 pi k / frames about O_A of B's starting placement, so
+/// the last frame is one step before the start. At the start B is unrotated,
+/// with its centroid on the horizontal through O_A, to the right, at the
+/// distance where the point of B nearest to O_A's side (its leftmost vertex) is
+/// R_A + gap from O_A (R_A: A's bounding radius about O_A). Seen from B, A turns
+/// about O_A inside the disk of radius R_A, so with gap > 0 no frame collides,
+/// and the polygons come within about `gap` whenever A's farthest vertices
+/// sweep past B.
 inline std::vector<pose> circular_trajectory(const polygon& a, const polygon& b, std::size_t frames = 90000,
                                              double gap = 9.0) {
     const point<double> o = a.centroid(), cb = b.centroid();
-    const double rho = bounding_radius(a, o) + bounding_radius(b, cb) + gap;
+    double reach_left = 0;  // how far B extends to the left of its centroid
+    for (const auto& v : b.vertices()) reach_left = std::max(reach_left, cb.x - v.x);
+    const double rho = bounding_radius(a, o) + gap + reach_left;
     std::vector<pose> poses;
     poses.reserve(frames);
     for (std::size_t k = 0; k < frames; ++k) {
