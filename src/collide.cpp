@@ -254,8 +254,9 @@ void register_collide(CLI::App& app) {
         ->needs(trajectory_opt)
         ->type_name("N");
     sub->add_option("--gap", o->gap,
-                    "Distance between the bounding circles of A and B at the start of the "
-                    "trajectory (only with --trajectory)")
+                    "Clearance of the trajectory (only with --trajectory): on the circular one, "
+                    "the closest B comes to the circle that bounds A; on the linear one, the "
+                    "distance between the bounding circles at the start")
         ->capture_default_str()
         ->check(finite_non_negative())
         ->needs(trajectory_opt)
