@@ -24,15 +24,14 @@ public:
     frame_result collide(const pose& p) {
         using tr = number_traits<NT>;
         const rotation_pose t(p);
-        b_.place_centroid(t);
-        b_.place_vertices(t);
+        b_.place(t);
         const NT dn = tr::from_double(options_.distance);
         const NT d2 = dn * dn;
         const bool within = options_.distance > 0;
         pairs_.clear();
         const auto& cov = a_->covering;
         for (std::size_t i = 0; i < cov.size(); ++i) {
-            for (std::size_t j = 0; j < b_.vertices().size(); ++j) {
+            for (std::size_t j = 0; j < b_.size(); ++j) {
                 const bool meet = within ? segments_within(cov.start(i), cov.end(i), b_.vertex(j), b_.end(j), d2)
                                          : segments_intersect(cov.start(i), cov.end(i), b_.vertex(j), b_.end(j));
                 if (!meet) continue;

@@ -15,11 +15,11 @@ namespace influence2d {
 /// of B's radius, with any rounding margin), a ring of A whose first vertex is
 /// farther than that from B's centroid is skipped without a test.
 template <class NT>
-bool one_contains_other(const static_scene<NT>& a, const posed_polygon<NT>& b,
+bool one_contains_other(const static_scene<NT>& a, posed_polygon<NT>& b,
                         std::optional<double> reach = std::nullopt) {
     const polygon& bs = b.shape();
     for (std::size_t r = 0; r < bs.ring_count(); ++r)
-        if (locate(a.covering, b.vertex(bs.ring_begin(r))) != location::outside) return true;
+        if (a.areas.locate(b.vertex(bs.ring_begin(r))) != location::outside) return true;
     const NT reach_nt = number_traits<NT>::from_double(reach.value_or(0));
     const NT reach2 = reach_nt * reach_nt;
     const polygon& as = a.shape;

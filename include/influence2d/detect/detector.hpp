@@ -34,17 +34,20 @@ struct detector_statistics {
 ///
 /// Per frame (n = r_B + d, p = B's posed centroid):
 ///   1. Pose p. If |p - O_A| > R_A + n: the bounding circles are apart: disjoint.
+///      Steps 1 to 3 are filters: evaluated in double, widened by a margin that
+///      covers rounding, so that they can keep too much but never drop anything.
 ///   2. Candidates: the static edges within n + skin of p, gathered through the
 ///      edge grid and kept while p stays within `skin` of where they were
 ///      gathered (temporal coherence; sound because the skin is part of the
 ///      gathering radius).
-///   3. Keep the candidates whose extended area of length n contains p (exact).
+///   3. Keep the candidates whose extended area of length n contains p.
 ///      None: no edge of A comes within n of p, the disk of radius n about p is
 ///      wholly inside or outside A, and so is B: collides iff p is inside A.
-///   4. Pose B. For each candidate edge, the sign of alpha of every moving vertex
-///      (the paper's detailed test); a moving edge whose ends are not strictly
-///      on one side is confirmed by the exact segment test (d == 0), or every
-///      moving edge is tested for distance <= d (d > 0).
+///   4. Pose B's vertices in double. For each candidate edge and each moving edge
+///      whose box meets the candidate's (grown by d and the rounding margin):
+///      the signs of alpha of the moving edge's ends (the paper's detailed
+///      test) and the exact segment test (d == 0), or the exact distance test
+///      (d > 0). Only those vertices are posed in NT.
 ///   5. No pair: the regions meet iff one contains a ring of the other.
 template <class NT>
 class detector {
@@ -65,42 +68,39 @@ public:
         using tr = number_traits<NT>;
         ++stats_.frames;
         const rotation_pose t(q);
-        b_.place_centroid(t);
-        const point<NT>& p = b_.centroid();
-        const point<double> pd = to_double_point(p);
+        b_.place(t);
+        const point<double> pd = b_.approximate_centroid();
         // Rounding of the posed coordinates is relative to their magnitude.
         const double frame_margin = margin_ + tr::filter_slack * (std::fabs(pd.x) + std::fabs(pd.y));
         const double n = reach_ + frame_margin;
-        const NT n_nt = tr::from_double(n);
-        const NT n2 = n_nt * n_nt;
 
-        // 1. Bounding circles.
-        const NT outer = tr::from_double(a_->radius) + n_nt;
-        if (squared_distance(p, a_->covering.origin()) > outer * outer) {
+        // 1. Bounding circles (a filter: in double, widened by the margin).
+        const point<double>& o = a_->shape.centroid();
+        if (std::hypot(pd.x - o.x, pd.y - o.y) > a_->radius + n + frame_margin) {
             ++stats_.circle_rejections;
             return {};
         }
 
         // 2. Candidates gathered within n + skin, reused while p moves < skin.
-        if (!cache_valid_ || std::hypot(pd.x - cache_center_.x, pd.y - cache_center_.y) > skin_)
-            gather(p, pd, frame_margin);
+        if (!cache_valid_ || std::hypot(pd.x - cache_center_.x, pd.y - cache_center_.y) > skin_) gather(pd, frame_margin);
 
-        // 3. Extended areas, decided exactly.
+        // 3. Extended areas of length n (a filter: in double, widened).
         candidates_.clear();
-        const auto& cov = a_->covering;
+        const polygon& as = a_->shape;
         for (std::uint32_t e : cache_)
-            if (in_extended_area(options_.shape, p, cov.start(e), cov.end(e), n_nt, n2)) candidates_.push_back(e);
+            if (in_extended_area(options_.shape, pd, as.vertex(e), as.vertex(as.next(e)), n + frame_margin))
+                candidates_.push_back(e);
         stats_.candidate_edges += candidates_.size();
         if (candidates_.empty()) {
             ++stats_.containment_tests;
-            return {cache_.empty() ? cache_center_inside_ : locate(cov, p) == location::inside, {}};
+            return {cache_.empty() ? cache_center_inside_ : a_->areas.locate(b_.centroid()) == location::inside, {}};
         }
 
         // 4. Detailed test on the candidates.
-        b_.place_vertices(t);
+        b_.place_approximate();
         pairs_.clear();
         for (std::uint32_t e : candidates_)
-            if (test_edge(e) && !options_.witness) return {true, {}};
+            if (test_edge(e, frame_margin) && !options_.witness) return {true, {}};
         frame_result r;
         if (!pairs_.empty()) {
             r.collides = true;
@@ -121,7 +121,7 @@ private:
     /// Gathers the edges within reach + skin of p into the cache. When there
     /// are none, the disk of that radius about p holds no boundary of A, so
     /// every point within the skin of p is located as p is: that is cached too.
-    void gather(const point<NT>& p, const point<double>& pd, double frame_margin) {
+    void gather(const point<double>& pd, double frame_margin) {
         ++stats_.candidate_rebuilds;
         cache_.clear();
         const double keep = reach_ + skin_ + frame_margin + margin_;
@@ -129,47 +129,45 @@ private:
         for (std::uint32_t e : grid_.query(pd))
             if (segment_distance(pd, s.vertex(e), s.vertex(s.next(e))) <= keep) cache_.push_back(e);
         cache_center_ = pd;
+        cache_valid_ = false;
+        if (cache_.empty()) cache_center_inside_ = a_->areas.locate(b_.centroid()) == location::inside;
         cache_valid_ = options_.temporal_coherence;
-        if (cache_.empty()) cache_center_inside_ = locate(a_->covering, p) == location::inside;
     }
 
-    /// Tests static edge e against every moving edge; records the pairs found.
-    bool test_edge(std::uint32_t e) {
+    /// Tests static edge e against the moving edges; records the pairs found.
+    /// A moving edge whose box (from the double approximations of its posed
+    /// ends, grown by the rounding margin and the distance) misses the static
+    /// edge's box is skipped; the others get the exact decision: the signs of
+    /// alpha of its two ends (orientation against the static edge's line, equal
+    /// to alpha up to the constant sigma_e), then the segment test.
+    bool test_edge(std::uint32_t e, double frame_margin) {
         const auto& cov = a_->covering;
+        const polygon& as = a_->shape;
+        const polygon& bs = b_.shape();
+        box eb;
+        eb.add(as.vertex(e));
+        eb.add(as.vertex(as.next(e)));
+        eb = eb.inflated(frame_margin + options_.distance);
         const point<NT>& a = cov.start(e);
         const point<NT>& b = cov.end(e);
-        const std::size_t m = b_.vertices().size();
         bool found = false;
-        if (options_.distance > 0) {
-            for (std::size_t j = 0; j < m; ++j) {
-                ++stats_.segment_tests;
-                if (segments_within(a, b, b_.vertex(j), b_.end(j), distance2_)) {
-                    pairs_.add(e, j);
-                    found = true;
-                    if (!options_.witness) return true;
-                }
-            }
-            return found;
-        }
-        // Sign of alpha for every moving vertex (up to the constant sigma_e).
-        side_.resize(m);
-        int positive = 0, negative = 0;
-        for (std::size_t j = 0; j < m; ++j) {
-            side_[j] = static_cast<std::int8_t>(orientation(a, b, b_.vertex(j)));
-            positive += side_[j] > 0;
-            negative += side_[j] < 0;
-        }
-        if (positive == static_cast<int>(m) || negative == static_cast<int>(m)) return false;
-        const polygon& bs = b_.shape();
-        for (std::size_t j = 0; j < m; ++j) {
+        for (std::size_t j = 0; j < bs.size(); ++j) {
             const std::size_t k = bs.next(j);
-            if (side_[j] * side_[k] > 0) continue;
+            const point<double>& u = b_.approximate(j);
+            const point<double>& v = b_.approximate(k);
+            if (std::max(u.x, v.x) < eb.min_x || std::min(u.x, v.x) > eb.max_x || std::max(u.y, v.y) < eb.min_y ||
+                std::min(u.y, v.y) > eb.max_y)
+                continue;
             ++stats_.segment_tests;
-            if (segments_intersect(side_[j], side_[k], a, b, b_.vertex(j), b_.vertex(k))) {
-                pairs_.add(e, j);
-                found = true;
-                if (!options_.witness) return true;
-            }
+            const bool meet =
+                options_.distance > 0
+                    ? segments_within(a, b, b_.vertex(j), b_.vertex(k), distance2_)
+                    : segments_intersect(orientation(a, b, b_.vertex(j)), orientation(a, b, b_.vertex(k)), a, b,
+                                         b_.vertex(j), b_.vertex(k));
+            if (!meet) continue;
+            pairs_.add(e, j);
+            found = true;
+            if (!options_.witness) return true;
         }
         return found;
     }
@@ -186,7 +184,6 @@ private:
     bool cache_valid_ = false;
     bool cache_center_inside_ = false;
     std::vector<std::uint32_t> candidates_;
-    std::vector<std::int8_t> side_;
     detail::pair_collector pairs_;
     detector_statistics stats_;
 };

@@ -41,7 +41,7 @@ public:
     frame_result collide(const pose& q) {
         using tr = number_traits<NT>;
         const rotation_pose t(q);
-        b_.place_centroid(t);
+        b_.place(t);
         const point<NT>& p = b_.centroid();
         const auto& cov = a_->covering;
         const NT n = tr::from_double(reach_);
@@ -64,7 +64,6 @@ public:
             gate = gate || cov.signs(i, p).alpha >= 0 || line_within(p, cov.start(i), cov.end(i), n2);
         });
         if (!gate) return {};
-        b_.place_vertices(t);
         pairs_.clear();
         const polygon& bs = b_.shape();
         const std::size_t m = bs.size();

@@ -3,6 +3,7 @@
 // polygon posed in NT for a frame.
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -36,36 +37,76 @@ struct static_scene {
     double scale;                    ///< largest absolute coordinate of A
 };
 
-/// The moving polygon B: given in its own frame, posed once per frame in NT.
+/// The moving polygon B: given in its own frame, posed once per frame. A frame
+/// first poses the centroid in double; then, if a filter passes, every vertex
+/// in double. These rounded positions serve conservative filters only. The NT
+/// centroid and vertices are posed when a decision asks for them, so an exact
+/// type pays only for what the frame's decisions need.
 template <class NT>
 class posed_polygon {
 public:
     explicit posed_polygon(const polygon& b)
         : shape_(b), local_centroid_(b.centroid()), radius_(bounding_radius(b, b.centroid())) {
         vertices_.resize(b.size());
+        approximate_.resize(b.size());
+        stamp_.assign(b.size(), 0);
     }
 
     const polygon& shape() const { return shape_; }
+    std::size_t size() const { return vertices_.size(); }
     /// Bounds the distance from the posed centroid to every posed vertex.
     double radius() const { return radius_; }
-    const point<NT>& centroid() const { return centroid_; }
-    const std::vector<point<NT>>& vertices() const { return vertices_; }
-    const point<NT>& vertex(std::size_t j) const { return vertices_[j]; }
-    const point<NT>& end(std::size_t j) const { return vertices_[shape_.next(j)]; }
+    /// The posed centroid in NT.
+    const point<NT>& centroid() {
+        if (centroid_stamp_ != frame_) {
+            centroid_ = pose_.apply<NT>(local_centroid_);
+            centroid_stamp_ = frame_;
+        }
+        return centroid_;
+    }
+    /// The posed centroid in double (rounded; for filters only).
+    const point<double>& approximate_centroid() const { return approximate_centroid_; }
 
-    /// Poses the centroid only: all a frame needs until a filter passes.
-    void place_centroid(const rotation_pose& t) { centroid_ = t.apply<NT>(local_centroid_); }
-    /// Poses every vertex.
-    void place_vertices(const rotation_pose& t) {
-        for (std::size_t j = 0; j < vertices_.size(); ++j) vertices_[j] = t.apply<NT>(shape_.vertex(j));
+    /// Sets the frame's pose and poses the centroid in double.
+    void place(const rotation_pose& t) {
+        pose_ = t;
+        ++frame_;
+        approximate_centroid_ = t.apply<double>(local_centroid_);
+    }
+    /// Poses every vertex in double (rounded; for conservative filters only).
+    void place_approximate() {
+        for (std::size_t j = 0; j < approximate_.size(); ++j) approximate_[j] = pose_.apply<double>(shape_.vertex(j));
+    }
+    const point<double>& approximate(std::size_t j) const { return approximate_[j]; }
+
+    /// Vertex j posed in NT.
+    const point<NT>& vertex(std::size_t j) {
+        if (stamp_[j] != frame_) {
+            vertices_[j] = pose_.apply<NT>(shape_.vertex(j));
+            stamp_[j] = frame_;
+        }
+        return vertices_[j];
+    }
+    /// The end vertex of edge j, posed in NT.
+    const point<NT>& end(std::size_t j) { return vertex(shape_.next(j)); }
+    /// Every vertex posed in NT.
+    const std::vector<point<NT>>& vertices() {
+        for (std::size_t j = 0; j < vertices_.size(); ++j) vertex(j);
+        return vertices_;
     }
 
 private:
     polygon shape_;
     point<double> local_centroid_;
     double radius_;
+    rotation_pose pose_{pose{}};
+    std::uint64_t frame_ = 0;
+    std::uint64_t centroid_stamp_ = 0;
+    point<double> approximate_centroid_;
     point<NT> centroid_;
     std::vector<point<NT>> vertices_;
+    std::vector<point<double>> approximate_;
+    std::vector<std::uint64_t> stamp_;
 };
 
 /// The reach of the moving polygon for a separation distance d: an upper

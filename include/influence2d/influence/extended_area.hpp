@@ -32,10 +32,11 @@ bool in_band(const point<NT>& p, const point<NT>& a, const point<NT>& b, const N
     return !(pp < lo - n) && !(pp > hi + n);
 }
 
-/// Membership in the chosen shape of extended area.
+/// Membership in the chosen shape of extended area of length n.
 template <class NT>
 bool in_extended_area(extended_area shape, const point<NT>& p, const point<NT>& a, const point<NT>& b,
-                      const NT& n, const NT& n2) {
+                      const NT& n) {
+    const NT n2 = n * n;
     return shape == extended_area::capsule ? in_capsule(p, a, b, n2) : in_band(p, a, b, n, n2);
 }
 

@@ -10,6 +10,7 @@
 
 #include "influence2d/core/point.hpp"
 #include "influence2d/covering/covering.hpp"
+#include "influence2d/covering/inclusion.hpp"
 #include "influence2d/number/traits.hpp"
 
 namespace influence2d {
@@ -91,6 +92,8 @@ public:
             }
             all_.push_back(static_cast<std::uint32_t>(i));
         }
+        for (std::size_t i = 0; i < n; ++i)
+            if (cov.sigma(i) == 0) degenerate_.push_back(static_cast<std::uint32_t>(i));
         offsets_.assign(buckets_ + 1, 0);
         for (std::size_t b = 0; b < buckets_; ++b) offsets_[b + 1] = offsets_[b] + static_cast<std::uint32_t>(lists[b].size());
         cones_.reserve(offsets_.back());
@@ -119,6 +122,28 @@ public:
             if (in_influence_area(*cov_, *it, p)) visit(static_cast<std::size_t>(*it));
     }
 
+    /// Feito's inclusion test restricted to the triangles that can contain P:
+    /// a triangle lies in its edge's cone, so only the cones containing P add
+    /// to the sum (see detail::feito_locate), and the edges collinear with the
+    /// origin, whose cones are empty, are checked for P on them. The origin
+    /// itself, in every cone, takes the full sum from a vertex.
+    location locate(const point<NT>& p) const {
+        const auto& cov = *cov_;
+        if (p == cov.origin()) return influence2d::locate(cov, p);
+        for (std::uint32_t i : degenerate_)
+            if (on_segment(p, cov.start(i), cov.end(i))) return location::boundary;
+        long long doubled = 0;
+        bool boundary = false;
+        for_each_containing(p, [&](std::size_t i) {
+            const barycentric_signs b = cov.signs(i, p);
+            if (b.alpha < 0) return;
+            if (b.alpha == 0) boundary = true;  // on the line, inside the cone: on the edge
+            doubled += (b.beta == 0 || b.gamma == 0) ? cov.sigma(i) : 2 * cov.sigma(i);
+        });
+        if (boundary) return location::boundary;
+        return doubled != 0 ? location::inside : location::outside;
+    }
+
     /// The influence mask of P: one bit per edge, set for the areas containing P.
     void mask(const point<NT>& p, influence_mask& out) const {
         out.clear();
@@ -142,6 +167,7 @@ private:
     std::vector<std::uint32_t> offsets_;
     std::vector<std::uint32_t> cones_;
     std::vector<std::uint32_t> all_;
+    std::vector<std::uint32_t> degenerate_;
     double origin_scale_ = 0;
 };
 
