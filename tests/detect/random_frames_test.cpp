@@ -1,0 +1,286 @@
+// Agreement of the detectors with the exact CGAL reference on many frames.
+//
+// Polygons: data/families/<family>_<n>.wkt, families convex, starred,
+// irregular, contour, hole and sizes 8 to 64; every ordered pair of families
+// with sizes varying over the pairs. Frames, with fixed seeds:
+//   - random: B's centroid at a random distance from A's centroid, in a random
+//     direction, with a random rotation; the distance is uniform in
+//     [0, R_A + r_B + 4] for a quarter of them, in its outer 40% for the rest;
+//   - contact: theta = 0 and t = a - q, a a vertex of A or the midpoint of an
+//     edge of A, q a vertex of B (exact: the coordinates lie on a 2^-20 grid).
+//     Three in four take q as B's extreme vertex against the outward normal
+//     at a, which makes them touch for most shapes; the others a random q;
+//   - hair apart: each contact frame pushed 2^-20 along that outward normal.
+// 4200 frames for d = 0 (1200 contacts, of which about 45% touch: collide,
+// yet are apart a hair further out) and 1050 for each of d = 0.5 and d = 3.
+// Checks, with witnesses:
+//   detector<exact_rational> == brute_force_detector<exact_rational> ==
+//   cgal_reference (collides and pairs), the detector without witnesses and
+//   with the band areas and no coherence on collides, and
+//   detector<double> == brute_force_detector<double> (collides and pairs).
+
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <iomanip>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "influence2d/detect/brute_force.hpp"
+#include "influence2d/detect/detector.hpp"
+#include "influence2d/io/wkt.hpp"
+#include "influence2d/number/cgal.hpp"
+#include "verification/cgal_reference.hpp"
+
+namespace {
+
+using namespace influence2d;
+using verification::cgal_reference;
+
+constexpr std::array<const char*, 5> family_names = {"convex", "starred", "irregular", "contour", "hole"};
+constexpr std::array<int, 4> family_sizes = {8, 16, 32, 64};
+
+/// Frames per family pair: random ones, and contact ones each followed by its
+/// hair-apart frame. Fewer for d > 0, where exact distance tests cost more.
+struct frame_counts {
+    int random;
+    int contact;
+};
+constexpr frame_counts counts_touching{36, 24};
+constexpr frame_counts counts_distance{9, 6};
+
+struct shape {
+    std::string name;
+    polygon poly;
+};
+
+const shape& family(std::size_t f, std::size_t s) {
+    static const std::vector<shape> all = [] {
+        std::vector<shape> v;
+        for (const char* name : family_names)
+            for (int n : family_sizes) {
+                const std::string id = std::string(name) + "_" + std::to_string(n);
+                v.push_back({id, read_wkt_file(std::string(INFLUENCE2D_DATA_DIR) + "/families/" + id + ".wkt")});
+            }
+        return v;
+    }();
+    return all[f * family_sizes.size() + s];
+}
+
+/// One ordered pair of polygons: A static, B moving.
+struct family_pair {
+    const shape* a;
+    const shape* b;
+    std::uint64_t seed;
+};
+
+/// Every ordered pair of families; the sizes run through all 16 combinations
+/// as the pairs go, so each family meets each size as A and as B.
+std::vector<family_pair> family_pairs() {
+    std::vector<family_pair> out;
+    std::uint64_t k = 0;
+    for (std::size_t fa = 0; fa < family_names.size(); ++fa)
+        for (std::size_t fb = 0; fb < family_names.size(); ++fb, ++k)
+            for (std::size_t r = 0; r < 2; ++r) {
+                const std::size_t combo = (2 * k + r) % 16;
+                out.push_back({&family(fa, combo % 4), &family(fb, (combo / 4 + fa) % 4),
+                               0x1f2e3d4c5b6a7988ULL + 7919 * (2 * k + r)});
+            }
+    return out;
+}
+
+struct rng {
+    std::mt19937_64 gen;
+    explicit rng(std::uint64_t seed) : gen(seed) {}
+    /// Uniform in [0, 1) with 53 random bits.
+    double unit() { return std::ldexp(static_cast<double>(gen() >> 11), -53); }
+    std::size_t index(std::size_t n) { return static_cast<std::size_t>(gen() % n); }
+};
+
+double max_distance(const polygon& p, const point<double>& c) {
+    double r = 0;
+    for (const auto& v : p.vertices()) r = std::max(r, std::hypot(v.x - c.x, v.y - c.y));
+    return r;
+}
+
+enum class frame_kind { random, contact, hair_apart };
+
+struct frame {
+    pose p;
+    frame_kind kind;
+};
+
+/// The frames of one family pair, the same for every distance.
+/// The first frames of a smaller count are those of a larger one.
+std::vector<frame> make_frames(const family_pair& fp, frame_counts counts) {
+    const polygon& A = fp.a->poly;
+    const polygon& B = fp.b->poly;
+    rng r(fp.seed);
+    std::vector<frame> frames;
+    const double pi = std::acos(-1.0);
+    const point<double> ca = A.centroid(), cb = B.centroid();
+    const double reach = max_distance(A, ca) + max_distance(B, cb) + 4;
+    for (int k = 0; k < counts.random; ++k) {
+        // A quarter anywhere within the reach (deep overlaps, containment),
+        // the rest in its outer part, where the close calls are.
+        const double dist = reach * (k % 4 == 0 ? r.unit() : 0.6 + 0.4 * r.unit());
+        const double phi = 2 * pi * r.unit();
+        const double theta = 2 * pi * r.unit() - pi;
+        const double c = std::cos(theta), s = std::sin(theta);
+        // Place B's posed centroid at ca + dist (cos phi, sin phi).
+        const double tx = ca.x + dist * std::cos(phi) - (c * cb.x - s * cb.y);
+        const double ty = ca.y + dist * std::sin(phi) - (s * cb.x + c * cb.y);
+        frames.push_back({pose{tx, ty, theta}, frame_kind::random});
+    }
+    r = rng(fp.seed + 1);  // contacts do not depend on the number of random frames
+    for (int k = 0; k < counts.contact; ++k) {
+        // A point a on A's boundary (a vertex or an edge midpoint, exact) and
+        // the outward normal there (interior is on the left of stored edges).
+        const std::size_t i = r.index(A.size());
+        const point<double> v0 = A.vertex(i), v1 = A.vertex(A.next(i));
+        point<double> a, n;
+        if (r.index(2) == 0) {
+            a = v0;
+            // Vertex: the sum of the outward normals of its two edges.
+            std::size_t prev = i;
+            while (A.next(prev) != i) prev = A.next(prev);
+            const point<double> u = A.vertex(prev);
+            n = {(v1.y - v0.y) + (v0.y - u.y), -(v1.x - v0.x) - (v0.x - u.x)};
+        } else {
+            a = {(v0.x + v1.x) / 2, (v0.y + v1.y) / 2};
+            n = {v1.y - v0.y, -(v1.x - v0.x)};
+        }
+        const double len = std::hypot(n.x, n.y);
+        if (len > 0) n = {n.x / len, n.y / len};
+        std::size_t j = r.index(B.size());
+        if (k % 4 != 3) {
+            // B's vertex furthest against n: B then lies beyond the line through a.
+            double best = 0;
+            for (std::size_t m = 0; m < B.size(); ++m) {
+                const double dot = B.vertex(m).x * n.x + B.vertex(m).y * n.y;
+                if (m == 0 || dot < best) {
+                    best = dot;
+                    j = m;
+                }
+            }
+        }
+        const point<double> q = B.vertex(j);
+        const pose touch{a.x - q.x, a.y - q.y, 0};
+        frames.push_back({touch, frame_kind::contact});
+        const double hair = std::ldexp(1.0, -20);
+        frames.push_back({pose{touch.tx + hair * n.x, touch.ty + hair * n.y, 0}, frame_kind::hair_apart});
+    }
+    return frames;
+}
+
+std::string describe(const family_pair& fp, std::size_t index, const frame& f, double d) {
+    std::ostringstream o;
+    o << std::setprecision(17) << "A = " << fp.a->name << ", B = " << fp.b->name << ", d = " << d << ", frame "
+      << index << " ("
+      << (f.kind == frame_kind::random ? "random" : f.kind == frame_kind::contact ? "contact" : "hair apart")
+      << "), pose tx = " << f.p.tx << ", ty = " << f.p.ty << ", theta = " << f.p.theta;
+    return o.str();
+}
+
+std::string pairs_text(const frame_result& r) {
+    std::ostringstream o;
+    o << (r.collides ? "collides" : "apart") << " {";
+    for (const auto& e : r.pairs) o << " (" << e.static_edge << "," << e.moving_edge << ")";
+    o << " }";
+    return o.str();
+}
+
+bool same(const frame_result& x, const frame_result& y) { return x.collides == y.collides && x.pairs == y.pairs; }
+
+struct tally {
+    std::size_t frames = 0, contact = 0, touching = 0, collisions = 0, mismatches = 0;
+};
+
+/// Runs every frame of every family pair at distance d; counts and checks.
+tally run_all(double d, frame_counts counts) {
+    tally t;
+    for (const family_pair& fp : family_pairs()) {
+        const polygon& A = fp.a->poly;
+        const polygon& B = fp.b->poly;
+        detector_options wit;
+        wit.distance = d;
+        wit.witness = true;
+        detector_options plain;
+        plain.distance = d;
+        plain.shape = extended_area::band;
+        plain.temporal_coherence = false;
+        detector<exact_rational> det_exact(A, B, wit);
+        detector<exact_rational> det_plain(A, B, plain);
+        brute_force_detector<exact_rational> bf_exact(A, B, wit);
+        detector<double> det_double(A, B, wit);
+        brute_force_detector<double> bf_double(A, B, wit);
+        const cgal_reference ref(A, B, d, true);
+        const cgal_reference ref_touch(A, B, 0, false);
+
+        const std::vector<frame> frames = make_frames(fp, counts);
+        std::size_t reported = 0;
+        for (std::size_t k = 0; k < frames.size(); ++k) {
+            const frame& f = frames[k];
+            ++t.frames;
+            const frame_result expected = ref.collide(f.p);
+            const frame_result got = det_exact.collide(f.p);
+            const frame_result brute = bf_exact.collide(f.p);
+            const bool got_plain = det_plain.collide(f.p).collides;
+            const frame_result got_double = det_double.collide(f.p);
+            const frame_result brute_double = bf_double.collide(f.p);
+            t.collisions += expected.collides;
+            if (f.kind == frame_kind::contact) {
+                ++t.contact;
+                // Touching: collides here, apart once pushed a hair outwards.
+                if (d == 0 && expected.collides && !ref_touch.collide(frames[k + 1].p).collides) ++t.touching;
+            }
+            const bool ok = same(got, expected) && same(brute, expected) && got_plain == expected.collides &&
+                            same(got_double, brute_double);
+            if (ok) continue;
+            ++t.mismatches;
+            if (++reported > 3) continue;  // enough to reproduce; the count says the rest
+            INFO(describe(fp, k, f, d));
+            INFO("reference:                     " << pairs_text(expected));
+            INFO("detector<exact>:               " << pairs_text(got));
+            INFO("brute_force<exact>:            " << pairs_text(brute));
+            INFO("detector<exact> band, no coh.: " << (got_plain ? "collides" : "apart"));
+            INFO("detector<double>:              " << pairs_text(got_double));
+            INFO("brute_force<double>:           " << pairs_text(brute_double));
+            FAIL_CHECK("detectors disagree");
+        }
+    }
+    return t;
+}
+
+}  // namespace
+
+TEST_CASE("random frames: detectors agree with the CGAL reference, d = 0", "[detect][reference][random]") {
+    const tally t = run_all(0, counts_touching);
+    CHECK(t.mismatches == 0);
+    CHECK(t.frames >= 4000);
+    // The frames must exercise both answers, and the exact contacts must
+    // mostly be real touching (collide, yet apart a hair further out).
+    CHECK(t.collisions >= t.frames / 4);
+    CHECK(t.frames - t.collisions >= t.frames / 5);
+    CHECK(t.touching * 3 >= t.contact);
+}
+
+TEST_CASE("random frames: detectors agree with the CGAL reference, d = 0.5", "[detect][reference][random]") {
+    const tally t = run_all(0.5, counts_distance);
+    CHECK(t.mismatches == 0);
+    CHECK(t.frames >= 1000);
+    CHECK(t.collisions >= t.frames / 4);
+    CHECK(t.frames - t.collisions >= t.frames / 10);
+}
+
+TEST_CASE("random frames: detectors agree with the CGAL reference, d = 3", "[detect][reference][random]") {
+    const tally t = run_all(3, counts_distance);
+    CHECK(t.mismatches == 0);
+    CHECK(t.frames >= 1000);
+    CHECK(t.collisions >= t.frames / 4);
+    CHECK(t.frames - t.collisions >= t.frames / 10);
+}

@@ -1,0 +1,197 @@
+#pragma once
+// The exact reference answer of a frame (method.md section 1), built only on
+// CGAL's exact kernel (Epeck) and its own predicates, independently of the
+// library's predicates, coverings and filters. It is slow and simple on
+// purpose: the detectors are tested against it.
+//
+// How it decides:
+// - Pose: c = std::cos(theta), s = std::sin(theta) as doubles; every vertex q of
+//   B goes to (c*qx - s*qy + tx, s*qx + c*qy + ty) evaluated in Epeck::FT, so B
+//   is posed exactly.
+// - Boundary pairs: every (static edge, moving edge) pair is tested; with d == 0
+//   by CGAL::do_intersect, with d > 0 by CGAL::squared_distance <= d*d (exact).
+//   A zero-length edge (repeated vertex) is tested as a Point_2. A box test in
+//   double comes first; it can only drop pairs whose boxes are more than d
+//   apart on one axis (rounding of a difference is monotone, so the double
+//   comparison never drops a pair that the exact test would keep).
+// - Regions: outer rings minus holes, closed. A point is in a region when it is
+//   on one of its rings (CGAL::bounded_side_2 says ON_BOUNDARY), or when the
+//   number of outer rings that strictly contain it minus the number of holes
+//   that strictly contain it is positive.
+// - Collision: some boundary pair exists, or (no pair within d, so the
+//   boundaries are more than d apart) some vertex of B lies in region A or some
+//   vertex of A lies in region B. Then one region holds a whole ring of the
+//   other, and the regions intersect.
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <vector>
+
+#include <CGAL/Bbox_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/intersections.h>
+#include <CGAL/squared_distance_2.h>
+
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/core/pose.hpp"
+#include "influence2d/detect/result.hpp"
+
+namespace influence2d::verification {
+
+class cgal_reference {
+public:
+    using kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+    using FT = kernel::FT;
+    using point_2 = kernel::Point_2;
+    using segment_2 = kernel::Segment_2;
+
+    /// A is static, B moves; `distance` is d >= 0; with `witness` every pair
+    /// within d is reported (input numbering, sorted).
+    cgal_reference(const polygon& A, const polygon& B, double distance = 0, bool witness = false)
+        : a_(A), b_(B), distance_(distance), witness_(witness) {
+        if (!(distance >= 0) || !std::isfinite(distance))
+            throw std::invalid_argument("cgal_reference: distance must be finite and >= 0");
+        squared_distance_ = FT(distance) * FT(distance);
+        std::vector<point_2> pts;
+        pts.reserve(a_.size());
+        for (const auto& v : a_.vertices()) pts.emplace_back(v.x, v.y);
+        a_edges_ = make_edges(a_, pts);
+        a_rings_ = make_rings(a_, pts);
+    }
+
+    frame_result collide(const pose& p) const {
+        const FT c(std::cos(p.theta)), s(std::sin(p.theta)), tx(p.tx), ty(p.ty);
+        std::vector<point_2> pts;
+        pts.reserve(b_.size());
+        for (const auto& q : b_.vertices()) {
+            const FT qx(q.x), qy(q.y);
+            pts.emplace_back(c * qx - s * qy + tx, s * qx + c * qy + ty);
+        }
+        const std::vector<edge> b_edges = make_edges(b_, pts);
+
+        frame_result out;
+        for (const edge& e : a_edges_) {
+            for (const edge& f : b_edges) {
+                if (!within(e, f)) continue;
+                out.collides = true;
+                if (!witness_) return out;
+                out.pairs.push_back(edge_pair{e.source, f.source});
+            }
+        }
+        if (out.collides) {
+            std::sort(out.pairs.begin(), out.pairs.end());
+            out.pairs.erase(std::unique(out.pairs.begin(), out.pairs.end()), out.pairs.end());
+            return out;
+        }
+        // No boundary pair within d: the regions meet only if one holds a ring
+        // of the other; testing every vertex covers every ring.
+        for (const point_2& q : pts) {
+            if (in_region(a_rings_, q)) {
+                out.collides = true;
+                return out;
+            }
+        }
+        const std::vector<ring> b_rings = make_rings(b_, pts);
+        for (const auto& r : a_rings_) {
+            for (const point_2& v : r.points) {
+                if (in_region(b_rings, v)) {
+                    out.collides = true;
+                    return out;
+                }
+            }
+        }
+        return out;
+    }
+
+private:
+    struct edge {
+        point_2 from, to;
+        bool degenerate = false;  ///< zero length: tested as the point `from`
+        CGAL::Bbox_2 box;
+        std::size_t source = 0;   ///< input numbering
+    };
+
+    struct ring {
+        std::vector<point_2> points;  ///< consecutive repeats removed
+        bool hole = false;
+    };
+
+    static std::vector<edge> make_edges(const polygon& P, const std::vector<point_2>& pts) {
+        std::vector<edge> edges;
+        edges.reserve(P.size());
+        for (std::size_t i = 0; i < P.size(); ++i) {
+            const std::size_t j = P.next(i);
+            edge e;
+            e.from = pts[i];
+            e.to = pts[j];
+            e.degenerate = P.vertex(i) == P.vertex(j);  // same input doubles, same posed point
+            e.box = pts[i].bbox() + pts[j].bbox();       // encloses the exact points
+            e.source = P.source_edge(i);
+            edges.push_back(e);
+        }
+        return edges;
+    }
+
+    static std::vector<ring> make_rings(const polygon& P, const std::vector<point_2>& pts) {
+        std::vector<ring> rings;
+        for (std::size_t r = 0; r < P.ring_count(); ++r) {
+            ring g;
+            g.hole = P.role(r) == ring_role::hole;
+            for (std::size_t i = P.ring_begin(r); i < P.ring_end(r); ++i) {
+                if (P.vertex(i) != P.vertex(P.next(i))) g.points.push_back(pts[i]);
+            }
+            rings.push_back(std::move(g));
+        }
+        return rings;
+    }
+
+    static bool in_region(const std::vector<ring>& rings, const point_2& q) {
+        int depth = 0;
+        for (const ring& g : rings) {
+            switch (CGAL::bounded_side_2(g.points.begin(), g.points.end(), q, kernel())) {
+                case CGAL::ON_BOUNDARY: return true;
+                case CGAL::ON_BOUNDED_SIDE: depth += g.hole ? -1 : 1; break;
+                case CGAL::ON_UNBOUNDED_SIDE: break;
+            }
+        }
+        return depth > 0;
+    }
+
+    /// Conservative: false only when the boxes are more than d apart on an axis.
+    bool boxes_near(const CGAL::Bbox_2& a, const CGAL::Bbox_2& b) const {
+        return b.xmin() - a.xmax() <= distance_ && a.xmin() - b.xmax() <= distance_ &&
+               b.ymin() - a.ymax() <= distance_ && a.ymin() - b.ymax() <= distance_;
+    }
+
+    bool within(const edge& e, const edge& f) const {
+        if (!boxes_near(e.box, f.box)) return false;
+        if (distance_ == 0) {
+            if (e.degenerate && f.degenerate) return e.from == f.from;
+            if (e.degenerate) return CGAL::do_intersect(e.from, segment_2(f.from, f.to));
+            if (f.degenerate) return CGAL::do_intersect(f.from, segment_2(e.from, e.to));
+            return CGAL::do_intersect(segment_2(e.from, e.to), segment_2(f.from, f.to));
+        }
+        FT sq;
+        if (e.degenerate && f.degenerate)
+            sq = CGAL::squared_distance(e.from, f.from);
+        else if (e.degenerate)
+            sq = CGAL::squared_distance(e.from, segment_2(f.from, f.to));
+        else if (f.degenerate)
+            sq = CGAL::squared_distance(f.from, segment_2(e.from, e.to));
+        else
+            sq = CGAL::squared_distance(segment_2(e.from, e.to), segment_2(f.from, f.to));
+        return sq <= squared_distance_;
+    }
+
+    polygon a_, b_;
+    double distance_ = 0;
+    bool witness_ = false;
+    FT squared_distance_;
+    std::vector<edge> a_edges_;
+    std::vector<ring> a_rings_;
+};
+
+}  // namespace influence2d::verification
