@@ -50,14 +50,16 @@ inline point<double> interior_target(const polygon& a) {
     return a.vertex(0);
 }
 
-/// B approaches A along a straight line without turning (theta = 0): the last
-/// frame puts B's first vertex on a point well inside A (interior_target), so
-/// the trajectory ends in collision; the first frame is that pose moved back by
-/// 2 (R_A + r_B) + gap along the direction from O_A to the target, where the
-/// bounding circles are at least `gap` apart. Frames are evenly spaced.
+/// B approaches A along a straight line without turning (theta = 0), moving
+/// in the direction -u, u the unit vector from O_A to a point well inside A
+/// (interior_target). The last frame puts B's leading vertex (the one farthest
+/// along -u from B's centroid) on that point, so the trajectory ends in
+/// collision; the first frame is that pose moved back by 2 (R_A + r_B) + gap
+/// along u, where the bounding circles are at least `gap` apart. Frames are
+/// evenly spaced.
 inline std::vector<pose> linear_trajectory(const polygon& a, const polygon& b, std::size_t frames = 9000,
                                            double gap = 9.0) {
-    const point<double> o = a.centroid();
+    const point<double> o = a.centroid(), cb = b.centroid();
     const point<double> target = interior_target(a);
     double ux = target.x - o.x, uy = target.y - o.y;
     const double len = std::hypot(ux, uy);
@@ -68,8 +70,13 @@ inline std::vector<pose> linear_trajectory(const polygon& a, const polygon& b, s
         ux = 1;
         uy = 0;
     }
-    const double back = 2 * (bounding_radius(a, o) + bounding_radius(b, b.centroid())) + gap;
-    const point<double> end{target.x - b.vertex(0).x, target.y - b.vertex(0).y};
+    std::size_t lead = 0;
+    for (std::size_t j = 1; j < b.size(); ++j) {
+        const auto along = [&](std::size_t k) { return (b.vertex(k).x - cb.x) * ux + (b.vertex(k).y - cb.y) * uy; };
+        if (along(j) < along(lead)) lead = j;
+    }
+    const double back = 2 * (bounding_radius(a, o) + bounding_radius(b, cb)) + gap;
+    const point<double> end{target.x - b.vertex(lead).x, target.y - b.vertex(lead).y};
     const point<double> start{end.x + ux * back, end.y + uy * back};
     std::vector<pose> poses;
     poses.reserve(frames);

@@ -1,0 +1,93 @@
+#pragma once
+// The certified number type: a double with a running bound of its error.
+// A sign it cannot decide raises uncertain_sign; certified_detector (in
+// detect/certified_detector.hpp) then answers the frame in an exact type.
+// The same detector code, generic in NT, runs on it unchanged.
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "influence2d/number/traits.hpp"
+
+namespace influence2d {
+
+/// Thrown when a certified value is too close to zero, relative to its error
+/// bound, for its sign to be known; or when a bound overflowed.
+class uncertain_sign : public std::runtime_error {
+public:
+    uncertain_sign() : std::runtime_error("sign not certain in double precision") {}
+};
+
+/// A value v with a bound e such that |exact - v| <= e, where `exact` is the
+/// result of the same ring operations on the exact inputs. Inputs converted
+/// from double are exact (e = 0). Each operation adds the rounding error of
+/// its result (at most u |v| for u = 2^-53, plus 2^-1072 for underflow)
+/// and the propagated errors; the bound is computed in rounded arithmetic and
+/// then widened by (1 + 2^-48), more than the rounding of its few operations.
+/// A NaN or infinite value or bound leaves every sign uncertain.
+class certified {
+public:
+    certified() = default;
+    certified(int x) : v_(x) {}  // NOLINT: integer constants as in NT(0)
+    explicit certified(double x) : v_(x) {}
+    certified(double v, double e) : v_(v), e_(e) {}
+
+    double value() const { return v_; }
+    double error() const { return e_; }
+
+    /// -1, 0 or +1, when certain.
+    int sign() const {
+        if (std::fabs(v_) > e_) return v_ > 0 ? 1 : -1;  // false for NaN values or bounds
+        if (v_ == 0 && e_ == 0) return 0;
+        throw uncertain_sign();
+    }
+
+    friend certified operator+(const certified& a, const certified& b) {
+        const double v = a.v_ + b.v_;
+        return {v, widen(a.e_ + b.e_ + u * std::fabs(v))};
+    }
+    friend certified operator-(const certified& a, const certified& b) {
+        const double v = a.v_ - b.v_;
+        return {v, widen(a.e_ + b.e_ + u * std::fabs(v))};
+    }
+    friend certified operator-(const certified& a) { return {-a.v_, a.e_}; }
+    friend certified operator*(const certified& a, const certified& b) {
+        const double v = a.v_ * b.v_;
+        const double e = std::fabs(a.v_) * b.e_ + std::fabs(b.v_) * a.e_ + a.e_ * b.e_ + u * std::fabs(v) + eta;
+        return {v, widen(e)};
+    }
+    certified& operator+=(const certified& b) { return *this = *this + b; }
+    certified& operator-=(const certified& b) { return *this = *this - b; }
+    certified& operator*=(const certified& b) { return *this = *this * b; }
+
+    friend bool operator<(const certified& a, const certified& b) { return (a - b).sign() < 0; }
+    friend bool operator>(const certified& a, const certified& b) { return (a - b).sign() > 0; }
+    friend bool operator<=(const certified& a, const certified& b) { return (a - b).sign() <= 0; }
+    friend bool operator>=(const certified& a, const certified& b) { return (a - b).sign() >= 0; }
+    friend bool operator==(const certified& a, const certified& b) { return (a - b).sign() == 0; }
+    friend bool operator!=(const certified& a, const certified& b) { return (a - b).sign() != 0; }
+
+private:
+    static constexpr double u = 0x1p-53;
+    // Underflow: the product and the three error terms can each lose 2^-1075.
+    static constexpr double eta = 0x1p-1072;
+    // Only the bound's own rounding (relative 2^-52 per operation on it, at
+    // most four of them) needs covering; 2^-48 leaves room.
+    static double widen(double e) { return e * (1 + 0x1p-48); }
+
+    double v_ = 0;
+    double e_ = 0;
+};
+
+template <>
+struct number_traits<certified> {
+    static constexpr number_category category = number_category::filtered;
+    static constexpr const char* name = "certified";
+    static certified from_double(double x) { return certified(x); }
+    static double to_double(const certified& x) { return x.value(); }
+    static int sign(const certified& x) { return x.sign(); }
+    static constexpr double filter_slack = 1e-9;
+};
+
+}  // namespace influence2d
