@@ -2,6 +2,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "support/process.hpp"
+
 #include <sys/wait.h>
 
 #include <atomic>
@@ -15,84 +17,13 @@
 #include <vector>
 
 namespace fs = std::filesystem;
+using namespace test_process;
 
 namespace {
-
-const std::string cli_path = INFLUENCE2D_CLI_PATH;
 
 const char* const unit_square = "POLYGON((0 0,1 0,1 1,0 1,0 0))\n";
 // Overlapping, touching along x = 1, apart.
 const char* const three_poses = "tx,ty,theta\n0.5,0,0\n1,0,0\n2.5,0,0\n";
-
-std::string quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
-    return lines;
-}
-
-/// A fresh directory under the system's temporary directory, removed at the end.
-class temp_dir {
-public:
-    temp_dir() {
-        static std::atomic<int> counter{0};
-        const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-        path_ = fs::temp_directory_path() /
-                ("influence2d_cli_" + std::to_string(stamp) + "_" + std::to_string(counter++));
-        fs::create_directories(path_);
-    }
-    ~temp_dir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    temp_dir(const temp_dir&) = delete;
-    temp_dir& operator=(const temp_dir&) = delete;
-
-    fs::path file(const std::string& name, const std::string& content) const {
-        const fs::path p = path_ / name;
-        std::ofstream(p, std::ios::binary) << content;
-        return p;
-    }
-    fs::path operator/(const std::string& name) const { return path_ / name; }
-
-private:
-    fs::path path_;
-};
-
-struct run_result {
-    int exit_code = -1;
-    std::string out;
-    std::string err;
-};
-
-/// Runs the tool with `args` (already quoted), capturing stdout and stderr.
-run_result run_cli(const temp_dir& dir, const std::string& args) {
-    REQUIRE(!cli_path.empty());
-    const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-    const std::string command =
-        quote(cli_path) + " " + args + " >" + quote(out.string()) + " 2>" + quote(err.string());
-    const int status = std::system(command.c_str());
-    run_result r;
-    REQUIRE(status != -1);
-    REQUIRE(WIFEXITED(status));
-    r.exit_code = WEXITSTATUS(status);
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-}
 
 std::string scene_args(const fs::path& a, const fs::path& b) {
     return "collide --static " + quote(a.string()) + " --moving " + quote(b.string());

@@ -5,10 +5,7 @@
 
 using namespace influence2d;
 
-template <class NT>
-point<NT> pt(double x, double y) {
-    return {number_traits<NT>::from_double(x), number_traits<NT>::from_double(y)};
-}
+using test_shapes::pt;
 
 TEMPLATE_TEST_CASE("covering: triangle signs and barycentric signs", "[covering]", INFLUENCE2D_NUMBER_TYPES) {
     using NT = TestType;
@@ -20,7 +17,7 @@ TEMPLATE_TEST_CASE("covering: triangle signs and barycentric signs", "[covering]
     CHECK((s.alpha == 1 && s.beta == 1 && s.gamma == 1));
     s = cov.signs(0, pt<NT>(2, -1));  // beyond the edge, inside its cone
     CHECK((s.alpha == -1 && s.beta == 1 && s.gamma == 1));
-    s = cov.signs(0, pt<NT>(-3, -3));  // on the line O-V_0: gamma == 0... beyond the edge
+    s = cov.signs(0, pt<NT>(-3, -3));  // on the line O-V_0 (gamma == 0), beyond the edge
     CHECK((s.alpha == -1 && s.gamma == 0 && s.beta == 1));
     s = cov.signs(0, pt<NT>(5, 1));  // outside the cone, past V_1's side
     CHECK(s.beta == -1);

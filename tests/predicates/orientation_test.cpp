@@ -5,10 +5,7 @@
 
 using namespace influence2d;
 
-template <class NT>
-point<NT> pt(double x, double y) {
-    return {number_traits<NT>::from_double(x), number_traits<NT>::from_double(y)};
-}
+using test_shapes::pt;
 
 TEMPLATE_TEST_CASE("orientation: left, right, collinear", "[orientation]", INFLUENCE2D_NUMBER_TYPES) {
     const auto a = pt<TestType>(0, 0), b = pt<TestType>(4, 0);

@@ -5,10 +5,7 @@
 
 using namespace influence2d;
 
-template <class NT>
-point<NT> pt(double x, double y) {
-    return {number_traits<NT>::from_double(x), number_traits<NT>::from_double(y)};
-}
+using test_shapes::pt;
 
 TEMPLATE_TEST_CASE("segments_intersect: closed segments", "[segments]", INFLUENCE2D_NUMBER_TYPES) {
     using NT = TestType;

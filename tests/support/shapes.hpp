@@ -16,6 +16,12 @@ using influence2d::ring_role;
 /// Every number type the detector is tested with.
 #define INFLUENCE2D_NUMBER_TYPES float, double, long double, influence2d::exact_rational
 
+/// The point (x, y) in number type NT.
+template <class NT>
+point<NT> pt(double x, double y) {
+    return {influence2d::number_traits<NT>::from_double(x), influence2d::number_traits<NT>::from_double(y)};
+}
+
 inline ring_input ring(std::vector<point<double>> v, ring_role role = ring_role::outer) {
     return ring_input{std::move(v), role};
 }
