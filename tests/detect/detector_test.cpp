@@ -171,3 +171,22 @@ TEMPLATE_TEST_CASE("detector: temporal coherence over a sequence equals the refe
         CHECK(sound.statistics().candidate_rebuilds < sound.statistics().frames);
     }
 }
+
+TEST_CASE("detector: exact at the ends of double's range", "[detector]") {
+    // A square of side 4s and a triangle of side s, for scales s where squares of
+    // coordinates overflow or underflow in double. The double filters once
+    // dropped candidate edges here (their squares left double's range), so the
+    // exact detector missed contacts that the brute-force reference found.
+    for (const double s : {1e-300, 1e-160, 1.0, 1e160, 1e300, 1e307}) {
+        const polygon a({test_shapes::ring({{0, 0}, {4 * s, 0}, {4 * s, 4 * s}, {0, 4 * s}})});
+        const polygon b({test_shapes::ring({{0, 0}, {s, 0}, {0, s}})});
+        for (const double x : {-2.0, -1.0, -0.5, 1.0, 4.0, 4.5}) {
+            INFO("scale " << s << ", x " << x);
+            const pose p{x * s, s, 0};
+            const bool expected = x >= -1 && x <= 4;  // touching at x = -1 and x = 4
+            const auto r = ask<exact_rational>(a, b, p);
+            check_same(r);
+            CHECK(r.brute.collides == expected);
+        }
+    }
+}

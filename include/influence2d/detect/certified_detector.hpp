@@ -4,6 +4,7 @@
 // that double precision cannot certify is answered again in exact rationals.
 
 #include <cstddef>
+#include <optional>
 
 #include "influence2d/core/pose.hpp"
 #include "influence2d/detect/brute_force.hpp"
@@ -24,22 +25,32 @@ template <template <class> class D>
 class certified_detector {
 public:
     certified_detector(const polygon& static_polygon, const polygon& moving_polygon, detector_options options = {})
-        : fast_(static_polygon, moving_polygon, options), exact_(static_polygon, moving_polygon, options) {}
+        : exact_(static_polygon, moving_polygon, options) {
+        // Preprocessing decides signs too; if one is not certain in double
+        // (a scene at the edge of double's range), every frame goes exact.
+        try {
+            fast_.emplace(static_polygon, moving_polygon, options);
+        } catch (const uncertain_sign&) {
+            fast_.reset();
+        }
+    }
 
     frame_result collide(const pose& p) {
-        try {
-            return fast_.collide(p);
-        } catch (const uncertain_sign&) {
-            ++exact_frames_;
-            return exact_.collide(p);
+        if (fast_) {
+            try {
+                return fast_->collide(p);
+            } catch (const uncertain_sign&) {
+            }
         }
+        ++exact_frames_;
+        return exact_.collide(p);
     }
 
     /// Frames answered in exact arithmetic so far.
     std::size_t exact_frames() const { return exact_frames_; }
 
 private:
-    D<certified> fast_;
+    std::optional<D<certified>> fast_;
     D<exact_rational> exact_;
     std::size_t exact_frames_ = 0;
 };

@@ -88,7 +88,7 @@ public:
         candidates_.clear();
         const polygon& as = a_->shape;
         for (std::uint32_t e : cache_)
-            if (in_extended_area(options_.shape, pd, as.vertex(e), as.vertex(as.next(e)), n + frame_margin))
+            if (may_be_in_extended_area(options_.shape, pd, as.vertex(e), as.vertex(as.next(e)), n + frame_margin))
                 candidates_.push_back(e);
         stats_.candidate_edges += candidates_.size();
         if (candidates_.empty()) {
@@ -127,7 +127,7 @@ private:
         const double keep = reach_ + skin_ + frame_margin + margin_;
         const polygon& s = a_->shape;
         for (std::uint32_t e : grid_.query(pd))
-            if (segment_distance(pd, s.vertex(e), s.vertex(s.next(e))) <= keep) cache_.push_back(e);
+            if (may_be_within(pd, s.vertex(e), s.vertex(s.next(e)), keep)) cache_.push_back(e);
         cache_center_ = pd;
         cache_valid_ = false;
         if (cache_.empty()) cache_center_inside_ = a_->areas.locate(b_.centroid()) == location::inside;

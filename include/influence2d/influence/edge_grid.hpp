@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "influence2d/core/box.hpp"
@@ -25,13 +26,30 @@ struct edge_list {
     std::size_t size() const { return static_cast<std::size_t>(last - first); }
 };
 
-/// Distance from p to the segment [a, b] in double, for filters only.
+/// Whether the double distance from p to [a, b] may be at most `reach`: also
+/// when it is not finite (coordinates whose differences overflow), so that a
+/// filter built on it stays conservative.
+inline bool may_be_within(const point<double>& p, const point<double>& a, const point<double>& b, double reach);
+
+/// Distance from p to the segment [a, b] in double, for filters only. The
+/// differences are first scaled by a power of two (exactly) to magnitude ~1,
+/// so that squaring them neither overflows nor underflows at any scale.
 inline double segment_distance(const point<double>& p, const point<double>& a, const point<double>& b) {
-    const double abx = b.x - a.x, aby = b.y - a.y, apx = p.x - a.x, apy = p.y - a.y;
+    double abx = b.x - a.x, aby = b.y - a.y, apx = p.x - a.x, apy = p.y - a.y;
+    const double big = std::max({std::fabs(abx), std::fabs(aby), std::fabs(apx), std::fabs(apy)});
+    if (big == 0) return 0;
+    if (!std::isfinite(big)) return std::numeric_limits<double>::infinity();
+    const int e = std::ilogb(big);
+    abx = std::ldexp(abx, -e), aby = std::ldexp(aby, -e), apx = std::ldexp(apx, -e), apy = std::ldexp(apy, -e);
     const double ab2 = abx * abx + aby * aby;
     double t = ab2 > 0 ? (abx * apx + aby * apy) / ab2 : 0;
     t = std::min(1.0, std::max(0.0, t));
-    return std::hypot(apx - t * abx, apy - t * aby);
+    return std::ldexp(std::hypot(apx - t * abx, apy - t * aby), e);
+}
+
+inline bool may_be_within(const point<double>& p, const point<double>& a, const point<double>& b, double reach) {
+    const double d = segment_distance(p, a, b);
+    return d <= reach || !std::isfinite(d);
 }
 
 class edge_grid {
@@ -44,6 +62,16 @@ public:
     edge_grid(const polygon& shape, double reach, double slack) {
         const double r = reach + slack;
         area_ = shape.bounds().inflated(r);
+        if (!std::isfinite(area_.max_x - area_.min_x) || !std::isfinite(area_.max_y - area_.min_y)) {
+            // Extents beyond double's range: one cell holding every edge.
+            area_ = box{-std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
+                        std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+            nx_ = ny_ = 1;
+            offsets_ = {0, static_cast<std::uint32_t>(shape.size())};
+            edges_.resize(shape.size());
+            for (std::size_t e = 0; e < shape.size(); ++e) edges_[e] = static_cast<std::uint32_t>(e);
+            return;
+        }
         const double w = area_.max_x - area_.min_x, h = area_.max_y - area_.min_y;
         const double n = static_cast<double>(shape.size());
         // Cells about as wide as the reach, but no more than ~8 per edge.
@@ -72,7 +100,7 @@ public:
                     const point<double> c{area_.min_x + (static_cast<double>(x) + 0.5) * cw,
                                           area_.min_y + (static_cast<double>(y) + 0.5) * ch};
                     // Points of the cell are within half a diagonal of its centre.
-                    if (segment_distance(c, a, b) <= r + half_diagonal * (1 + 1e-12) + slack)
+                    if (may_be_within(c, a, b, r + half_diagonal * (1 + 1e-12) + slack))
                         visit(y * nx_ + x);
                 }
         };
@@ -97,13 +125,11 @@ public:
     std::size_t entry_count() const { return edges_.size(); }
 
 private:
-    std::size_t cell_x(double x) const {
-        const double f = std::floor((x - area_.min_x) * sx_);
-        return static_cast<std::size_t>(std::clamp(f, 0.0, static_cast<double>(nx_ - 1)));
-    }
-    std::size_t cell_y(double y) const {
-        const double f = std::floor((y - area_.min_y) * sy_);
-        return static_cast<std::size_t>(std::clamp(f, 0.0, static_cast<double>(ny_ - 1)));
+    std::size_t cell_x(double x) const { return cell_index(std::floor((x - area_.min_x) * sx_), nx_); }
+    std::size_t cell_y(double y) const { return cell_index(std::floor((y - area_.min_y) * sy_), ny_); }
+    static std::size_t cell_index(double f, std::size_t count) {
+        if (!(f > 0)) return 0;  // also NaN, from coordinates beyond double's range
+        return f < static_cast<double>(count - 1) ? static_cast<std::size_t>(f) : count - 1;
     }
 
     box area_;

@@ -2,6 +2,9 @@
 // Extended influence areas of length n (method.md section 5): exact membership
 // of a point, in either shape. Both contain every point within n of the edge.
 
+#include <algorithm>
+#include <cmath>
+
 #include "influence2d/core/point.hpp"
 #include "influence2d/detect/result.hpp"
 #include "influence2d/predicates/segments.hpp"
@@ -38,6 +41,23 @@ bool in_extended_area(extended_area shape, const point<NT>& p, const point<NT>& 
                       const NT& n) {
     const NT n2 = n * n;
     return shape == extended_area::capsule ? in_capsule(p, a, b, n2) : in_band(p, a, b, n, n2);
+}
+
+/// Whether p may lie in the extended area of length n of [a, b], evaluated in
+/// double for a filter: coordinates are taken relative to a and scaled by a
+/// power of two to magnitude ~1 first, so that no square overflows or
+/// underflows; non-finite differences keep the edge.
+inline bool may_be_in_extended_area(extended_area shape, const point<double>& p, const point<double>& a,
+                                    const point<double>& b, double n) {
+    const double big = std::max({std::fabs(b.x - a.x), std::fabs(b.y - a.y), std::fabs(p.x - a.x),
+                                 std::fabs(p.y - a.y), n});
+    if (!std::isfinite(big)) return true;
+    if (big == 0) return true;
+    const int e = std::ilogb(big);
+    const auto scaled = [&](const point<double>& q) {
+        return point<double>{std::ldexp(q.x - a.x, -e), std::ldexp(q.y - a.y, -e)};
+    };
+    return in_extended_area(shape, scaled(p), point<double>{0, 0}, scaled(b), std::ldexp(n, -e));
 }
 
 }  // namespace influence2d

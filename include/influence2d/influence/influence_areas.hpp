@@ -81,7 +81,12 @@ public:
             double lo = std::atan2(from.y - o.y, from.x - o.x) - spread;
             double hi = std::atan2(to.y - o.y, to.x - o.x) + spread;
             if (hi < lo) hi += two_pi;
-            if (!(spread < 0.5)) hi = lo + two_pi;
+            // A direction not known to half a radian (or not finite: coordinates
+            // whose differences overflow) puts the cone in every bucket.
+            if (!(spread < 0.5) || !std::isfinite(lo)) {
+                lo = -3.141592653589793;
+                hi = lo + two_pi;
+            }
             const double k = static_cast<double>(buckets_) / two_pi;
             const long first = static_cast<long>(std::floor((lo + 3.141592653589793) * k));
             const long last = static_cast<long>(std::floor((hi + 3.141592653589793) * k));
@@ -108,7 +113,8 @@ public:
         const double dx = tr::to_double(p.x - cov_->origin().x);
         const double dy = tr::to_double(p.y - cov_->origin().y);
         const double scale = origin_scale_ + std::fabs(tr::to_double(p.x)) + std::fabs(tr::to_double(p.y));
-        const bool direction_known = std::fabs(dx) + std::fabs(dy) > 1e3 * tr::filter_slack * scale;
+        const bool direction_known =
+            std::fabs(dx) + std::fabs(dy) > 1e3 * tr::filter_slack * scale && std::isfinite(dx + dy + scale);
         const std::uint32_t* first = all_.data();
         const std::uint32_t* last = all_.data() + all_.size();
         if (direction_known) {

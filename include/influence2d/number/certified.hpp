@@ -36,10 +36,24 @@ public:
     double value() const { return v_; }
     double error() const { return e_; }
 
+    /// Whether the value is known exactly (an input double, or an operation
+    /// whose bound is still 0).
+    bool exact() const { return e_ == 0; }
+
+    /// Stores the sign in `s` and returns true when it is certain.
+    bool try_sign(int& s) const {
+        if (std::fabs(v_) > e_) {  // false for NaN values or bounds
+            s = v_ > 0 ? 1 : -1;
+            return true;
+        }
+        s = 0;
+        return v_ == 0 && e_ == 0;
+    }
+
     /// -1, 0 or +1, when certain.
     int sign() const {
-        if (std::fabs(v_) > e_) return v_ > 0 ? 1 : -1;  // false for NaN values or bounds
-        if (v_ == 0 && e_ == 0) return 0;
+        int s;
+        if (try_sign(s)) return s;
         throw uncertain_sign();
     }
 
@@ -88,6 +102,11 @@ struct number_traits<certified> {
     static double to_double(const certified& x) { return x.value(); }
     static int sign(const certified& x) { return x.sign(); }
     static constexpr double filter_slack = 1e-9;
+    /// The orientation predicate may settle an uncertain sign exactly when its
+    /// three points are input doubles (see predicates/orientation.hpp).
+    static constexpr bool exact_double_fallback = true;
+    static bool try_sign(const certified& x, int& s) { return x.try_sign(s); }
+    static bool exact(const certified& x) { return x.exact(); }
 };
 
 }  // namespace influence2d

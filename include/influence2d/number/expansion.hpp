@@ -58,4 +58,18 @@ private:
     std::vector<double> parts_;
 };
 
+/// The exact sign of the orientation determinant of three points with double
+/// coordinates: [a b c] = bx cy - bx ay - ax cy - by cx + by ax + ay cx, each
+/// product kept exactly.
+inline int orientation_sign(double ax, double ay, double bx, double by, double cx, double cy) {
+    accumulator acc;
+    acc.add_product(bx, cy);
+    acc.add_product(-bx, ay);
+    acc.add_product(-ax, cy);
+    acc.add_product(-by, cx);
+    acc.add_product(by, ax);
+    acc.add_product(ay, cx);
+    return acc.sign();
+}
+
 }  // namespace influence2d::expansion

@@ -1,17 +1,40 @@
 #pragma once
 // The orientation predicate: the one sign question everything else is made of.
 
+#include <type_traits>
+
 #include "influence2d/core/point.hpp"
+#include "influence2d/number/expansion.hpp"
 #include "influence2d/number/traits.hpp"
 
 namespace influence2d {
+
+namespace detail {
+template <class NT, class = void>
+struct has_exact_double_fallback : std::false_type {};
+template <class NT>
+struct has_exact_double_fallback<NT, std::void_t<decltype(number_traits<NT>::exact_double_fallback)>>
+    : std::bool_constant<number_traits<NT>::exact_double_fallback> {};
+}  // namespace detail
 
 /// Sign of the signed area [a b c]: +1 when c lies left of the directed line
 /// a->b (counter-clockwise turn), -1 when right, 0 when the three are collinear.
 /// Exact when NT's ring operations are exact.
 template <class NT>
 int orientation(const point<NT>& a, const point<NT>& b, const point<NT>& c) {
-    return number_traits<NT>::sign((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+    using tr = number_traits<NT>;
+    const NT det = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    if constexpr (detail::has_exact_double_fallback<NT>::value) {
+        // A filtered type whose filter fails on three input doubles (say, the
+        // static polygon's vertices and centroid, exactly collinear) gets the
+        // exact sign from floating-point expansions.
+        int s;
+        if (tr::try_sign(det, s)) return s;
+        if (tr::exact(a.x) && tr::exact(a.y) && tr::exact(b.x) && tr::exact(b.y) && tr::exact(c.x) && tr::exact(c.y))
+            return expansion::orientation_sign(tr::to_double(a.x), tr::to_double(a.y), tr::to_double(b.x),
+                                               tr::to_double(b.y), tr::to_double(c.x), tr::to_double(c.y));
+    }
+    return tr::sign(det);
 }
 
 /// Whether p, known to be collinear with a and b, lies on the closed segment [a, b].
