@@ -57,7 +57,7 @@ public:
         using tr = number_traits<NT>;
         reach_ = moving_reach(b_.radius(), options_.distance);
         skin_ = options_.temporal_coherence ? 0.25 * reach_ : 0.0;
-        margin_ = tr::filter_slack * 4 * (a_->scale + a_->radius + reach_ + skin_) +
+        margin_ = tr::filter_slack * 4 * (a_->scale + a_->radius + reach_ + skin_ + coordinate_scale(moving_polygon)) +
                   std::numeric_limits<double>::min();
         grid_ = edge_grid(a_->shape, reach_ + skin_, margin_);
         distance_ = tr::from_double(options_.distance);
@@ -70,8 +70,11 @@ public:
         const rotation_pose t(q);
         b_.place(t);
         const point<double> pd = b_.approximate_centroid();
-        // Rounding of the posed coordinates is relative to their magnitude.
-        const double frame_margin = margin_ + tr::filter_slack * (std::fabs(pd.x) + std::fabs(pd.y));
+        // Rounding of the posed coordinates is relative to the magnitudes of
+        // the terms that make them: B's own coordinates (in margin_), the
+        // translation, and the result.
+        const double frame_margin =
+            margin_ + tr::filter_slack * (std::fabs(pd.x) + std::fabs(pd.y) + std::fabs(q.tx) + std::fabs(q.ty));
         const double n = reach_ + frame_margin;
 
         // 1. Bounding circles (a filter: in double, widened by the margin).
