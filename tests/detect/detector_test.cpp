@@ -190,3 +190,26 @@ TEST_CASE("detector: exact at the ends of double's range", "[detector]") {
         }
     }
 }
+
+TEST_CASE("detector: exact when the moving polygon's own coordinates are far from its origin", "[detector]") {
+    // B is given around (2^50, 2^50) and posed back near A by a translation of
+    // about -2^50: the double positions used by the filters are then off by up
+    // to ulp(2^50) = 0.25, which the filters' margin must cover.
+    const double far = 0x1p50;
+    const polygon a = square(0, 0, 4);
+    const polygon b({test_shapes::ring({{far, far}, {far + 1, far}, {far + 1, far + 1}, {far, far + 1}})});
+    for (const double x : {-1.5, -1.0, -0.75, 0.0, 3.5, 4.0, 4.25}) {
+        INFO("x " << x);
+        const pose p{x - far, 1 - far, 0};
+        const auto r = ask<exact_rational>(a, b, p);
+        check_same(r);
+        CHECK(r.brute.collides == (x >= -1 && x <= 4));
+    }
+    // Turned: the pose is then inexact in double, exact in the exact type.
+    for (int k = 0; k < 200; ++k) {
+        const double theta = 0.03 * k;
+        const pose p{-far * std::cos(theta) + far * std::sin(theta) + 0.02 * k,
+                     -far * std::sin(theta) - far * std::cos(theta) + 1, theta};
+        check_same(ask<exact_rational>(a, b, p));
+    }
+}
