@@ -21,6 +21,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "support/effort.hpp"
+
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -50,8 +52,8 @@ struct frame_counts {
     int random;
     int contact;
 };
-constexpr frame_counts counts_touching{36, 24};
-constexpr frame_counts counts_distance{9, 6};
+const frame_counts counts_touching{test_effort::scaled(36), test_effort::scaled(24)};
+const frame_counts counts_distance{test_effort::scaled(9), test_effort::scaled(6)};
 
 struct shape {
     std::string name;
@@ -261,7 +263,7 @@ tally run_all(double d, frame_counts counts) {
 TEST_CASE("random frames: detectors agree with the CGAL reference, d = 0", "[detect][reference][random]") {
     const tally t = run_all(0, counts_touching);
     CHECK(t.mismatches == 0);
-    CHECK(t.frames >= 4000);
+    CHECK(t.frames >= static_cast<std::size_t>(4000 * test_effort::effort()));
     // The frames must exercise both answers, and the exact contacts must
     // mostly be real touching (collide, yet apart a hair further out).
     CHECK(t.collisions >= t.frames / 4);
@@ -272,7 +274,7 @@ TEST_CASE("random frames: detectors agree with the CGAL reference, d = 0", "[det
 TEST_CASE("random frames: detectors agree with the CGAL reference, d = 0.5", "[detect][reference][random]") {
     const tally t = run_all(0.5, counts_distance);
     CHECK(t.mismatches == 0);
-    CHECK(t.frames >= 1000);
+    CHECK(t.frames >= static_cast<std::size_t>(1000 * test_effort::effort()));
     CHECK(t.collisions >= t.frames / 4);
     CHECK(t.frames - t.collisions >= t.frames / 10);
 }
@@ -280,7 +282,7 @@ TEST_CASE("random frames: detectors agree with the CGAL reference, d = 0.5", "[d
 TEST_CASE("random frames: detectors agree with the CGAL reference, d = 3", "[detect][reference][random]") {
     const tally t = run_all(3, counts_distance);
     CHECK(t.mismatches == 0);
-    CHECK(t.frames >= 1000);
+    CHECK(t.frames >= static_cast<std::size_t>(1000 * test_effort::effort()));
     CHECK(t.collisions >= t.frames / 4);
     CHECK(t.frames - t.collisions >= t.frames / 10);
 }
