@@ -58,3 +58,16 @@ TEST_CASE("polygon: repeated vertices stay as zero-length edges", "[polygon]") {
     CHECK(p.size() == 4);
     CHECK(p.vertex(1) == p.vertex(2));
 }
+
+TEST_CASE("polygon: ring orientation is exact at 1e200 and at subnormal scale", "[polygon]") {
+    // Products of such coordinates leave double's range; the shoelace sign must
+    // not. Each ring is given clockwise and must be stored counter-clockwise.
+    for (const double s : {1e200, 1e-170, 0x1p-1070}) {
+        INFO("scale " << s);
+        polygon p({ring({{0, 0}, {0, s}, {s, s}, {s, 0}})});
+        CHECK(p.vertex(0) == point<double>{s, 0});  // reversed
+        polygon h({ring({{0, 0}, {4 * s, 0}, {4 * s, 4 * s}, {0, 4 * s}}),
+                   ring({{s, s}, {2 * s, s}, {2 * s, 2 * s}, {s, 2 * s}}, ring_role::hole)});
+        CHECK(h.vertex(4) == point<double>{s, 2 * s});  // the hole reversed to clockwise
+    }
+}

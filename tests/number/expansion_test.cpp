@@ -1,5 +1,12 @@
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <limits>
+
+#include <random>
+#include <vector>
+
+#include "influence2d/number/cgal.hpp"
 #include "influence2d/number/expansion.hpp"
 
 using influence2d::expansion::accumulator;
@@ -29,4 +36,66 @@ TEST_CASE("expansion: products keep their rounding error", "[expansion]") {
     CHECK(acc.sign() == 0);
     acc.add(-0x1p-100);
     CHECK(acc.sign() == -1);
+}
+
+TEST_CASE("expansion: exact over the whole range of double", "[expansion]") {
+    // Products that overflow double (1e200 * 1e200) and that underflow it
+    // (subnormal times subnormal) are still summed exactly.
+    accumulator big;
+    big.add_product(1e200, 1e200);
+    big.add_product(-1e200, 1e200);
+    CHECK(big.sign() == 0);
+    big.add_product(0x1p-1074, 0x1p-1074);  // 2^-2148 beside 1e400-sized terms
+    CHECK(big.sign() == 1);
+    big.add_product(std::numeric_limits<double>::max(), -std::numeric_limits<double>::max());
+    CHECK(big.sign() == -1);
+
+    accumulator tiny;
+    tiny.add_product(3 * 0x1p-1074, 0x1p-1074);
+    tiny.add_product(-0x1p-1074, 0x1p-1074);
+    tiny.add_product(-0x1p-1074, 2 * 0x1p-1074);
+    CHECK(tiny.sign() == 0);
+    tiny.add_product(-0x1p-1074, 0x1p-1074);
+    CHECK(tiny.sign() == -1);
+}
+
+TEST_CASE("expansion: orientation of points at 1e200 and at subnormal scale", "[expansion]") {
+    using influence2d::expansion::orientation_sign;
+    CHECK(orientation_sign(0, 0, 1e200, 0, 1e200, 1e200) == 1);
+    CHECK(orientation_sign(0, 0, 1e200, 0, 2e200, 0) == 0);
+    CHECK(orientation_sign(0, 0, 0x1p-1070, 0, 0x1p-1070, 0x1p-1074) == 1);
+    CHECK(orientation_sign(0, 0, 0x1p-1070, 0, 0x1p-1070, -0x1p-1074) == -1);
+    // Many terms cancelling with carries through many words.
+    accumulator acc;
+    for (int k = 0; k < 1000; ++k) acc.add_product(std::ldexp(1.0, k - 500), std::ldexp(-1.0, 500 - k));
+    acc.add(1000);
+    CHECK(acc.sign() == 0);
+}
+
+TEST_CASE("expansion: signs of random sums of products equal those of exact rationals", "[expansion]") {
+    std::mt19937_64 rng(17);
+    const auto any_double = [&] {
+        // Random sign, mantissa and exponent over the whole finite range.
+        const double m = static_cast<double>(rng() >> 11) * 0x1p-53;
+        const int e = static_cast<int>(rng() % 2098) - 1074;
+        return (rng() & 1 ? -1 : 1) * std::ldexp(m, e);
+    };
+    for (int trial = 0; trial < 3000; ++trial) {
+        accumulator acc;
+        influence2d::exact_rational sum(0);
+        const int terms = 1 + static_cast<int>(rng() % 8);
+        std::vector<std::pair<double, double>> products;
+        for (int k = 0; k < terms; ++k) {
+            double a = any_double(), b = any_double();
+            if (k > 0 && rng() % 3 == 0) {  // cancel an earlier term exactly, or nearly
+                a = -products[0].first;
+                b = products[0].second;
+            }
+            products.emplace_back(a, b);
+            acc.add_product(a, b);
+            sum += influence2d::exact_rational(a) * influence2d::exact_rational(b);
+        }
+        INFO("trial " << trial);
+        CHECK(acc.sign() == static_cast<int>(CGAL::sign(sum)));
+    }
 }

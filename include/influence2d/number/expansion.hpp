@@ -1,66 +1,87 @@
 #pragma once
-// Exact signs of sums of products of doubles, by floating-point expansions
-// (error-free transformations: two_sum and an fma-based two_product).
-// Used where preprocessing must decide a sign exactly on input doubles:
-// ring orientation, and the orientation predicate on unposed input points.
+// Exact signs of sums of products of doubles, over the whole range of double
+// (subnormals and products beyond double's range included), for decisions on
+// input doubles: ring orientation, and the orientation predicate on three input
+// points when a filter cannot decide it.
 
 #include <cmath>
-#include <vector>
+#include <cstdint>
 
 namespace influence2d::expansion {
 
-/// a + b = s + e exactly (Knuth's two-sum).
-inline void two_sum(double a, double b, double& s, double& e) {
-    s = a + b;
-    const double bv = s - a;
-    const double av = s - bv;
-    e = (a - av) + (b - bv);
-}
-
-/// a * b = p + e exactly (fma computes the rounding error of the product).
-inline void two_product(double a, double b, double& p, double& e) {
-    p = a * b;
-    e = std::fma(a, b, -p);
-}
-
-/// An exact sum of doubles kept as a nonoverlapping expansion, smallest
-/// component first (Shewchuk's grow-expansion with zero elimination).
+/// An exact sum of products of doubles, kept as one fixed-point two's
+/// complement integer wide enough for any of them: a finite double is M 2^E
+/// with an integer |M| < 2^53 and E >= -1126, so a product is an integer below
+/// 2^106 times 2^(E1 + E2) with E1 + E2 in [-2252, 1942]; the integer counts
+/// units of 2^-2252 in 70 words of 64 bits (4480 bits: the 4300 a product can
+/// reach, and room for 2^100 terms' carries). Non-finite inputs are ignored by
+/// the callers' preconditions: they never reach it.
 class accumulator {
 public:
-    void add(double x) {
-        double q = x;
-        std::size_t k = 0;
-        for (double h : parts_) {
-            double s, e;
-            two_sum(q, h, s, e);
-            q = s;
-            if (e != 0) parts_[k++] = e;
-        }
-        parts_.resize(k);
-        if (q != 0) parts_.push_back(q);
-    }
+    /// Adds x exactly.
+    void add(double x) { add_product(x, 1.0); }
 
     /// Adds a * b exactly.
     void add_product(double a, double b) {
-        double p, e;
-        two_product(a, b, p, e);
-        add(e);
-        add(p);
+        if (a == 0 || b == 0) return;
+        int ea = 0, eb = 0;
+        const double fa = std::frexp(a, &ea), fb = std::frexp(b, &eb);
+        // |fa|, |fb| in [0.5, 1): the integers |fa| 2^53 and |fb| 2^53 are exact.
+        const auto ma = static_cast<std::uint64_t>(std::ldexp(std::fabs(fa), 53));
+        const auto mb = static_cast<std::uint64_t>(std::ldexp(std::fabs(fb), 53));
+        // The product ma mb < 2^106 as two words, from 32-bit halves.
+        const std::uint64_t a_lo = ma & 0xffffffffu, a_hi = ma >> 32, b_lo = mb & 0xffffffffu, b_hi = mb >> 32;
+        const std::uint64_t lo = a_lo * b_lo, mid = a_lo * b_hi + a_hi * b_lo, hi = a_hi * b_hi;
+        const std::uint64_t low = lo + (mid << 32);
+        const std::uint64_t high = hi + (mid >> 32) + (low < lo);
+        const int position = (ea - 53) + (eb - 53) + bias;  // bit of the product's unit
+        add_shifted(low, high, position, (a < 0) != (b < 0));
     }
 
-    /// The sign of the exact sum: that of its largest component.
+    /// The sign of the exact sum.
     int sign() const {
-        if (parts_.empty()) return 0;
-        return parts_.back() > 0 ? 1 : -1;
+        if (words_[count - 1] >> 63) return -1;
+        for (const std::uint64_t w : words_)
+            if (w != 0) return 1;
+        return 0;
     }
 
 private:
-    std::vector<double> parts_;
+    static constexpr int bias = 2252;
+    static constexpr int count = 70;
+
+    /// Adds (or subtracts) (high 2^64 + low) 2^position to the integer.
+    void add_shifted(std::uint64_t low, std::uint64_t high, int position, bool negative) {
+        const int word = position / 64, shift = position % 64;
+        // The value shifted spans at most three words.
+        const std::uint64_t part[3] = {low << shift, shift ? (high << shift) | (low >> (64 - shift)) : high,
+                                       shift ? high >> (64 - shift) : 0};
+        unsigned carry = 0;
+        for (int k = word; k < count; ++k) {
+            const std::uint64_t p = k - word < 3 ? part[k - word] : 0;
+            if (k - word >= 3 && carry == 0) break;
+            const std::uint64_t w = words_[k];
+            if (!negative) {
+                const std::uint64_t s = w + p;
+                const unsigned c1 = s < w;
+                const std::uint64_t t = s + carry;
+                carry = c1 | (t < s);
+                words_[k] = t;
+            } else {
+                const std::uint64_t s = w - p;
+                const unsigned b1 = w < p;
+                const std::uint64_t t = s - carry;
+                carry = b1 | (s < carry);
+                words_[k] = t;
+            }
+        }
+    }
+
+    std::uint64_t words_[count] = {};
 };
 
 /// The exact sign of the orientation determinant of three points with double
-/// coordinates: [a b c] = bx cy - bx ay - ax cy - by cx + by ax + ay cx, each
-/// product kept exactly.
+/// coordinates: [a b c] = bx cy - bx ay - ax cy - by cx + by ax + ay cx.
 inline int orientation_sign(double ax, double ay, double bx, double by, double cx, double cy) {
     accumulator acc;
     acc.add_product(bx, cy);

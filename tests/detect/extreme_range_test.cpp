@@ -1,0 +1,58 @@
+// Scenes whose coordinate products leave double's range. Ring orientation was
+// once decided with double products there, so a hole could be stored with the
+// outer ring's orientation and the exact detectors reported B, inside the hole,
+// as colliding; the CGAL reference said it does not.
+
+#include <catch2/catch.hpp>
+
+#include "influence2d/detect/brute_force.hpp"
+#include "influence2d/detect/certified_detector.hpp"
+#include "influence2d/detect/detector.hpp"
+#include "influence2d/io/wkt.hpp"
+#include "verification/cgal_reference.hpp"
+
+using namespace influence2d;
+
+namespace {
+
+struct scene {
+    const char* name;
+    const char* a;
+    const char* b;
+    pose p;
+};
+
+//  +-------------+
+//  |  +-------+  |   B, a small triangle, in the middle of the square hole
+//  |  |  |\   |  |
+//  |  |  |_\  |  |
+//  |  +-------+  |
+//  +-------------+
+const scene scenes[] = {
+    {"1e200", "POLYGON((0 0,1e200 0,1e200 1e200,0 1e200,0 0),(2e199 2e199,2e199 8e199,8e199 8e199,8e199 2e199,2e199 2e199))",
+     "POLYGON((0 0,1e199 0,0 1e199,0 0))", {4.0000000000000004e+199, 4.0000000000000004e+199, 0}},
+    {"subnormal, both rings clockwise",
+     "POLYGON((0 0,0 4.9406564584124654e-322,4.9406564584124654e-322 4.9406564584124654e-322,"
+     "4.9406564584124654e-322 0,0 0),(9.8813129168249309e-323 9.8813129168249309e-323,9.8813129168249309e-323 "
+     "3.9525251667299724e-322,3.9525251667299724e-322 3.9525251667299724e-322,3.9525251667299724e-322 "
+     "9.8813129168249309e-323,9.8813129168249309e-323 9.8813129168249309e-323))",
+     "POLYGON((0 0,4.9406564584124654e-323 0,0 4.9406564584124654e-323,0 0))",
+     {1.9762625833649862e-322, 1.9762625833649862e-322, 0}},
+    {"1e-170, clockwise outer ring",
+     "POLYGON((0 0,0 1e-170,1e-170 1e-170,1e-170 0,0 0),(2e-171 2e-171,2e-171 8e-171,8e-171 8e-171,8e-171 2e-171,2e-171 "
+     "2e-171))",
+     "POLYGON((0 0,1e-171 0,0 1e-171,0 0))", {3.9999999999999999e-171, 3.9999999999999999e-171, 0}},
+};
+
+}  // namespace
+
+TEST_CASE("extreme range: B inside a hole at 1e200, 1e-170 and subnormal scale", "[detector][extreme]") {
+    for (const scene& s : scenes) {
+        INFO(s.name);
+        const polygon a = read_wkt(s.a), b = read_wkt(s.b);
+        CHECK_FALSE(verification::cgal_reference(a, b).collide(s.p).collides);
+        CHECK_FALSE(detector<exact_rational>(a, b).collide(s.p).collides);
+        CHECK_FALSE(brute_force_detector<exact_rational>(a, b).collide(s.p).collides);
+        CHECK_FALSE(certified_detector<detector>(a, b).collide(s.p).collides);
+    }
+}
