@@ -9,6 +9,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -19,13 +20,16 @@
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/detect/brute_force.hpp"
+#include "influence2d/detect/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
+#include "influence2d/detect/interval_detector.hpp"
 #include "influence2d/detect/paper_detector.hpp"
 #include "influence2d/detect/result.hpp"
 #include "influence2d/detect/trajectory.hpp"
 #include "influence2d/io/csv.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "influence2d/number/multiprecision.hpp"
 
 namespace influence2d::cli {
 
@@ -49,19 +53,40 @@ struct collide_options {
 struct run_result {
     std::vector<frame_result> frames;
     double seconds = 0;
+    /// Filtered number types (certified, interval): frames answered again in
+    /// exact rationals.
+    std::optional<std::size_t> exact_frames;
 };
 
-/// Builds the detector (not timed), then times the frame loop alone.
-template <template <class> class Detector, class NT>
-run_result run_frames(const polygon& a, const polygon& b, const std::vector<pose>& poses,
-                      const detector_options& options) {
-    Detector<NT> det(a, b, options);
+/// Times the frame loop of a built detector.
+template <class Detector>
+run_result time_frames(Detector& det, const std::vector<pose>& poses) {
     run_result r;
     r.frames.resize(poses.size());
     const auto start = std::chrono::steady_clock::now();
     for (std::size_t i = 0; i < poses.size(); ++i) r.frames[i] = det.collide(poses[i]);
     const auto stop = std::chrono::steady_clock::now();
     r.seconds = std::chrono::duration<double>(stop - start).count();
+    return r;
+}
+
+/// Builds the detector (not timed), then times the frame loop alone.
+template <template <class> class Detector, class NT>
+run_result run_frames(const polygon& a, const polygon& b, const std::vector<pose>& poses,
+                      const detector_options& options) {
+    Detector<NT> det(a, b, options);
+    return time_frames(det, poses);
+}
+
+/// The same for a filtered number type: Wrapper<Detector> runs Detector in the
+/// fast type and answers a frame again in exact rationals when a sign is not
+/// certain (certified_detector, interval_detector).
+template <template <template <class> class> class Wrapper, template <class> class Detector>
+run_result run_filtered(const polygon& a, const polygon& b, const std::vector<pose>& poses,
+                        const detector_options& options) {
+    Wrapper<Detector> det(a, b, options);
+    run_result r = time_frames(det, poses);
+    r.exact_frames = det.exact_frames();
     return r;
 }
 
@@ -73,12 +98,32 @@ run_result run_algorithm(const std::string& algorithm, const polygon& a, const p
     return run_frames<detector, NT>(a, b, poses, options);
 }
 
+template <template <template <class> class> class Wrapper>
+run_result run_filtered_algorithm(const std::string& algorithm, const polygon& a, const polygon& b,
+                                  const std::vector<pose>& poses, const detector_options& options) {
+    if (algorithm == "brute-force") return run_filtered<Wrapper, brute_force_detector>(a, b, poses, options);
+    return run_filtered<Wrapper, detector>(a, b, poses, options);
+}
+
+/// Whether the number type answers through an exact fallback, which the
+/// paper's detector cannot use: its influence mask carries over from frame to
+/// frame, and a frame redone in exact rationals would not see the mask the
+/// fast detector built (nor leave it one), so the two would drift apart.
+bool is_filtered(const std::string& number_type) {
+    return number_type == "certified" || number_type == "interval";
+}
+
 run_result run(const std::string& number_type, const std::string& algorithm, const polygon& a,
                const polygon& b, const std::vector<pose>& poses, const detector_options& options) {
     if (number_type == "float") return run_algorithm<float>(algorithm, a, b, poses, options);
     if (number_type == "long-double")
         return run_algorithm<long double>(algorithm, a, b, poses, options);
+    if (number_type == "quad") return run_algorithm<quad>(algorithm, a, b, poses, options);
     if (number_type == "exact") return run_algorithm<exact_rational>(algorithm, a, b, poses, options);
+    if (number_type == "certified")
+        return run_filtered_algorithm<certified_detector>(algorithm, a, b, poses, options);
+    if (number_type == "interval")
+        return run_filtered_algorithm<interval_detector>(algorithm, a, b, poses, options);
     return run_algorithm<double>(algorithm, a, b, poses, options);
 }
 
@@ -125,6 +170,12 @@ std::string format_fixed(double x, int digits) {
 }
 
 void run_collide(const collide_options& o) {
+    if (o.algorithm == "paper" && is_filtered(o.number_type))
+        throw std::invalid_argument("--number-type " + o.number_type +
+                                    " cannot run --algorithm paper: the paper's detector keeps "
+                                    "its influence mask from frame to frame, which a frame "
+                                    "answered again in exact arithmetic cannot hand back; use "
+                                    "--algorithm sound or brute-force, or another number type");
     // Read every input and check the output path first; report all problems at once.
     std::vector<std::string> errors;
     polygon a, b;
@@ -192,6 +243,8 @@ void run_collide(const collide_options& o) {
                       : format_fixed(r.seconds * 1e6 / static_cast<double>(r.frames.size()), 3) +
                             " us")
               << "   (total " << format_fixed(total_ms, total_ms >= 1 ? 1 : 3) << " ms)\n";
+    if (r.exact_frames)
+        std::cout << "exact fallbacks: " << *r.exact_frames << " frames\n";
     if (!o.out.empty()) std::cout << "frames written:  " << o.out << "\n";
 }
 
@@ -262,10 +315,15 @@ void register_collide(CLI::App& app) {
         ->needs(trajectory_opt)
         ->type_name("G");
     sub->add_option("--number-type", o->number_type,
-                    "Arithmetic of the detector's decisions: float, double, long-double, or exact "
-                    "(CGAL rationals: exact answers, slower)")
+                    "Arithmetic of the detector's decisions: float, double, long-double, quad "
+                    "(113-bit software floating point); exact (CGAL rationals: exact answers, "
+                    "slower); certified (double with a running error bound: exact answers, a "
+                    "frame whose signs double cannot certify is answered again in exact "
+                    "rationals, counted as 'exact fallbacks'); interval (the same with CGAL's "
+                    "interval arithmetic). certified and interval run with --algorithm sound "
+                    "or brute-force only")
         ->capture_default_str()
-        ->check(CLI::IsMember({"float", "double", "long-double", "exact"}))
+        ->check(CLI::IsMember({"float", "double", "long-double", "quad", "exact", "certified", "interval"}))
         ->type_name("TYPE");
     sub->add_option("--algorithm", o->algorithm,
                     "Detector: sound (the method with its defects fixed), paper (Algorithm 3 "

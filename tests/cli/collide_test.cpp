@@ -88,7 +88,7 @@ TEST_CASE("cli collide: the tiny scene for every number type with sound and brut
     const auto poses = dir.file("poses.csv", three_poses);
     const auto frames = dir / "frames.csv";
     const std::regex pair_list(R"(\d+:\d+(;\d+:\d+)*)");
-    for (const char* type : {"float", "double", "long-double", "exact"}) {
+    for (const char* type : {"float", "double", "long-double", "quad", "exact", "certified", "interval"}) {
         for (const char* algorithm : {"sound", "brute-force"}) {
             for (const bool witness : {false, true}) {
                 INFO(type << " " << algorithm << (witness ? " --witness" : ""));
@@ -102,6 +102,9 @@ TEST_CASE("cli collide: the tiny scene for every number type with sound and brut
                       std::string::npos);
                 CHECK(r.out.find(std::string("algorithm:       ") + algorithm + "\n") !=
                       std::string::npos);
+                // Only the filtered types report their exact fallbacks.
+                const bool filtered = std::string(type) == "certified" || std::string(type) == "interval";
+                CHECK((r.out.find("exact fallbacks: ") != std::string::npos) == filtered);
                 const auto lines = lines_of(slurp(frames));
                 REQUIRE(lines.size() == 4);
                 if (!witness) {
@@ -134,6 +137,50 @@ TEST_CASE("cli collide: the paper's algorithm runs", "[cli]") {
         CHECK(r.exit_code == 0);
         CHECK(r.out.find("algorithm:       paper\n") != std::string::npos);
     }
+}
+
+TEST_CASE("cli collide: certified counts its exact fallbacks; the paper's algorithm refuses it", "[cli]") {
+    const temp_dir dir;
+    const auto a = dir.file("A.wkt", unit_square);
+    const auto poses = dir.file("poses.csv", three_poses);
+    const auto frames = dir / "frames.csv";
+    const std::regex fallbacks(R"(exact fallbacks: (\d+) frames\n)");
+    for (const char* algorithm : {"sound", "brute-force"}) {
+        INFO(algorithm);
+        auto r = run_cli(dir, scene_args(a, a) + " --poses " + quote(poses.string()) +
+                                  " --number-type certified --algorithm " + algorithm + " --out " +
+                                  quote(frames.string()));
+        INFO(r.err);
+        REQUIRE(r.exit_code == 0);
+        std::smatch m;
+        REQUIRE(std::regex_search(r.out, m, fallbacks));
+        // Frames 0 (overlapping along the bottom and top edges, collinear) and
+        // 1 (touching along x = 1) decide exact zeros of posed coordinates,
+        // which double cannot certify; in frame 2, apart, the brute force
+        // still meets the collinear lines of the bottom and top edges.
+        CHECK(std::stoi(m[1].str()) >= 2);
+        CHECK(std::stoi(m[1].str()) <= 3);
+        CHECK(lines_of(slurp(frames)) == std::vector<std::string>{"frame,collides", "0,1", "1,1", "2,0"});
+
+        // Frames apart and turned decide nothing in doubt: no fallback.
+        const auto apart = dir.file("apart.csv", "tx,ty,theta\n5,0.3,0.25\n0.2,-7,1\n");
+        r = run_cli(dir, scene_args(a, a) + " --poses " + quote(apart.string()) +
+                             " --number-type certified --algorithm " + algorithm);
+        REQUIRE(r.exit_code == 0);
+        CHECK(r.out.find("exact fallbacks: 0 frames\n") != std::string::npos);
+        CHECK(r.out.find("collisions:      0\n") != std::string::npos);
+    }
+
+    for (const char* type : {"certified", "interval"}) {
+        const auto r = run_cli(dir, scene_args(a, a) + " --poses " + quote(poses.string()) +
+                                        " --number-type " + type + " --algorithm paper --out " +
+                                        quote(frames.string()));
+        CHECK(r.exit_code == 2);
+        CHECK(r.err.find(std::string("influence2d: error: --number-type ") + type +
+                         " cannot run --algorithm paper") != std::string::npos);
+        CHECK(r.out.empty());
+    }
+    CHECK(!fs::exists(frames.string() + ".tmp"));
 }
 
 TEST_CASE("cli collide: bad WKT exits 2 naming the place and writes no output file", "[cli]") {
@@ -216,7 +263,8 @@ TEST_CASE("cli collide: --help exits 0 and documents every option", "[cli]") {
     for (const char* option :
          {"--static", "--moving", "--poses", "--trajectory", "--frames", "--gap", "--number-type",
           "--algorithm", "--extended-area", "--distance", "--witness", "--out", "circular",
-          "linear", "float", "long-double", "exact", "brute-force", "paper", "capsule", "band"}) {
+          "linear", "float", "long-double", "quad", "exact", "certified", "interval", "exact fallbacks",
+          "brute-force", "paper", "capsule", "band"}) {
         INFO(option);
         CHECK(r.out.find(option) != std::string::npos);
     }

@@ -39,12 +39,14 @@ inline double segment_distance(const point<double>& p, const point<double>& a, c
     const double big = std::max({std::fabs(abx), std::fabs(aby), std::fabs(apx), std::fabs(apy)});
     if (big == 0) return 0;
     if (!std::isfinite(big)) return std::numeric_limits<double>::infinity();
-    const int e = std::ilogb(big);
-    abx = std::ldexp(abx, -e), aby = std::ldexp(aby, -e), apx = std::ldexp(apx, -e), apy = std::ldexp(apy, -e);
+    // Outside this range squares could over- or underflow: scale first.
+    const int e = big > 0x1p-400 && big < 0x1p400 ? 0 : std::ilogb(big);
+    if (e != 0) abx = std::ldexp(abx, -e), aby = std::ldexp(aby, -e), apx = std::ldexp(apx, -e), apy = std::ldexp(apy, -e);
     const double ab2 = abx * abx + aby * aby;
     double t = ab2 > 0 ? (abx * apx + aby * apy) / ab2 : 0;
     t = std::min(1.0, std::max(0.0, t));
-    return std::ldexp(std::hypot(apx - t * abx, apy - t * aby), e);
+    const double d = std::hypot(apx - t * abx, apy - t * aby);
+    return e != 0 ? std::ldexp(d, e) : d;
 }
 
 inline bool may_be_within(const point<double>& p, const point<double>& a, const point<double>& b, double reach) {

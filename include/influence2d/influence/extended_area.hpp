@@ -53,6 +53,8 @@ inline bool may_be_in_extended_area(extended_area shape, const point<double>& p,
                                  std::fabs(p.y - a.y), n});
     if (!std::isfinite(big)) return true;
     if (big == 0) return true;
+    // Within this range no square over- or underflows: no scaling needed.
+    if (big > 0x1p-400 && big < 0x1p400) return in_extended_area(shape, p, a, b, n);
     const int e = std::ilogb(big);
     const auto scaled = [&](const point<double>& q) {
         return point<double>{std::ldexp(q.x - a.x, -e), std::ldexp(q.y - a.y, -e)};

@@ -26,6 +26,24 @@ public:
 /// and the propagated errors; the bound is computed in rounded arithmetic and
 /// then widened by (1 + 2^-48), more than the rounding of its few operations.
 /// A NaN or infinite value or bound leaves every sign uncertain.
+///
+/// Why each bound holds (round to nearest; x the exact result of the
+/// operation on the values a.v, b.v, v = fl(x)):
+///  - a +- b: exact - v = (exact_a - a.v) +- (exact_b - b.v) + (x - v), and
+///    |x - v| <= u |v| (half an ulp of v's binade). u |v| is computed exactly
+///    (a power-of-two scaling) unless it is subnormal; then it is rounded to a
+///    multiple of 2^-1074, while x - v, a difference of multiples of 2^-1074,
+///    is such a multiple no larger than u |v|, so it is still covered. With
+///    both inputs exact the bound is u |v| itself, no widening needed (this is
+///    the common case of differences of input coordinates); otherwise
+///    a.e + b.e + u |v| is computed with two roundings and widened.
+///  - a * b: exact_a exact_b - v = a.v db + b.v da + da db + (x - v), with
+///    |da| <= a.e, |db| <= b.e, so the error is at most
+///    (|a.v| + a.e) b.e + |b.v| a.e + u |v| + [underflow], the first term
+///    being |a.v| b.e + a.e b.e in one product. The underflow allowance covers
+///    the product v and the three products of the bound losing 2^-1075 each.
+///    The bound's computation rounds at most five times along any of its
+///    terms (relative 2^-53 each), well inside the widening by 2^-48.
 class certified {
 public:
     certified() = default;
@@ -57,18 +75,12 @@ public:
         throw uncertain_sign();
     }
 
-    friend certified operator+(const certified& a, const certified& b) {
-        const double v = a.v_ + b.v_;
-        return {v, widen(a.e_ + b.e_ + u * std::fabs(v))};
-    }
-    friend certified operator-(const certified& a, const certified& b) {
-        const double v = a.v_ - b.v_;
-        return {v, widen(a.e_ + b.e_ + u * std::fabs(v))};
-    }
+    friend certified operator+(const certified& a, const certified& b) { return sum(a.v_ + b.v_, a.e_ + b.e_); }
+    friend certified operator-(const certified& a, const certified& b) { return sum(a.v_ - b.v_, a.e_ + b.e_); }
     friend certified operator-(const certified& a) { return {-a.v_, a.e_}; }
     friend certified operator*(const certified& a, const certified& b) {
         const double v = a.v_ * b.v_;
-        const double e = std::fabs(a.v_) * b.e_ + std::fabs(b.v_) * a.e_ + a.e_ * b.e_ + u * std::fabs(v) + eta;
+        const double e = (std::fabs(a.v_) + a.e_) * b.e_ + std::fabs(b.v_) * a.e_ + u * std::fabs(v) + eta;
         return {v, widen(e)};
     }
     certified& operator+=(const certified& b) { return *this = *this + b; }
@@ -86,9 +98,17 @@ private:
     static constexpr double u = 0x1p-53;
     // Underflow: the product and the three error terms can each lose 2^-1075.
     static constexpr double eta = 0x1p-1072;
-    // Only the bound's own rounding (relative 2^-52 per operation on it, at
-    // most four of them) needs covering; 2^-48 leaves room.
+    // Only the bound's own rounding (relative 2^-53 per operation on it, at
+    // most five of them along a term) needs covering; 2^-48 leaves room, and
+    // the widening's own rounding cannot take it below e (it rounds e (1 +
+    // 2^-48) >= e to nearest, and e is a double).
     static double widen(double e) { return e * (1 + 0x1p-48); }
+    /// The result v of a sum or difference whose inputs' bounds add up to
+    /// `propagated` (see the class comment).
+    static certified sum(double v, double propagated) {
+        const double r = u * std::fabs(v);
+        return {v, propagated == 0 ? r : widen(propagated + r)};
+    }
 
     double v_ = 0;
     double e_ = 0;

@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# Benchmarks: installs Google Benchmark if missing, builds the benchmarks in
+# build-bench (Release, -DINFLUENCE2D_BUILD_BENCHMARKS=ON), runs them with 3
+# repetitions into build-bench/bench.json, and prints per scene the detector's
+# time per frame in double, certified and exact, and the ratios to double
+# (medians of the repetitions, CPU time).
+#
+#   bash scripts/bench.sh [extra benchmark arguments, e.g. --benchmark_filter=detector]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+bash "$root/scripts/deps.sh"
+if ! dpkg-query -W -f='${Status}' libbenchmark-dev 2>/dev/null | grep -q "install ok installed"; then
+    echo "installing: libbenchmark-dev"
+    sudo_cmd=()
+    [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+    "${sudo_cmd[@]}" apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends libbenchmark-dev >/dev/null
+fi
+build="$root/build-bench"
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DINFLUENCE2D_BUILD_BENCHMARKS=ON >/dev/null
+cmake --build "$build" -j "$(nproc)" --target influence2d_bench >/dev/null
+out="$build/bench.json"
+"$build/verification/bench/influence2d_bench" --benchmark_out="$out" --benchmark_out_format=json \
+    --benchmark_repetitions=3 --benchmark_min_time=0.5 --benchmark_report_aggregates_only=true "$@" >&2
+
+python3 - "$out" <<'EOF'
+import json
+import sys
+
+with open(sys.argv[1]) as f:
+    data = json.load(f)
+
+# Median of the repetitions; per frame = CPU time of one pass / frames per pass.
+per_frame = {}   # (scene, type) -> ns per frame
+per_call = {}    # (predicate, type) -> ns per call
+fallbacks = {}   # (scene, type) -> exact frames per pass
+scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
+for b in data["benchmarks"]:
+    if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
+        continue
+    kind, what, nt = b.get("run_name", b["name"]).split("/")
+    ns = b["cpu_time"] * scale[b.get("time_unit", "ns")]
+    if kind == "detector":
+        per_frame[(what, nt)] = ns / b["frames"]
+        fallbacks[(what, nt)] = b.get("exact_frames", 0)
+    else:
+        per_call[(what, nt)] = ns / 4096
+
+def fmt(x):
+    return "-" if x is None else (f"{x:.1f}" if x < 1e4 else f"{x:.0f}")
+
+def ratio(a, b):
+    return "-" if a is None or b is None else f"{a / b:.2f}"
+
+if per_frame:
+    scenes = sorted({s for s, _ in per_frame}, key=lambda s: (s.split("_")[1], s.split("_")[0]))
+    print(f"{'scene':<20} {'double ns/frame':>16} {'certified ns/frame':>19} {'exact ns/frame':>15} "
+          f"{'certified/double':>17} {'exact/double':>13} {'fallbacks/pass':>15}")
+    for s in scenes:
+        d, c, e = (per_frame.get((s, t)) for t in ("double", "certified", "exact"))
+        print(f"{s:<20} {fmt(d):>16} {fmt(c):>19} {fmt(e):>15} {ratio(c, d):>17} {ratio(e, d):>13} "
+              f"{fallbacks.get((s, 'certified'), 0):>15.0f}")
+    types = sorted({t for _, t in per_frame}, key=lambda t: per_frame.get((scenes[0], t), 0))
+    print()
+    print("ns per frame, every number type:")
+    print(f"{'scene':<20} " + " ".join(f"{t:>11}" for t in types))
+    for s in scenes:
+        print(f"{s:<20} " + " ".join(f"{fmt(per_frame.get((s, t))):>11}" for t in types))
+if per_call:
+    preds = sorted({p for p, _ in per_call})
+    types = sorted({t for _, t in per_call}, key=lambda t: per_call.get(("orientation", t), 0))
+    print()
+    print("predicates, ns per call:")
+    print(f"{'predicate':<20} " + " ".join(f"{t:>11}" for t in types))
+    for p in preds:
+        print(f"{p:<20} " + " ".join(f"{fmt(per_call.get((p, t))):>11}" for t in types))
+EOF

@@ -1,0 +1,251 @@
+// certified_detector<detector> and certified_detector<brute_force_detector>
+// give the answers of detector<exact_rational>, witness pairs included.
+//
+// Polygons: data/families/<family>_<n>.wkt, the five families at sizes 8 to 64,
+// every ordered pair of families twice with the sizes varying over the pairs.
+// Frames, with fixed seeds:
+//   - generic: B's centroid in the outer 40% of the reach R_A + r_B + 4 from
+//     A's centroid (where the close calls are), in a random direction, with a
+//     random rotation; nothing in them is exactly degenerate, so the certified
+//     type decides every sign and the exact fallback must never run;
+//   - touching: theta = 0 and t = a - q, a a vertex of A or the midpoint of an
+//     edge of A, q B's extreme vertex against the outward normal at a: the
+//     family coordinates lie on a 2^-20 grid, so these poses are exact and
+//     most of them touch, deciding exact zeros of posed coordinates, which the
+//     certified type cannot certify: the fallback must run;
+//   - one ulp: each touching pose with tx, then ty, moved by one ulp.
+// At d = 0 and at d = 0.5 (fewer frames: exact distance tests cost more).
+
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "influence2d/detect/brute_force.hpp"
+#include "influence2d/detect/certified_detector.hpp"
+#include "influence2d/detect/detector.hpp"
+#include "influence2d/io/wkt.hpp"
+#include "influence2d/number/cgal.hpp"
+
+namespace {
+
+using namespace influence2d;
+
+constexpr std::array<const char*, 5> family_names = {"convex", "starred", "irregular", "contour", "hole"};
+constexpr std::array<int, 4> family_sizes = {8, 16, 32, 64};
+
+struct shape {
+    std::string name;
+    polygon poly;
+};
+
+const shape& family(std::size_t f, std::size_t s) {
+    static const std::vector<shape> all = [] {
+        std::vector<shape> v;
+        for (const char* name : family_names)
+            for (int n : family_sizes) {
+                const std::string id = std::string(name) + "_" + std::to_string(n);
+                v.push_back({id, read_wkt_file(std::string(INFLUENCE2D_DATA_DIR) + "/families/" + id + ".wkt")});
+            }
+        return v;
+    }();
+    return all[f * family_sizes.size() + s];
+}
+
+struct family_pair {
+    const shape* a;
+    const shape* b;
+    std::uint64_t seed;
+};
+
+std::vector<family_pair> family_pairs() {
+    std::vector<family_pair> out;
+    std::uint64_t k = 0;
+    for (std::size_t fa = 0; fa < family_names.size(); ++fa)
+        for (std::size_t fb = 0; fb < family_names.size(); ++fb, ++k)
+            for (std::size_t r = 0; r < 2; ++r) {
+                const std::size_t combo = (2 * k + r + 5) % 16;
+                out.push_back({&family(fa, combo % 4), &family(fb, (combo / 4 + fb) % 4),
+                               0xce271f1edULL + 104729 * (2 * k + r)});
+            }
+    return out;
+}
+
+struct rng {
+    std::mt19937_64 gen;
+    explicit rng(std::uint64_t seed) : gen(seed) {}
+    double unit() { return std::ldexp(static_cast<double>(gen() >> 11), -53); }
+    std::size_t index(std::size_t n) { return static_cast<std::size_t>(gen() % n); }
+};
+
+double max_distance(const polygon& p, const point<double>& c) {
+    double r = 0;
+    for (const auto& v : p.vertices()) r = std::max(r, std::hypot(v.x - c.x, v.y - c.y));
+    return r;
+}
+
+std::vector<pose> generic_frames(const polygon& A, const polygon& B, rng& r, int count) {
+    std::vector<pose> out;
+    const double pi = std::acos(-1.0);
+    const point<double> ca = A.centroid(), cb = B.centroid();
+    const double reach = max_distance(A, ca) + max_distance(B, cb) + 4;
+    for (int k = 0; k < count; ++k) {
+        const double dist = reach * (0.6 + 0.4 * r.unit());
+        const double phi = 2 * pi * r.unit();
+        const double theta = 2 * pi * r.unit() - pi;
+        const double c = std::cos(theta), s = std::sin(theta);
+        out.push_back({ca.x + dist * std::cos(phi) - (c * cb.x - s * cb.y),
+                       ca.y + dist * std::sin(phi) - (s * cb.x + c * cb.y), theta});
+    }
+    return out;
+}
+
+/// Touching poses, each followed by its two one-ulp neighbours.
+std::vector<pose> touching_frames(const polygon& A, const polygon& B, rng& r, int count) {
+    std::vector<pose> out;
+    for (int k = 0; k < count; ++k) {
+        const std::size_t i = r.index(A.size());
+        const point<double> v0 = A.vertex(i), v1 = A.vertex(A.next(i));
+        point<double> a, n;
+        if (r.index(2) == 0) {
+            a = v0;
+            std::size_t prev = i;
+            while (A.next(prev) != i) prev = A.next(prev);
+            const point<double> u = A.vertex(prev);
+            n = {(v1.y - v0.y) + (v0.y - u.y), -(v1.x - v0.x) - (v0.x - u.x)};
+        } else {
+            a = {(v0.x + v1.x) / 2, (v0.y + v1.y) / 2};
+            n = {v1.y - v0.y, -(v1.x - v0.x)};
+        }
+        std::size_t j = 0;
+        double best = 0;
+        for (std::size_t m = 0; m < B.size(); ++m) {
+            const double dot = B.vertex(m).x * n.x + B.vertex(m).y * n.y;
+            if (m == 0 || dot < best) {
+                best = dot;
+                j = m;
+            }
+        }
+        const point<double> q = B.vertex(j);
+        const pose touch{a.x - q.x, a.y - q.y, 0};
+        out.push_back(touch);
+        const double inf = std::numeric_limits<double>::infinity();
+        out.push_back({std::nextafter(touch.tx, k % 2 ? inf : -inf), touch.ty, 0});
+        out.push_back({touch.tx, std::nextafter(touch.ty, k % 2 ? -inf : inf), 0});
+    }
+    return out;
+}
+
+std::string pairs_text(const frame_result& r) {
+    std::ostringstream o;
+    o << (r.collides ? "collides" : "apart") << " {";
+    for (const auto& e : r.pairs) o << " (" << e.static_edge << "," << e.moving_edge << ")";
+    o << " }";
+    return o.str();
+}
+
+bool same(const frame_result& x, const frame_result& y) { return x.collides == y.collides && x.pairs == y.pairs; }
+
+struct tally {
+    std::size_t frames = 0, collisions = 0, mismatches = 0;
+    std::size_t generic_frames = 0, generic_fallbacks = 0;
+    std::size_t touching_frames = 0, touching_fallbacks = 0, brute_touching_fallbacks = 0;
+};
+
+/// Checks one set of frames against the exact detector; the certified
+/// detectors are the caller's, so that their fallbacks can be counted per kind.
+void check_frames(const family_pair& fp, const std::vector<pose>& frames, double d, detector<exact_rational>& exact,
+                  certified_detector<detector>& cert, certified_detector<brute_force_detector>& cert_brute,
+                  certified_detector<detector>& cert_plain, tally& t) {
+    std::size_t reported = 0;
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+        const pose& p = frames[k];
+        ++t.frames;
+        const frame_result want = exact.collide(p);
+        const frame_result got = cert.collide(p);
+        const frame_result brute = cert_brute.collide(p);
+        const bool plain = cert_plain.collide(p).collides;
+        t.collisions += want.collides;
+        if (same(got, want) && same(brute, want) && plain == want.collides) continue;
+        ++t.mismatches;
+        if (++reported > 3) continue;
+        std::ostringstream o;
+        o.precision(17);
+        o << "A = " << fp.a->name << ", B = " << fp.b->name << ", d = " << d << ", frame " << k << ", pose tx = " << p.tx
+          << ", ty = " << p.ty << ", theta = " << p.theta;
+        INFO(o.str());
+        INFO("detector<exact>:                " << pairs_text(want));
+        INFO("certified<detector>:            " << pairs_text(got));
+        INFO("certified<brute_force>:         " << pairs_text(brute));
+        INFO("certified<detector>, no witness: " << (plain ? "collides" : "apart"));
+        FAIL_CHECK("certified detectors disagree with the exact detector");
+    }
+}
+
+tally run_all(double d, int generic_count, int touching_count) {
+    tally t;
+    for (const family_pair& fp : family_pairs()) {
+        const polygon& A = fp.a->poly;
+        const polygon& B = fp.b->poly;
+        detector_options wit;
+        wit.distance = d;
+        wit.witness = true;
+        detector_options plain;
+        plain.distance = d;
+        detector<exact_rational> exact(A, B, wit);
+        rng r(fp.seed);
+
+        {
+            certified_detector<detector> cert(A, B, wit), cert_plain(A, B, plain);
+            certified_detector<brute_force_detector> cert_brute(A, B, wit);
+            const std::vector<pose> frames = generic_frames(A, B, r, generic_count);
+            check_frames(fp, frames, d, exact, cert, cert_brute, cert_plain, t);
+            t.generic_frames += frames.size();
+            t.generic_fallbacks += cert.exact_frames() + cert_brute.exact_frames() + cert_plain.exact_frames();
+        }
+        {
+            certified_detector<detector> cert(A, B, wit), cert_plain(A, B, plain);
+            certified_detector<brute_force_detector> cert_brute(A, B, wit);
+            const std::vector<pose> frames = touching_frames(A, B, r, touching_count);
+            check_frames(fp, frames, d, exact, cert, cert_brute, cert_plain, t);
+            t.touching_frames += frames.size();
+            t.touching_fallbacks += cert.exact_frames();
+            t.brute_touching_fallbacks += cert_brute.exact_frames();
+        }
+    }
+    return t;
+}
+
+void report(const tally& t) {
+    INFO("frames " << t.frames << " (collisions " << t.collisions << "), generic " << t.generic_frames
+                   << " with fallbacks " << t.generic_fallbacks << ", touching and one-ulp " << t.touching_frames
+                   << " with fallbacks " << t.touching_fallbacks << " (detector), " << t.brute_touching_fallbacks
+                   << " (brute force)");
+    CHECK(t.mismatches == 0);
+    // The fallback is exercised on the exact contacts, and never needed on
+    // generic frames.
+    CHECK(t.generic_fallbacks == 0);
+    CHECK(t.touching_fallbacks * 4 >= t.touching_frames);
+    CHECK(t.brute_touching_fallbacks * 4 >= t.touching_frames);
+    CHECK(t.collisions >= t.frames / 4);
+    CHECK(t.frames - t.collisions >= t.frames / 10);
+}
+
+}  // namespace
+
+TEST_CASE("certified detectors equal the exact detector, d = 0", "[detect][certified]") {
+    const tally t = run_all(0, 30, 10);
+    CHECK(t.frames >= 3000);
+    report(t);
+}
+
+TEST_CASE("certified detectors equal the exact detector, d = 0.5", "[detect][certified]") {
+    const tally t = run_all(0.5, 12, 4);
+    CHECK(t.frames >= 1000);
+    report(t);
+}

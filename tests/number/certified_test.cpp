@@ -1,0 +1,363 @@
+// The certified number type: its error bound contains the exact value of the
+// same operations, a sign it gives is the exact sign, and a sign it cannot
+// know raises uncertain_sign.
+//
+// Every value is computed twice, in certified and in exact rationals, over
+// random chains of +, - and * of depth up to 6 on doubles of every magnitude
+// (1e-300 to 1e300, subnormals, zeros, small integers), with subexpressions
+// reused so that chains cancel; then on the pose formula and on the
+// orientation determinant of posed points, near-degenerate on purpose.
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "influence2d/core/pose.hpp"
+#include "influence2d/number/certified.hpp"
+#include "influence2d/number/cgal.hpp"
+#include "influence2d/predicates/orientation.hpp"
+
+namespace {
+
+using namespace influence2d;
+
+/// A value in certified and the exact rational of the same operations.
+struct tracked {
+    certified c;
+    exact_rational x;
+};
+
+tracked leaf(double v) { return {certified(v), exact_rational(v)}; }
+tracked operator+(const tracked& a, const tracked& b) { return {a.c + b.c, a.x + b.x}; }
+tracked operator-(const tracked& a, const tracked& b) { return {a.c - b.c, a.x - b.x}; }
+tracked operator*(const tracked& a, const tracked& b) { return {a.c * b.c, a.x * b.x}; }
+
+std::string show(const tracked& t) {
+    std::ostringstream o;
+    o.precision(17);
+    o << "value " << t.c.value() << ", bound " << t.c.error() << ", exact ~" << CGAL::to_double(t.x);
+    return o.str();
+}
+
+/// What the checks saw, and the first violation.
+struct tally {
+    std::size_t values = 0, certain = 0, uncertain = 0, non_finite = 0, violations = 0;
+    std::string first;
+
+    void fail(const std::string& what, const tracked& t) {
+        if (violations++ == 0) first = what + ": " + show(t);
+    }
+
+    /// The bound holds (|exact - v| <= e, decided in exact rationals) whenever
+    /// v and e are finite; a certain sign is the exact sign, and sign() agrees
+    /// with try_sign (returns it, or throws uncertain_sign).
+    void check(const tracked& t) {
+        ++values;
+        const double v = t.c.value(), e = t.c.error();
+        int s = 0;
+        const bool is_certain = t.c.try_sign(s);
+        if (is_certain) {
+            ++certain;
+            if (s != static_cast<int>(CGAL::sign(t.x))) fail("certain sign differs from the exact sign", t);
+        } else {
+            ++uncertain;
+        }
+        bool threw = false;
+        int from_sign = 0;
+        try {
+            from_sign = t.c.sign();
+        } catch (const uncertain_sign&) {
+            threw = true;
+        }
+        if (threw == is_certain || (is_certain && from_sign != s)) fail("sign() disagrees with try_sign()", t);
+        if (std::isfinite(v) && std::isfinite(e)) {
+            if (!(e >= 0)) fail("negative bound", t);
+            const exact_rational diff = t.x - exact_rational(v);
+            const exact_rational dist = diff < 0 ? exact_rational(-diff) : diff;
+            if (dist > exact_rational(e)) fail("exact value outside [v - e, v + e]", t);
+        } else {
+            ++non_finite;
+            if (is_certain) fail("certain sign from a non-finite value or bound", t);
+        }
+    }
+};
+
+struct rng {
+    std::mt19937_64 gen;
+    explicit rng(std::uint64_t seed) : gen(seed) {}
+    double unit() { return std::ldexp(static_cast<double>(gen() >> 11), -53); }
+    std::size_t index(std::size_t n) { return static_cast<std::size_t>(gen() % n); }
+    double signed_unit() { return 2 * unit() - 1; }
+};
+
+/// Binary exponents of the magnitudes drawn: about 1e-300, 1e-150, 1e-20, 1,
+/// 1e20, 1e150, 1e300.
+constexpr int scales[] = {-997, -498, -66, 0, 66, 498, 997};
+
+/// A random double near 2^scale (within 2^+-6), or, now and then, a zero, a
+/// small integer, a subnormal or a double with few significant bits.
+double random_double(rng& r, int scale) {
+    const double sgn = r.index(2) == 0 ? 1.0 : -1.0;
+    switch (r.index(16)) {
+        case 0: return 0.0;
+        case 1: return sgn * static_cast<double>(1 + r.index(16));
+        case 2: return sgn * std::ldexp(static_cast<double>(1 + r.index(std::size_t{1} << 20)), -1074);
+        case 3: return sgn * std::ldexp(static_cast<double>(r.gen() >> 12), -1074);  // up to 2^52 ulps
+        case 4: return sgn * std::ldexp(static_cast<double>(1 + r.index(1024)), scale - 5);
+        default: return sgn * std::ldexp(1 + r.unit(), scale + static_cast<int>(r.index(13)) - 6);
+    }
+}
+
+/// Random expression trees of depth <= 6; every node is checked. A node's
+/// operands are new subtrees or, one time in three, a value built before in
+/// the same chain (so that x - y, with y sharing most of x, cancels).
+class chain_builder {
+public:
+    chain_builder(rng& r, tally& t) : r_(r), t_(t) {}
+
+    void run(int depth) {
+        pool_.clear();
+        base_ = scales[r_.index(std::size(scales))];
+        build(depth);
+    }
+
+private:
+    tracked build(int depth) {
+        if (depth == 0 || r_.index(5) == 0) return operand();
+        const tracked a = build(depth - 1);
+        const tracked b = (!pool_.empty() && r_.index(3) == 0) ? pool_[r_.index(pool_.size())] : build(depth - 1);
+        tracked v;
+        switch (r_.index(3)) {
+            case 0: v = a + b; break;
+            case 1: v = a - b; break;
+            default: v = a * b; break;
+        }
+        if (r_.index(2) == 0) v = v - (r_.index(2) == 0 ? a : b);  // cancel one operand again
+        t_.check(v);
+        pool_.push_back(v);
+        return v;
+    }
+
+    tracked operand() {
+        // Mostly the chain's own magnitude; a quarter of the leaves elsewhere.
+        const int scale = r_.index(4) == 0 ? scales[r_.index(std::size(scales))] : base_;
+        tracked v = leaf(random_double(r_, scale));
+        t_.check(v);
+        return v;
+    }
+
+    rng& r_;
+    tally& t_;
+    std::vector<tracked> pool_;
+    int base_ = 0;
+};
+
+point<tracked> pose_point(const rotation_pose& t, const point<double>& q) {
+    const point<certified> c = t.apply<certified>(q);
+    const point<exact_rational> x = t.apply<exact_rational>(q);
+    return {{c.x, x.x}, {c.y, x.y}};
+}
+
+tracked determinant(const point<tracked>& a, const point<tracked>& b, const point<tracked>& c) {
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+template <class NT>
+point<NT> pt(double x, double y) {
+    return {NT(x), NT(y)};
+}
+
+}  // namespace
+
+TEST_CASE("certified: the bound contains the exact value on random chains of depth <= 6", "[certified]") {
+    rng r(0xce47f1edULL);
+    tally t;
+    chain_builder chains(r, t);
+    for (int k = 0; k < 6000; ++k) chains.run(1 + k % 6);
+    INFO(t.first);
+    CHECK(t.violations == 0);
+    // The chains must exercise both outcomes and the overflow paths.
+    INFO("values " << t.values << ", certain " << t.certain << ", uncertain " << t.uncertain << ", non-finite "
+                   << t.non_finite);
+    CHECK(t.values > 50000);
+    CHECK(t.uncertain > 1000);
+    CHECK(t.certain > 2 * t.uncertain);
+    CHECK(t.non_finite > 100);
+}
+
+TEST_CASE("certified: the pose formula and the orientation determinant of posed points", "[certified]") {
+    rng r(0x9053d0c7ULL);
+    tally generic, near;
+    for (int k = 0; k < 4000; ++k) {
+        const int scale = scales[r.index(std::size(scales))];
+        const double mag = std::ldexp(1.0, scale);
+        const rotation_pose t1(pose{mag * r.signed_unit(), mag * r.signed_unit(), 7 * r.signed_unit()});
+        const rotation_pose t2(pose{mag * r.signed_unit(), mag * r.signed_unit(), 7 * r.signed_unit()});
+        const point<double> q{random_double(r, scale), random_double(r, scale)};
+        const point<tracked> p1 = pose_point(t1, q);
+        generic.check(p1.x);
+        generic.check(p1.y);
+        // Static points (input doubles) and posed ones, in every role.
+        const point<double> sa{random_double(r, scale), random_double(r, scale)};
+        const point<double> sb{random_double(r, scale), random_double(r, scale)};
+        const point<tracked> a{leaf(sa.x), leaf(sa.y)}, b{leaf(sb.x), leaf(sb.y)};
+        const point<tracked> p2 = pose_point(t2, point<double>{random_double(r, scale), random_double(r, scale)});
+        generic.check(determinant(a, b, p1));
+        generic.check(determinant(p1, a, b));
+        generic.check(determinant(p1, p2, a));
+
+        // Near-degenerate: B's vertex q posed onto (a rounding away from) a
+        // point m of the line ab, so the determinant is mostly rounding.
+        const double lambda = r.signed_unit() * 2;
+        const point<double> m{sa.x + lambda * (sb.x - sa.x), sa.y + lambda * (sb.y - sa.y)};
+        rotation_pose t3(pose{0, 0, 7 * r.signed_unit()});
+        t3.tx = m.x - (t3.c * q.x - t3.s * q.y);
+        t3.ty = m.y - (t3.s * q.x + t3.c * q.y);
+        const point<tracked> on_line = pose_point(t3, q);
+        near.check(on_line.x);
+        near.check(on_line.y);
+        near.check(determinant(a, b, on_line));
+        near.check(determinant(on_line, a, b));
+    }
+    {
+        INFO(generic.first);
+        CHECK(generic.violations == 0);
+        CHECK(generic.certain > generic.uncertain);
+    }
+    INFO(near.first);
+    CHECK(near.violations == 0);
+    INFO("near-degenerate: certain " << near.certain << ", uncertain " << near.uncertain);
+    CHECK(near.uncertain > 500);
+    CHECK(near.certain > 500);
+}
+
+TEST_CASE("certified: certain signs", "[certified]") {
+    CHECK(certified(3.5).sign() == 1);
+    CHECK(certified(-2.0).sign() == -1);
+    CHECK(certified(0).sign() == 0);
+    CHECK(certified(0x1p-1074).sign() == 1);  // an input subnormal is exact
+    CHECK(certified(-0x1p-1074).sign() == -1);
+    CHECK((certified(1.0) - certified(1.0)).sign() == 0);  // exact inputs, exact zero
+    CHECK((certified(0.0) * certified(5.0)).value() == 0);
+
+    // 0.1 * 3 - 0.3 in doubles is 2^-54, exactly it is 2^-55: not exact, yet
+    // far enough from 0 relative to the bound for its sign to be certain.
+    const certified x = certified(0.1) * certified(3.0) - certified(0.3);
+    CHECK(x.error() > 0);
+    CHECK(x.sign() == 1);
+    CHECK(CGAL::sign(exact_rational(0.1) * 3 - exact_rational(0.3)) == CGAL::POSITIVE);
+
+    // Comparisons decide the sign of the difference.
+    CHECK(certified(1.0) < certified(2.0));
+    CHECK(certified(2.0) >= certified(2.0));
+    CHECK(certified(-1.0) != certified(1.0));
+    CHECK(certified(0.25) == certified(0.25));
+
+    // The orientation of points that are not collinear, with rounded inputs.
+    const certified one_ish = certified(0.1) * certified(10.0);
+    CHECK(orientation(point<certified>{0, 0}, point<certified>{one_ish, 0}, point<certified>{0, one_ish}) == 1);
+}
+
+TEST_CASE("certified: uncertain signs throw", "[certified]") {
+    // 0.1 * 10 rounds to exactly 1, but is not 1: equality cannot be decided.
+    const certified p = certified(0.1) * certified(10.0);
+    CHECK(p.value() == 1.0);
+    CHECK(p.error() > 0);
+    CHECK_THROWS_AS(p == certified(1.0), uncertain_sign);
+    CHECK_THROWS_AS((p - certified(1.0)).sign(), uncertain_sign);
+
+    // A determinant that is exactly zero (the points (0,0), (p,p), (2,2) are
+    // collinear whatever p is) but is computed from an inexact input.
+    const point<certified> a{0, 0}, b{p, p}, c{2, 2};
+    const certified det = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    CHECK(det.value() == 0);
+    CHECK(det.error() > 0);
+    CHECK_THROWS_AS(det.sign(), uncertain_sign);
+    CHECK_THROWS_AS(orientation(a, b, c), uncertain_sign);
+    CHECK_THROWS_AS(orientation(c, a, b), uncertain_sign);
+}
+
+TEST_CASE("certified: an exactly zero determinant of input doubles is 0", "[certified]") {
+    // The raw determinant carries rounding bounds and cannot be 0 for sure;
+    // the orientation predicate settles input doubles exactly.
+    const point<certified> a = pt<certified>(0.5, 0.25), b = pt<certified>(1.5, 0.75), c = pt<certified>(3.5, 1.75);
+    const certified det = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    CHECK(det.value() == 0);
+    CHECK_THROWS_AS(det.sign(), uncertain_sign);
+    CHECK(orientation(a, b, c) == 0);
+    CHECK(orientation(c, a, b) == 0);
+    CHECK(orientation(a, a, b) == 0);
+
+    // Random collinear triples of doubles on a grid (exact), and the same with
+    // the last point moved by one ulp (a sign that needs more than double).
+    rng r(0x0ddba11ULL);
+    for (int k = 0; k < 2000; ++k) {
+        const double g = std::ldexp(1.0, -20);
+        const double ax = g * static_cast<double>(r.index(1u << 26)) - 32, ay = g * static_cast<double>(r.index(1u << 26)) - 32;
+        const double dx = g * static_cast<double>(r.index(1u << 12)), dy = g * static_cast<double>(r.index(1u << 12)) - 0.001953125;
+        const double m = static_cast<double>(2 + r.index(14));
+        const point<double> A{ax, ay}, B{ax + dx, ay + dy}, C{ax + m * dx, ay + m * dy};
+        const int got = orientation(pt<certified>(A.x, A.y), pt<certified>(B.x, B.y), pt<certified>(C.x, C.y));
+        REQUIRE(got == orientation(pt<exact_rational>(A.x, A.y), pt<exact_rational>(B.x, B.y), pt<exact_rational>(C.x, C.y)));
+        REQUIRE(got == 0);
+        const double cy = std::nextafter(C.y, 1e9);
+        const int moved = orientation(pt<certified>(A.x, A.y), pt<certified>(B.x, B.y), pt<certified>(C.x, cy));
+        REQUIRE(moved ==
+                orientation(pt<exact_rational>(A.x, A.y), pt<exact_rational>(B.x, B.y), pt<exact_rational>(C.x, cy)));
+    }
+}
+
+TEST_CASE("certified: overflow and underflow leave the sign uncertain", "[certified]") {
+    const certified big = certified(1e200) * certified(1e200);
+    CHECK(std::isinf(big.value()));
+    CHECK_THROWS_AS(big.sign(), uncertain_sign);
+    CHECK_THROWS_AS((-big).sign(), uncertain_sign);
+    CHECK_THROWS_AS((big - big).sign(), uncertain_sign);  // NaN
+    CHECK_THROWS_AS((certified(1e308) + certified(1e308)).sign(), uncertain_sign);
+    CHECK_THROWS_AS((big * certified(0.0)).sign(), uncertain_sign);
+
+    // Products that underflow to 0 are not exact zeros.
+    const certified tiny = certified(1e-200) * certified(1e-200);
+    CHECK(tiny.value() == 0);
+    CHECK_THROWS_AS(tiny.sign(), uncertain_sign);
+    CHECK_THROWS_AS((certified(0x1p-1074) * certified(0.5)).sign(), uncertain_sign);
+    // ...and a sum of them is no better.
+    CHECK_THROWS_AS((tiny + tiny).sign(), uncertain_sign);
+    // Every product carries the underflow allowance, even by an exact zero.
+    CHECK((certified(0.0) * certified(1e300)).value() == 0);
+    CHECK((certified(0.0) * certified(1e300)).error() > 0);
+}
+
+// The orientation predicate's exact settling of input doubles
+// (expansion::orientation_sign) once summed products of coordinates in double,
+// which overflowed or underflowed at the ends of double's range and gave wrong
+// signs; it now sums them exactly over the whole range.
+TEST_CASE("certified: orientation of input doubles at the ends of double's range", "[certified]") {
+    struct triple {
+        double ax, ay, bx, by, cx, cy;
+    };
+    const triple cases[] = {
+        {-1e300, -1e300, 0, 0, 1e300, 1e300},                       // collinear, products overflow
+        {1e-300, 1e-300, 2e-300, 2e-300, 3e-300, 3e-300 * (1 + 0x1p-52)},  // products underflow
+        {0x1p-1074, 0, 0x1p-1073, 0x1p-1074, 0, 0x1p-1074},
+        {1e200, 1e-200, 1e-200, 1e200, 0, 0},
+    };
+    for (const triple& c : cases) {
+        const int want =
+            orientation(pt<exact_rational>(c.ax, c.ay), pt<exact_rational>(c.bx, c.by), pt<exact_rational>(c.cx, c.cy));
+        int got = 2;  // uncertain: acceptable, the exact fallback answers it
+        try {
+            got = orientation(pt<certified>(c.ax, c.ay), pt<certified>(c.bx, c.by), pt<certified>(c.cx, c.cy));
+        } catch (const uncertain_sign&) {
+        }
+        INFO("points (" << c.ax << ", " << c.ay << "), (" << c.bx << ", " << c.by << "), (" << c.cx << ", " << c.cy
+                        << "): exact " << want << ", certified " << got);
+        CHECK((got == want || got == 2));
+    }
+}
