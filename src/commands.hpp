@@ -9,5 +9,7 @@ namespace influence2d::cli {
 void register_collide(CLI::App& app);
 /// `influence2d generate`: write the paper's polygon families as WKT.
 void register_generate(CLI::App& app);
+void register_generate_stiff(CLI::App&);
+void register_study(CLI::App& app);
 
 }  // namespace influence2d::cli

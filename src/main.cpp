@@ -34,6 +34,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     influence2d::cli::register_collide(app);
     influence2d::cli::register_generate(app);
+    influence2d::cli::register_generate_stiff(app);
+    influence2d::cli::register_study(app);
 
     try {
         app.parse(argc, argv);

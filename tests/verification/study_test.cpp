@@ -1,0 +1,148 @@
+// The precision study (verification/study.hpp, `influence2d study`): a tiny
+// run writes its files with the right headers, the types that claim exactness
+// never disagree with the reference, float does on a stiff family; the
+// reproducible-case format reads back; every committed case in
+// data/regressions is answered again.
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/process.hpp"
+#include "verification/study.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace influence2d;
+using namespace influence2d::verification;
+using test_process::lines_of;
+using test_process::quote;
+using test_process::run_cli;
+using test_process::slurp;
+using test_process::temp_dir;
+
+std::vector<std::string> fields(const std::string& line) {
+    std::vector<std::string> out;
+    std::istringstream in(line);
+    for (std::string f; std::getline(in, f, ',');) out.push_back(f);
+    return out;
+}
+
+polygon make(std::vector<point<double>> v) { return polygon({ring_input{std::move(v), ring_role::outer}}); }
+
+}  // namespace
+
+TEST_CASE("study: a tiny run writes the tables, the summary and the plots", "[verification][study][cli]") {
+    const temp_dir dir;
+    const auto r = run_cli(dir, "study --families convex,touching,offset_sweep --cases 1 --frames 12 --out " +
+                                    quote((dir / "out").string()) + " --regressions " +
+                                    quote((dir / "regressions").string()));
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.out.find("collides per number type") != std::string::npos);
+
+    const std::vector<std::string> study = lines_of(slurp(dir / "out" / "study.csv"));
+    REQUIRE(!study.empty());
+    CHECK(study.front() == "number_type,family,decision,cases,disagreements,rate,ns_per_query");
+    const std::vector<std::string> types = mode_names(study_modes{});
+    // Every type, family and decision once.
+    CHECK(study.size() == 1 + types.size() * 3 * std::size(all_decision_kinds));
+    std::map<std::string, std::size_t> disagreements;  // per type, and float per family
+    for (std::size_t i = 1; i < study.size(); ++i) {
+        const std::vector<std::string> f = fields(study[i]);
+        REQUIRE(f.size() == 7);
+        CHECK(std::stoul(f[3]) > 0);
+        CHECK(std::stod(f[6]) >= 0);
+        disagreements[f[0]] += std::stoul(f[4]);
+        if (f[0] == "float") disagreements["float " + f[1]] += std::stoul(f[4]);
+    }
+    CHECK(disagreements["certified"] == 0);
+    CHECK(disagreements["interval"] == 0);
+    CHECK(disagreements["exact"] == 0);
+    CHECK(disagreements["float touching"] > 0);
+    CHECK(!fs::exists(dir / "regressions"));  // nothing to reproduce
+
+    const std::vector<std::string> stability = lines_of(slurp(dir / "out" / "stability.csv"));
+    REQUIRE(!stability.empty());
+    CHECK(stability.front() == "number_type,sweep,magnitude,cases,disagreements,rate");
+    CHECK(stability.size() == 1 + types.size() * offset_magnitudes().size());
+    for (std::size_t i = 1; i < stability.size(); ++i) CHECK(fields(stability[i])[1] == "offset");
+
+    const std::string md = slurp(dir / "out" / "study.md");
+    CHECK(md.find("# Precision study") != std::string::npos);
+    CHECK(md.find("## What this means when choosing a number type") != std::string::npos);
+    CHECK(md.find("## collides\n") != std::string::npos);
+    CHECK(md.find("## Worst examples") != std::string::npos);
+    if (std::system("command -v gnuplot > /dev/null 2>&1") == 0) {
+        CHECK(slurp(dir / "out" / "error_vs_time.svg").find("<svg") != std::string::npos);
+        CHECK(slurp(dir / "out" / "stability_offset.svg").find("<svg") != std::string::npos);
+    } else {
+        CHECK(r.err.find("gnuplot not found") != std::string::npos);
+    }
+}
+
+TEST_CASE("study: bad arguments are named, exit code 2", "[verification][study][cli]") {
+    const temp_dir dir;
+    const std::string out = " --out " + quote((dir / "out").string());
+    const auto bad_type = run_cli(dir, "study --types double,decimal" + out);
+    CHECK(bad_type.exit_code == 2);
+    CHECK(bad_type.err.find("decimal") != std::string::npos);
+    const auto bad_family = run_cli(dir, "study --families convex,triangles" + out);
+    CHECK(bad_family.exit_code == 2);
+    CHECK(bad_family.err.find("triangles") != std::string::npos);
+    CHECK(run_cli(dir, "study --cases 0" + out).exit_code == 2);
+    CHECK(run_cli(dir, "study --frames x" + out).exit_code == 2);
+    CHECK(!fs::exists(dir / "out" / "study.csv"));
+}
+
+TEST_CASE("study: a reproducible case reads back and is answered again", "[verification][study]") {
+    //   +-------+          A: the square [0,4]^2; B: a unit square posed
+    //   |   A  +|-+        across A's right side (pairs with edge 1)
+    //   |      +|-+
+    //   +-------+
+    const polygon a = make({{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+    const polygon b = make({{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}});
+    const query q{{}, {4.25, 2, 0.1}};
+    const answer expected = reference_decisions(a, b, 0).decide(decision_kind::pairs, q);
+    REQUIRE(!expected.empty());
+    const std::string text = regression_json(a, b, 0, decision_kind::pairs, q, "certified", expected, {});
+    const regression_case r = parse_regression(text, "<text>");
+    CHECK(r.decision == decision_kind::pairs);
+    CHECK(r.number_type == "certified");
+    CHECK(r.question.placement.tx == 4.25);
+    CHECK(r.question.placement.theta == 0.1);
+    CHECK(r.expected == expected);
+    const replay_outcome ok = replay_regression(r);
+    CHECK(ok.reference_agrees);
+    CHECK(ok.disagreeing.empty());
+
+    regression_case wrong = r;
+    wrong.expected.clear();
+    const replay_outcome bad = replay_regression(wrong);
+    CHECK(!bad.reference_agrees);
+    CHECK(bad.disagreeing.size() == 3);  // certified, interval, exact
+
+    CHECK_THROWS_WITH(parse_regression("{\"decision\": \"pairs\"}", "case.json"), Catch::Contains("case.json"));
+}
+
+TEST_CASE("study: every reproducible case in data/regressions is answered exactly", "[verification][study]") {
+    const fs::path dir = fs::path(INFLUENCE2D_DATA_DIR) / "regressions";
+    REQUIRE(fs::is_directory(dir));
+    CHECK(fs::exists(dir / "README.md"));
+    std::size_t cases = 0;
+    for (const auto& entry : fs::directory_iterator(dir)) {
+        if (entry.path().extension() != ".json") continue;
+        ++cases;
+        INFO(entry.path().string());
+        const regression_case r = parse_regression(slurp(entry.path()), entry.path().string());
+        const replay_outcome o = replay_regression(r);
+        CHECK(o.reference_agrees);
+        for (const std::string& t : o.disagreeing) FAIL_CHECK(t << " disagrees with the exact answer");
+    }
+    SUCCEED(cases << " reproducible cases replayed");
+}
