@@ -2,7 +2,8 @@
 # The main job: installs what is missing, builds, and runs the paper's worst
 # case (irregular contour polygons) on the circular and the linear trajectory,
 # in double and in exact arithmetic, with the sound and the paper-literal
-# detectors, and prints a summary table. Outputs go to build/main-job/.
+# detectors, and prints a summary table; then a short precision study of the
+# method's decisions per number type. Outputs go to build/main-job/.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/deps.sh"
@@ -61,3 +62,8 @@ for pair in "64 64" "1024 8" "8 1024" "256 256"; do
 done
 echo
 echo "per-frame answers: $out/*.csv"
+echo
+echo "precision study (short run: every decision of the method in every number type against exact):"
+"$tool" study --quick --out "$out/study" --regressions "$out/regressions" >"$out/study.log"
+sed -n '/^## What this means/,/^## /p' "$out/study/study.md" | sed '$d'
+echo "tables and plots: $out/study/study.md, $out/study/*.svg"
