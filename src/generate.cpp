@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "files.hpp"
 #include "verification/families.hpp"
 
 namespace influence2d::cli {
@@ -23,30 +24,6 @@ struct generate_options {
     std::vector<std::size_t> sizes = verification::default_family_sizes();
 };
 
-/// Writes `text` to `path` through a temporary file in the same directory,
-/// renamed into place, so that a reader never sees a half-written file.
-void write_file_atomically(const std::filesystem::path& path, const std::string& text) {
-    std::filesystem::path temp = path;
-    temp += ".tmp";
-    {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out) throw std::runtime_error(temp.string() + ": cannot open for writing");
-        out.write(text.data(), static_cast<std::streamsize>(text.size()));
-        out.close();
-        if (!out) {
-            std::error_code ignored;
-            std::filesystem::remove(temp, ignored);
-            throw std::runtime_error(temp.string() + ": write error");
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(temp, path, ec);
-    if (ec) {
-        std::filesystem::remove(temp, ec);
-        throw std::runtime_error(path.string() + ": cannot rename the temporary file into place");
-    }
-}
-
 void run_generate(const generate_options& o) {
     const std::filesystem::path dir(o.out);
     std::error_code ec;
@@ -56,7 +33,7 @@ void run_generate(const generate_options& o) {
     std::size_t files = 0, vertices = 0;
     for (const auto f : verification::all_families) {
         for (const std::size_t n : o.sizes) {
-            write_file_atomically(dir / verification::family_file_name(f, n),
+            write_atomically(dir / verification::family_file_name(f, n),
                                   verification::family_file_text(f, n, o.seed));
             ++files;
             vertices += n;

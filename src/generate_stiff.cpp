@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "files.hpp"
 #include "verification/stiff_cases.hpp"
 
 namespace influence2d::cli {
@@ -23,30 +24,6 @@ struct generate_stiff_options {
     std::uint64_t seed = verification::default_stiff_seed;
     std::size_t count = verification::default_stiff_count;
 };
-
-/// Writes `text` to `path` through a temporary file in the same directory,
-/// renamed into place, so that a reader never sees a half-written file.
-void write_atomically(const std::filesystem::path& path, const std::string& text) {
-    std::filesystem::path temp = path;
-    temp += ".tmp";
-    {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out) throw std::runtime_error(temp.string() + ": cannot open for writing");
-        out.write(text.data(), static_cast<std::streamsize>(text.size()));
-        out.close();
-        if (!out) {
-            std::error_code ignored;
-            std::filesystem::remove(temp, ignored);
-            throw std::runtime_error(temp.string() + ": write error");
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(temp, path, ec);
-    if (ec) {
-        std::filesystem::remove(temp, ec);
-        throw std::runtime_error(path.string() + ": cannot rename the temporary file into place");
-    }
-}
 
 void run_generate_stiff(const generate_stiff_options& o) {
     const std::filesystem::path dir(o.out);

@@ -1,0 +1,94 @@
+#pragma once
+// Filtered detection: the answers of the exact reference at nearly the cost of
+// a floating-point type. Each frame runs in a fast filtered number type; a
+// frame with a sign that type cannot settle is answered again in exact
+// rationals.
+
+#include <cstddef>
+#include <optional>
+
+#include "influence2d/core/pose.hpp"
+#include "influence2d/detect/result.hpp"
+#include "influence2d/number/certified.hpp"
+#include "influence2d/number/cgal.hpp"
+
+namespace influence2d {
+
+namespace detail {
+
+/// Runs `fast`; if it throws uncertain_sign or one of Uncertain..., runs `exact`.
+template <class... Uncertain>
+struct fallback;
+
+template <>
+struct fallback<> {
+    template <class Fast, class Exact>
+    static auto run(Fast&& fast, Exact&& exact) {
+        try {
+            return fast();
+        } catch (const uncertain_sign&) {
+            return exact();
+        }
+    }
+};
+
+template <class First, class... Rest>
+struct fallback<First, Rest...> {
+    template <class Fast, class Exact>
+    static auto run(Fast&& fast, Exact&& exact) {
+        try {
+            return fallback<Rest...>::run(fast, exact);
+        } catch (const First&) {
+            return exact();
+        }
+    }
+};
+
+}  // namespace detail
+
+/// Wraps a detector template D (detector or brute_force_detector): D<FastNT>
+/// answers every frame whose decisions it makes with certainty, which is then
+/// the exact answer; a frame that raises uncertain_sign (or one of the
+/// exception types Uncertain..., for number types whose comparisons raise
+/// their own) is answered by D<exact_rational>. The fast detector's state stays
+/// valid after such a frame: its candidate cache is marked valid only once
+/// complete, and it holds no other state between frames. Building D<FastNT>
+/// decides signs too (the covering's triangles); if one of those is not
+/// certain, every frame is answered exactly.
+template <template <class> class D, class FastNT, class... Uncertain>
+class filtered_detector {
+public:
+    filtered_detector(const polygon& static_polygon, const polygon& moving_polygon, detector_options options = {})
+        : exact_(static_polygon, moving_polygon, options) {
+        detail::fallback<Uncertain...>::run(
+            [&] {
+                fast_.emplace(static_polygon, moving_polygon, options);
+                return 0;
+            },
+            [&] {
+                fast_.reset();
+                return 0;
+            });
+    }
+
+    frame_result collide(const pose& p) {
+        const auto exactly = [&] {
+            ++exact_frames_;
+            return exact_.collide(p);
+        };
+        if (!fast_) return exactly();
+        return detail::fallback<Uncertain...>::run([&] { return fast_->collide(p); }, exactly);
+    }
+
+    /// Frames answered in exact arithmetic so far.
+    std::size_t exact_frames() const { return exact_frames_; }
+    /// Whether the fast detector could be built (else every frame is exact).
+    bool filtered() const { return fast_.has_value(); }
+
+private:
+    std::optional<D<FastNT>> fast_;
+    D<exact_rational> exact_;
+    std::size_t exact_frames_ = 0;
+};
+
+}  // namespace influence2d
