@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "report.hpp"
 #include "verification/study.hpp"
 
 namespace influence2d::cli {
@@ -30,6 +31,7 @@ using namespace influence2d::verification;
 struct study_cli_options {
     std::vector<std::string> families;
     std::vector<std::string> types;
+    std::vector<std::string> decisions;
     std::size_t cases = 3;
     std::size_t frames = 256;
     std::uint64_t seed = study_options{}.seed;
@@ -45,19 +47,10 @@ constexpr std::size_t quick_cases = 1, quick_frames = 40;
 /// Rates are drawn on log axes: a rate of zero is drawn at this floor.
 constexpr double rate_floor = 1e-7;
 
-std::string fixed(double x, int digits) {
-    std::ostringstream s;
-    s.setf(std::ios::fixed);
-    s.precision(digits);
-    s << x;
-    return s.str();
-}
-
-std::string general(double x, int digits = 6) {
-    std::ostringstream s;
-    s.precision(digits);
-    s << x;
-    return s.str();
+std::vector<std::string> decision_kind_names() {
+    std::vector<std::string> names;
+    for (decision_kind k : all_decision_kinds) names.push_back(decision_name(k));
+    return names;
 }
 
 std::string percent(double rate) {
@@ -65,12 +58,6 @@ std::string percent(double rate) {
     return general(100 * rate, 3) + "%";
 }
 
-void write_text(const fs::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.close();
-    if (!out) throw std::runtime_error(path.string() + ": cannot write");
-}
 
 /// Sums of the rows that pass `keep`, per number type.
 template <class Keep>
@@ -178,6 +165,8 @@ std::string study_md(const study_result& r, const study_cli_options& o) {
 
     for (decision_kind k : all_decision_kinds) {
         const std::string name = decision_name(k);
+        if (std::none_of(r.rows.begin(), r.rows.end(), [&](const study_row& row) { return row.decision == name; }))
+            continue;  // not asked in this run
         s += "## " + name + "\n\n| number type |";
         for (const std::string& f : r.families) s += " " + f + " |";
         s += " questions | disagreements | rate | ns per question |\n|---|";
@@ -298,29 +287,8 @@ std::string plot_script(const study_result& r, const fs::path& dir) {
     return s;
 }
 
-/// Writes the plots with gnuplot; says so on stderr when it cannot.
-void write_plots(const study_result& r, const fs::path& dir) {
-    if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
-        std::cerr << "study: gnuplot not found (Debian package gnuplot-nox): wrote the tables and the summary, "
-                     "no plots\n";
-        return;
-    }
-    const fs::path script = dir / "plots.gp";
-    write_text(script, plot_script(r, dir));
-    const std::string command = "gnuplot '" + script.string() + "' 2>&1";
-    if (std::system(command.c_str()) != 0) std::cerr << "study: gnuplot failed on " << script.string() << "\n";
-}
-
-/// Throws, naming the known ones, when a name of `given` is not in `known`.
-void check_names(const std::vector<std::string>& given, const std::vector<std::string>& known,
-                 const std::string& what) {
-    for (const std::string& g : given)
-        if (std::find(known.begin(), known.end(), g) == known.end()) {
-            std::string list;
-            for (const std::string& k : known) list += (list.empty() ? "" : ",") + k;
-            throw std::invalid_argument("--" + what + ": unknown name '" + g + "' (known: " + list + ")");
-        }
-}
+/// Writes the plots with gnuplot (plots.gp in the output directory).
+void write_plots(const study_result& r, const fs::path& dir) { plot_with_gnuplot(dir / "plots.gp", plot_script(r, dir), "study"); }
 
 void run_study_command(study_cli_options o, bool cases_given, bool frames_given) {
     if (o.quick) {
@@ -332,6 +300,8 @@ void run_study_command(study_cli_options o, bool cases_given, bool frames_given)
     check_names(o.types, mode_names(study_modes{}), "types");
     so.families = o.families.empty() ? default_study_families() : o.families;
     so.types = o.types;
+    check_names(o.decisions, decision_kind_names(), "decisions");
+    for (const std::string& d : o.decisions) so.decisions.push_back(*decision_from_name(d));
     so.cases = o.cases;
     so.frames = o.frames;
     so.seed = o.seed;
@@ -356,9 +326,9 @@ void run_study_command(study_cli_options o, bool cases_given, bool frames_given)
         };
     }
     const study_result r = run_study(so);
-    write_text(dir / "study.csv", study_csv(r));
-    write_text(dir / "stability.csv", stability_csv(r));
-    write_text(dir / "study.md", study_md(r, o));
+    write_atomically(dir / "study.csv", study_csv(r));
+    write_atomically(dir / "stability.csv", stability_csv(r));
+    write_atomically(dir / "study.md", study_md(r, o));
     write_plots(r, dir);
 
     const auto collides = totals(r, is_collides);
@@ -385,14 +355,16 @@ void register_study(CLI::App& app) {
         "Compare the method's decisions (cone membership, mask, alpha-sign selection, extended-area candidates, "
         "edge pairs, containment, the final answer) in every number type with the exact reference, and report "
         "error against run time: DIR/study.csv, DIR/stability.csv, DIR/study.md and plots (with gnuplot).");
-    std::string family_list, type_list;
-    for (const std::string& f : default_study_families()) family_list += (family_list.empty() ? "" : ",") + f;
-    for (const std::string& t : mode_names(study_modes{})) type_list += (type_list.empty() ? "" : ",") + t;
+    const std::string family_list = joined(default_study_families()), type_list = joined(mode_names(study_modes{}));
     sub->add_option("--families", o->families, "Case families, separated by commas [default: " + family_list +
                         "; also: large, a static polygon of over 100,000 vertices, slow]")
         ->delimiter(',')
         ->type_name("LIST");
     sub->add_option("--types", o->types, "Number types, separated by commas [default: " + type_list + "]")
+        ->delimiter(',')
+        ->type_name("LIST");
+    const std::string decision_list = joined(decision_kind_names());
+    sub->add_option("--decisions", o->decisions, "Decision kinds, separated by commas [default: " + decision_list + "]")
         ->delimiter(',')
         ->type_name("LIST");
     CLI::Option* cases = sub->add_option("--cases", o->cases, "Scenes per family (per magnitude for the sweeps)")

@@ -10,8 +10,8 @@
 //   is posed exactly.
 // - Boundary pairs: every (static edge, moving edge) pair is tested; with d == 0
 //   by CGAL::do_intersect, with d > 0 by CGAL::squared_distance <= d*d (exact).
-//   A zero-length edge (repeated vertex) is tested as a Point_2. A box test in
-//   double comes first; it can only drop pairs whose boxes are more than d
+//   A zero-length edge (repeated vertex) is tested as a Point_2. Box tests in
+//   double come first (against B's whole box, then each edge's); they can only drop pairs whose boxes are more than d
 //   apart on one axis (rounding of a difference is monotone, so the double
 //   comparison never drops a pair that the exact test would keep).
 // - Regions: outer rings minus holes, closed. A point is in a region when it is
@@ -19,9 +19,10 @@
 //   number of outer rings that strictly contain it minus the number of holes
 //   that strictly contain it is positive.
 // - Collision: some boundary pair exists, or (no pair within d, so the
-//   boundaries are more than d apart) some vertex of B lies in region A or some
-//   vertex of A lies in region B. Then one region holds a whole ring of the
-//   other, and the regions intersect.
+//   boundaries are more than d apart and each ring lies wholly on one side of
+//   the other polygon's boundary) the first vertex of some ring of B lies in
+//   region A or the first vertex of some ring of A lies in region B: that
+//   region holds the whole ring, and the regions intersect.
 
 #include <algorithm>
 #include <cmath>
@@ -59,6 +60,7 @@ public:
         pts.reserve(a_.size());
         for (const auto& v : a_.vertices()) pts.emplace_back(v.x, v.y);
         a_edges_ = make_edges(a_, pts);
+        for (const edge& e : a_edges_) a_boxes_.push_back(e.box);
         a_rings_ = make_rings(a_, pts);
     }
 
@@ -72,8 +74,12 @@ public:
         }
         const std::vector<edge> b_edges = make_edges(b_, pts);
 
+        CGAL::Bbox_2 b_box;  // encloses every edge of B
+        for (const edge& f : b_edges) b_box += f.box;
         frame_result out;
-        for (const edge& e : a_edges_) {
+        for (std::size_t i = 0; i < a_edges_.size(); ++i) {
+            if (!boxes_near(a_boxes_[i], b_box)) continue;  // then no edge of B is near it either
+            const edge& e = a_edges_[i];
             for (const edge& f : b_edges) {
                 if (!within(e, f)) continue;
                 out.collides = true;
@@ -86,21 +92,20 @@ public:
             out.pairs.erase(std::unique(out.pairs.begin(), out.pairs.end()), out.pairs.end());
             return out;
         }
-        // No boundary pair within d: the regions meet only if one holds a ring
-        // of the other; testing every vertex covers every ring.
-        for (const point_2& q : pts) {
-            if (in_region(a_rings_, q)) {
+        // No boundary pair within d: no ring of one polygon meets the other's
+        // boundary, so each ring lies wholly inside or wholly outside the
+        // other's region, and one vertex of each ring tells which.
+        const std::vector<ring> b_rings = make_rings(b_, pts);
+        for (const ring& g : b_rings) {
+            if (!g.points.empty() && in_region(a_rings_, g.points.front())) {
                 out.collides = true;
                 return out;
             }
         }
-        const std::vector<ring> b_rings = make_rings(b_, pts);
-        for (const auto& r : a_rings_) {
-            for (const point_2& v : r.points) {
-                if (in_region(b_rings, v)) {
-                    out.collides = true;
-                    return out;
-                }
+        for (const ring& g : a_rings_) {
+            if (!g.points.empty() && in_region(b_rings, g.points.front())) {
+                out.collides = true;
+                return out;
             }
         }
         return out;
@@ -191,6 +196,7 @@ private:
     bool witness_ = false;
     FT squared_distance_;
     std::vector<edge> a_edges_;
+    std::vector<CGAL::Bbox_2> a_boxes_;  ///< a_edges_[i].box, stored densely for the scan
     std::vector<ring> a_rings_;
 };
 

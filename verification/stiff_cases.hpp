@@ -1041,7 +1041,7 @@ inline stiff_scene make_scene(stiff_family f, double magnitude, std::size_t inde
         case stiff_family::grazing: p = grazing_plan(u, index); break;
         case stiff_family::touching: touching_scene(u, frames, s.a, s.b, s.poses); return s;
         case stiff_family::centroid_on_edge_line: p = centroid_plan(u); break;
-        case stiff_family::large: p = large_plan(u); frames = std::min<std::size_t>(frames, 16); break;
+        case stiff_family::large: p = large_plan(u); break;
         case stiff_family::comb: p = comb_plan(u); break;
         case stiff_family::spiral: p = spiral_plan(u); break;
     }
@@ -1066,8 +1066,8 @@ inline void check_scale(double scale) {
 
 }  // namespace stiff_detail
 
-/// `count` scenes of family f (at most 2 for `large`, whose scenes have at
-/// most 16 poses), each with `frames_per_scene` poses. The offset and scaled
+/// `count` scenes of family f (at most 2 for `large`), each with
+/// `frames_per_scene` poses. The offset and scaled
 /// families spread their scenes over offset_magnitudes() and
 /// scale_magnitudes() (first and last included when count >= 2). Scene i is
 /// the same for any count. Families:
@@ -1144,12 +1144,18 @@ inline std::vector<stiff_scene> make_scaled_scenes(double scale, std::size_t cou
     return scenes;
 }
 
-/// The scenes of the committed data/stiff: `count` per family, one for large.
+/// Poses per scene of `large` in the committed data/stiff.
+inline constexpr std::size_t large_data_frames = 16;
+
+/// The scenes of the committed data/stiff: `count` per family (64 poses
+/// each), one for large (large_data_frames poses).
 inline std::vector<stiff_scene> stiff_data_scenes(std::uint64_t seed = default_stiff_seed,
                                                   std::size_t count = default_stiff_count) {
     std::vector<stiff_scene> scenes;
     for (stiff_family f : all_stiff_families()) {
-        auto some = make_stiff_scenes(f, f == stiff_family::large ? std::min<std::size_t>(count, 1) : count, seed);
+        const bool large = f == stiff_family::large;
+        auto some = make_stiff_scenes(f, large ? std::min<std::size_t>(count, 1) : count, seed,
+                                      large ? large_data_frames : 64);
         for (auto& s : some) scenes.push_back(std::move(s));
     }
     return scenes;

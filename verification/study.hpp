@@ -416,6 +416,7 @@ struct study_progress {
 struct study_options {
     std::vector<std::string> families = default_study_families();
     std::vector<std::string> types;  ///< empty: every type of the list
+    std::vector<decision_kind> decisions;  ///< empty: every decision kind
     std::size_t cases = 2;           ///< scenes per family (per magnitude for a sweep)
     std::size_t frames = 100;        ///< poses and query points per scene
     std::uint64_t seed = 20040202;
@@ -478,6 +479,10 @@ public:
             if (std::find(all.begin(), all.end(), t) == all.end())
                 throw std::invalid_argument("unknown number type: " + t);
         selected_ = {std::find(o_.types.begin(), o_.types.end(), Modes::name()) != o_.types.end()...};
+        for (std::size_t d = 0; d < kinds; ++d)
+            if (o_.decisions.empty() ||
+                std::find(o_.decisions.begin(), o_.decisions.end(), all_decision_kinds[d]) != o_.decisions.end())
+                asked_.push_back(d);
         summaries_ = {
             type_summary{Modes::name(), Modes::claims_exact, Modes::evaluator_type::has_fallback, 0, 0, 0}...};
     }
@@ -488,7 +493,11 @@ public:
         const std::size_t families = o_.families.size();
         for (std::size_t f = 0; f < families; ++f) {
             // One family at a time: a long run keeps only its poses in memory.
-            const std::vector<study_case> cases = make_study_cases(o_.families[f], o_.cases, o_.frames, o_.seed);
+            const std::size_t frames =
+                o_.families[f] == stiff_family_name(stiff_family::large) && !only_per_frame_decisions()
+                    ? std::min(o_.frames, large_frames)
+                    : o_.frames;
+            const std::vector<study_case> cases = make_study_cases(o_.families[f], o_.cases, frames, o_.seed);
             for (std::size_t k = 0; k < cases.size(); ++k) {
                 if (o_.progress) o_.progress({f, families, k, cases.size(), o_.families[f]});
                 run_case(cases[k], std::index_sequence_for<Modes...>{});
@@ -504,6 +513,18 @@ public:
 
 private:
     static constexpr std::size_t kinds = std::size(all_decision_kinds);
+    /// Poses per scene of `large` when a decision over all its edges is asked
+    /// (alpha selection, candidates, pairs, brute force): each costs seconds
+    /// per frame in the slow types.
+    static constexpr std::size_t large_frames = 16;
+
+    bool only_per_frame_decisions() const {
+        return std::all_of(asked_.begin(), asked_.end(), [](std::size_t d) {
+            const decision_kind k = all_decision_kinds[d];
+            return k == decision_kind::cone_membership || k == decision_kind::mask ||
+                   k == decision_kind::containment || k == decision_kind::collides;
+        });
+    }
     static constexpr std::size_t chunk = 128;
 
     template <std::size_t... I>
@@ -519,7 +540,7 @@ private:
             questions.clear();
             for (std::size_t k = first; k < std::min(n, first + chunk); ++k)
                 questions.push_back({c.points[k], c.poses[k]});
-            for (std::size_t d = 0; d < kinds; ++d) {
+            for (std::size_t d : asked_) {
                 expected[d].clear();
                 for (const query& q : questions) {
                     ref.decide(all_decision_kinds[d], q, expected[d].values);
@@ -535,7 +556,7 @@ private:
     void run_mode(std::size_t m, std::optional<Evaluator>& ev, const study_case& c, const std::vector<query>& questions,
                   const std::vector<answer_batch>& expected, answer_batch& got) {
         if (!ev) return;
-        for (std::size_t d = 0; d < kinds; ++d) {
+        for (std::size_t d : asked_) {
             const decision_kind kind = all_decision_kinds[d];
             got.clear();
             const auto t0 = std::chrono::steady_clock::now();
@@ -616,6 +637,7 @@ private:
 
     study_options o_;
     std::vector<bool> selected_;
+    std::vector<std::size_t> asked_;  ///< indices into all_decision_kinds
     std::vector<type_summary> summaries_;
     std::map<std::tuple<std::size_t, std::string, std::size_t>, decision_tally> tallies_;
     std::map<std::tuple<std::size_t, std::string, double>, decision_tally> stability_;

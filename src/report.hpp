@@ -1,0 +1,63 @@
+#pragma once
+// Pieces shared by the reporting commands (study, bench): number formatting,
+// name-list checks and gnuplot.
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "files.hpp"
+
+namespace influence2d::cli {
+
+/// x with `digits` digits after the point.
+inline std::string fixed(double x, int digits) {
+    std::ostringstream s;
+    s.setf(std::ios::fixed);
+    s.precision(digits);
+    s << x;
+    return s.str();
+}
+
+/// x with `digits` significant digits.
+inline std::string general(double x, int digits = 6) {
+    std::ostringstream s;
+    s.precision(digits);
+    s << x;
+    return s.str();
+}
+
+/// The names joined by commas.
+inline std::string joined(const std::vector<std::string>& names) {
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ",") + n;
+    return list;
+}
+
+/// Throws, naming the known ones, when a name of `given` is not in `known`.
+inline void check_names(const std::vector<std::string>& given, const std::vector<std::string>& known,
+                        const std::string& what) {
+    for (const std::string& g : given) {
+        bool found = false;
+        for (const std::string& k : known) found = found || k == g;
+        if (!found) throw std::invalid_argument("--" + what + ": unknown name '" + g + "' (known: " + joined(known) + ")");
+    }
+}
+
+/// Writes `script` to `path` and runs gnuplot on it; says so on stderr (as
+/// `who`) when gnuplot is missing or fails: the tables are written anyway.
+inline void plot_with_gnuplot(const std::filesystem::path& path, const std::string& script, const std::string& who) {
+    if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
+        std::cerr << who << ": gnuplot not found (Debian package gnuplot-nox): wrote the tables, no plots\n";
+        return;
+    }
+    write_atomically(path, script);
+    const std::string command = "gnuplot '" + path.string() + "' 2>&1";
+    if (std::system(command.c_str()) != 0) std::cerr << who << ": gnuplot failed on " << path.string() << "\n";
+}
+
+}  // namespace influence2d::cli
