@@ -11,5 +11,7 @@ void register_collide(CLI::App& app);
 void register_generate(CLI::App& app);
 void register_generate_stiff(CLI::App&);
 void register_study(CLI::App& app);
+/// `influence2d bench`: the time study against the peers.
+void register_bench(CLI::App& app);
 
 }  // namespace influence2d::cli

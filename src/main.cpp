@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
     influence2d::cli::register_generate(app);
     influence2d::cli::register_generate_stiff(app);
     influence2d::cli::register_study(app);
+    influence2d::cli::register_bench(app);
 
     try {
         app.parse(argc, argv);
