@@ -23,6 +23,7 @@ struct detector_statistics {
     std::size_t circle_rejections = 0;  ///< frames answered by the bounding circles
     std::size_t candidate_rebuilds = 0; ///< frames that gathered candidates anew
     std::size_t candidate_edges = 0;    ///< static edges inside their extended area
+    std::size_t disc_rejections = 0;    ///< frames whose moving edges all keep off A's circle
     std::size_t segment_tests = 0;      ///< exact segment-pair tests
     std::size_t containment_tests = 0;  ///< frames that ran the inclusion tests
 };
@@ -40,7 +41,12 @@ struct detector_statistics {
 ///      edge grid and kept while p stays within `skin` of where they were
 ///      gathered (temporal coherence; sound because the skin is part of the
 ///      gathering radius).
-///   3. Keep the candidates whose extended area of length n contains p.
+///   3. When B has no more edges than there are cached candidates: if no
+///      moving edge (posed in double) comes within R_A + d of O_A, no boundary
+///      pair exists: go to 5. B's bounding circle may cover much of A while its
+///      edges keep clear of A's circle (a large B passing close by); this costs
+///      one test per moving edge instead of one per cached static edge.
+///      Then keep the candidates whose extended area of length n contains p.
 ///      None: no edge of A comes within n of p, the disk of radius n about p is
 ///      wholly inside or outside A, and so is B: collides iff p is inside A.
 ///   4. Pose B's vertices in double. For each candidate edge and each moving edge
@@ -87,7 +93,17 @@ public:
         // 2. Candidates gathered within n + skin, reused while p moves < skin.
         if (!cache_valid_ || std::hypot(pd.x - cache_center_.x, pd.y - cache_center_.y) > skin_) gather(pd, frame_margin);
 
-        // 3. Extended areas of length n (a filter: in double, widened).
+        // 3. B's edges against A's bounding circle, then the extended areas of
+        // length n (filters: in double, widened).
+        const polygon& bs = b_.shape();
+        if (bs.size() <= cache_.size()) {
+            b_.place_approximate();
+            if (edges_clear_of(o, a_->radius + options_.distance + 2 * frame_margin)) {
+                ++stats_.disc_rejections;
+                ++stats_.containment_tests;
+                return {one_contains_other(*a_, b_, std::optional<double>(n)), {}};
+            }
+        }
         candidates_.clear();
         const polygon& as = a_->shape;
         for (std::uint32_t e : cache_)
@@ -135,6 +151,15 @@ private:
         cache_valid_ = false;
         if (cache_.empty()) cache_center_inside_ = a_->areas.locate(b_.centroid()) == location::inside;
         cache_valid_ = options_.temporal_coherence;
+    }
+
+    /// Whether every posed moving edge (double approximations) is farther
+    /// than `reach` from c; a distance that is not finite counts as near.
+    bool edges_clear_of(const point<double>& c, double reach) const {
+        const polygon& bs = b_.shape();
+        for (std::size_t j = 0; j < bs.size(); ++j)
+            if (may_be_within(c, b_.approximate(j), b_.approximate(bs.next(j)), reach)) return false;
+        return true;
     }
 
     /// Tests static edge e against the moving edges; records the pairs found.
