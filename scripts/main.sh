@@ -3,7 +3,8 @@
 # case (irregular contour polygons) on the circular and the linear trajectory,
 # in double and in exact arithmetic, with the sound and the paper-literal
 # detectors, and prints a summary table; then a short precision study of the
-# method's decisions per number type. Outputs go to build/main-job/.
+# method's decisions per number type, and a quick time study against the peers.
+# Outputs go to build/main-job/.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/deps.sh"
@@ -67,3 +68,9 @@ echo "precision study (short run: every decision of the method in every number t
 "$tool" study --quick --out "$out/study" --regressions "$out/regressions" >"$out/study.log"
 sed -n '/^## What this means/,/^## /p' "$out/study/study.md" | sed '$d'
 echo "tables and plots: $out/study/study.md, $out/study/*.svg"
+echo
+echo "time study (quick grid: sizes 8 and 1024, every polygon type, both trajectories; every method on the same frames):"
+"$tool" bench --quick --out "$out/bench" >"$out/bench.log"
+sed -n '/^## Methods/,/^## Targets/p' "$out/bench/bench.md" | sed '$d'
+sed -n '/^## Targets/,/^## Speed-up/p' "$out/bench/bench.md" | sed '$d'
+echo "tables and heat maps: $out/bench/bench.md, $out/bench/heatmap_*.svg (full grid: influence2d bench)"

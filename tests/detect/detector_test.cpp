@@ -4,7 +4,10 @@
 
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/detector.hpp"
+#include "influence2d/io/wkt.hpp"
+#include "influence2d/number/cgal.hpp"
 #include "support/shapes.hpp"
+#include "verification/cgal_reference.hpp"
 
 using namespace influence2d;
 using test_shapes::square;
@@ -211,5 +214,44 @@ TEST_CASE("detector: exact when the moving polygon's own coordinates are far fro
         const pose p{-far * std::cos(theta) + far * std::sin(theta) + 0.02 * k,
                      -far * std::sin(theta) - far * std::cos(theta) + 1, theta};
         check_same(ask<exact_rational>(a, b, p));
+    }
+}
+
+TEST_CASE("detector: a large moving polygon passing close by, and one holding A, equal the reference",
+          "[detector]") {
+    // B is a long thin bar as long as A is wide: its bounding circle covers
+    // most of A while its edges keep clear of A's circle (the filter of step
+    // 3), or reach into it; then B grown into a frame around A (a square with
+    // a hole) holds A without boundary contact (the containment of step 5).
+    std::vector<point<double>> disc;  // a 64-gon of radius ~10 on a 2^-20 grid
+    for (int k = 0; k < 64; ++k)
+        disc.push_back({std::ldexp(std::round(std::ldexp(10 * std::cos(k * 0.09817477042468103), 20)), -20),
+                        std::ldexp(std::round(std::ldexp(10 * std::sin(k * 0.09817477042468103), 20)), -20)});
+    const polygon a({test_shapes::ring(disc)});
+    const polygon bar = read_wkt("POLYGON((-20 -0.5, 20 -0.5, 20 0.5, -20 0.5, -20 -0.5))");
+    const polygon big = test_shapes::square(-30, -30, 60);
+    const polygon frame = read_wkt("POLYGON((-30 -30, 30 -30, 30 30, -30 30, -30 -30),"
+                                   "(-12 -12, -12 12, 12 12, 12 -12, -12 -12))");
+    for (const polygon* b : {&bar, &big, &frame}) {
+        detector_options o;
+        o.witness = true;
+        detector<exact_rational> exact(a, *b, o);
+        detector<double> fast(a, *b, o);
+        verification::cgal_reference reference(a, *b, 0, true);
+        for (int k = 0; k <= 400; ++k) {
+            // bar: centre from 12 above A's centre (edges 1.5 clear of A's
+            // circle) down through A; frame: small shifts about A.
+            const double s = static_cast<double>(k) / 400;
+            const pose p = b == &bar ? pose{0.01 * k, 12 - 15 * s, 0.001 * k} : pose{3 * s - 1.5, 1 - 2 * s, 0.1 * s};
+            const frame_result want = reference.collide(p);
+            const frame_result got = exact.collide(p);
+            INFO("k = " << k << (b == &bar ? " (bar)" : b == &big ? " (big)" : " (frame)"));
+            CHECK(got.collides == want.collides);
+            CHECK(got.pairs == want.pairs);
+            CHECK(fast.collide(p).collides == want.collides);
+        }
+        if (b == &bar) CHECK(exact.statistics().disc_rejections > 0);
+        if (b == &big) CHECK(exact.collide({0, 0, 0}).collides);     // A inside B: the regions meet
+        if (b == &frame) CHECK_FALSE(exact.collide({0, 0, 0}).collides);  // A in B's hole: they do not
     }
 }

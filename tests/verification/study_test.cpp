@@ -146,3 +146,26 @@ TEST_CASE("study: every reproducible case in data/regressions is answered exactl
     }
     SUCCEED(cases << " reproducible cases replayed");
 }
+
+TEST_CASE("study: --decisions selects the kinds; large keeps every pose only for per-frame decisions",
+          "[verification][study][cli]") {
+    const temp_dir dir;
+    const auto rows = [&](const std::string& decisions) {
+        const auto r = run_cli(dir, "study --families large --types double --cases 1 --frames 20 --decisions " +
+                                        decisions + " --out " + quote((dir / decisions).string()));
+        INFO(r.err);
+        REQUIRE(r.exit_code == 0);
+        std::map<std::string, std::string> cases;  // decision -> cases
+        const std::vector<std::string> lines = lines_of(slurp(dir / decisions / "study.csv"));
+        for (std::size_t i = 1; i < lines.size(); ++i) cases[fields(lines[i])[2]] = fields(lines[i])[3];
+        return cases;
+    };
+    // Only the final answer: every pose asked for.
+    CHECK(rows("collides") == std::map<std::string, std::string>{{"collides", "20"}});
+    // A decision over all of A's 100,000 edges: at most 16 poses.
+    CHECK(rows("collides,alpha_selection") ==
+          std::map<std::string, std::string>{{"alpha_selection", "16"}, {"collides", "16"}});
+    const auto bad = run_cli(dir, "study --decisions collides,guess --out " + quote((dir / "bad").string()));
+    CHECK(bad.exit_code == 2);
+    CHECK(bad.err.find("guess") != std::string::npos);
+}

@@ -32,6 +32,11 @@ struct box {
     bool contains(const point<double>& p) const {
         return p.x >= min_x && p.x <= max_x && p.y >= min_y && p.y <= max_y;
     }
+
+    /// Whether b lies within this box (an empty b does).
+    bool contains(const box& b) const {
+        return b.empty() || (b.min_x >= min_x && b.max_x <= max_x && b.min_y >= min_y && b.max_y <= max_y);
+    }
 };
 
 }  // namespace influence2d

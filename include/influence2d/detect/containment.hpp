@@ -13,13 +13,16 @@ namespace influence2d {
 /// of A wholly inside or outside B, and the regions meet exactly when one
 /// vertex of some ring of one lies in the other region. Given `reach` (a bound
 /// of B's radius, with any rounding margin), a ring of A whose first vertex is
-/// farther than that from B's centroid is skipped without a test.
+/// farther than that from B's centroid is skipped without a test; with
+/// `a_may_be_inside_b` false (the caller knows A does not fit in B) no ring of
+/// A is tested.
 template <class NT>
-bool one_contains_other(const static_scene<NT>& a, posed_polygon<NT>& b,
-                        std::optional<double> reach = std::nullopt) {
+bool one_contains_other(const static_scene<NT>& a, posed_polygon<NT>& b, std::optional<double> reach = std::nullopt,
+                        bool a_may_be_inside_b = true) {
     const polygon& bs = b.shape();
     for (std::size_t r = 0; r < bs.ring_count(); ++r)
         if (a.areas.locate(b.vertex(bs.ring_begin(r))) != location::outside) return true;
+    if (!a_may_be_inside_b) return false;
     const NT reach_nt = number_traits<NT>::from_double(reach.value_or(0));
     const NT reach2 = reach_nt * reach_nt;
     const polygon& as = a.shape;

@@ -66,6 +66,7 @@ public:
         margin_ = tr::filter_slack * 4 * (a_->scale + a_->radius + reach_ + skin_ + coordinate_scale(moving_polygon)) +
                   std::numeric_limits<double>::min();
         grid_ = edge_grid(a_->shape, reach_ + skin_, margin_);
+        for (const auto& v : a_->shape.vertices()) a_box_.add(v);
         distance_ = tr::from_double(options_.distance);
         distance2_ = distance_ * distance_;
     }
@@ -101,7 +102,7 @@ public:
             if (edges_clear_of(o, a_->radius + options_.distance + 2 * frame_margin)) {
                 ++stats_.disc_rejections;
                 ++stats_.containment_tests;
-                return {one_contains_other(*a_, b_, std::optional<double>(n)), {}};
+                return {contains(n, frame_margin), {}};
             }
         }
         candidates_.clear();
@@ -129,7 +130,7 @@ public:
 
         // 5. Containment.
         ++stats_.containment_tests;
-        r.collides = one_contains_other(*a_, b_, std::optional<double>(n));
+        r.collides = contains(n, frame_margin);
         return r;
     }
 
@@ -151,6 +152,23 @@ private:
         cache_valid_ = false;
         if (cache_.empty()) cache_center_inside_ = a_->areas.locate(b_.centroid()) == location::inside;
         cache_valid_ = options_.temporal_coherence;
+    }
+
+    /// Step 5, B's vertices posed in double: whether one region holds a ring
+    /// of the other. A can lie in B only if A's box lies in B's (the box of the
+    /// double approximations, grown by the rounding margin; any value that is
+    /// not finite leaves the question open): else no ring of A is located in
+    /// B, which costs a scan of B's edges.
+    bool contains(double n, double frame_margin) {
+        box bb;
+        bool finite = true;
+        for (std::size_t j = 0; j < b_.shape().size() && finite; ++j) {
+            const point<double>& v = b_.approximate(j);
+            finite = std::isfinite(v.x) && std::isfinite(v.y);
+            bb.add(v);
+        }
+        const bool a_may_fit = !finite || bb.inflated(frame_margin).contains(a_box_);
+        return one_contains_other(*a_, b_, std::optional<double>(n), a_may_fit);
     }
 
     /// Whether every posed moving edge (double approximations) is farther
@@ -204,6 +222,7 @@ private:
     posed_polygon<NT> b_;
     detector_options options_;
     double reach_ = 0, skin_ = 0, margin_ = 0;
+    box a_box_;  ///< A's vertices
     NT distance_, distance2_;
     edge_grid grid_;
 
