@@ -49,12 +49,17 @@ struct detector_statistics {
 ///      Then keep the candidates whose extended area of length n contains p.
 ///      None: no edge of A comes within n of p, the disk of radius n about p is
 ///      wholly inside or outside A, and so is B: collides iff p is inside A.
+///      With B posed in double (a B of no more edges than cached candidates),
+///      the candidates are also those whose box meets B's, and none means no
+///      boundary pair: go to 5.
 ///   4. Pose B's vertices in double. For each candidate edge and each moving edge
 ///      whose box meets the candidate's (grown by d and the rounding margin):
 ///      the signs of alpha of the moving edge's ends (the paper's detailed
 ///      test) and the exact segment test (d == 0), or the exact distance test
 ///      (d > 0). Only those vertices are posed in NT.
-///   5. No pair: the regions meet iff one contains a ring of the other.
+///   5. No pair: the regions meet iff one contains a ring of the other. A
+///      ring's vertex outside the other polygon's bounding circle or box (in
+///      double, widened) is outside it without a locate.
 template <class NT>
 class detector {
 public:
@@ -86,34 +91,62 @@ public:
 
         // 1. Bounding circles (a filter: in double, widened by the margin).
         const point<double>& o = a_->shape.centroid();
-        if (std::hypot(pd.x - o.x, pd.y - o.y) > a_->radius + n + frame_margin) {
+        if (filter_length(pd.x - o.x, pd.y - o.y) > a_->radius + n + frame_margin) {
             ++stats_.circle_rejections;
             return {};
         }
 
         // 2. Candidates gathered within n + skin, reused while p moves < skin.
-        if (!cache_valid_ || std::hypot(pd.x - cache_center_.x, pd.y - cache_center_.y) > skin_) gather(pd, frame_margin);
+        if (!cache_valid_ || filter_length(pd.x - cache_center_.x, pd.y - cache_center_.y) > skin_) gather(pd, frame_margin);
 
         // 3. B's edges against A's bounding circle, then the extended areas of
         // length n (filters: in double, widened).
         const polygon& bs = b_.shape();
-        if (bs.size() <= cache_.size()) {
+        const double clear_of = a_->radius + options_.distance + 2 * frame_margin;
+        const bool placed = bs.size() <= cache_.size();
+        if (placed) {
             b_.place_approximate();
-            if (edges_clear_of(o, a_->radius + options_.distance + 2 * frame_margin)) {
+            if (edges_clear_of(o, clear_of)) {
                 ++stats_.disc_rejections;
                 ++stats_.containment_tests;
-                return {contains(n, frame_margin), {}};
+                // B's vertices lie outside A's circle, so outside A: only A
+                // can lie in B.
+                return {contains(n, frame_margin, false), {}};
             }
         }
         candidates_.clear();
         const polygon& as = a_->shape;
-        for (std::uint32_t e : cache_)
-            if (may_be_in_extended_area(options_.shape, pd, as.vertex(e), as.vertex(as.next(e)), n + frame_margin))
-                candidates_.push_back(e);
-        stats_.candidate_edges += candidates_.size();
-        if (candidates_.empty()) {
-            ++stats_.containment_tests;
-            return {cache_.empty() ? cache_center_inside_ : a_->areas.locate(b_.centroid()) == location::inside, {}};
+        box bb;  // with B posed in double: B's box grown by d and the margin
+        if (placed) {
+            for (std::size_t j = 0; j < bs.size(); ++j) bb.add(b_.approximate(j));
+            bb = bb.inflated(options_.distance + frame_margin);
+        }
+        if (!bb.empty()) {
+            // Only edges whose box meets B's can meet B.
+            for (std::uint32_t e : cache_) {
+                const point<double>&u = as.vertex(e), &v = as.vertex(as.next(e));
+                if (std::max(u.x, v.x) >= bb.min_x && std::min(u.x, v.x) <= bb.max_x && std::max(u.y, v.y) >= bb.min_y &&
+                    std::min(u.y, v.y) <= bb.max_y &&
+                    may_be_in_extended_area(options_.shape, pd, u, v, n + frame_margin))
+                    candidates_.push_back(e);
+            }
+            stats_.candidate_edges += candidates_.size();
+            if (candidates_.empty()) {  // no boundary pair: step 5
+                ++stats_.containment_tests;
+                return {contains(n, frame_margin), {}};
+            }
+        } else {
+            for (std::uint32_t e : cache_)
+                if (may_be_in_extended_area(options_.shape, pd, as.vertex(e), as.vertex(as.next(e)), n + frame_margin))
+                    candidates_.push_back(e);
+            stats_.candidate_edges += candidates_.size();
+            if (candidates_.empty()) {
+                ++stats_.containment_tests;
+                if (cache_.empty()) return {cache_center_inside_, {}};
+                // p outside A's bounding circle (widened) is outside A.
+                if (filter_length(pd.x - o.x, pd.y - o.y) > a_->radius + 2 * frame_margin) return {};
+                return {a_->areas.locate(b_.centroid()) == location::inside, {}};
+            }
         }
 
         // 4. Detailed test on the candidates.
@@ -155,11 +188,11 @@ private:
     }
 
     /// Step 5, B's vertices posed in double: whether one region holds a ring
-    /// of the other. A can lie in B only if A's box lies in B's (the box of the
+    /// of the other (B's rings only if `b_may_be_inside_a`). A can lie in B only if A's box lies in B's (the box of the
     /// double approximations, grown by the rounding margin; any value that is
     /// not finite leaves the question open): else no ring of A is located in
     /// B, which costs a scan of B's edges.
-    bool contains(double n, double frame_margin) {
+    bool contains(double n, double frame_margin, bool b_may_be_inside_a = true) {
         box bb;
         bool finite = true;
         for (std::size_t j = 0; j < b_.shape().size() && finite; ++j) {
@@ -168,7 +201,39 @@ private:
             bb.add(v);
         }
         const bool a_may_fit = !finite || bb.inflated(frame_margin).contains(a_box_);
-        return one_contains_other(*a_, b_, std::optional<double>(n), a_may_fit);
+        if (b_may_be_inside_a) {
+            const polygon& bs = b_.shape();
+            const point<double>& o = a_->shape.centroid();
+            b_may_be_inside_a = false;
+            for (std::size_t r = 0; r < bs.ring_count() && !b_may_be_inside_a; ++r) {
+                const point<double>& v = b_.approximate(bs.ring_begin(r));
+                const double dist = filter_length(v.x - o.x, v.y - o.y);
+                b_may_be_inside_a = !(dist > a_->radius + 2 * frame_margin);  // NaN: may be
+            }
+        }
+        return one_contains_other(*a_, b_, std::optional<double>(n), a_may_fit, b_may_be_inside_a);
+    }
+
+    /// The paper's detailed test as a filter in double: whether the exactly
+    /// posed ends of a moving edge, known as u and v to within `e` on each
+    /// coordinate, lie strictly on the same side of the line through the
+    /// static edge a b (alpha has the same non-zero sign at both): then the
+    /// edges cannot meet. The bound on the error of each side value covers
+    /// the error e of the ends and the rounding of the products; when it
+    /// cannot be trusted (values not finite, or so small that the bound itself
+    /// might underflow) the answer is false and the exact test decides.
+    static bool same_side(const point<double>& a, const point<double>& b, const point<double>& u,
+                          const point<double>& v, double e) {
+        const double dx = b.x - a.x, dy = b.y - a.y;
+        const double slack = 2 * e * (std::fabs(dx) + std::fabs(dy));
+        const auto side = [&](const point<double>& q) {
+            const double l = dx * (q.y - a.y), r = dy * (q.x - a.x);
+            const double o = l - r, bound = slack + 0x1p-48 * (std::fabs(l) + std::fabs(r));
+            if (!(bound >= 0x1p-900) || !(bound < HUGE_VAL) || !(std::fabs(o) > bound)) return 0;
+            return o > 0 ? 1 : -1;
+        };
+        const int su = side(u);
+        return su != 0 && side(v) == su;
     }
 
     /// Whether every posed moving edge (double approximations) is farther
@@ -204,6 +269,7 @@ private:
             if (std::max(u.x, v.x) < eb.min_x || std::min(u.x, v.x) > eb.max_x || std::max(u.y, v.y) < eb.min_y ||
                 std::min(u.y, v.y) > eb.max_y)
                 continue;
+            if (options_.distance == 0 && same_side(as.vertex(e), as.vertex(as.next(e)), u, v, frame_margin)) continue;
             ++stats_.segment_tests;
             const bool meet =
                 options_.distance > 0
