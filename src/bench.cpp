@@ -3,8 +3,6 @@
 // (our speed-up over the fastest peer per cell, the targets, peak memory) and
 // one heat map per method in the style of the paper's Figure 12.
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -285,22 +283,14 @@ void run_bench_command(bench_cli_options o, Given given, const std::string& comm
     if (!o.quick || given("--linear-frames")) so.linear_frames = o.linear_frames;
     if (!o.quick || given("--budget")) so.budget = o.budget;
 
-    const fs::path dir(o.out);
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (!fs::is_directory(dir)) throw std::runtime_error(o.out + ": cannot create the output directory");
-
-    const bool terminal = isatty(fileno(stderr)) != 0;
-    if (terminal || o.progress) {
-        so.progress = [terminal](const time_study_progress& p) {
+    const fs::path dir = output_directory(o.out);
+    if (auto report = progress_reporter(o.progress)) {
+        so.progress = [report](const time_study_progress& p) {
             const bool done = p.cell == p.cells;
-            const std::string line = done ? "bench: " + std::to_string(p.cells) + " cells done"
-                                          : "bench: cell " + std::to_string(p.cell + 1) + "/" +
-                                                std::to_string(p.cells) + " (" + cell_name(p.at) + ")";
-            if (terminal)
-                std::cerr << "\r" << line << "\x1b[K" << (done ? "\n" : "") << std::flush;
-            else if (done || p.cell % 16 == 0)
-                std::cerr << line << "\n";
+            report(done ? "bench: " + std::to_string(p.cells) + " cells done"
+                        : "bench: cell " + std::to_string(p.cell + 1) + "/" + std::to_string(p.cells) + " (" +
+                              cell_name(p.at) + ")",
+                   done, p.cell % 16 == 0);
         };
     }
     const time_study_result r = run_time_study(so);

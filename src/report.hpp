@@ -2,8 +2,12 @@
 // Pieces shared by the reporting commands (study, bench): number formatting,
 // name-list checks and gnuplot.
 
+#include <unistd.h>
+
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -46,6 +50,29 @@ inline void check_names(const std::vector<std::string>& given, const std::vector
         for (const std::string& k : known) found = found || k == g;
         if (!found) throw std::invalid_argument("--" + what + ": unknown name '" + g + "' (known: " + joined(known) + ")");
     }
+}
+
+/// The output directory `out`, created if missing.
+inline std::filesystem::path output_directory(const std::string& out) {
+    const std::filesystem::path dir(out);
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (!std::filesystem::is_directory(dir)) throw std::runtime_error(out + ": cannot create the output directory");
+    return dir;
+}
+
+/// A progress reporter on stderr: report(line, done, milestone) rewrites one
+/// line in place on a terminal; elsewhere, when `forced`, it prints the
+/// milestones and the end. Empty (no reporting) when neither.
+inline std::function<void(const std::string&, bool, bool)> progress_reporter(bool forced) {
+    const bool terminal = isatty(fileno(stderr)) != 0;
+    if (!terminal && !forced) return {};
+    return [terminal](const std::string& line, bool done, bool milestone) {
+        if (terminal)
+            std::cerr << "\r" << line << "\x1b[K" << (done ? "\n" : "") << std::flush;
+        else if (done || milestone)
+            std::cerr << line << "\n";
+    };
 }
 
 /// Writes `script` to `path` and runs gnuplot on it; says so on stderr (as

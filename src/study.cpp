@@ -2,8 +2,6 @@
 // exact reference (verification/study.hpp); writes the tables, a summary and
 // the plots of error against run time.
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -306,23 +304,14 @@ void run_study_command(study_cli_options o, bool cases_given, bool frames_given)
     so.frames = o.frames;
     so.seed = o.seed;
     so.regressions_dir = o.regressions;
-    const fs::path dir(o.out);
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (!fs::is_directory(dir)) throw std::runtime_error(o.out + ": cannot create the output directory");
-
-    const bool terminal = isatty(fileno(stderr)) != 0;
-    if (terminal || o.progress) {
-        so.progress = [terminal](const study_progress& p) {
+    const fs::path dir = output_directory(o.out);
+    if (auto report = progress_reporter(o.progress)) {
+        so.progress = [report](const study_progress& p) {
             const bool done = p.family == p.families;
-            const std::string line =
-                done ? "study: " + std::to_string(p.families) + " families done"
-                     : "study: family " + std::to_string(p.family + 1) + "/" + std::to_string(p.families) + " (" +
-                           p.name + "), scene " + std::to_string(p.scene + 1) + "/" + std::to_string(p.scenes);
-            if (terminal)
-                std::cerr << "\r" << line << "\x1b[K" << (done ? "\n" : "") << std::flush;
-            else if (p.scene == 0 || done)
-                std::cerr << line << "\n";
+            report(done ? "study: " + std::to_string(p.families) + " families done"
+                        : "study: family " + std::to_string(p.family + 1) + "/" + std::to_string(p.families) + " (" +
+                              p.name + "), scene " + std::to_string(p.scene + 1) + "/" + std::to_string(p.scenes),
+                   done, p.scene == 0);
         };
     }
     const study_result r = run_study(so);

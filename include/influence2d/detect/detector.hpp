@@ -41,11 +41,11 @@ struct detector_statistics {
 ///      edge grid and kept while p stays within `skin` of where they were
 ///      gathered (temporal coherence; sound because the skin is part of the
 ///      gathering radius).
-///   3. When B has no more edges than there are cached candidates: if no
-///      moving edge (posed in double) comes within R_A + d of O_A, no boundary
-///      pair exists: go to 5. B's bounding circle may cover much of A while its
-///      edges keep clear of A's circle (a large B passing close by); this costs
-///      one test per moving edge instead of one per cached static edge.
+///   3. If no moving edge (posed in double) comes within R_A + d of O_A, no
+///      boundary pair exists: go to 5. B's bounding circle may cover much of A
+///      while its edges keep clear of A's circle (a large B passing close by).
+///      B's edges are tested in chunks of 8 under bounding circles fixed in
+///      B's frame, when there are no more chunks than cached candidates.
 ///      Then keep the candidates whose extended area of length n contains p.
 ///      None: no edge of A comes within n of p, the disk of radius n about p is
 ///      wholly inside or outside A, and so is B: collides iff p is inside A.
@@ -72,6 +72,7 @@ public:
                   std::numeric_limits<double>::min();
         grid_ = edge_grid(a_->shape, reach_ + skin_, margin_);
         for (const auto& v : a_->shape.vertices()) a_box_.add(v);
+        make_chunks();
         distance_ = tr::from_double(options_.distance);
         distance2_ = distance_ * distance_;
     }
@@ -102,18 +103,19 @@ public:
         // 3. B's edges against A's bounding circle, then the extended areas of
         // length n (filters: in double, widened).
         const polygon& bs = b_.shape();
-        const double clear_of = a_->radius + options_.distance + 2 * frame_margin;
-        const bool placed = bs.size() <= cache_.size();
-        if (placed) {
+        if (chunks_.size() <= cache_.size() + 1 &&
+            edges_clear_of(t, o, a_->radius + options_.distance + 2 * frame_margin, frame_margin)) {
+            ++stats_.disc_rejections;
+            ++stats_.containment_tests;
+            // B's vertices lie outside A's circle, so outside A; A can lie in
+            // B only if its first vertex lies within B's circle.
+            const point<double>& a0 = a_->shape.vertex(0);
+            if (filter_length(a0.x - pd.x, a0.y - pd.y) > b_.radius() + 2 * frame_margin) return {};
             b_.place_approximate();
-            if (edges_clear_of(o, clear_of)) {
-                ++stats_.disc_rejections;
-                ++stats_.containment_tests;
-                // B's vertices lie outside A's circle, so outside A: only A
-                // can lie in B.
-                return {contains(n, frame_margin, false), {}};
-            }
+            return {contains(n, frame_margin, false), {}};
         }
+        const bool placed = bs.size() <= cache_.size();
+        if (placed) b_.place_approximate();
         candidates_.clear();
         const polygon& as = a_->shape;
         box bb;  // with B posed in double: B's box grown by d and the margin
@@ -236,13 +238,50 @@ private:
         return su != 0 && side(v) == su;
     }
 
-    /// Whether every posed moving edge (double approximations) is farther
-    /// than `reach` from c; a distance that is not finite counts as near.
-    bool edges_clear_of(const point<double>& c, double reach) const {
+    /// Whether every moving edge, posed by t in double, is farther than
+    /// `reach` from c (a distance that is not finite counts as near). B's
+    /// edges come in chunks of up to 8 with a bounding circle in B's own frame
+    /// (valid under any rigid motion): a chunk whose posed circle keeps clear
+    /// of the disc is not looked into.
+    bool edges_clear_of(const rotation_pose& t, const point<double>& c, double reach, double frame_margin) const {
         const polygon& bs = b_.shape();
-        for (std::size_t j = 0; j < bs.size(); ++j)
-            if (may_be_within(c, b_.approximate(j), b_.approximate(bs.next(j)), reach)) return false;
+        for (const chunk& k : chunks_) {
+            const point<double> q = t.apply<double>(k.center);
+            if (filter_length(q.x - c.x, q.y - c.y) > reach + k.radius + frame_margin) continue;
+            point<double> u = t.apply<double>(bs.vertex(k.first));
+            for (std::size_t j = k.first; j < k.last; ++j) {
+                const point<double> v = t.apply<double>(bs.vertex(bs.next(j)));
+                if (may_be_within(c, u, v, reach)) return false;
+                u = v;
+            }
+        }
         return true;
+    }
+
+    /// B's edges in chunks of up to 8 consecutive edges of a ring, each with
+    /// the centre of its vertices' box and an upper bound of their distance
+    /// from it.
+    void make_chunks() {
+        const polygon& bs = b_.shape();
+        for (std::size_t r = 0; r < bs.ring_count(); ++r)
+            for (std::size_t first = bs.ring_begin(r); first < bs.ring_end(r); first += 8) {
+                chunk k;
+                k.first = first;
+                k.last = std::min(first + 8, bs.ring_end(r));
+                box around;
+                for (std::size_t j = k.first; j < k.last; ++j) around.add(bs.vertex(j));
+                around.add(bs.vertex(bs.next(k.last - 1)));
+                k.center = {around.min_x / 2 + around.max_x / 2, around.min_y / 2 + around.max_y / 2};
+                long double r2 = 0;
+                for (std::size_t j = k.first; j <= k.last; ++j) {
+                    const point<double>& v = bs.vertex(j < k.last ? j : bs.next(k.last - 1));
+                    const long double dx = static_cast<long double>(v.x) - k.center.x;
+                    const long double dy = static_cast<long double>(v.y) - k.center.y;
+                    r2 = std::max(r2, dx * dx + dy * dy);
+                }
+                k.radius = upper_sqrt(r2);
+                chunks_.push_back(k);
+            }
     }
 
     /// Tests static edge e against the moving edges; records the pairs found.
@@ -289,6 +328,12 @@ private:
     detector_options options_;
     double reach_ = 0, skin_ = 0, margin_ = 0;
     box a_box_;  ///< A's vertices
+    struct chunk {
+        point<double> center;
+        double radius = 0;
+        std::size_t first = 0, last = 0;  ///< B's edges [first, last) of one ring
+    };
+    std::vector<chunk> chunks_;
     NT distance_, distance2_;
     edge_grid grid_;
 
