@@ -73,4 +73,4 @@ echo "time study (quick grid: sizes 8 and 1024, every polygon type, both traject
 "$tool" bench --quick --out "$out/bench" >"$out/bench.log"
 sed -n '/^## Methods/,/^## Targets/p' "$out/bench/bench.md" | sed '$d'
 sed -n '/^## Targets/,/^## Speed-up/p' "$out/bench/bench.md" | sed '$d'
-echo "tables and heat maps: $out/bench/bench.md, $out/bench/heatmap_*.svg (full grid: influence2d bench)"
+echo "tables and heat maps: $out/bench/bench.md, $out/bench/heatmap_*.png (full grid: influence2d bench)"

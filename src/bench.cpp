@@ -221,22 +221,24 @@ void write_heat_maps(const time_study_result& r, const time_study_options& o, co
     const std::size_t columns = o.types.size(), rows_n = o.trajectories.size();
     for (const std::string& m : o.methods) {
         if (std::none_of(r.rows.begin(), r.rows.end(), [&](const time_row& row) { return row.method == m; })) continue;
-        script += "set terminal svg size " + std::to_string(260 * columns + 120) + "," + std::to_string(250 * rows_n + 60) +
-                  " dynamic font 'sans,10' background '#ffffff'\n";
-        script += "set output '" + (dir / ("heatmap_" + m + ".svg")).string() + "'\n";
+        script += "set terminal pngcairo size " + std::to_string(250 * columns + 120) + "," +
+                  std::to_string(250 * rows_n + 60) + " font 'sans,9' background '#ffffff'\n";
+        script += "set output '" + (dir / ("heatmap_" + m + ".png")).string() + "'\n";
         script += "set multiplot layout " + std::to_string(rows_n) + "," + std::to_string(columns) + " title '" + m +
                   ": seconds per trajectory (log colour scale, the same for every method)'\n";
-        script += "set logscale cb\nset cbrange [" + general(lo) + ":" + general(hi) + "]\n";
+        script += "set logscale cb\nset format cb '%g'\nset cbrange [" + general(lo) + ":" + general(hi) + "]\n";
         script += "set palette defined (0 '#1a9850', 1 '#fee08b', 2 '#d73027')\nunset key\n";
         script += "set xlabel 'static vertices'\nset ylabel 'moving vertices'\n";
         std::string tics;
         for (std::size_t i = 0; i < o.sizes.size(); ++i)
             tics += (i ? ", " : "") + std::string("'") + std::to_string(o.sizes[i]) + "' " + std::to_string(i);
-        script += "set xtics (" + tics + ")\nset ytics (" + tics + ")\n";
+        script += "set xtics (" + tics + ") rotate by 90 right\nset ytics (" + tics + ")\n";
         script += "set xrange [-0.5:" + std::to_string(o.sizes.size()) + "-0.5]\nset yrange [-0.5:" +
                   std::to_string(o.sizes.size()) + "-0.5]\n";
         for (const std::string& j : o.trajectories)
             for (const std::string& t : o.types) {
+                // One colour box, beside the last panel of each row.
+                script += std::string(t == o.types.back() ? "set colorbox\n" : "unset colorbox\n");
                 script += "set title '" + t + ", " + j + "'\n$d << EOD\n";
                 std::size_t points = 0;
                 for (const time_row& row : r.rows) {
@@ -300,7 +302,7 @@ void run_bench_command(bench_cli_options o, Given given, const std::string& comm
     write_heat_maps(r, so, dir);
     const std::size_t targets = md.find("## Targets"), end = md.find("\n## ", targets + 1);
     std::cout << md.substr(targets, end - targets) << "\nwritten: " << (dir / "bench.csv").string() << ", "
-              << (dir / "bench.md").string() << ", heat maps " << (dir / "heatmap_*.svg").string() << "\n";
+              << (dir / "bench.md").string() << ", heat maps " << (dir / "heatmap_*.png").string() << "\n";
 }
 
 }  // namespace
