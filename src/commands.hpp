@@ -13,5 +13,12 @@ void register_generate_stiff(CLI::App&);
 void register_study(CLI::App& app);
 /// `influence2d bench`: the time study against the peers.
 void register_bench(CLI::App& app);
+/// `influence2d audit`: the degeneracies of a polygon file.
+void register_audit(CLI::App& app);
+
+/// Thrown by a command to end the tool with `code` after its output is done.
+struct exit_status {
+    int code;
+};
 
 }  // namespace influence2d::cli

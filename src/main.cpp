@@ -1,7 +1,8 @@
 // The influence2d command-line tool.
 //
-// Exit codes: 0 success (or --help), 2 bad usage, bad input or a file that
-// cannot be read or written; messages go to stderr as `influence2d: error: ...`.
+// Exit codes: 0 success (or --help), 1 `audit`: the library refuses the
+// polygon (the findings say why), 2 bad usage, bad input or a file that cannot
+// be read or written; messages go to stderr as `influence2d: error: ...`.
 
 #include <exception>
 #include <iostream>
@@ -37,9 +38,12 @@ int main(int argc, char** argv) {
     influence2d::cli::register_generate_stiff(app);
     influence2d::cli::register_study(app);
     influence2d::cli::register_bench(app);
+    influence2d::cli::register_audit(app);
 
     try {
         app.parse(argc, argv);
+    } catch (const influence2d::cli::exit_status& e) {
+        return e.code;
     } catch (const CLI::ParseError& e) {
         // --help and --version are "errors" with exit code 0.
         return app.exit(e) == 0 ? 0 : 2;

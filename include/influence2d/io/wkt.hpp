@@ -30,6 +30,13 @@ namespace influence2d {
 /// Files larger than this are refused by read_wkt_file.
 inline constexpr std::size_t max_wkt_file_bytes = std::size_t{512} << 20;
 
+/// A ring as the WKT gives it: every point, the closing one included when the
+/// text has it; nothing checked beyond the syntax.
+struct wkt_ring {
+    std::vector<point<double>> points;
+    ring_role role = ring_role::outer;
+};
+
 namespace wkt_detail {
 
 using bg_point = boost::geometry::model::d2::point_xy<double>;
@@ -122,43 +129,33 @@ inline void check_coordinate_tuples(std::string_view source, const std::string& 
 
 /// Appends the ring as a ring_input after checking it: not empty, finite
 /// coordinates, closed (first point repeated at the end, which is dropped).
-inline void append_ring(std::string_view source, const bg_ring& r, ring_role role,
-                        std::vector<ring_input>& rings) {
+inline void append_ring(std::string_view source, const wkt_ring& r, std::vector<ring_input>& rings) {
     const std::size_t index = rings.size();
-    if (r.empty()) fail(source, ring_place(index) + ": empty ring");
-    for (std::size_t k = 0; k < r.size(); ++k) {
-        if (!std::isfinite(r[k].x()) || !std::isfinite(r[k].y()))
+    const auto& pts = r.points;
+    if (pts.empty()) fail(source, ring_place(index) + ": empty ring");
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+        if (!std::isfinite(pts[k].x) || !std::isfinite(pts[k].y))
             fail(source, vertex_place(index, k) + ": coordinate is not a finite number");
     }
-    const bg_point& a = r.front();
-    const bg_point& b = r.back();
-    if (a.x() != b.x() || a.y() != b.y())
-        fail(source, ring_place(index) + " is not closed: first point (" +
-                         format_coordinate(a.x()) + " " + format_coordinate(a.y()) +
-                         ") differs from last point (" + format_coordinate(b.x()) + " " +
-                         format_coordinate(b.y()) + ")");
+    const point<double>& a = pts.front();
+    const point<double>& b = pts.back();
+    if (a.x != b.x || a.y != b.y)
+        fail(source, ring_place(index) + " is not closed: first point (" + format_coordinate(a.x) + " " +
+                         format_coordinate(a.y) + ") differs from last point (" + format_coordinate(b.x) + " " +
+                         format_coordinate(b.y) + ")");
     ring_input in;
-    in.role = role;
-    in.vertices.reserve(r.size() - 1);
-    for (std::size_t k = 0; k + 1 < r.size(); ++k) in.vertices.push_back({r[k].x(), r[k].y()});
+    in.role = r.role;
+    in.vertices.assign(pts.begin(), pts.end() - 1);
     rings.push_back(std::move(in));
-}
-
-inline void append_polygon(std::string_view source, const bg_polygon& p,
-                           std::vector<ring_input>& rings) {
-    append_ring(source, p.outer(), ring_role::outer, rings);
-    for (const auto& hole : p.inners()) append_ring(source, hole, ring_role::hole, rings);
 }
 
 }  // namespace wkt_detail
 
-/// Reads a polygon from WKT text: `POLYGON` (first ring outer, the others
-/// holes) or `MULTIPOLYGON` (each part's exterior outer, its interiors holes),
-/// keywords in any case, surrounding white space allowed. Rings must be
-/// closed; the closing point is dropped. Rings are numbered 0, 1, ... in text
-/// order across the whole geometry and vertices 0, 1, ... within a ring.
-/// Throws invalid_input with a message starting with `source`.
-inline polygon read_wkt(std::string_view text, std::string_view source = "<text>") {
+/// The rings of WKT text (POLYGON or MULTIPOLYGON, see read_wkt) without the
+/// geometric checks: for audits, which report what read_wkt would refuse.
+/// Throws invalid_input, starting with `source`, for what is not WKT of a
+/// polygon at all (syntax, geometry type, empty geometry, coordinate count).
+inline std::vector<wkt_ring> read_wkt_rings(std::string_view text, std::string_view source = "<text>") {
     namespace bg = boost::geometry;
     using namespace wkt_detail;
     const std::string wkt = normalise(text);
@@ -175,37 +172,58 @@ inline polygon read_wkt(std::string_view text, std::string_view source = "<text>
         fail(source, "expected POLYGON or MULTIPOLYGON, found '" + found + "'");
     }
 
-    std::vector<ring_input> rings;
+    std::vector<wkt_ring> rings;
+    const auto add = [&](const bg_ring& r, ring_role role) {
+        wkt_ring out;
+        out.role = role;
+        for (const auto& q : r) out.points.push_back({q.x(), q.y()});
+        rings.push_back(std::move(out));
+    };
+    const auto add_polygon = [&](const bg_polygon& p) {
+        add(p.outer(), ring_role::outer);
+        for (const auto& hole : p.inners()) add(hole, ring_role::hole);
+    };
     try {
         if (multi) {
             bg_multi_polygon mp;
             bg::read_wkt(wkt, mp);
             if (mp.empty()) fail(source, "MULTIPOLYGON is empty");
             check_coordinate_tuples(source, wkt, 3);
-            for (const auto& p : mp) append_polygon(source, p, rings);
+            for (const auto& p : mp) add_polygon(p);
         } else {
             bg_polygon p;
             bg::read_wkt(wkt, p);
             if (p.outer().empty() && p.inners().empty()) fail(source, "POLYGON is empty");
             check_coordinate_tuples(source, wkt, 2);
-            append_polygon(source, p, rings);
+            add_polygon(p);
         }
     } catch (const invalid_input&) {
         throw;
     } catch (const std::exception& e) {
         fail(source, std::string("parse error: ") + e.what());
     }
+    return rings;
+}
 
+/// Reads a polygon from WKT text: `POLYGON` (first ring outer, the others
+/// holes) or `MULTIPOLYGON` (each part's exterior outer, its interiors holes),
+/// keywords in any case, surrounding white space allowed. Rings must be
+/// closed; the closing point is dropped. Rings are numbered 0, 1, ... in text
+/// order across the whole geometry and vertices 0, 1, ... within a ring.
+/// Throws invalid_input with a message starting with `source`.
+inline polygon read_wkt(std::string_view text, std::string_view source = "<text>") {
+    std::vector<ring_input> rings;
+    for (const wkt_ring& r : read_wkt_rings(text, source)) wkt_detail::append_ring(source, r, rings);
     try {
         return polygon(std::move(rings));
     } catch (const invalid_input& e) {
-        fail(source, e.what());
+        wkt_detail::fail(source, e.what());
     }
 }
 
-/// Reads a polygon from a WKT file (see read_wkt); messages start with `path`.
-/// Files over max_wkt_file_bytes are refused.
-inline polygon read_wkt_file(const std::string& path) {
+/// The text of a WKT file; files over max_wkt_file_bytes are refused.
+/// Throws invalid_input starting with `path`.
+inline std::string read_wkt_text_file(const std::string& path) {
     const std::string too_large =
         "file is larger than " + std::to_string(max_wkt_file_bytes >> 20) + " MiB";
     std::ifstream in(path, std::ios::binary);
@@ -223,8 +241,12 @@ inline polygon read_wkt_file(const std::string& path) {
         text.append(buf.data(), got);
     }
     if (in.bad()) wkt_detail::fail(path, "read error");
-    return read_wkt(text, path);
+    return text;
 }
+
+/// Reads a polygon from a WKT file (see read_wkt); messages start with `path`.
+/// Files over max_wkt_file_bytes are refused.
+inline polygon read_wkt_file(const std::string& path) { return read_wkt(read_wkt_text_file(path), path); }
 
 /// Writes the polygon as WKT with every coordinate in its shortest form that
 /// reads back to the same double; rings are closed and in stored orientation

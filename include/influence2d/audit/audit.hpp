@@ -1,0 +1,469 @@
+#pragma once
+// Audit of a polygon's input: every degeneracy the library meets, found with
+// exact predicates, each with where it is and what the library does with it.
+//
+//   audit_report r = audit_rings(rings);   // rings as read (closing points included)
+//   r.accepted: whether polygon(...) accepts the rings; r.findings: what is there.
+//
+// The rings are those of the input (WKT: read_wkt_rings), before any check, so
+// that what the reader refuses is reported as well as what it accepts.
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <tuple>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "influence2d/core/point.hpp"
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/io/wkt.hpp"
+#include "influence2d/number/expansion.hpp"
+#include "influence2d/predicates/orientation.hpp"
+#include "influence2d/predicates/segments.hpp"
+
+namespace influence2d {
+
+enum class finding_kind {
+    empty_ring,
+    unclosed_ring,
+    non_finite,
+    too_few_vertices,
+    repeated_vertex,
+    near_repeated_vertex,
+    collinear_run,
+    spike,
+    self_intersection,
+    rings_meet,
+    reversed_orientation,
+    hole_outside_shell,
+    non_manifold_vertex,
+    zero_area,
+    near_zero_area,
+    centroid_on_edge_line,
+    inexact_in_float,
+    beyond_float,
+    beyond_double_products
+};
+
+inline const char* finding_name(finding_kind k) {
+    switch (k) {
+        case finding_kind::empty_ring: return "empty_ring";
+        case finding_kind::unclosed_ring: return "unclosed_ring";
+        case finding_kind::non_finite: return "non_finite";
+        case finding_kind::too_few_vertices: return "too_few_vertices";
+        case finding_kind::repeated_vertex: return "repeated_vertex";
+        case finding_kind::near_repeated_vertex: return "near_repeated_vertex";
+        case finding_kind::collinear_run: return "collinear_run";
+        case finding_kind::spike: return "spike";
+        case finding_kind::self_intersection: return "self_intersection";
+        case finding_kind::rings_meet: return "rings_meet";
+        case finding_kind::reversed_orientation: return "reversed_orientation";
+        case finding_kind::hole_outside_shell: return "hole_outside_shell";
+        case finding_kind::non_manifold_vertex: return "non_manifold_vertex";
+        case finding_kind::zero_area: return "zero_area";
+        case finding_kind::near_zero_area: return "near_zero_area";
+        case finding_kind::centroid_on_edge_line: return "centroid_on_edge_line";
+        case finding_kind::inexact_in_float: return "inexact_in_float";
+        case finding_kind::beyond_float: return "beyond_float";
+        case finding_kind::beyond_double_products: return "beyond_double_products";
+    }
+    return "unknown";
+}
+
+/// One finding: what, where (ring and vertex or edge, in input numbering:
+/// edge k runs from vertex k to vertex k+1 of its ring), and what the library
+/// does with it.
+struct finding {
+    explicit finding(finding_kind k) : kind(k) {}
+    finding_kind kind;
+    std::size_t ring = 0;
+    std::optional<std::size_t> vertex;       ///< or the edge, for edge findings
+    std::optional<std::size_t> other_ring;   ///< for findings between two places
+    std::optional<std::size_t> other_vertex;
+    point<double> at{};                      ///< a point of the finding
+    std::string what;                        ///< one line
+    std::string effect;                      ///< what the library does
+    bool rejects = false;                    ///< the library refuses the input for it
+};
+
+struct audit_report {
+    std::vector<finding> findings;  ///< at most audit_options::max_per_kind of each kind
+    std::size_t total = 0;          ///< findings of every kind, listed or not
+    bool accepted = true;    ///< polygon(...) accepts the rings
+    std::string rejection;   ///< its message when it does not
+    std::size_t rings = 0, vertices = 0;
+};
+
+struct audit_options {
+    /// Points closer than this times the polygon's size (its largest absolute
+    /// coordinate) are near-repeated; a ring whose area is below this times
+    /// the square of its box's diagonal has near-zero area.
+    double relative_tolerance = 0x1p-40;
+    /// At most this many findings of one kind are listed (audit_report::total
+    /// counts them all).
+    std::size_t max_per_kind = 50;
+};
+
+namespace audit_detail {
+
+inline double size_of(const std::vector<std::vector<point<double>>>& rings) {
+    double s = 0;
+    for (const auto& r : rings)
+        for (const auto& p : r)
+            if (std::isfinite(p.x) && std::isfinite(p.y)) s = std::max({s, std::fabs(p.x), std::fabs(p.y)});
+    return s;
+}
+
+/// Where q lies against a closed ring (exact): -1 outside, 0 on, 1 inside.
+inline int locate_in_ring(const point<double>& q, const std::vector<point<double>>& ring) {
+    bool inside = false;
+    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+        const point<double>& a = ring[i];
+        const point<double>& b = ring[(i + 1) % n];
+        if (on_segment(q, a, b)) return 0;
+        if ((a.y > q.y) != (b.y > q.y)) {
+            const int o = orientation(a, b, q);  // q left of a->b
+            if ((b.y > a.y) == (o > 0)) inside = !inside;
+        }
+    }
+    return inside ? 1 : -1;
+}
+
+struct edge_ref {
+    std::size_t ring, index;
+    point<double> a, b;
+    double min_x, max_x;
+};
+
+/// Every pair of edges that meet, except edges adjacent on a ring (which
+/// share their vertex) and zero-length edges; a sweep over x.
+template <class Visit>
+void meeting_edges(const std::vector<std::vector<point<double>>>& rings, Visit visit) {
+    std::vector<edge_ref> edges;
+    for (std::size_t r = 0; r < rings.size(); ++r)
+        for (std::size_t i = 0, n = rings[r].size(); i < n; ++i) {
+            const point<double>& a = rings[r][i];
+            const point<double>& b = rings[r][(i + 1) % n];
+            if (a == b) continue;
+            edges.push_back({r, i, a, b, std::min(a.x, b.x), std::max(a.x, b.x)});
+        }
+    std::sort(edges.begin(), edges.end(), [](const edge_ref& p, const edge_ref& q) { return p.min_x < q.min_x; });
+    std::vector<const edge_ref*> active;
+    for (const edge_ref& e : edges) {
+        active.erase(std::remove_if(active.begin(), active.end(), [&](const edge_ref* f) { return f->max_x < e.min_x; }),
+                     active.end());
+        for (const edge_ref* f : active) {
+            if (f->ring == e.ring) {
+                const std::size_t n = rings[e.ring].size();
+                if ((f->index + 1) % n == e.index || (e.index + 1) % n == f->index) continue;
+            }
+            if (std::max(f->a.y, f->b.y) < std::min(e.a.y, e.b.y) || std::max(e.a.y, e.b.y) < std::min(f->a.y, f->b.y))
+                continue;
+            if (segments_intersect(orientation(f->a, f->b, e.a), orientation(f->a, f->b, e.b), f->a, f->b, e.a, e.b)) {
+                const bool first = std::tie(f->ring, f->index) < std::tie(e.ring, e.index);
+                visit(first ? *f : e, first ? e : *f);
+            }
+        }
+        active.push_back(&e);
+    }
+}
+
+inline std::string coordinates(const point<double>& p) {
+    return "(" + wkt_detail::format_coordinate(p.x) + " " + wkt_detail::format_coordinate(p.y) + ")";
+}
+
+}  // namespace audit_detail
+
+/// Audits the rings as read (closing points included where the input has them).
+inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_options& o = {}) {
+    using namespace audit_detail;
+    audit_report r;
+    std::vector<std::size_t> per_kind(static_cast<std::size_t>(finding_kind::beyond_double_products) + 1, 0);
+    const auto add = [&](finding f) {
+        if (f.rejects && r.accepted) {
+            r.accepted = false;
+            r.rejection = f.what;
+        }
+        ++r.total;
+        if (per_kind[static_cast<std::size_t>(f.kind)]++ < o.max_per_kind) r.findings.push_back(std::move(f));
+    };
+    const auto at_vertex = [](finding_kind k, std::size_t ring, std::size_t v, point<double> p, std::string what,
+                              std::string effect, bool rejects = false) {
+        finding f{k};
+        f.ring = ring;
+        f.vertex = v;
+        f.at = p;
+        f.what = std::move(what);
+        f.effect = std::move(effect);
+        f.rejects = rejects;
+        return f;
+    };
+
+    // Rings as the library takes them: closing point dropped.
+    std::vector<std::vector<point<double>>> rings;
+    std::vector<bool> usable;  // finite, closed, three distinct vertices
+    r.rings = input.size();
+    for (std::size_t k = 0; k < input.size(); ++k) {
+        const auto& pts = input[k].points;
+        bool ok = true;
+        if (pts.empty()) {
+            finding f{finding_kind::empty_ring};
+            f.ring = k;
+            f.what = "empty ring";
+            f.effect = "refused";
+            f.rejects = true;
+            add(f);
+            rings.emplace_back();
+            usable.push_back(false);
+            continue;
+        }
+        for (std::size_t v = 0; v < pts.size(); ++v)
+            if (!std::isfinite(pts[v].x) || !std::isfinite(pts[v].y)) {
+                add(at_vertex(finding_kind::non_finite, k, v, pts[v], "coordinate is not a finite number",
+                              "refused", true));
+                ok = false;
+            }
+        const bool closed = pts.front() == pts.back() && pts.size() > 1;
+        if (!closed) {
+            add(at_vertex(finding_kind::unclosed_ring, k, pts.size() - 1, pts.back(),
+                          "ring is not closed: last point " + coordinates(pts.back()) + " differs from the first " +
+                              coordinates(pts.front()),
+                          "refused", true));
+            ok = false;
+        }
+        std::vector<point<double>> ring(pts.begin(), closed ? pts.end() - 1 : pts.end());
+        r.vertices += ring.size();
+        std::vector<point<double>> distinct;
+        for (const auto& p : ring)
+            if (std::find(distinct.begin(), distinct.end(), p) == distinct.end() && distinct.size() < 3)
+                distinct.push_back(p);
+        if (distinct.size() < 3) {
+            finding f{finding_kind::too_few_vertices};
+            f.ring = k;
+            f.what = "fewer than three distinct vertices";
+            f.effect = "refused";
+            f.rejects = true;
+            add(f);
+            ok = false;
+        }
+        rings.push_back(std::move(ring));
+        usable.push_back(ok);
+    }
+
+    const double size = size_of(rings);
+    const double near = o.relative_tolerance * size;
+    for (std::size_t k = 0; k < rings.size(); ++k) {
+        if (!usable[k]) continue;
+        const auto& ring = rings[k];
+        const std::size_t n = ring.size();
+        // Vertices and edges.
+        for (std::size_t v = 0; v < n; ++v) {
+            const point<double>& p = ring[v];
+            const point<double>& q = ring[(v + 1) % n];
+            if (p == q) {
+                add(at_vertex(finding_kind::repeated_vertex, k, v, p,
+                              "vertex " + std::to_string(v) + " repeated: edge " + std::to_string(v) + " has zero length",
+                              "kept as a zero-length edge (tested as a point), so witness edge numbers stay the "
+                              "input's"));
+            } else if (std::max(std::fabs(p.x - q.x), std::fabs(p.y - q.y)) <= near) {
+                add(at_vertex(finding_kind::near_repeated_vertex, k, v, p,
+                              "edge " + std::to_string(v) + " is shorter than " +
+                                  wkt_detail::format_coordinate(o.relative_tolerance) + " of the polygon's size",
+                              "kept as it is; exact and certified modes decide on it exactly, float and double may "
+                              "not"));
+            }
+            // The turn at v, between the nearest distinct neighbours.
+            std::size_t before = (v + n - 1) % n, after = (v + 1) % n;
+            while (ring[before] == p && before != v) before = (before + n - 1) % n;
+            while (ring[after] == p && after != v) after = (after + 1) % n;
+            if (ring[before] == p || ring[after] == p || (v > 0 && ring[v - 1] == p)) continue;
+            if (orientation(ring[before], p, ring[after]) != 0) continue;
+            const double dot = (p.x - ring[before].x) * (ring[after].x - p.x) + (p.y - ring[before].y) * (ring[after].y - p.y);
+            if (dot > 0)
+                add(at_vertex(finding_kind::collinear_run, k, v, p, "vertex " + std::to_string(v) +
+                                                                        " lies on the line of its neighbours",
+                              "kept: a straight run of several edges, each tested as an edge"));
+            else
+                add(at_vertex(finding_kind::spike, k, v, p,
+                              "the ring turns back at vertex " + std::to_string(v) + " (a spike of zero width)",
+                              "kept: the spike's two edges bound no area; touching it is a collision"));
+        }
+        // Orientation and area: the exact sign of the shoelace sum, its
+        // magnitude in long double.
+        expansion::accumulator exact_area;
+        long double area = 0;
+        for (std::size_t v = 0; v < n; ++v) {
+            const point<double>& p = ring[v];
+            const point<double>& q = ring[(v + 1) % n];
+            exact_area.add_product(p.x, q.y);
+            exact_area.add_product(-p.y, q.x);
+            area += static_cast<long double>(p.x) * q.y - static_cast<long double>(q.x) * p.y;
+        }
+        const int sign = exact_area.sign();
+        const bool hole = input[k].role == ring_role::hole;
+        const bool reversed = sign != 0 && (sign > 0) == hole;
+        box bounds;
+        for (const auto& p : ring) bounds.add(p);
+        const double w = bounds.max_x - bounds.min_x, h = bounds.max_y - bounds.min_y;
+        if (sign == 0) {
+            finding f{finding_kind::zero_area};
+            f.ring = k;
+            f.at = ring[0];
+            f.what = "the ring encloses zero area";
+            f.effect = "kept: its edges still collide; it bounds no region";
+            add(f);
+        } else if (std::fabs(area) / 2 <= static_cast<long double>(o.relative_tolerance) * (static_cast<long double>(w) * w +
+                                                                                       static_cast<long double>(h) * h)) {
+            finding f{finding_kind::near_zero_area};
+            f.ring = k;
+            f.at = ring[0];
+            f.what = "the ring's area is almost zero against its size (the square of its box's diagonal)";
+            f.effect = "kept as it is; its orientation is decided exactly";
+            add(f);
+        }
+        if (reversed) {
+            finding f{finding_kind::reversed_orientation};
+            f.ring = k;
+            f.at = ring[0];
+            f.what = std::string(hole ? "hole" : "outer ring") + " is " + (hole ? "counter-clockwise" : "clockwise");
+            f.effect = "reversed when stored (orientation decided exactly); witnesses keep the input's edge numbers";
+            add(f);
+        }
+    }
+
+    // Edges that meet: within a ring, between rings.
+    std::vector<std::vector<point<double>>> live;
+    std::vector<std::size_t> live_index;
+    for (std::size_t k = 0; k < rings.size(); ++k)
+        if (usable[k]) {
+            live.push_back(rings[k]);
+            live_index.push_back(k);
+        }
+    meeting_edges(live, [&](const edge_ref& f, const edge_ref& e) {
+        finding g{f.ring == e.ring ? finding_kind::self_intersection : finding_kind::rings_meet};
+        g.ring = live_index[f.ring];
+        g.vertex = f.index;
+        g.other_ring = live_index[e.ring];
+        g.other_vertex = e.index;
+        g.at = f.a;
+        if (f.ring == e.ring) {
+            g.what = "edges " + std::to_string(f.index) + " and " + std::to_string(e.index) + " meet";
+            g.effect = "kept: the region is counted by how many rings hold a point (outer +1, hole -1), and the "
+                       "boundary is every edge";
+        } else {
+            g.what = "edge " + std::to_string(f.index) + " of ring " + std::to_string(live_index[f.ring]) +
+                     " meets edge " + std::to_string(e.index) + " of ring " + std::to_string(live_index[e.ring]);
+            g.effect = "kept: rings may touch or cross; the region is counted by nesting";
+        }
+        add(g);
+    });
+
+    // Holes against the outer rings; repeated coordinates at separate places.
+    for (std::size_t k = 0; k < rings.size(); ++k) {
+        if (!usable[k] || input[k].role != ring_role::hole) continue;
+        bool inside = false;
+        for (std::size_t s = 0; s < rings.size() && !inside; ++s)
+            if (usable[s] && input[s].role == ring_role::outer)
+                for (const auto& p : rings[k])
+                    if (locate_in_ring(p, rings[s]) > 0) inside = true;
+        if (!inside) {
+            finding f{finding_kind::hole_outside_shell};
+            f.ring = k;
+            f.at = rings[k][0];
+            f.what = "no vertex of the hole lies strictly inside an outer ring";
+            f.effect = "kept: a hole outside every outer ring removes nothing (regions count outer +1, hole -1)";
+            add(f);
+        }
+    }
+    {
+        struct place {
+            point<double> p;
+            std::size_t ring, vertex;
+        };
+        std::vector<place> all;
+        for (std::size_t k = 0; k < rings.size(); ++k)
+            if (usable[k])
+                for (std::size_t v = 0; v < rings[k].size(); ++v) all.push_back({rings[k][v], k, v});
+        std::sort(all.begin(), all.end(), [](const place& a, const place& b) {
+            return std::tie(a.p.x, a.p.y, a.ring, a.vertex) < std::tie(b.p.x, b.p.y, b.ring, b.vertex);
+        });
+        for (std::size_t i = 0; i + 1 < all.size(); ++i) {
+            const place &a = all[i], &b = all[i + 1];
+            if (!(a.p == b.p)) continue;
+            const std::size_t n = rings[a.ring].size();
+            const bool consecutive =
+                a.ring == b.ring && ((a.vertex + 1) % n == b.vertex || (b.vertex + 1) % n == a.vertex);
+            if (consecutive) continue;
+            finding f{finding_kind::non_manifold_vertex};
+            f.ring = a.ring;
+            f.vertex = a.vertex;
+            f.other_ring = b.ring;
+            f.other_vertex = b.vertex;
+            f.at = a.p;
+            f.what = "the point " + coordinates(a.p) + " is vertex " + std::to_string(a.vertex) + " of ring " +
+                     std::to_string(a.ring) + " and vertex " + std::to_string(b.vertex) + " of ring " +
+                     std::to_string(b.ring);
+            f.effect = "kept: rings may touch at vertices; each occurrence is its own vertex";
+            add(f);
+        }
+    }
+
+    // The whole polygon: the centroid's cones, number ranges.
+    if (r.accepted) {
+        std::vector<ring_input> all;
+        for (std::size_t k = 0; k < rings.size(); ++k) all.push_back({rings[k], input[k].role});
+        const polygon P(all);
+        const point<double>& c = P.centroid();
+        for (std::size_t k = 0, base = 0; k < rings.size(); base += rings[k].size(), ++k)
+            for (std::size_t v = 0, n = rings[k].size(); v < n; ++v) {
+                const point<double>& a = rings[k][v];
+                const point<double>& b = rings[k][(v + 1) % n];
+                if (a == b || orientation(c, a, b) != 0) continue;
+                finding f = at_vertex(finding_kind::centroid_on_edge_line, k, v, a,
+                                      "the centroid " + coordinates(c) + " lies on the line of edge " +
+                                          std::to_string(v) + ": its covering triangle is flat, its cone empty",
+                                      "kept: the flat triangle adds nothing to the inclusion test; points on that "
+                                      "line are located by the neighbouring cones");
+                add(f);
+            }
+    }
+    for (std::size_t k = 0; k < rings.size(); ++k)
+        for (std::size_t v = 0; v < rings[k].size(); ++v) {
+            const point<double>& p = rings[k][v];
+            if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+            const double m = std::max(std::fabs(p.x), std::fabs(p.y));
+            const double lo = std::min(std::fabs(p.x) > 0 ? std::fabs(p.x) : HUGE_VAL,
+                                       std::fabs(p.y) > 0 ? std::fabs(p.y) : HUGE_VAL);
+            if (m > FLT_MAX)
+                add(at_vertex(finding_kind::beyond_float, k, v, p, "a coordinate is beyond float's range",
+                              "float mode refuses to round it: use double or wider"));
+            else if (static_cast<double>(static_cast<float>(p.x)) != p.x ||
+                     static_cast<double>(static_cast<float>(p.y)) != p.y)
+                add(at_vertex(finding_kind::inexact_in_float, k, v, p, "a coordinate is not exact in float",
+                              "float mode rounds it: its answers are for a moved vertex"));
+            if (m > 0x1p500 || lo < 0x1p-500)
+                add(at_vertex(finding_kind::beyond_double_products, k, v, p,
+                              "products of coordinates leave double's normal range",
+                              "the library's filters scale; double's own predicates may be wrong there; exact, "
+                              "certified and interval stay exact"));
+        }
+    if (r.accepted) {
+        // The library itself: the rings as polygon(...) takes them.
+        try {
+            std::vector<ring_input> all;
+            for (std::size_t k = 0; k < rings.size(); ++k) all.push_back({rings[k], input[k].role});
+            (void)polygon(all);
+        } catch (const invalid_input& e) {
+            r.accepted = false;
+            r.rejection = e.what();
+        }
+    }
+    return r;
+}
+
+}  // namespace influence2d

@@ -1,0 +1,227 @@
+// The audit (include/influence2d/audit/audit.hpp, `influence2d audit`): each
+// kind of degeneracy found where it is, with the library's verdict; clean
+// polygons give no finding; the command's text, JSON and exit codes.
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "influence2d/audit/audit.hpp"
+#include "influence2d/detect/brute_force.hpp"
+#include "influence2d/detect/detector.hpp"
+#include "influence2d/number/cgal.hpp"
+#include "support/process.hpp"
+
+namespace {
+
+using namespace influence2d;
+using test_process::quote;
+using test_process::run_cli;
+using test_process::slurp;
+using test_process::temp_dir;
+
+audit_report audit_wkt(const std::string& wkt) { return audit_rings(read_wkt_rings(wkt)); }
+
+/// The findings of one kind.
+std::vector<finding> of(const audit_report& r, finding_kind k) {
+    std::vector<finding> out;
+    for (const finding& f : r.findings)
+        if (f.kind == k) out.push_back(f);
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("audit: a clean polygon has no finding", "[audit]") {
+    const audit_report r = audit_wkt("POLYGON((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 2, 2 2, 2 1, 1 1))");
+    CHECK(r.accepted);
+    CHECK(r.findings.empty());
+    CHECK(r.rings == 2);
+    CHECK(r.vertices == 8);
+}
+
+TEST_CASE("audit: refused inputs say why and where", "[audit]") {
+    SECTION("non-finite coordinate") {
+        const audit_report r = audit_wkt("POLYGON((0 0, 4 0, nan 4, 0 4, 0 0))");
+        CHECK_FALSE(r.accepted);
+        const auto f = of(r, finding_kind::non_finite);
+        REQUIRE(f.size() == 1);
+        CHECK(f[0].ring == 0);
+        CHECK(f[0].vertex == 2u);
+        CHECK(f[0].rejects);
+    }
+    SECTION("unclosed ring") {
+        const audit_report r = audit_wkt("POLYGON((0 0, 4 0, 4 4, 0 4))");
+        CHECK_FALSE(r.accepted);
+        CHECK(of(r, finding_kind::unclosed_ring).size() == 1);
+        CHECK(r.rejection.find("not closed") != std::string::npos);
+    }
+    SECTION("fewer than three distinct vertices") {
+        const audit_report r = audit_wkt("POLYGON((0 0, 4 0, 0 0, 4 0, 0 0))");
+        CHECK_FALSE(r.accepted);
+        CHECK(of(r, finding_kind::too_few_vertices).size() == 1);
+    }
+}
+
+TEST_CASE("audit: vertices and edges", "[audit]") {
+    SECTION("repeated vertex: a zero-length edge") {
+        const audit_report r = audit_wkt("POLYGON((0 0, 4 0, 4 0, 4 4, 0 4, 0 0))");
+        CHECK(r.accepted);
+        const auto f = of(r, finding_kind::repeated_vertex);
+        REQUIRE(f.size() == 1);
+        CHECK(f[0].vertex == 1u);
+    }
+    SECTION("near-repeated vertex") {
+        const audit_report r = audit_wkt("POLYGON((0 0, 4 0, 4 1e-13, 4 4, 0 4, 0 0))");
+        CHECK(r.accepted);
+        const auto f = of(r, finding_kind::near_repeated_vertex);
+        REQUIRE(f.size() == 1);
+        CHECK(f[0].vertex == 1u);
+    }
+    SECTION("collinear run and spike") {
+        const audit_report run = audit_wkt("POLYGON((0 0, 2 0, 4 0, 4 4, 0 4, 0 0))");
+        const auto c = of(run, finding_kind::collinear_run);
+        REQUIRE(c.size() == 1);
+        CHECK(c[0].vertex == 1u);
+        CHECK(of(run, finding_kind::spike).empty());
+        const audit_report spike = audit_wkt("POLYGON((0 0, 4 0, 6 0, 4 0, 4 4, 0 4, 0 0))");
+        const auto s = of(spike, finding_kind::spike);
+        REQUIRE(!s.empty());
+        CHECK(s[0].vertex == 2u);
+    }
+    SECTION("self-intersection: a bow tie") {
+        const audit_report r = audit_wkt("POLYGON((0 0, 4 4, 4 0, 0 4, 0 0))");
+        CHECK(r.accepted);
+        const auto f = of(r, finding_kind::self_intersection);
+        REQUIRE(f.size() == 1);
+        CHECK(std::min(*f[0].vertex, *f[0].other_vertex) == 0u);
+        CHECK(std::max(*f[0].vertex, *f[0].other_vertex) == 2u);
+    }
+    SECTION("a near miss is not a self-intersection (exact)") {
+        // Edge 2 ends 2^-50 short of edge 0's line: no contact.
+        const audit_report r = audit_wkt("POLYGON((0 0, 4 0, 2 2, 2 8.881784197001252e-16, 1 3, 0 0))");
+        CHECK(of(r, finding_kind::self_intersection).empty());
+    }
+}
+
+TEST_CASE("audit: rings", "[audit]") {
+    SECTION("clockwise outer ring, counter-clockwise hole") {
+        const audit_report r = audit_wkt("POLYGON((0 0, 0 4, 4 4, 4 0, 0 0), (1 1, 2 1, 2 2, 1 2, 1 1))");
+        CHECK(r.accepted);
+        CHECK(of(r, finding_kind::reversed_orientation).size() == 2);
+    }
+    SECTION("hole outside its shell, and a hole touching it") {
+        const audit_report out = audit_wkt("POLYGON((0 0, 4 0, 4 4, 0 4, 0 0), (5 5, 5 6, 6 6, 6 5, 5 5))");
+        CHECK(of(out, finding_kind::hole_outside_shell).size() == 1);
+        const audit_report touch = audit_wkt("POLYGON((0 0, 4 0, 4 4, 0 4, 0 0), (0 0, 1 2, 2 1, 0 0))");
+        CHECK(of(touch, finding_kind::hole_outside_shell).empty());
+        CHECK(!of(touch, finding_kind::rings_meet).empty());
+        CHECK(of(touch, finding_kind::non_manifold_vertex).size() == 1);
+    }
+    SECTION("non-manifold vertex within a ring") {
+        // Two squares joined at (2 2), one ring.
+        const audit_report r = audit_wkt("POLYGON((0 0, 2 0, 2 2, 4 2, 4 4, 2 4, 2 2, 0 2, 0 0))");
+        const auto f = of(r, finding_kind::non_manifold_vertex);
+        REQUIRE(f.size() == 1);
+        CHECK(f[0].vertex == 2u);
+        CHECK(f[0].other_vertex == 6u);
+    }
+    SECTION("zero and near-zero area") {
+        const audit_report zero = audit_wkt("POLYGON((0 0, 2 0, 4 0, 2 0, 0 0))");
+        CHECK(of(zero, finding_kind::zero_area).size() == 1);
+        const audit_report thin = audit_wkt("POLYGON((0 0, 4 0, 2 1e-14, 0 0))");
+        CHECK(of(thin, finding_kind::near_zero_area).size() == 1);
+        CHECK(of(thin, finding_kind::zero_area).empty());
+    }
+}
+
+TEST_CASE("audit: the centroid on an edge's line, and number ranges", "[audit]") {
+    // A square's centroid (2 2) lies on the line of no edge; a half-turn
+    // pinwheel's radial edges pass through it.
+    CHECK(of(audit_wkt("POLYGON((0 0, 4 0, 4 4, 0 4, 0 0))"), finding_kind::centroid_on_edge_line).empty());
+    const audit_report pin = audit_wkt("POLYGON((0 0, 4 0, 4 2, 2 2, 2 4, 0 4, 0 0))");  // L shape: none
+    CHECK(of(pin, finding_kind::centroid_on_edge_line).empty());
+    const audit_report star = audit_wkt("POLYGON((-2 -1, 0 0, 2 -1, 1 0, 2 1, 0 0, -2 1, -1 0, -2 -1))");
+    CHECK(!of(star, finding_kind::centroid_on_edge_line).empty());  // edges through (0 0)
+
+    const audit_report tenth = audit_wkt("POLYGON((0 0, 0.1 0, 0.1 0.1, 0 0.1, 0 0))");
+    CHECK(!of(tenth, finding_kind::inexact_in_float).empty());
+    CHECK(of(audit_wkt("POLYGON((0 0, 0.5 0, 0.5 0.5, 0 0))"), finding_kind::inexact_in_float).empty());
+    const audit_report huge = audit_wkt("POLYGON((0 0, 1e300 0, 1e300 1e300, 0 0))");
+    CHECK(!of(huge, finding_kind::beyond_float).empty());
+    CHECK(!of(huge, finding_kind::beyond_double_products).empty());
+    CHECK(huge.accepted);
+}
+
+TEST_CASE("audit: the command, its text, JSON and exit codes", "[audit][cli]") {
+    const temp_dir dir;
+    const auto bow = dir.file("bow.wkt", "POLYGON((0 0, 4 4, 4 0, 0 4, 0 0))\n");
+    const auto r = run_cli(dir, "audit " + quote(bow.string()) + " --json " + quote((dir / "bow.json").string()));
+    INFO(r.err);
+    CHECK(r.exit_code == 0);
+    CHECK(r.out.find("self_intersection") != std::string::npos);
+    CHECK(r.out.find("ring 0, vertex 0 / ring 0, vertex 2") != std::string::npos);
+    const auto j = nlohmann::json::parse(slurp(dir / "bow.json"));
+    CHECK(j["accepted"] == true);
+    bool bow_crossing = false;  // the bow tie also has zero area
+    for (const auto& f : j["findings"])
+        bow_crossing = bow_crossing || (f["kind"] == "self_intersection" && f["vertex"] == 0 && f["other_vertex"] == 2);
+    CHECK(bow_crossing);
+
+    const auto nan = dir.file("nan.wkt", "POLYGON((0 0, 4 0, nan 4, 0 4, 0 0))\n");
+    const auto refused = run_cli(dir, "audit " + quote(nan.string()) + " --json -");
+    CHECK(refused.exit_code == 1);
+    const auto k = nlohmann::json::parse(refused.out);
+    CHECK(k["accepted"] == false);
+    CHECK(k["findings"][0]["kind"] == "non_finite");
+
+    const auto bad = dir.file("bad.wkt", "POLYGON((0 0, 4 0, 4 4\n");
+    const auto unreadable = run_cli(dir, "audit " + quote(bad.string()));
+    CHECK(unreadable.exit_code == 2);
+    CHECK(unreadable.err.find("bad.wkt") != std::string::npos);
+    CHECK(run_cli(dir, "audit " + quote((dir / "missing.wkt").string())).exit_code == 2);
+}
+
+TEST_CASE("audit: the detector on the degenerate inputs it accepts equals the brute-force reference",
+          "[audit][detector]") {
+    // Each accepted degeneracy of the table in the README, as static and as
+    // moving polygon, swept across a unit square in exact arithmetic: the
+    // sound detector answers (and names witness edges) as the all-pairs test.
+    const char* cases[] = {
+        "POLYGON((0 0, 4 0, 4 0, 4 4, 0 4, 0 0))",                      // repeated vertex
+        "POLYGON((0 0, 4 0, 4 1e-13, 4 4, 0 4, 0 0))",                  // near-repeated vertex
+        "POLYGON((0 0, 2 0, 4 0, 4 4, 0 4, 0 0))",                      // collinear run
+        "POLYGON((0 0, 4 0, 6 0, 4 0, 4 4, 0 4, 0 0))",                 // spike
+        "POLYGON((0 0, 4 4, 4 0, 0 4, 0 0))",                           // self-intersection
+        "POLYGON((0 0, 0 4, 4 4, 4 0, 0 0), (1 1, 2 1, 2 2, 1 2, 1 1))",  // reversed rings
+        "POLYGON((0 0, 4 0, 4 4, 0 4, 0 0), (5 5, 5 6, 6 6, 6 5, 5 5))",  // hole outside its shell
+        "POLYGON((0 0, 4 0, 4 4, 0 4, 0 0), (0 0, 1 2, 2 1, 0 0))",       // hole touching its shell
+        "POLYGON((0 0, 2 0, 2 2, 4 2, 4 4, 2 4, 2 2, 0 2, 0 0))",       // non-manifold vertex
+        "POLYGON((0 0, 2 0, 4 0, 2 0, 0 0))",                           // zero area
+        "POLYGON((0 0, 4 0, 2 1e-14, 0 0))",                            // near-zero area
+        "POLYGON((-2 -1, 0 0, 2 -1, 1 0, 2 1, 0 0, -2 1, -1 0, -2 -1))",  // centroid on edges' lines
+    };
+    const polygon unit = read_wkt("POLYGON((0 0, 1 0, 1 1, 0 1, 0 0))");
+    detector_options o;
+    o.witness = true;
+    for (const char* wkt : cases) {
+        const polygon p = read_wkt(wkt);
+        for (int role = 0; role < 2; ++role) {
+            const polygon& a = role == 0 ? p : unit;
+            const polygon& b = role == 0 ? unit : p;
+            detector<exact_rational> d(a, b, o);
+            brute_force_detector<exact_rational> brute(a, b, o);
+            for (int k = 0; k <= 160; ++k) {
+                const pose q{-3 + 0.0625 * k, -2 + 0.05 * k, 0.01 * k};
+                const frame_result got = d.collide(q), want = brute.collide(q);
+                INFO(wkt << (role == 0 ? " static" : " moving") << ", frame " << k);
+                CHECK(got.collides == want.collides);
+                CHECK(got.pairs == want.pairs);
+            }
+        }
+    }
+}
