@@ -419,7 +419,7 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
         for (std::size_t k = 0; k < rings.size(); ++k) all.push_back({rings[k], input[k].role});
         const polygon P(all);
         const point<double>& c = P.centroid();
-        for (std::size_t k = 0, base = 0; k < rings.size(); base += rings[k].size(), ++k)
+        for (std::size_t k = 0; k < rings.size(); ++k)
             for (std::size_t v = 0, n = rings[k].size(); v < n; ++v) {
                 const point<double>& a = rings[k][v];
                 const point<double>& b = rings[k][(v + 1) % n];

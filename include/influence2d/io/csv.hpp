@@ -81,22 +81,13 @@ inline std::string format_number(double x) {
 
 }  // namespace csv_detail
 
-/// Reads poses from a CSV file: the header `tx,ty,theta`, then one line per
-/// pose with three finite numbers. Spaces around fields and a trailing '\r'
-/// are ignored; blank lines are allowed only at the end. Throws invalid_input
-/// naming the file, the line (from 1) and the column.
-inline std::vector<pose> read_poses_csv(const std::string& path) {
+/// Reads poses from a stream in the format of read_poses_csv; messages start
+/// with `path`.
+inline std::vector<pose> read_poses_csv(std::istream& in, const std::string& path) {
     using namespace csv_detail;
     auto fail = [&](const std::string& what) -> void { throw invalid_input(path + ": " + what); };
     const std::string too_large =
         "file is larger than " + std::to_string(max_csv_file_bytes >> 20) + " MiB";
-    std::ifstream in(path, std::ios::binary);
-    if (!in) fail("cannot open file");
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) fail("is a directory");
-    const auto size = std::filesystem::file_size(path, ec);
-    if (!ec && size > max_csv_file_bytes) fail(too_large);
-
     std::vector<pose> poses;
     std::string line;
     std::size_t line_no = 0, bytes = 0, blank_line = 0;
@@ -146,6 +137,22 @@ inline std::vector<pose> read_poses_csv(const std::string& path) {
         fail(line_no == 0 ? "empty file: expected the header \"tx,ty,theta\""
                            : "no header: expected \"tx,ty,theta\"");
     return poses;
+}
+
+/// Reads poses from a CSV file: the header `tx,ty,theta`, then one line per
+/// pose with three finite numbers. Spaces around fields and a trailing '\r'
+/// are ignored; blank lines are allowed only at the end. Throws invalid_input
+/// naming the file, the line (from 1) and the column.
+inline std::vector<pose> read_poses_csv(const std::string& path) {
+    auto fail = [&](const std::string& what) -> void { throw invalid_input(path + ": " + what); };
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail("cannot open file");
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) fail("is a directory");
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec && size > max_csv_file_bytes)
+        fail("file is larger than " + std::to_string(max_csv_file_bytes >> 20) + " MiB");
+    return read_poses_csv(in, path);
 }
 
 /// Writes poses in the format read_poses_csv reads, each number in its
