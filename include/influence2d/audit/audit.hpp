@@ -22,7 +22,6 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/io/wkt.hpp"
-#include "influence2d/number/expansion.hpp"
 #include "influence2d/predicates/orientation.hpp"
 #include "influence2d/predicates/segments.hpp"
 
@@ -192,15 +191,20 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
         ++r.total;
         if (per_kind[static_cast<std::size_t>(f.kind)]++ < o.max_per_kind) r.findings.push_back(std::move(f));
     };
-    const auto at_vertex = [](finding_kind k, std::size_t ring, std::size_t v, point<double> p, std::string what,
-                              std::string effect, bool rejects = false) {
+    const auto at_ring = [](finding_kind k, std::size_t ring, point<double> p, std::string what, std::string effect,
+                            bool rejects = false) {
         finding f{k};
         f.ring = ring;
-        f.vertex = v;
         f.at = p;
         f.what = std::move(what);
         f.effect = std::move(effect);
         f.rejects = rejects;
+        return f;
+    };
+    const auto at_vertex = [&](finding_kind k, std::size_t ring, std::size_t v, point<double> p, std::string what,
+                               std::string effect, bool rejects = false) {
+        finding f = at_ring(k, ring, p, std::move(what), std::move(effect), rejects);
+        f.vertex = v;
         return f;
     };
 
@@ -212,12 +216,7 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
         const auto& pts = input[k].points;
         bool ok = true;
         if (pts.empty()) {
-            finding f{finding_kind::empty_ring};
-            f.ring = k;
-            f.what = "empty ring";
-            f.effect = "refused";
-            f.rejects = true;
-            add(f);
+            add(at_ring(finding_kind::empty_ring, k, {}, "empty ring", "refused", true));
             rings.emplace_back();
             usable.push_back(false);
             continue;
@@ -238,17 +237,9 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
         }
         std::vector<point<double>> ring(pts.begin(), closed ? pts.end() - 1 : pts.end());
         r.vertices += ring.size();
-        std::vector<point<double>> distinct;
-        for (const auto& p : ring)
-            if (std::find(distinct.begin(), distinct.end(), p) == distinct.end() && distinct.size() < 3)
-                distinct.push_back(p);
-        if (distinct.size() < 3) {
-            finding f{finding_kind::too_few_vertices};
-            f.ring = k;
-            f.what = "fewer than three distinct vertices";
-            f.effect = "refused";
-            f.rejects = true;
-            add(f);
+        if (polygon::count_distinct(ring) < 3) {
+            add(at_ring(finding_kind::too_few_vertices, k, pts.front(), "fewer than three distinct vertices", "refused",
+                        true));
             ok = false;
         }
         rings.push_back(std::move(ring));
@@ -295,44 +286,31 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
         }
         // Orientation and area: the exact sign of the shoelace sum, its
         // magnitude in long double.
-        expansion::accumulator exact_area;
         long double area = 0;
         for (std::size_t v = 0; v < n; ++v) {
             const point<double>& p = ring[v];
             const point<double>& q = ring[(v + 1) % n];
-            exact_area.add_product(p.x, q.y);
-            exact_area.add_product(-p.y, q.x);
             area += static_cast<long double>(p.x) * q.y - static_cast<long double>(q.x) * p.y;
         }
-        const int sign = exact_area.sign();
+        const int sign = polygon::signed_area_sign(ring);
         const bool hole = input[k].role == ring_role::hole;
         const bool reversed = sign != 0 && (sign > 0) == hole;
         box bounds;
         for (const auto& p : ring) bounds.add(p);
         const double w = bounds.max_x - bounds.min_x, h = bounds.max_y - bounds.min_y;
         if (sign == 0) {
-            finding f{finding_kind::zero_area};
-            f.ring = k;
-            f.at = ring[0];
-            f.what = "the ring encloses zero area";
-            f.effect = "kept: its edges still collide; it bounds no region";
-            add(f);
+            add(at_ring(finding_kind::zero_area, k, ring[0], "the ring encloses zero area",
+                        "kept: its edges still collide; it bounds no region"));
         } else if (std::fabs(area) / 2 <= static_cast<long double>(o.relative_tolerance) * (static_cast<long double>(w) * w +
                                                                                        static_cast<long double>(h) * h)) {
-            finding f{finding_kind::near_zero_area};
-            f.ring = k;
-            f.at = ring[0];
-            f.what = "the ring's area is almost zero against its size (the square of its box's diagonal)";
-            f.effect = "kept as it is; its orientation is decided exactly";
-            add(f);
+            add(at_ring(finding_kind::near_zero_area, k, ring[0],
+                        "the ring's area is almost zero against its size (the square of its box's diagonal)",
+                        "kept as it is; its orientation is decided exactly"));
         }
         if (reversed) {
-            finding f{finding_kind::reversed_orientation};
-            f.ring = k;
-            f.at = ring[0];
-            f.what = std::string(hole ? "hole" : "outer ring") + " is " + (hole ? "counter-clockwise" : "clockwise");
-            f.effect = "reversed when stored (orientation decided exactly); witnesses keep the input's edge numbers";
-            add(f);
+            add(at_ring(finding_kind::reversed_orientation, k, ring[0],
+                        std::string(hole ? "hole" : "outer ring") + " is " + (hole ? "counter-clockwise" : "clockwise"),
+                        "reversed when stored (orientation decided exactly); witnesses keep the input's edge numbers"));
         }
     }
 
@@ -372,12 +350,9 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
                 for (const auto& p : rings[k])
                     if (locate_in_ring(p, rings[s]) > 0) inside = true;
         if (!inside) {
-            finding f{finding_kind::hole_outside_shell};
-            f.ring = k;
-            f.at = rings[k][0];
-            f.what = "no vertex of the hole lies strictly inside an outer ring";
-            f.effect = "kept: a hole outside every outer ring removes nothing (regions count outer +1, hole -1)";
-            add(f);
+            add(at_ring(finding_kind::hole_outside_shell, k, rings[k][0],
+                        "no vertex of the hole lies strictly inside an outer ring",
+                        "kept: a hole outside every outer ring removes nothing (regions count outer +1, hole -1)"));
         }
     }
     {
@@ -413,12 +388,21 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
         }
     }
 
-    // The whole polygon: the centroid's cones, number ranges.
+    // The whole polygon as the library takes it (its verdict), then its
+    // centroid's cones; number ranges.
+    std::optional<polygon> whole;
     if (r.accepted) {
         std::vector<ring_input> all;
         for (std::size_t k = 0; k < rings.size(); ++k) all.push_back({rings[k], input[k].role});
-        const polygon P(all);
-        const point<double>& c = P.centroid();
+        try {
+            whole.emplace(std::move(all));
+        } catch (const invalid_input& e) {
+            r.accepted = false;
+            r.rejection = e.what();
+        }
+    }
+    if (whole) {
+        const point<double>& c = whole->centroid();
         for (std::size_t k = 0; k < rings.size(); ++k)
             for (std::size_t v = 0, n = rings[k].size(); v < n; ++v) {
                 const point<double>& a = rings[k][v];
@@ -452,17 +436,6 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
                               "the library's filters scale; double's own predicates may be wrong there; exact, "
                               "certified and interval stay exact"));
         }
-    if (r.accepted) {
-        // The library itself: the rings as polygon(...) takes them.
-        try {
-            std::vector<ring_input> all;
-            for (std::size_t k = 0; k < rings.size(); ++k) all.push_back({rings[k], input[k].role});
-            (void)polygon(all);
-        } catch (const invalid_input& e) {
-            r.accepted = false;
-            r.rejection = e.what();
-        }
-    }
     return r;
 }
 

@@ -69,6 +69,30 @@ public:
     /// valid polygon).
     long double area() const { return area_; }
 
+    /// How many distinct vertices a ring has, counted up to 3 (a ring needs 3).
+    static std::size_t count_distinct(const std::vector<point<double>>& vs) {
+        std::vector<point<double>> seen;
+        for (const auto& v : vs) {
+            bool found = false;
+            for (const auto& s : seen) found = found || s == v;
+            if (!found) seen.push_back(v);
+            if (seen.size() >= 3) break;
+        }
+        return seen.size();
+    }
+
+    /// The exact sign of a ring's signed area (shoelace sum evaluated exactly).
+    static int signed_area_sign(const std::vector<point<double>>& vs) {
+        expansion::accumulator acc;
+        for (std::size_t k = 0; k < vs.size(); ++k) {
+            const auto& a = vs[k];
+            const auto& b = vs[(k + 1) % vs.size()];
+            acc.add_product(a.x, b.y);
+            acc.add_product(-a.y, b.x);
+        }
+        return acc.sign();
+    }
+
 private:
     void add_ring(std::size_t r, ring_input ring) {
         auto& vs = ring.vertices;
@@ -91,29 +115,6 @@ private:
             next_.push_back(k + 1 < n ? base + k + 1 : base);
             source_edge_.push_back(base + (reverse ? (2 * n - 2 - k) % n : k));
         }
-    }
-
-    static std::size_t count_distinct(const std::vector<point<double>>& vs) {
-        std::vector<point<double>> seen;
-        for (const auto& v : vs) {
-            bool found = false;
-            for (const auto& s : seen) found = found || s == v;
-            if (!found) seen.push_back(v);
-            if (seen.size() >= 3) break;
-        }
-        return seen.size();
-    }
-
-    /// The exact sign of a ring's signed area (shoelace sum evaluated exactly).
-    static int signed_area_sign(const std::vector<point<double>>& vs) {
-        expansion::accumulator acc;
-        for (std::size_t k = 0; k < vs.size(); ++k) {
-            const auto& a = vs[k];
-            const auto& b = vs[(k + 1) % vs.size()];
-            acc.add_product(a.x, b.y);
-            acc.add_product(-a.y, b.x);
-        }
-        return acc.sign();
     }
 
     point<double> compute_centroid() {
