@@ -1,7 +1,13 @@
 #pragma once
-// influence2d: collision detection between 2D polygons with triangle coverings
-// and influence areas. Include this header for everything but the CGAL adapter
-// (influence2d/number/cgal.hpp) and the readers (influence2d/io/).
+/// \file
+/// The library in one include: everything but the CGAL number types
+/// (influence2d/number/cgal.hpp), quadruple precision
+/// (influence2d/number/multiprecision.hpp), the readers and writers
+/// (influence2d/io/) and the input audit (influence2d/audit/audit.hpp).
+
+/// \namespace influence2d
+/// Collision detection between 2D polygons with triangle coverings and
+/// influence areas, templated on the number type NT.
 
 #include "influence2d/core/box.hpp"
 #include "influence2d/core/point.hpp"

@@ -1,12 +1,13 @@
 #pragma once
-// Audit of a polygon's input: every degeneracy the library meets, found with
-// exact predicates, each with where it is and what the library does with it.
-//
-//   audit_report r = audit_rings(rings);   // rings as read (closing points included)
-//   r.accepted: whether polygon(...) accepts the rings; r.findings: what is there.
-//
-// The rings are those of the input (WKT: read_wkt_rings), before any check, so
-// that what the reader refuses is reported as well as what it accepts.
+/// \file
+/// Audit of a polygon's input: every degeneracy the library meets, each with
+/// where it is and what the library does with it.
+///
+///     audit_report r = audit_rings(rings);   // rings as read (closing points included)
+///     r.accepted: whether polygon(...) accepts the rings; r.findings: what is there.
+///
+/// The rings are those of the input (WKT: read_wkt_rings), before any check, so
+/// that what the reader refuses is reported as well as what it accepts.
 
 #include <algorithm>
 #include <cfloat>
@@ -27,28 +28,35 @@
 
 namespace influence2d {
 
+/// What an audit finding is about. The first four make the input refused;
+/// the library keeps the others as they are (reversed_orientation: reversed).
 enum class finding_kind {
-    empty_ring,
-    unclosed_ring,
-    non_finite,
-    too_few_vertices,
-    repeated_vertex,
-    near_repeated_vertex,
-    collinear_run,
-    spike,
-    self_intersection,
-    rings_meet,
-    reversed_orientation,
+    empty_ring,             ///< a ring without points
+    unclosed_ring,          ///< the last point differs from the first (or the ring has one point)
+    non_finite,             ///< a coordinate is NaN or infinite
+    too_few_vertices,       ///< a ring with fewer than three distinct vertices
+    repeated_vertex,        ///< a vertex equals the next: a zero-length edge
+    near_repeated_vertex,   ///< an edge shorter than the tolerance (audit_options)
+    collinear_run,          ///< a vertex on the line between its neighbours, going on straight
+    spike,                  ///< the ring turns back at a vertex: a spike of zero width
+    self_intersection,      ///< two edges of one ring, not adjacent, meet (touching counts)
+    rings_meet,             ///< edges of two rings meet (touching counts)
+    reversed_orientation,   ///< a clockwise outer ring or a counter-clockwise hole
+    /// No vertex of a hole lies strictly inside an outer ring. Where no outer
+    /// ring encloses the hole, its inside has winding number -1 and so belongs
+    /// to the region (see polygon).
     hole_outside_shell,
-    non_manifold_vertex,
-    zero_area,
-    near_zero_area,
-    centroid_on_edge_line,
-    inexact_in_float,
-    beyond_float,
-    beyond_double_products
+    non_manifold_vertex,    ///< one point is a vertex at two places that are not consecutive
+    zero_area,              ///< a ring whose exact signed area is 0
+    near_zero_area,         ///< a ring whose area is below the tolerance (audit_options)
+    centroid_on_edge_line,  ///< the centroid lies on an edge's line: flat triangle, empty cone
+    inexact_in_float,       ///< a coordinate that float cannot represent: float mode rounds it
+    beyond_float,           ///< a coordinate beyond float's range
+    beyond_double_products  ///< a coordinate above 2^500 or below 2^-500 in magnitude (not 0)
 };
 
+/// The enumerator's name as text ("unknown" for a value outside the enum);
+/// a string literal, never freed.
 inline const char* finding_name(finding_kind k) {
     switch (k) {
         case finding_kind::empty_ring: return "empty_ring";
@@ -78,26 +86,30 @@ inline const char* finding_name(finding_kind k) {
 /// edge k runs from vertex k to vertex k+1 of its ring), and what the library
 /// does with it.
 struct finding {
+    /// A finding of kind k at ring 0, everything else empty.
     explicit finding(finding_kind k) : kind(k) {}
-    finding_kind kind;
-    std::size_t ring = 0;
-    std::optional<std::size_t> vertex;       ///< or the edge, for edge findings
+    finding_kind kind;                       ///< what it is
+    std::size_t ring = 0;                    ///< the ring, numbered in input order from 0
+    std::optional<std::size_t> vertex;       ///< or the edge, for edge findings; none for ring findings
     std::optional<std::size_t> other_ring;   ///< for findings between two places
-    std::optional<std::size_t> other_vertex;
+    std::optional<std::size_t> other_vertex; ///< the other place's vertex or edge
     point<double> at{};                      ///< a point of the finding
     std::string what;                        ///< one line
     std::string effect;                      ///< what the library does
     bool rejects = false;                    ///< the library refuses the input for it
 };
 
+/// What audit_rings found, and whether the library accepts the rings.
 struct audit_report {
     std::vector<finding> findings;  ///< at most audit_options::max_per_kind of each kind
     std::size_t total = 0;          ///< findings of every kind, listed or not
     bool accepted = true;    ///< polygon(...) accepts the rings
     std::string rejection;   ///< its message when it does not
-    std::size_t rings = 0, vertices = 0;
+    /// The number of rings.
+    std::size_t rings = 0, vertices = 0;  ///< the number of vertices of all rings, closing points not counted
 };
 
+/// The tolerances and limits of audit_rings.
 struct audit_options {
     /// Points closer than this times the polygon's size (its largest absolute
     /// coordinate) are near-repeated; a ring whose area is below this times
@@ -179,6 +191,15 @@ inline std::string coordinates(const point<double>& p) {
 }  // namespace audit_detail
 
 /// Audits the rings as read (closing points included where the input has them).
+/// Never throws on bad input: what polygon's constructor would refuse is a
+/// finding with `rejects` set and makes `accepted` false. Exact: equality of
+/// vertices, the ring orientation and zero area (exact shoelace sign), float
+/// representability. Evaluated in double, so possibly wrong for nearly
+/// degenerate input (exact when the products of coordinate differences are,
+/// as for small integers): collinear runs and spikes, edges that meet, holes
+/// outside shells and the centroid on an edge's line; the near_* findings
+/// compare against the tolerance. Edges that meet are found by a sweep over
+/// x: O(n log n + n a) for n edges of which at most a overlap in x at once.
 inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_options& o = {}) {
     using namespace audit_detail;
     audit_report r;

@@ -1,5 +1,6 @@
 #pragma once
-// Axis-aligned boxes in double coordinates, used only by conservative filters.
+/// \file
+/// Axis-aligned boxes in double coordinates, used only by conservative filters.
 
 #include <algorithm>
 #include <limits>
@@ -8,15 +9,19 @@
 
 namespace influence2d {
 
-/// A closed axis-aligned box; empty when min > max.
+/// A closed axis-aligned box; empty when min > max (a default box is empty:
+/// its minima are +infinity, its maxima -infinity). Points on the sides are
+/// inside. Evaluated in double: boxes serve filters, never decisions.
 struct box {
-    double min_x = std::numeric_limits<double>::infinity();
-    double min_y = std::numeric_limits<double>::infinity();
-    double max_x = -std::numeric_limits<double>::infinity();
-    double max_y = -std::numeric_limits<double>::infinity();
+    double min_x = std::numeric_limits<double>::infinity();   ///< smallest x; +infinity in a default box
+    double min_y = std::numeric_limits<double>::infinity();   ///< smallest y; +infinity in a default box
+    double max_x = -std::numeric_limits<double>::infinity();  ///< largest x; -infinity in a default box
+    double max_y = -std::numeric_limits<double>::infinity();  ///< largest y; -infinity in a default box
 
+    /// Whether the box holds no point (min > max on some axis).
     bool empty() const { return min_x > max_x || min_y > max_y; }
 
+    /// Grows the box to hold p. A NaN coordinate leaves that axis unchanged.
     void add(const point<double>& p) {
         min_x = std::min(min_x, p.x);
         min_y = std::min(min_y, p.y);
@@ -24,11 +29,13 @@ struct box {
         max_y = std::max(max_y, p.y);
     }
 
-    /// The box grown by `margin` on every side.
+    /// The box grown by `margin` on every side (shrunk when it is negative);
+    /// a default box stays empty.
     box inflated(double margin) const {
         return box{min_x - margin, min_y - margin, max_x + margin, max_y + margin};
     }
 
+    /// Whether p lies in the closed box (on a side counts); false for NaN.
     bool contains(const point<double>& p) const {
         return p.x >= min_x && p.x <= max_x && p.y >= min_y && p.y <= max_y;
     }

@@ -1,5 +1,6 @@
 #pragma once
-// The polygon model: any number of closed rings of double coordinates.
+/// \file
+/// The polygon model: any number of closed rings of double coordinates.
 
 #include <cmath>
 #include <cstdint>
@@ -14,19 +15,27 @@
 
 namespace influence2d {
 
-/// Raised for input the library cannot interpret; `what()` names the place
-/// (ring and vertex) and the readers in io/ prefix the file.
+/// Raised for input the library cannot interpret: by polygon's constructor,
+/// the readers and writers in io/, and detectors given polygons they do not
+/// take. `what()` names the place (ring and vertex); the readers prefix the
+/// file or source name.
 class invalid_input : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
 
-enum class ring_role : std::uint8_t { outer, hole };
+/// What a ring bounds: the region (outer) or a hole in it.
+enum class ring_role : std::uint8_t {
+    outer,  ///< an outer boundary; stored counter-clockwise
+    hole    ///< a hole; stored clockwise
+};
 
 /// One ring as read: its vertices without the closing repetition of the first.
 struct ring_input {
+    /// The vertices in order, in either orientation. A closing copy of the
+    /// first vertex, if given, is kept as a zero-length last edge.
     std::vector<point<double>> vertices;
-    ring_role role = ring_role::outer;
+    ring_role role = ring_role::outer;  ///< decides the stored orientation
 };
 
 /// A polygon: outer rings and holes, possibly several outer rings, possibly
@@ -35,12 +44,24 @@ struct ring_input {
 /// exactly. Vertices of all rings are stored in one array, ring after ring; the
 /// edge with index i goes from vertex i to vertex next(i). Repeated vertices are
 /// kept as zero-length edges so that edge numbers stay those of the input.
+///
+/// The region is closed: a point is in it when it lies on an edge, or when
+/// the rings' winding number around it (outer rings +1, holes -1) is not
+/// zero. So nested outer rings add nothing, and a hole outside every outer
+/// ring is itself region (winding -1). Accepted as they are: repeated
+/// vertices, collinear runs, spikes, self-intersections, rings that touch or
+/// cross, rings of zero area (their edges are still boundary).
 class polygon {
 public:
+    /// An empty placeholder to assign to: no ring, no vertex. Only size(),
+    /// vertices() and assignment may be used on it.
     polygon() = default;
 
-    /// Builds the polygon; throws invalid_input naming ring and vertex for a
-    /// non-finite coordinate or a ring with fewer than three distinct vertices.
+    /// Builds the polygon from its rings, in time linear in the vertices.
+    /// Throws invalid_input naming ring and vertex for a non-finite coordinate
+    /// or a ring with fewer than three distinct vertices, and for an empty
+    /// list. Each ring is reversed when the exact sign of its area disagrees
+    /// with its role; a ring of zero area keeps the input order.
     explicit polygon(std::vector<ring_input> rings) {
         if (rings.empty()) throw invalid_input("polygon has no ring");
         for (std::size_t r = 0; r < rings.size(); ++r) add_ring(r, std::move(rings[r]));
@@ -49,27 +70,42 @@ public:
         for (const auto& v : vertices_) bounds_.add(v);
     }
 
+    /// The number of vertices of all rings, which is also the number of edges.
     std::size_t size() const { return vertices_.size(); }
+    /// Every vertex in stored order: ring after ring, each ring oriented as
+    /// its role says.
     const std::vector<point<double>>& vertices() const { return vertices_; }
+    /// Vertex i in stored order, the start of edge i; requires i < size().
     const point<double>& vertex(std::size_t i) const { return vertices_[i]; }
-    /// The index of the end vertex of edge i (the next vertex on its ring).
+    /// The index of the end vertex of edge i (the next vertex on its ring; the
+    /// ring's first vertex after its last).
     std::size_t next(std::size_t i) const { return next_[i]; }
+    /// The number of rings, as given to the constructor.
     std::size_t ring_count() const { return ring_begin_.size() - 1; }
+    /// The index of ring r's first vertex (and edge); requires r < ring_count().
     std::size_t ring_begin(std::size_t r) const { return ring_begin_[r]; }
+    /// One past the index of ring r's last vertex (and edge).
     std::size_t ring_end(std::size_t r) const { return ring_begin_[r + 1]; }
+    /// The role ring r was given on input.
     ring_role role(std::size_t r) const { return roles_[r]; }
     /// The input's number of edge i: its position in the input order of the
     /// vertices, ring after ring, before any reorientation.
     std::size_t source_edge(std::size_t i) const { return source_edge_[i]; }
     /// The area centroid (the vertex mean for a polygon of zero area), rounded
     /// to double once so that every number type uses the same point.
+    /// Computed in long double relative to the first vertex: approximate, and
+    /// any point would do for the covering; it is the origin O of method.md.
     const point<double>& centroid() const { return centroid_; }
+    /// The box of all vertices.
     const box& bounds() const { return bounds_; }
     /// Signed area in long double, after reorientation (non-negative for a
-    /// valid polygon).
+    /// valid polygon): outer rings add, holes subtract. Rounded, so its sign
+    /// is not exact; signed_area_sign() gives a ring's exact sign.
     long double area() const { return area_; }
 
     /// How many distinct vertices a ring has, counted up to 3 (a ring needs 3).
+    /// Vertices compare with double `==`, so +0 equals -0 and each NaN counts
+    /// as distinct.
     static std::size_t count_distinct(const std::vector<point<double>>& vs) {
         std::vector<point<double>> seen;
         for (const auto& v : vs) {
@@ -81,7 +117,10 @@ public:
         return seen.size();
     }
 
-    /// The exact sign of a ring's signed area (shoelace sum evaluated exactly).
+    /// The exact sign of a ring's signed area: +1 counter-clockwise, -1
+    /// clockwise, 0 for zero area (collinear vertices, or lobes that cancel, as
+    /// in a figure eight). The shoelace sum is evaluated exactly whatever the
+    /// magnitude of the coordinates, which must be finite; no vertex gives 0.
     static int signed_area_sign(const std::vector<point<double>>& vs) {
         expansion::accumulator acc;
         for (std::size_t k = 0; k < vs.size(); ++k) {

@@ -1,5 +1,6 @@
 #pragma once
-// Rigid poses of the moving polygon (method.md section 1).
+/// \file
+/// Rigid poses of the moving polygon (method.md section 1).
 
 #include <cmath>
 
@@ -9,27 +10,34 @@
 namespace influence2d {
 
 /// A rigid pose: rotation by `theta` radians about the moving polygon's own
-/// origin, then translation by (tx, ty).
+/// origin, then translation by (tx, ty). The default is the identity. The
+/// values should be finite: detectors do not check them, and a non-finite
+/// pose gives an unspecified answer.
 struct pose {
-    double tx = 0;
-    double ty = 0;
-    double theta = 0;
+    double tx = 0;     ///< translation along x
+    double ty = 0;     ///< translation along y
+    double theta = 0;  ///< rotation angle in radians, counter-clockwise
 };
 
 /// The pose with its rotation taken as the doubles c = std::cos(theta) and
 /// s = std::sin(theta). Every number type poses with these same doubles, so an
 /// exact type poses the polygon exactly and all types answer one question.
+/// Since c^2 + s^2 is not exactly 1, that question is about B scaled by
+/// sqrt(c^2 + s^2), which differs from 1 by less than 1e-15.
 struct rotation_pose {
-    double c = 1;
-    double s = 0;
-    double tx = 0;
-    double ty = 0;
+    double c = 1;   ///< std::cos(theta)
+    double s = 0;   ///< std::sin(theta)
+    double tx = 0;  ///< translation along x
+    double ty = 0;  ///< translation along y
 
+    /// Takes the cosine and sine of `p.theta` once, in double.
     explicit rotation_pose(const pose& p)
         : c(std::cos(p.theta)), s(std::sin(p.theta)), tx(p.tx), ty(p.ty) {}
 
-    /// q posed in number type NT: x' = c*qx - s*qy + tx, y' = s*qx + c*qy + ty,
-    /// every operation an NT operation on the input doubles.
+    /// q posed in number type NT: `x' = c*qx - s*qy + tx`,
+    /// `y' = s*qx + c*qy + ty`, every operation an NT operation on the input
+    /// doubles: exact when NT's ring operations are; in a floating NT each
+    /// product and sum rounds.
     template <class NT>
     point<NT> apply(const point<double>& q) const {
         using tr = number_traits<NT>;

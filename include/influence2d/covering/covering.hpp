@@ -1,6 +1,7 @@
 #pragma once
-// The signed triangle covering of a polygon and the barycentric signs of a
-// point in its triangles (method.md sections 2 and 3).
+/// \file
+/// The signed triangle covering of a polygon and the barycentric signs of a
+/// point in its triangles (method.md sections 2 and 3).
 
 #include <cstdint>
 #include <vector>
@@ -16,20 +17,26 @@ namespace influence2d {
 /// sign of a signed area times sigma_i, so no division is ever made. All three
 /// are 0 for a degenerate triangle (sigma_i == 0).
 struct barycentric_signs {
-    int alpha = 0;  ///< > 0: P on O's side of the edge's line; < 0: beyond it
-    int beta = 0;   ///< >= 0 together with gamma >= 0: P in the edge's cone
-    int gamma = 0;
+    int alpha = 0;  ///< > 0: P on O's side of the edge's line; < 0: beyond it; 0: on it
+    int beta = 0;   ///< sign of the coordinate of V_i; >= 0 with gamma >= 0: P in the edge's cone
+    int gamma = 0;  ///< sign of the coordinate of V_i+1; P in T_i when all three are >= 0
 };
 
 /// The covering triangles of a polygon's edges from one origin O: triangle i is
 /// (O, V_i, V_next(i)) with sign sigma_i = orientation(O, V_i, V_next(i)).
 /// Vertices are held in NT; the topology (rings, next) is the polygon's.
+/// Any origin is valid; an edge collinear with O (a zero-length edge
+/// included) has sigma 0 and a flat triangle. Built in linear time: n
+/// conversions and n orientation signs, exact when NT is.
 template <class NT>
 class triangle_covering {
 public:
+    /// An empty covering, to be assigned to.
     triangle_covering() = default;
 
     /// Covering of `shape` (its vertices converted to NT) from `origin`.
+    /// Keeps a reference to `shape`, which must outlive the covering. For a
+    /// filtered NT without exact fallback, may throw uncertain_sign.
     triangle_covering(const polygon& shape, const point<double>& origin) : shape_(&shape) {
         using tr = number_traits<NT>;
         vertices_.reserve(shape.size());
@@ -40,16 +47,23 @@ public:
             sigma_[i] = static_cast<std::int8_t>(orientation(origin_, start(i), end(i)));
     }
 
+    /// The polygon covered.
     const polygon& shape() const { return *shape_; }
+    /// The origin O in NT.
     const point<NT>& origin() const { return origin_; }
+    /// The polygon's vertices in NT, in its stored order.
     const std::vector<point<NT>>& vertices() const { return vertices_; }
+    /// The number of triangles, one per edge.
     std::size_t size() const { return vertices_.size(); }
+    /// V_i, the start of edge i, in NT.
     const point<NT>& start(std::size_t i) const { return vertices_[i]; }
+    /// V_i+1, the end of edge i (the next vertex on its ring), in NT.
     const point<NT>& end(std::size_t i) const { return vertices_[shape_->next(i)]; }
     /// orientation(O, V_i, V_i+1): +1, -1, or 0 for an edge collinear with O.
     int sigma(std::size_t i) const { return sigma_[i]; }
 
-    /// Barycentric signs of P in triangle i.
+    /// Barycentric signs of P in triangle i: three orientation signs times
+    /// sigma_i, no division; all 0 when sigma_i is 0. Exact when NT is.
     barycentric_signs signs(std::size_t i, const point<NT>& p) const {
         const int s = sigma(i);
         if (s == 0) return {};

@@ -1,5 +1,6 @@
 #pragma once
-// Feito's inclusion test on the signed triangle covering (method.md section 2).
+/// \file
+/// Feito's inclusion test on the signed triangle covering (method.md section 2).
 
 #include <cstddef>
 #include <vector>
@@ -12,7 +13,11 @@
 namespace influence2d {
 
 /// Where a point lies with respect to a closed polygonal region.
-enum class location { outside, boundary, inside };
+enum class location {
+    outside,   ///< not in the region
+    boundary,  ///< on an edge (a vertex, a zero-length edge, a spike included)
+    inside     ///< off every edge, with a non-zero winding number
+};
 
 namespace detail {
 
@@ -50,14 +55,17 @@ location feito_locate(const polygon& shape, const std::vector<point<NT>>& v, con
 /// Locates P in the closed region of the polygon whose vertices, in NT, are
 /// `v` (topology from `shape`), with the covering from origin `o`. When P is the
 /// origin itself the sum is taken from the first vertex instead: any origin
-/// gives the same winding number.
+/// gives the same winding number. Region as for polygon: boundary when P is on
+/// an edge, inside when the winding number is not zero (a point inside a hole
+/// is outside). Signs of orientations only: exact when NT is. Time linear in
+/// the number of edges; influence_areas::locate visits only nearby cones.
 template <class NT>
 location locate(const polygon& shape, const std::vector<point<NT>>& v, const point<NT>& o,
                 const point<NT>& p) {
     return detail::feito_locate(shape, v, p == o ? v.front() : o, p);
 }
 
-/// Locates P in the region covered by `cov`.
+/// Locates P in the region covered by `cov` (as the overload above).
 template <class NT>
 location locate(const triangle_covering<NT>& cov, const point<NT>& p) {
     return locate(cov.shape(), cov.vertices(), cov.origin(), p);

@@ -1,6 +1,7 @@
 #pragma once
-// The brute-force reference: every edge pair, then containment. No filter,
-// no coherence; the same predicates as the other detectors.
+/// \file
+/// The brute-force reference: every edge pair, then containment. No filter,
+/// no coherence; the same predicates as the other detectors.
 
 #include <memory>
 
@@ -12,15 +13,30 @@
 
 namespace influence2d {
 
+/// The reference detector: every edge pair, then containment. Per frame each
+/// (static edge, moving edge) pair gets the segment test (d == 0) or the
+/// distance test (d > 0); when no pair meets, containment decides. It asks
+/// detector's question (closed regions within d, touching counts, B inside a
+/// hole of A does not) at O(n m) per frame for n static and m moving edges.
+/// Exact when NT is; in a floating NT its decisions round. Zero-length edges
+/// are tested as points; collinear runs, spikes and zero-area rings need no
+/// special case.
 template <class NT>
 class brute_force_detector {
 public:
+    /// Copies both polygons and builds A's covering (linear time). Uses
+    /// `options.distance` (finite and >= 0; not checked here) and
+    /// `options.witness`; the other options concern filters and are ignored.
+    /// A filtered NT may throw uncertain_sign here.
     brute_force_detector(const polygon& static_polygon, const polygon& moving_polygon,
                          detector_options options = {})
         : a_(std::make_shared<const static_scene<NT>>(static_polygon)), b_(moving_polygon), options_(options) {}
 
     /// collides = some static edge and moving edge are within d (meet, for
-    /// d == 0), or else one region contains a ring of the other.
+    /// d == 0), or else one region contains a ring of the other. Without
+    /// witnesses it stops at the first pair and `pairs` stays empty; with
+    /// them every pair is listed, in input numbering, sorted, without repeats.
+    /// A filtered NT may throw uncertain_sign (see filtered_detector).
     frame_result collide(const pose& p) {
         using tr = number_traits<NT>;
         const rotation_pose t(p);

@@ -1,5 +1,6 @@
 #pragma once
-// Containment without boundary contact (method.md section 7).
+/// \file
+/// Containment without boundary contact (method.md section 7).
 
 #include <optional>
 
@@ -8,10 +9,13 @@
 
 namespace influence2d {
 
-/// Whether the regions of A and the posed B meet, given that their boundaries
-/// do not. Each ring of B then lies wholly inside or outside A, and each ring
-/// of A wholly inside or outside B, and the regions meet exactly when one
-/// vertex of some ring of one lies in the other region. Given `reach` (a bound
+/// Whether the closed regions of A and the posed B meet, given that their
+/// boundaries do not (the caller found no boundary pair). B inside a hole of
+/// A does not meet A. Each ring of B then lies wholly inside or outside A,
+/// and each ring of A wholly inside or outside B, and the regions meet exactly
+/// when one vertex of some ring of one lies in the other region. Exact when NT
+/// is; a ring of B costs a locate in A through A's cone index, a ring of A a
+/// scan of B's edges. Given `reach` (a bound
 /// of B's radius, with any rounding margin), a ring of A whose first vertex is
 /// farther than that from B's centroid is skipped without a test; with
 /// `a_may_be_inside_b` false (the caller knows A does not fit in B) no ring of

@@ -1,8 +1,9 @@
 #pragma once
-// Filtered detection: the answers of the exact reference at nearly the cost of
-// a floating-point type. Each frame runs in a fast filtered number type; a
-// frame with a sign that type cannot settle is answered again in exact
-// rationals.
+/// \file
+/// Filtered detection: the answers of the exact reference at nearly the cost of
+/// a floating-point type. Each frame runs in a fast filtered number type; a
+/// frame with a sign that type cannot settle is answered again in exact
+/// rationals.
 
 #include <cstddef>
 #include <optional>
@@ -46,18 +47,21 @@ struct fallback<First, Rest...> {
 
 }  // namespace detail
 
-/// Wraps a detector template D (detector or brute_force_detector): D<FastNT>
+/// Wraps a detector template D (detector or brute_force_detector): `D<FastNT>`
 /// answers every frame whose decisions it makes with certainty, which is then
 /// the exact answer; a frame that raises uncertain_sign (or one of the
 /// exception types Uncertain..., for number types whose comparisons raise
-/// their own) is answered by D<exact_rational>. The fast detector's state stays
+/// their own) is answered by `D<exact_rational>`. The fast detector's state stays
 /// valid after such a frame: its candidate cache is marked valid only once
-/// complete, and it holds no other state between frames. Building D<FastNT>
+/// complete, and it holds no other state between frames. Building `D<FastNT>`
 /// decides signs too (the covering's triangles); if one of those is not
 /// certain, every frame is answered exactly.
 template <template <class> class D, class FastNT, class... Uncertain>
 class filtered_detector {
 public:
+    /// Builds the fast and the exact detector on the same polygons and
+    /// options, so both precomputations are paid once. Whatever D's
+    /// constructor throws, other than an uncertain sign, propagates.
     filtered_detector(const polygon& static_polygon, const polygon& moving_polygon, detector_options options = {})
         : exact_(static_polygon, moving_polygon, options) {
         detail::fallback<Uncertain...>::run(
@@ -71,6 +75,9 @@ public:
             });
     }
 
+    /// The exact answer for the frame: the fast detector's, or the exact
+    /// detector's when the fast one could not decide (counted in
+    /// exact_frames()). Semantics as D::collide.
     frame_result collide(const pose& p) {
         const auto exactly = [&] {
             ++exact_frames_;

@@ -1,14 +1,15 @@
 #pragma once
-// Interval detection: filtered_detector with CGAL's interval arithmetic as the
-// fast number type.
-//
-// Why it catches one more exception type than certified_detector: the library decides
-// signs through number_traits<NT>::sign, which raises uncertain_sign for an
-// undecided interval, but it also compares NT values directly (segment
-// extents, distance bounds: `a < b`), and on intervals those comparisons are
-// CGAL's, whose undecided results raise CGAL::Uncertain_conversion_exception
-// when converted to bool. The traits cannot change what operator< does, so the
-// fallback has to catch both.
+/// \file
+/// Interval detection: filtered_detector with CGAL's interval arithmetic as the
+/// fast number type.
+///
+/// Why it catches one more exception type than certified_detector: the library decides
+/// signs through number_traits::sign, which raises uncertain_sign for an
+/// undecided interval, but it also compares NT values directly (segment
+/// extents, distance bounds: `a < b`), and on intervals those comparisons are
+/// CGAL's, whose undecided results raise CGAL::Uncertain_conversion_exception
+/// when converted to bool. The traits cannot change what operator< does, so the
+/// fallback has to catch both.
 
 #include <CGAL/Uncertain.h>
 
@@ -19,7 +20,7 @@
 
 namespace influence2d {
 
-/// The exact answers through CGAL's intervals: every frame runs in `interval`,
+/// The exact reference's answers through CGAL's intervals: every frame runs in `interval`,
 /// and a frame with a sign or a comparison the intervals cannot settle is
 /// answered again in exact rationals. D is detector or brute_force_detector.
 template <template <class> class D>

@@ -1,7 +1,8 @@
 #pragma once
-// Algorithm 3 of Jimenez, Segura and Feito (WSCG 2004) as published, kept to
-// reproduce the paper and to show where it fails (method.md sections 6, 7).
-// It is NOT a correct detector: it misses collisions and reports false ones.
+/// \file
+/// Algorithm 3 of Jimenez, Segura and Feito (WSCG 2004) as published, kept to
+/// reproduce the paper and to show where it fails (method.md sections 6, 7).
+/// It is NOT a correct detector: it misses collisions and reports false ones.
 
 #include <memory>
 #include <vector>
@@ -24,10 +25,18 @@ namespace influence2d {
 ///      the candidate edges are those whose extended area (always the paper's
 ///      band, whatever options.shape says) contains p; an edge collides with the
 ///      moving edges whose ends change the sign of alpha. Else OUT.
-/// No segment confirmation, no containment test: the literal algorithm.
+/// No segment confirmation, no containment test: the literal algorithm. It
+/// misses collisions (an approach along one cone, containment, contacts the
+/// gate misses) and reports false ones (B straddling an edge's line beyond
+/// the segment); use detector for correct answers. Its signs are exact when
+/// NT is, so its failures are the algorithm's, not rounding's.
 template <class NT>
 class paper_detector {
 public:
+    /// Copies both polygons, builds A's covering, influence areas and an edge
+    /// grid for the band's reach. Uses `options.distance` (n = r + d) and
+    /// `options.witness`; `options.shape` and `options.temporal_coherence`
+    /// are ignored (always the band; the mask is the paper's coherence).
     paper_detector(const polygon& static_polygon, const polygon& moving_polygon, detector_options options = {})
         : a_(std::make_shared<const static_scene<NT>>(static_polygon)), b_(moving_polygon), options_(options) {
         using tr = number_traits<NT>;
@@ -38,6 +47,11 @@ public:
         current_ = influence_mask(a_->shape.size());
     }
 
+    /// The literal algorithm's answer for the frame (steps above). It keeps
+    /// the frame's influence mask for the next frame, so frames must come in
+    /// trajectory order. With witnesses, the straddling (static, moving) edge
+    /// pairs in input numbering: pairs whose moving edge has an end on the
+    /// static edge's line or on both sides of it, not confirmed contacts.
     frame_result collide(const pose& q) {
         using tr = number_traits<NT>;
         const rotation_pose t(q);

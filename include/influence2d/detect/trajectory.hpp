@@ -1,5 +1,6 @@
 #pragma once
-// The paper's trajectories (method.md section 8) as sequences of poses.
+/// \file
+/// The paper's trajectories (method.md section 8) as sequences of poses.
 
 #include <algorithm>
 #include <cmath>
@@ -20,7 +21,8 @@ namespace influence2d {
 /// R_A + gap from O_A (R_A: A's bounding radius about O_A). Seen from B, A turns
 /// about O_A inside the disk of radius R_A, so with gap > 0 no frame collides,
 /// and the polygons come within about `gap` whenever A's farthest vertices
-/// sweep past B.
+/// sweep past B. `frames` == 0 gives no pose; the default 90,000 frames and
+/// gap 9 are the paper's. Time linear in the frames and the vertices.
 inline std::vector<pose> circular_trajectory(const polygon& a, const polygon& b, std::size_t frames = 90000,
                                              double gap = 9.0) {
     const point<double> o = a.centroid(), cb = b.centroid();
@@ -39,7 +41,9 @@ inline std::vector<pose> circular_trajectory(const polygon& a, const polygon& b,
 }
 
 /// A point well inside A: the first vertex a_k (in stored order) for which
-/// a_k + (O_A - a_k) / 20 is inside A, that point; A's first vertex if none is.
+/// a_k + (O_A - a_k) / 20 is inside A, that point; A's first vertex (on its
+/// boundary) if none is. Located in double: for trajectories, not decisions.
+/// Time up to quadratic in A's vertices (a locate per vertex tried).
 inline point<double> interior_target(const polygon& a) {
     const point<double> o = a.centroid();
     for (std::size_t k = 0; k < a.size(); ++k) {
@@ -56,7 +60,8 @@ inline point<double> interior_target(const polygon& a) {
 /// along -u from B's centroid) on that point, so the trajectory ends in
 /// collision; the first frame is that pose moved back by 2 (R_A + r_B) + gap
 /// along u, where the bounding circles are at least `gap` apart. Frames are
-/// evenly spaced.
+/// evenly spaced; `frames` == 1 gives the last pose alone, 0 no pose. The
+/// defaults (9,000 frames, gap 9) are the paper's.
 inline std::vector<pose> linear_trajectory(const polygon& a, const polygon& b, std::size_t frames = 9000,
                                            double gap = 9.0) {
     const point<double> o = a.centroid(), cb = b.centroid();

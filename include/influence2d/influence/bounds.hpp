@@ -1,6 +1,7 @@
 #pragma once
-// Bounding radii as upper bounds in double (method.md section 9: radii carry
-// square roots, so filters use bounds, never the roots themselves).
+/// \file
+/// Bounding radii as upper bounds in double (method.md section 9: radii carry
+/// square roots, so filters use bounds, never the roots themselves).
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,9 @@
 
 namespace influence2d {
 
-/// An upper bound of sqrt(x) for x >= 0 given in long double, as a double.
+/// An upper bound of sqrt(x) for x >= 0 given in long double, as a double:
+/// strictly above the root, by a relative 1e-12 and one ulp. Infinity for an
+/// infinite x (or one beyond double's range); NaN for x < 0 or NaN.
 inline double upper_sqrt(long double x) {
     const double r = static_cast<double>(std::sqrt(x));
     return std::nextafter(r * (1 + 1e-12), std::numeric_limits<double>::infinity());
@@ -20,7 +23,9 @@ inline double upper_sqrt(long double x) {
 /// An upper bound of the largest distance from `center` to a vertex of `shape`,
 /// and so of the radius of the circle about `center` that encloses it. It
 /// also bounds the radius of the polygon posed with rotation doubles c, s,
-/// whose scale sqrt(c^2 + s^2) differs from 1 by less than 1e-15.
+/// whose scale sqrt(c^2 + s^2) differs from 1 by less than 1e-15. Time linear
+/// in the number of vertices; since A's edges are segments between vertices,
+/// the circle holds the whole closed region.
 inline double bounding_radius(const polygon& shape, const point<double>& center) {
     long double r2 = 0;
     for (const auto& v : shape.vertices()) {

@@ -1,8 +1,9 @@
 #pragma once
-// A uniform grid over the static polygon, in its own (fixed) frame, listing for
-// each cell the edges that may come within a reach of a point of the cell. It
-// answers "which edges can be within the reach of p" without a scan of all
-// edges; a conservative filter in double, never a decision.
+/// \file
+/// A uniform grid over the static polygon, in its own (fixed) frame, listing for
+/// each cell the edges that may come within a reach of a point of the cell. It
+/// answers "which edges can be within the reach of p" without a scan of all
+/// edges; a conservative filter in double, never a decision.
 
 #include <algorithm>
 #include <cmath>
@@ -16,13 +17,18 @@
 
 namespace influence2d {
 
-/// A read-only view of a run of edge indices.
+/// A read-only view of a run of edge indices, valid while the edge_grid that
+/// gave it lives and is not assigned to. Default: empty.
 struct edge_list {
-    const std::uint32_t* first = nullptr;
-    const std::uint32_t* last = nullptr;
+    const std::uint32_t* first = nullptr;  ///< the first index
+    const std::uint32_t* last = nullptr;   ///< one past the last index
+    /// The first index, for range-for.
     const std::uint32_t* begin() const { return first; }
+    /// One past the last index, for range-for.
     const std::uint32_t* end() const { return last; }
+    /// Whether the run holds no index.
     bool empty() const { return first == last; }
+    /// How many indices the run holds.
     std::size_t size() const { return static_cast<std::size_t>(last - first); }
 };
 
@@ -44,6 +50,8 @@ inline double filter_length(double x, double y) {
 /// Distance from p to the segment [a, b] in double, for filters only. The
 /// differences are first scaled by a power of two (exactly) to magnitude ~1,
 /// so that squaring them neither overflows nor underflows at any scale.
+/// Rounded (not a bound); 0 when all three points coincide, the distance to
+/// a for a == b, infinity when a difference is not finite (overflow or NaN).
 inline double segment_distance(const point<double>& p, const point<double>& a, const point<double>& b) {
     double abx = b.x - a.x, aby = b.y - a.y, apx = p.x - a.x, apy = p.y - a.y;
     const double big = std::max({std::fabs(abx), std::fabs(aby), std::fabs(apx), std::fabs(apy)});
@@ -64,13 +72,22 @@ inline bool may_be_within(const point<double>& p, const point<double>& a, const 
     return d <= reach || !std::isfinite(d);
 }
 
+/// A uniform grid over a polygon's box grown by the reach, each cell listing
+/// the edges that may come within the reach of one of its points. Cells are
+/// about as wide as the reach, but no more than about 8 per edge in all and
+/// 4096 per axis; a query costs one cell lookup. The lists are conservative:
+/// they may hold edges farther away, never miss a near one. In double.
 class edge_grid {
 public:
+    /// An empty grid: every query gives no edge.
     edge_grid() = default;
 
     /// Indexes the edges of `shape` for queries of reach `reach`: a point p
     /// whose distance to an edge is at most `reach` finds that edge in the list
     /// of its cell. `slack` is an absolute margin added for double rounding.
+    /// Zero-length edges are indexed as points. When the extents overflow
+    /// double, one cell holds every edge. Time proportional to the edges plus
+    /// the cells their grown boxes cover; `shape` is not kept.
     edge_grid(const polygon& shape, double reach, double slack) {
         const double r = reach + slack;
         area_ = shape.bounds().inflated(r);
@@ -133,7 +150,9 @@ public:
         return {edges_.data() + offsets_[c], edges_.data() + offsets_[c + 1]};
     }
 
+    /// The number of cells (0 for a default grid).
     std::size_t cell_count() const { return nx_ * ny_; }
+    /// The number of (cell, edge) entries over all cells: the grid's size.
     std::size_t entry_count() const { return edges_.size(); }
 
 private:

@@ -1,6 +1,7 @@
 #pragma once
-// Extended influence areas of length n (method.md section 5): exact membership
-// of a point, in either shape. Both contain every point within n of the edge.
+/// \file
+/// Extended influence areas of length n (method.md section 5): exact membership
+/// of a point, in either shape. Both contain every point within n of the edge.
 
 #include <algorithm>
 #include <cmath>
@@ -11,8 +12,8 @@
 
 namespace influence2d {
 
-/// The ideal area: points within n of the segment [a, b] (a capsule).
-/// `n2` is n squared.
+/// The ideal area: points within n of the segment [a, b] (a closed capsule;
+/// a disk for a == b). `n2` is n squared. Exact when NT is.
 template <class NT>
 bool in_capsule(const point<NT>& p, const point<NT>& a, const point<NT>& b, const NT& n2) {
     return point_segment_within(p, a, b, n2);
@@ -20,7 +21,10 @@ bool in_capsule(const point<NT>& p, const point<NT>& a, const point<NT>& b, cons
 
 /// The paper's area: the band between the two parallels to [a, b] at distance n,
 /// cut by two axis-parallel lines at distance n beyond the end vertices:
-/// vertical ones when |slope| <= 1, horizontal ones otherwise.
+/// vertical ones when |slope| <= 1, horizontal ones otherwise. Closed, and a
+/// superset of the capsule. For a == b no band is defined: the test keeps
+/// the vertical strip |x - a.x| <= n (conservative). `n2` is n squared.
+/// Exact when NT is.
 template <class NT>
 bool in_band(const point<NT>& p, const point<NT>& a, const point<NT>& b, const NT& n, const NT& n2) {
     const NT abx = b.x - a.x, aby = b.y - a.y;
@@ -35,7 +39,8 @@ bool in_band(const point<NT>& p, const point<NT>& a, const point<NT>& b, const N
     return !(pp < lo - n) && !(pp > hi + n);
 }
 
-/// Membership in the chosen shape of extended area of length n.
+/// Membership in the chosen shape of extended area of length n >= 0 (closed:
+/// the boundary counts). Exact when NT is.
 template <class NT>
 bool in_extended_area(extended_area shape, const point<NT>& p, const point<NT>& a, const point<NT>& b,
                       const NT& n) {
@@ -46,7 +51,8 @@ bool in_extended_area(extended_area shape, const point<NT>& p, const point<NT>& 
 /// Whether p may lie in the extended area of length n of [a, b], evaluated in
 /// double for a filter: coordinates are taken relative to a and scaled by a
 /// power of two to magnitude ~1 first, so that no square overflows or
-/// underflows; non-finite differences keep the edge.
+/// underflows; non-finite differences keep the edge, as does p == a == b
+/// with n == 0. Rounded: callers widen n by their rounding margin.
 inline bool may_be_in_extended_area(extended_area shape, const point<double>& p, const point<double>& a,
                                     const point<double>& b, double n) {
     const double big = std::max({std::fabs(b.x - a.x), std::fabs(b.y - a.y), std::fabs(p.x - a.x),

@@ -1,6 +1,7 @@
 #pragma once
-// Influence areas (the cones from the covering origin through each edge) and
-// the influence mask of a point (method.md section 4).
+/// \file
+/// Influence areas (the cones from the covering origin through each edge) and
+/// the influence mask of a point (method.md section 4).
 
 #include <cmath>
 #include <algorithm>
@@ -16,7 +17,9 @@
 namespace influence2d {
 
 /// Whether P lies in the closed influence area of edge i: beta_i >= 0 and
-/// gamma_i >= 0. The area of an edge collinear with the origin is empty.
+/// gamma_i >= 0, the cone from the origin through the edge, its two rays
+/// included. The area of an edge collinear with the origin (a zero-length
+/// edge included) is empty. Two orientation signs: exact when NT is.
 template <class NT>
 bool in_influence_area(const triangle_covering<NT>& cov, std::size_t i, const point<NT>& p) {
     const int s = cov.sigma(i);
@@ -25,25 +28,34 @@ bool in_influence_area(const triangle_covering<NT>& cov, std::size_t i, const po
            orientation(cov.origin(), cov.start(i), p) * s >= 0;
 }
 
-/// One bit per edge of the static polygon.
+/// One bit per edge of the static polygon: the influence areas that contain
+/// a point. Operations run a 64-bit word at a time.
 class influence_mask {
 public:
+    /// A mask of no edge.
     influence_mask() = default;
+    /// A mask of `edges` bits, all clear.
     explicit influence_mask(std::size_t edges) : words_((edges + 63) / 64, 0) {}
 
+    /// Clears every bit.
     void clear() { std::fill(words_.begin(), words_.end(), std::uint64_t{0}); }
+    /// Sets bit i; requires i below the size given at construction.
     void set(std::size_t i) { words_[i / 64] |= std::uint64_t{1} << (i % 64); }
+    /// Whether bit i is set; requires i below the size given at construction.
     bool test(std::size_t i) const { return (words_[i / 64] >> (i % 64)) & 1u; }
+    /// Whether some bit is set.
     bool any() const {
         for (auto w : words_) if (w) return true;
         return false;
     }
     /// Whether some area of `before` is not in this mask: the point left it.
+    /// Requires masks of the same size.
     bool left_some_area_of(const influence_mask& before) const {
         for (std::size_t k = 0; k < words_.size(); ++k)
             if (before.words_[k] & ~words_[k]) return true;
         return false;
     }
+    /// Whether both masks have the same bits (and size).
     bool operator==(const influence_mask& o) const { return words_ == o.words_; }
 
 private:
@@ -55,12 +67,18 @@ private:
 /// listing the cones that overlap it (widened, so the list is conservative);
 /// membership is then decided exactly, by barycentric signs, for the cones of
 /// the point's bucket only. A point at or very near the origin, where its
-/// direction is not known well enough in double, tests every cone.
+/// direction is not known well enough in double, tests every cone. There
+/// are 2 to 4 buckets per edge (at least 16, at most 2^20); each cone is
+/// listed in the buckets its angle spans, so a query tests one bucket's cones.
 template <class NT>
 class influence_areas {
 public:
+    /// An empty index, to be assigned to.
     influence_areas() = default;
 
+    /// Indexes the cones of `cov`, which must outlive the index. Cones whose
+    /// direction is not known to half a radian in double (or not finite) are
+    /// listed in every bucket; edges collinear with the origin in none.
     explicit influence_areas(const triangle_covering<NT>& cov) : cov_(&cov) {
         constexpr double two_pi = 6.283185307179586;
         const std::size_t n = cov.size();
@@ -106,7 +124,9 @@ public:
         origin_scale_ = std::fabs(o.x) + std::fabs(o.y);
     }
 
-    /// Calls visit(i) for every edge i whose influence area contains P.
+    /// Calls visit(i) for every edge i whose influence area contains P, in
+    /// no particular order. Membership is exact when NT is; the bucket only
+    /// narrows which cones are tested.
     template <class Visit>
     void for_each_containing(const point<NT>& p, Visit&& visit) const {
         using tr = number_traits<NT>;
@@ -132,7 +152,9 @@ public:
     /// a triangle lies in its edge's cone, so only the cones containing P add
     /// to the sum (see detail::feito_locate), and the edges collinear with the
     /// origin, whose cones are empty, are checked for P on them. The origin
-    /// itself, in every cone, takes the full sum from a vertex.
+    /// itself, in every cone, takes the full sum from a vertex. The same
+    /// answer as locate() on the covering (closed region: boundary on an
+    /// edge), at the cost of the cones near P's direction.
     location locate(const point<NT>& p) const {
         const auto& cov = *cov_;
         if (p == cov.origin()) return influence2d::locate(cov, p);
@@ -150,7 +172,8 @@ public:
         return doubled != 0 ? location::inside : location::outside;
     }
 
-    /// The influence mask of P: one bit per edge, set for the areas containing P.
+    /// The influence mask of P: one bit per edge, set for the areas containing
+    /// P. `out` must have one bit per edge of the covering; it is cleared first.
     void mask(const point<NT>& p, influence_mask& out) const {
         out.clear();
         for_each_containing(p, [&](std::size_t i) { out.set(i); });

@@ -1,10 +1,11 @@
 #pragma once
-// Poses and per-frame results as CSV.
-//
-// Poses file:   tx,ty,theta            (header, exactly these names)
-//               1.5,-2,0.785398        (one pose per line, finite numbers)
-// Frames file:  frame,collides[,edges] (frames from 0, collides 0 or 1,
-//                                       edges "i:j;i:j" static:moving)
+/// \file
+/// Poses and per-frame results as CSV.
+///
+///     Poses file:   tx,ty,theta            (header, exactly these names)
+///                   1.5,-2,0.785398        (one pose per line, finite numbers)
+///     Frames file:  frame,collides[,edges] (frames from 0, collides 0 or 1,
+///                                           edges "i:j;i:j" static:moving)
 
 #include <array>
 #include <charconv>
@@ -24,7 +25,7 @@
 
 namespace influence2d {
 
-/// Pose files larger than this are refused by read_poses_csv.
+/// Pose files larger than this (512 MiB) are refused by read_poses_csv.
 inline constexpr std::size_t max_csv_file_bytes = std::size_t{512} << 20;
 
 namespace csv_detail {
@@ -81,8 +82,10 @@ inline std::string format_number(double x) {
 
 }  // namespace csv_detail
 
-/// Reads poses from a stream in the format of read_poses_csv; messages start
-/// with `path`.
+/// Reads poses from a stream in the format of the file reader below; messages
+/// start with `path`, the name the stream is reported by. A UTF-8 byte-order
+/// mark before the header is skipped; more than max_csv_file_bytes of input
+/// is refused. Throws invalid_input naming the line (from 1) and column.
 inline std::vector<pose> read_poses_csv(std::istream& in, const std::string& path) {
     using namespace csv_detail;
     auto fail = [&](const std::string& what) -> void { throw invalid_input(path + ": " + what); };
@@ -140,9 +143,12 @@ inline std::vector<pose> read_poses_csv(std::istream& in, const std::string& pat
 }
 
 /// Reads poses from a CSV file: the header `tx,ty,theta`, then one line per
-/// pose with three finite numbers. Spaces around fields and a trailing '\r'
-/// are ignored; blank lines are allowed only at the end. Throws invalid_input
-/// naming the file, the line (from 1) and the column.
+/// pose with three finite numbers. Spaces around fields and a trailing
+/// carriage return are ignored; blank lines are allowed only at the end.
+/// Numbers are read as by std::from_chars (one leading '+' allowed); values
+/// out of double's range, infinities and NaN are refused. Throws invalid_input
+/// naming the file, the line (from 1) and the column; also for a file that
+/// cannot be opened, a directory, or one over max_csv_file_bytes.
 inline std::vector<pose> read_poses_csv(const std::string& path) {
     auto fail = [&](const std::string& what) -> void { throw invalid_input(path + ": " + what); };
     std::ifstream in(path, std::ios::binary);
@@ -156,7 +162,9 @@ inline std::vector<pose> read_poses_csv(const std::string& path) {
 }
 
 /// Writes poses in the format read_poses_csv reads, each number in its
-/// shortest form that reads back to the same double.
+/// shortest form that reads back to the same double. Non-finite values are
+/// written as they are (inf, nan), which the reader refuses. Stream errors
+/// are left in the stream's state.
 inline void write_poses_csv(std::ostream& out, const std::vector<pose>& poses) {
     using csv_detail::format_number;
     out << "tx,ty,theta\n";
@@ -174,9 +182,11 @@ inline void write_poses_csv(const std::string& path, const std::vector<pose>& po
     if (!out) throw invalid_input(path + ": write error");
 }
 
-/// Writes one line per frame: `frame,collides` (collides is 0 or 1), or with
-/// `witness` `frame,collides,edges` where edges lists the involved pairs as
-/// `static:moving` edge numbers separated by ';' (empty when there is none).
+/// Writes one line per frame, after a header: `frame,collides` (frames from
+/// 0, collides 0 or 1), or with `witness` `frame,collides,edges` where edges
+/// lists the involved pairs as `static:moving` input edge numbers separated
+/// by ';' (empty when there is none). Stream errors are left in the stream's
+/// state.
 inline void write_frames_csv(std::ostream& out, const std::vector<frame_result>& results,
                              bool witness) {
     out << (witness ? "frame,collides,edges\n" : "frame,collides\n");

@@ -1,7 +1,8 @@
 #pragma once
-// Polygons as WKT text: POLYGON and MULTIPOLYGON, read with Boost.Geometry's
-// WKT reader and checked for what that reader lets through (unclosed rings,
-// points without exactly two coordinates, empty list elements).
+/// \file
+/// Polygons as WKT text: POLYGON and MULTIPOLYGON, read with Boost.Geometry's
+/// WKT reader and checked for what that reader lets through (unclosed rings,
+/// points without exactly two coordinates, empty list elements).
 
 #include <array>
 #include <cctype>
@@ -27,14 +28,15 @@
 
 namespace influence2d {
 
-/// Files larger than this are refused by read_wkt_file.
+/// Files larger than this (512 MiB) are refused by read_wkt_file and
+/// read_wkt_text_file.
 inline constexpr std::size_t max_wkt_file_bytes = std::size_t{512} << 20;
 
 /// A ring as the WKT gives it: every point, the closing one included when the
 /// text has it; nothing checked beyond the syntax.
 struct wkt_ring {
-    std::vector<point<double>> points;
-    ring_role role = ring_role::outer;
+    std::vector<point<double>> points;  ///< in text order; may be empty or hold non-finite values
+    ring_role role = ring_role::outer;  ///< outer for an exterior ring, hole for an interior one
 };
 
 namespace wkt_detail {
@@ -154,7 +156,8 @@ inline void append_ring(std::string_view source, const wkt_ring& r, std::vector<
 /// The rings of WKT text (POLYGON or MULTIPOLYGON, see read_wkt) without the
 /// geometric checks: for audits, which report what read_wkt would refuse.
 /// Throws invalid_input, starting with `source`, for what is not WKT of a
-/// polygon at all (syntax, geometry type, empty geometry, coordinate count).
+/// polygon at all (syntax, geometry type, empty geometry, coordinate count:
+/// exactly x and y, no Z or M).
 inline std::vector<wkt_ring> read_wkt_rings(std::string_view text, std::string_view source = "<text>") {
     namespace bg = boost::geometry;
     using namespace wkt_detail;
@@ -210,7 +213,12 @@ inline std::vector<wkt_ring> read_wkt_rings(std::string_view text, std::string_v
 /// keywords in any case, surrounding white space allowed. Rings must be
 /// closed; the closing point is dropped. Rings are numbered 0, 1, ... in text
 /// order across the whole geometry and vertices 0, 1, ... within a ring.
-/// Throws invalid_input with a message starting with `source`.
+/// Throws invalid_input with a message starting with `source` for what
+/// read_wkt_rings refuses, an empty or unclosed ring, a non-finite
+/// coordinate, and what polygon's constructor refuses (a ring with fewer
+/// than three distinct vertices). Degenerate but usable rings (repeated
+/// vertices, collinear runs, self-intersections, zero area) are accepted as
+/// polygon takes them; audit_rings (audit/audit.hpp) lists them.
 inline polygon read_wkt(std::string_view text, std::string_view source = "<text>") {
     std::vector<ring_input> rings;
     for (const wkt_ring& r : read_wkt_rings(text, source)) wkt_detail::append_ring(source, r, rings);
@@ -221,8 +229,9 @@ inline polygon read_wkt(std::string_view text, std::string_view source = "<text>
     }
 }
 
-/// The text of a WKT file; files over max_wkt_file_bytes are refused.
-/// Throws invalid_input starting with `path`.
+/// The text of a WKT file, read as bytes; files over max_wkt_file_bytes are
+/// refused. Throws invalid_input starting with `path` for that, a file that
+/// cannot be opened or read, or a directory.
 inline std::string read_wkt_text_file(const std::string& path) {
     const std::string too_large =
         "file is larger than " + std::to_string(max_wkt_file_bytes >> 20) + " MiB";
@@ -252,7 +261,10 @@ inline polygon read_wkt_file(const std::string& path) { return read_wkt(read_wkt
 /// reads back to the same double; rings are closed and in stored orientation
 /// (outer counter-clockwise, holes clockwise). One outer ring gives a POLYGON;
 /// several give a MULTIPOLYGON, each hole going with the closest preceding
-/// outer ring in storage order (the order they were read in).
+/// outer ring in storage order (the order they were read in). read_wkt of the
+/// text gives the same rings, vertices and roles; its input edge numbers are
+/// those of the stored order. Throws invalid_input when ring 0 is a hole (WKT
+/// needs an outer ring first).
 inline std::string to_wkt(const polygon& poly) {
     const std::size_t rings = poly.ring_count();
     if (rings == 0) throw invalid_input("to_wkt: polygon has no ring");

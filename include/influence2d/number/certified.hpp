@@ -1,8 +1,9 @@
 #pragma once
-// The certified number type: a double with a running bound of its error.
-// A sign it cannot decide raises uncertain_sign; certified_detector (in
-// detect/certified_detector.hpp) then answers the frame in an exact type.
-// The same detector code, generic in NT, runs on it unchanged.
+/// \file
+/// The certified number type: a double with a running bound of its error.
+/// A sign it cannot decide raises uncertain_sign; certified_detector (in
+/// detect/certified_detector.hpp) then answers the frame in an exact type.
+/// The same detector code, generic in NT, runs on it unchanged.
 
 #include <cmath>
 #include <limits>
@@ -16,6 +17,7 @@ namespace influence2d {
 /// bound, for its sign to be known; or when a bound overflowed.
 class uncertain_sign : public std::runtime_error {
 public:
+    /// The exception, with a fixed message.
     uncertain_sign() : std::runtime_error("sign not certain in double precision") {}
 };
 
@@ -25,7 +27,8 @@ public:
 /// its result (at most u |v| for u = 2^-53, plus 2^-1072 for underflow)
 /// and the propagated errors; the bound is computed in rounded arithmetic and
 /// then widened by (1 + 2^-48), more than the rounding of its few operations.
-/// A NaN or infinite value or bound leaves every sign uncertain.
+/// A NaN or infinite value or bound leaves every sign uncertain. Signs that
+/// are given are exact; only ring operations are provided (no division).
 ///
 /// Why each bound holds (round to nearest; x the exact result of the
 /// operation on the values a.v, b.v, v = fl(x)):
@@ -46,19 +49,26 @@ public:
 ///    terms (relative 2^-53 each), well inside the widening by 2^-48.
 class certified {
 public:
+    /// Exactly 0.
     certified() = default;
+    /// x exactly (every int is a double); implicit, for constants as in NT(0).
     certified(int x) : v_(x) {}  // NOLINT: integer constants as in NT(0)
+    /// x exactly: an input, bound 0. A non-finite x leaves every sign uncertain.
     explicit certified(double x) : v_(x) {}
+    /// The value v with the bound e; the caller vouches that |exact - v| <= e.
     certified(double v, double e) : v_(v), e_(e) {}
 
+    /// The computed value v: the rounded result of the same operations in double.
     double value() const { return v_; }
+    /// The bound e of |exact - v|.
     double error() const { return e_; }
 
     /// Whether the value is known exactly (an input double, or an operation
     /// whose bound is still 0).
     bool exact() const { return e_ == 0; }
 
-    /// Stores the sign in `s` and returns true when it is certain.
+    /// Stores the sign in `s` and returns true when it is certain (|v| > e,
+    /// or v == e == 0); otherwise stores 0 and returns false.
     bool try_sign(int& s) const {
         if (std::fabs(v_) > e_) {  // false for NaN values or bounds
             s = v_ > 0 ? 1 : -1;
@@ -68,31 +78,44 @@ public:
         return v_ == 0 && e_ == 0;
     }
 
-    /// -1, 0 or +1, when certain.
+    /// -1, 0 or +1, when certain; throws uncertain_sign otherwise.
     int sign() const {
         int s;
         if (try_sign(s)) return s;
         throw uncertain_sign();
     }
 
+    /// The sum, with its bound (see the class comment).
     friend certified operator+(const certified& a, const certified& b) { return sum(a.v_ + b.v_, a.e_ + b.e_); }
+    /// The difference, with its bound (see the class comment).
     friend certified operator-(const certified& a, const certified& b) { return sum(a.v_ - b.v_, a.e_ + b.e_); }
+    /// The negation: exact, the bound unchanged.
     friend certified operator-(const certified& a) { return {-a.v_, a.e_}; }
+    /// The product, with its bound (see the class comment).
     friend certified operator*(const certified& a, const certified& b) {
         const double v = a.v_ * b.v_;
         const double e = (std::fabs(a.v_) + a.e_) * b.e_ + std::fabs(b.v_) * a.e_ + u * std::fabs(v) + eta;
         return {v, widen(e)};
     }
+    /// \name Compound assignments
+    //@{
+    /// `*this = *this op b`, with the bound of that operation.
     certified& operator+=(const certified& b) { return *this = *this + b; }
     certified& operator-=(const certified& b) { return *this = *this - b; }
     certified& operator*=(const certified& b) { return *this = *this * b; }
+    //@}
 
+    /// \name Comparisons
+    //@{
+    /// By the sign of a - b; throws uncertain_sign when that sign is not
+    /// certain (equal values with non-zero bounds included).
     friend bool operator<(const certified& a, const certified& b) { return (a - b).sign() < 0; }
     friend bool operator>(const certified& a, const certified& b) { return (a - b).sign() > 0; }
     friend bool operator<=(const certified& a, const certified& b) { return (a - b).sign() <= 0; }
     friend bool operator>=(const certified& a, const certified& b) { return (a - b).sign() >= 0; }
     friend bool operator==(const certified& a, const certified& b) { return (a - b).sign() == 0; }
     friend bool operator!=(const certified& a, const certified& b) { return (a - b).sign() != 0; }
+    //@}
 
 private:
     static constexpr double u = 0x1p-53;
@@ -114,18 +137,25 @@ private:
     double e_ = 0;
 };
 
+/// The traits of certified: a filtered type whose undecided signs throw.
 template <>
 struct number_traits<certified> {
-    static constexpr number_category category = number_category::filtered;
-    static constexpr const char* name = "certified";
+    static constexpr number_category category = number_category::filtered;  ///< exact signs or none
+    static constexpr const char* name = "certified";  ///< "certified"
+    /// x exactly, with bound 0.
     static certified from_double(double x) { return certified(x); }
+    /// The computed value, within error() of the exact one.
     static double to_double(const certified& x) { return x.value(); }
+    /// The exact sign; throws uncertain_sign when the bound cannot settle it.
     static int sign(const certified& x) { return x.sign(); }
+    /// As for double: the filters widen only for their own rounding.
     static constexpr double filter_slack = 1e-9;
     /// The orientation predicate may settle an uncertain sign exactly when its
     /// three points are input doubles (see predicates/orientation.hpp).
     static constexpr bool exact_double_fallback = true;
+    /// The sign when certain (see certified::try_sign).
     static bool try_sign(const certified& x, int& s) { return x.try_sign(s); }
+    /// Whether x is known exactly (an input double).
     static bool exact(const certified& x) { return x.exact(); }
 };
 

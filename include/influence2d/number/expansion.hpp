@@ -1,12 +1,14 @@
 #pragma once
-// Exact signs of sums of products of doubles, over the whole range of double
-// (subnormals and products beyond double's range included), for decisions on
-// input doubles: ring orientation, and the orientation predicate on three input
-// points when a filter cannot decide it.
+/// \file
+/// Exact signs of sums of products of doubles, over the whole range of double
+/// (subnormals and products beyond double's range included), for decisions on
+/// input doubles: ring orientation, and the orientation predicate on three input
+/// points when a filter cannot decide it.
 
 #include <cmath>
 #include <cstdint>
 
+/// Exact signs of sums of products of doubles (no number type involved).
 namespace influence2d::expansion {
 
 /// An exact sum of products of doubles, kept as one fixed-point two's
@@ -14,14 +16,16 @@ namespace influence2d::expansion {
 /// with an integer |M| < 2^53 and E >= -1126, so a product is an integer below
 /// 2^106 times 2^(E1 + E2) with E1 + E2 in [-2252, 1942]; the integer counts
 /// units of 2^-2252 in 70 words of 64 bits (4480 bits: the 4300 a product can
-/// reach, and room for 2^100 terms' carries). Non-finite inputs are ignored by
-/// the callers' preconditions: they never reach it.
+/// reach, and room for 2^100 terms' carries). Precondition: finite inputs
+/// (the callers ensure it; NaN or infinity gives a meaningless sum). Each
+/// addition costs a few word operations plus its carry; it allocates nothing.
 class accumulator {
 public:
-    /// Adds x exactly.
+    /// Adds x exactly (x finite).
     void add(double x) { add_product(x, 1.0); }
 
-    /// Adds a * b exactly.
+    /// Adds a * b exactly (a and b finite), even when the product is beyond
+    /// double's range or below its subnormals.
     void add_product(double a, double b) {
         if (a == 0 || b == 0) return;
         int ea = 0, eb = 0;
@@ -38,7 +42,7 @@ public:
         add_shifted(low, high, position, (a < 0) != (b < 0));
     }
 
-    /// The sign of the exact sum.
+    /// The sign of the exact sum: -1, 0 or +1 (0 for no term).
     int sign() const {
         if (words_[count - 1] >> 63) return -1;
         for (const std::uint64_t w : words_)
@@ -80,8 +84,11 @@ private:
     std::uint64_t words_[count] = {};
 };
 
-/// The exact sign of the orientation determinant of three points with double
-/// coordinates: [a b c] = bx cy - bx ay - ax cy - by cx + by ax + ay cx.
+/// The exact sign of the orientation determinant [a b c] of three points with
+/// double coordinates: +1 when c lies left of the directed line a->b, -1
+/// right, 0 collinear (also when two of the points coincide). The sum
+/// [a b c] = bx cy - bx ay - ax cy - by cx + by ax + ay cx is accumulated
+/// exactly; coordinates must be finite.
 inline int orientation_sign(double ax, double ay, double bx, double by, double cx, double cy) {
     accumulator acc;
     acc.add_product(bx, cy);

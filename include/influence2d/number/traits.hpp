@@ -1,6 +1,7 @@
 #pragma once
-// Number traits: what the library needs to know about a number type NT.
-// Specialise number_traits for your own type (see number/cgal.hpp).
+/// \file
+/// Number traits: what the library needs to know about a number type NT.
+/// Specialise number_traits for your own type (see number/cgal.hpp).
 
 #include <limits>
 #include <type_traits>
@@ -11,37 +12,60 @@ namespace influence2d {
 enum class number_category {
     floating,  ///< rounded arithmetic: answers may differ from the exact ones
     exact,     ///< ring operations are exact: answers are the exact ones
-    filtered   ///< exact answers through a floating-point filter with exact fallback
+    /// Exact answers through a floating-point filter: a sign is either exact
+    /// or not given. The type may fall back to exact arithmetic itself (CGAL's
+    /// lazy numbers), or throw uncertain_sign so that filtered_detector
+    /// answers the frame in exact rationals (certified, interval).
+    filtered
 };
 
-/// Primary template, left undefined: a type is usable once it has traits.
-/// A specialisation provides:
-///   static constexpr number_category category;
-///   static constexpr const char* name;
-///   static NT from_double(double);   exact whenever category != floating
-///   static double to_double(const NT&);  nearest or near double
-///   static int sign(const NT&);      -1, 0 or +1
-///   static constexpr double filter_slack;  relative widening that keeps the
-///       double-evaluated filters conservative for decisions made in NT
+/// What the library needs of a number type NT. The primary template is left
+/// undefined: a type is usable once it has a specialisation, which provides
+/// - `static constexpr number_category category;`
+/// - `static constexpr const char* name;` a short name for output;
+/// - `static NT from_double(double);` exact whenever category != floating;
+/// - `static double to_double(const NT&);` the nearest or a near double, for
+///   filters and output only;
+/// - `static int sign(const NT&);` -1, 0 or +1 (a filtered type may throw
+///   uncertain_sign instead);
+/// - `static constexpr double filter_slack;` the relative widening that keeps
+///   the double-evaluated filters conservative for decisions made in NT.
+///
+/// A filtered type may also set `static constexpr bool exact_double_fallback
+/// = true` and provide `static bool try_sign(const NT&, int&)` (the sign when
+/// certain) and `static bool exact(const NT&)` (whether the value is an input
+/// double): orientation() then settles an uncertain sign on three input
+/// points exactly instead of throwing. NT needs +, -, * and the comparisons;
+/// no division and no square root is ever asked of it. `Enable` serves
+/// partial specialisations through std::enable_if_t.
 template <class NT, class Enable = void>
 struct number_traits;
 
-/// float, double, long double.
+/// The traits of float, double and long double: rounded arithmetic.
 template <class NT>
 struct number_traits<NT, std::enable_if_t<std::is_floating_point_v<NT>>> {
-    static constexpr number_category category = number_category::floating;
+    static constexpr number_category category = number_category::floating;  ///< rounded
+    /// "float", "double" or "long double".
     static constexpr const char* name = std::is_same_v<NT, float>    ? "float"
                                         : std::is_same_v<NT, double> ? "double"
                                                                      : "long double";
+    /// x converted. Exact for double and long double; float rounds it, and
+    /// beyond float's range the conversion is undefined behaviour (an
+    /// infinity in practice), so float suits inputs within that range only.
     static NT from_double(double x) { return static_cast<NT>(x); }
+    /// x converted: exact from float and double, rounded from long double.
     static double to_double(const NT& x) { return static_cast<double>(x); }
+    /// -1, 0 or +1; 0 for NaN (neither above nor below 0).
     static int sign(const NT& x) { return (x > NT(0)) - (x < NT(0)); }
-    // Filters run in double; decisions made in a coarser type can be wrong by a
-    // few of its ulps, so its filters widen by a margin well above that.
+    /// 1e-4 for float, 1e-9 for double and long double. Filters run in
+    /// double; decisions made in a coarser type can be wrong by a few of its
+    /// ulps, so its filters widen by a margin well above that.
     static constexpr double filter_slack =
         std::numeric_limits<NT>::epsilon() > 1e-12 ? 1e-4 : 1e-9;
 };
 
+/// Whether NT's answers are the exact ones: true unless its category is
+/// floating.
 template <class NT>
 inline constexpr bool is_exact_v = number_traits<NT>::category != number_category::floating;
 

@@ -1,5 +1,6 @@
 #pragma once
-// The orientation predicate: the one sign question everything else is made of.
+/// \file
+/// The orientation predicate: the one sign question everything else is made of.
 
 #include <type_traits>
 
@@ -19,7 +20,13 @@ struct has_exact_double_fallback<NT, std::void_t<decltype(number_traits<NT>::exa
 
 /// Sign of the signed area [a b c]: +1 when c lies left of the directed line
 /// a->b (counter-clockwise turn), -1 when right, 0 when the three are collinear.
-/// Exact when NT's ring operations are exact.
+/// Two coinciding points are collinear with any third. The determinant is
+/// evaluated in NT, its sign taken by number_traits::sign: exact when NT's
+/// ring operations are exact. For a filtered NT the sign is exact, or the
+/// call throws uncertain_sign (certified, interval); a type with
+/// `exact_double_fallback` settles the sign exactly instead when the three
+/// points are input doubles. In a floating NT it is the sign of the rounded
+/// determinant, which can be wrong for nearly collinear points.
 template <class NT>
 int orientation(const point<NT>& a, const point<NT>& b, const point<NT>& c) {
     using tr = number_traits<NT>;
@@ -37,7 +44,9 @@ int orientation(const point<NT>& a, const point<NT>& b, const point<NT>& c) {
     return tr::sign(det);
 }
 
-/// Whether p, known to be collinear with a and b, lies on the closed segment [a, b].
+/// Whether p, known to be collinear with a and b, lies on the closed segment
+/// [a, b] (endpoints included; for a == b, whether p is that point). Compares
+/// coordinates only, so the result is meaningless when p is not collinear.
 template <class NT>
 bool within_collinear_segment(const point<NT>& p, const point<NT>& a, const point<NT>& b) {
     const bool in_x = (a.x <= p.x && p.x <= b.x) || (b.x <= p.x && p.x <= a.x);
@@ -45,7 +54,8 @@ bool within_collinear_segment(const point<NT>& p, const point<NT>& a, const poin
     return in_x && in_y;
 }
 
-/// Whether p lies on the closed segment [a, b] (a == b allowed).
+/// Whether p lies on the closed segment [a, b] (endpoints included; a == b
+/// allowed, then p must be that point). Exact when orientation() is.
 template <class NT>
 bool on_segment(const point<NT>& p, const point<NT>& a, const point<NT>& b) {
     return orientation(a, b, p) == 0 && within_collinear_segment(p, a, b);

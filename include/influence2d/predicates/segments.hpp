@@ -1,5 +1,8 @@
 #pragma once
-// Closed segment-segment questions: intersection and distance bounds.
+/// \file
+/// Closed segment-segment questions: intersection and distance bounds. All of
+/// them use ring operations and comparisons only, so they are exact when NT's
+/// ring operations are; a filtered NT gives the exact answer or throws.
 
 #include "influence2d/core/point.hpp"
 #include "influence2d/predicates/orientation.hpp"
@@ -8,7 +11,9 @@ namespace influence2d {
 
 /// Whether the closed segments [a, b] and [c, d] share a point, given
 /// o_c = orientation(a, b, c) and o_d = orientation(a, b, d) already evaluated
-/// (the detector has them from its straddle test). Degenerate segments allowed.
+/// (the detector has them from its straddle test). Touching counts: a shared
+/// endpoint, an endpoint on the other segment, or a collinear overlap.
+/// Degenerate segments (a == b or c == d: points) are allowed.
 template <class NT>
 bool segments_intersect(int o_c, int o_d, const point<NT>& a, const point<NT>& b,
                         const point<NT>& c, const point<NT>& d) {
@@ -29,16 +34,18 @@ bool segments_intersect(int o_c, int o_d, const point<NT>& a, const point<NT>& b
     return orientation(c, d, a) * orientation(c, d, b) <= 0;
 }
 
-/// Whether the closed segments [a, b] and [c, d] share a point.
+/// Whether the closed segments [a, b] and [c, d] share a point (touching
+/// counts; degenerate segments allowed).
 template <class NT>
 bool segments_intersect(const point<NT>& a, const point<NT>& b, const point<NT>& c,
                         const point<NT>& d) {
     return segments_intersect(orientation(a, b, c), orientation(a, b, d), a, b, c, d);
 }
 
-/// Whether dist(p, [a, b])^2 <= d2, with ring operations only:
-/// beyond an end the distance is to that end; in between it is
-/// |ab x ap|^2 / |ab|^2, compared after multiplying by |ab|^2.
+/// Whether dist(p, [a, b])^2 <= d2, for the closed segment and d2 >= 0 the
+/// squared bound (equality counts). Ring operations only: beyond an end the
+/// distance is to that end; in between it is |ab x ap|^2 / |ab|^2, compared
+/// after multiplying by |ab|^2. For a == b, the distance to that point.
 template <class NT>
 bool point_segment_within(const point<NT>& p, const point<NT>& a, const point<NT>& b, const NT& d2) {
     const NT abx = b.x - a.x, aby = b.y - a.y;
@@ -54,8 +61,9 @@ bool point_segment_within(const point<NT>& p, const point<NT>& a, const point<NT
     return !(cross * cross > d2 * ab2);
 }
 
-/// Whether dist([a, b], [c, d])^2 <= d2: the segments meet, or an endpoint of
-/// one is within the distance of the other.
+/// Whether dist([a, b], [c, d])^2 <= d2 (d2 >= 0; equality counts): the
+/// segments meet, or an endpoint of one is within the distance of the other.
+/// Degenerate segments allowed.
 template <class NT>
 bool segments_within(const point<NT>& a, const point<NT>& b, const point<NT>& c,
                      const point<NT>& d, const NT& d2) {
