@@ -15,6 +15,8 @@ void register_study(CLI::App& app);
 void register_bench(CLI::App& app);
 /// `influence2d audit`: the degeneracies of a polygon file.
 void register_audit(CLI::App& app);
+/// `influence2d render`: a scene drawn as SVG.
+void register_render(CLI::App& app);
 
 /// Thrown by a command to end the tool with `code` after its output is done.
 struct exit_status {

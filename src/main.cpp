@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
     influence2d::cli::register_study(app);
     influence2d::cli::register_bench(app);
     influence2d::cli::register_audit(app);
+    influence2d::cli::register_render(app);
 
     try {
         app.parse(argc, argv);
