@@ -1,7 +1,8 @@
 # The test package_consumer: installs the library from BUILD_DIR into a fresh
 # prefix under WORK_DIR, then configures, builds and runs tests/consumer three
 # ways (find_package of the installed package, add_subdirectory, FetchContent),
-# and compiles the README's example with the flags pkg-config gives.
+# and compiles the README's example and the adapter use with the flags
+# pkg-config gives.
 #   cmake -DSOURCE_DIR=... -DBUILD_DIR=... -DWORK_DIR=... -DCXX=... -P run.cmake
 function(run)
     execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -33,6 +34,8 @@ foreach(use package subdirectory fetchcontent)
     endif()
     run(${dir}/exact_mode)
     message(STATUS "${use}: ${run_output}")
+    run(${dir}/adapters)
+    message(STATUS "${use}: ${run_output}")
 endforeach()
 
 find_program(PKG_CONFIG pkg-config)
@@ -43,6 +46,9 @@ if(PKG_CONFIG)
     separate_arguments(cflags UNIX_COMMAND "${cflags}")
     run(${CXX} ${cflags} ${SOURCE_DIR}/tests/examples/readme_example.cpp -o ${WORK_DIR}/readme_example_pc)
     run(${WORK_DIR}/readme_example_pc)
+    message(STATUS "pkg-config: ${run_output}")
+    run(${CXX} ${cflags} ${SOURCE_DIR}/tests/consumer/adapters.cpp -o ${WORK_DIR}/adapters_pc)
+    run(${WORK_DIR}/adapters_pc)
     message(STATUS "pkg-config: ${run_output}")
 else()
     message(STATUS "pkg-config not found: the pkg-config file is installed but not tried")
