@@ -5,6 +5,7 @@
 // pairs the exact detector reports.
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <filesystem>
@@ -45,7 +46,7 @@ struct render_options {
     double gap = 9.0;
     double distance = 0.0;
     std::string shape = "capsule";
-    std::vector<std::size_t> frames;  // empty: chosen by the command
+    std::vector<std::string> frames;  // empty: chosen by the command
     std::string out;
     std::size_t width = 800;
     bool no_cones = false;
@@ -103,7 +104,19 @@ scene_input read_scene(const render_options& o) {
 std::vector<std::size_t> chosen_frames(const render_options& o, const scene_input& in, const detector_options& options,
                                        std::string& first) {
     const std::size_t count = in.poses.size();
-    std::vector<std::size_t> frames = o.frames;
+    std::vector<std::size_t> frames;
+    for (const std::string& text : o.frames) {
+        if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
+            throw invalid_input("--frames: '" + text + "' is not a frame number (frames are numbered from 0)");
+        // A number too large for std::size_t is out of range all the same.
+        std::size_t f = 0;
+        const bool fits = std::from_chars(text.data(), text.data() + text.size(), f).ec == std::errc();
+        if (!fits || f >= count)
+            throw invalid_input("--frames: frame " + text + " is out of range: " + in.motion + " has " +
+                                std::to_string(count) + " frame" + (count == 1 ? "" : "s") +
+                                (count == 0 ? "" : " (0 to " + std::to_string(count - 1) + ")"));
+        frames.push_back(f);
+    }
     if (frames.empty()) {
         for (std::size_t k = 0; k < 4 && k < count; ++k) frames.push_back(k * count / 4);
         certified_detector<detector> scan(in.a, in.b, options);
@@ -115,11 +128,6 @@ std::vector<std::size_t> chosen_frames(const render_options& o, const scene_inpu
                 break;
             }
     }
-    for (std::size_t f : frames)
-        if (f >= count)
-            throw invalid_input("--frames: frame " + std::to_string(f) + " is out of range: " + in.motion + " has " +
-                                std::to_string(count) + " frame" + (count == 1 ? "" : "s") +
-                                (count == 0 ? "" : " (0 to " + std::to_string(count - 1) + ")"));
     std::sort(frames.begin(), frames.end());
     frames.erase(std::unique(frames.begin(), frames.end()), frames.end());
     return frames;
@@ -545,7 +553,7 @@ private:
             s += svg::close("g");
         }
         svg::element outline("path");
-        outline.attr("class", "static").attr("d", a_path.str());
+        outline.attr("class", "static-polygon").attr("d", a_path.str());
         s += painted(outline, static_outline_paint, view_.per_pixel()).empty();
 
         if (!o_.no_extended)
@@ -557,7 +565,7 @@ private:
                 pairs += (pairs.empty() ? "" : ";") + std::to_string(p.static_edge) + ":" + std::to_string(p.moving_edge);
             const bool contained = f.result.collides && f.result.pairs.empty();
             svg::element e("path");
-            e.attr("class", contained ? "moving contained" : "moving")
+            e.attr("class", contained ? "moving-polygon contained" : "moving-polygon")
                 .index("data-frame", f.index)
                 .attr("data-collides", f.result.collides ? "1" : "0")
                 .attr("data-pairs", pairs)
@@ -591,29 +599,50 @@ private:
         return s;
     }
 
-    /// "frame k" at each shown frame, in pixels: centred over B, above its
-    /// box for every other frame and below it for the others, so that the
-    /// labels of nearby frames do not cover each other; kept in the picture.
+    /// "frame k" at each shown frame, in pixels: over B's box, else under it,
+    /// right or left of it, the first of these places that no earlier label
+    /// takes (judged by an estimate of the text's width); kept in the picture.
     std::string labels(double top) const {
         std::string s;
-        for (std::size_t k = 0; k < frames_.size(); ++k) {
-            const shown_frame& f = frames_[k];
+        std::vector<box> taken;  // the labels placed, in pixels
+        for (const shown_frame& f : frames_) {
+            const std::string text = "frame " + std::to_string(f.index) + (f.result.collides ? " (collides)" : "");
+            const double w = 6.2 * static_cast<double>(text.size()), h = 12;
             box b;
-            for (const auto& v : f.b) b.add(v);
-            const double y = k % 2 == 0 ? view_.pixel_y(b.max_y) - 5 : view_.pixel_y(b.min_y) + 13;
-            const double x = std::clamp(view_.pixel_x(f.p.x), 50.0, view_.pixel_width() - 50);
+            for (const auto& v : f.b) b.add({view_.pixel_x(v.x), view_.pixel_y(v.y)});
+            const double mid_x = b.min_x / 2 + b.max_x / 2, mid_y = b.min_y / 2 + b.max_y / 2;
+            // Each place as the label's box: left, top, right, bottom.
+            const std::vector<box> places = {{mid_x - w / 2, b.min_y - 4 - h, mid_x + w / 2, b.min_y - 4},
+                                             {mid_x - w / 2, b.max_y + 3, mid_x + w / 2, b.max_y + 3 + h},
+                                             {b.max_x + 5, mid_y - h / 2, b.max_x + 5 + w, mid_y + h / 2},
+                                             {b.min_x - 5 - w, mid_y - h / 2, b.min_x - 5, mid_y + h / 2}};
+            box place = places.front();
+            for (const box& candidate : places) {
+                bool free = true;
+                for (const box& t : taken)
+                    free = free && (candidate.max_x < t.min_x || candidate.min_x > t.max_x ||
+                                    candidate.max_y < t.min_y || candidate.min_y > t.max_y);
+                if (free) {
+                    place = candidate;
+                    break;
+                }
+            }
+            // Kept within the picture.
+            const double dx = std::clamp(place.min_x, 2.0, std::max(2.0, view_.pixel_width() - 2 - w)) - place.min_x;
+            const double dy = std::clamp(place.min_y, 2.0, std::max(2.0, view_.pixel_height() - 4 - h)) - place.min_y;
+            place = {place.min_x + dx, place.min_y + dy, place.max_x + dx, place.max_y + dy};
+            taken.push_back(place);
             s += svg::element("text")
                      .attr("class", "frame-label")
                      .index("data-frame", f.index)
-                     .num("x", x, 1)
-                     .num("y", top + std::clamp(y, 12.0, view_.pixel_height() - 4), 1)
-                     .attr("text-anchor", "middle")
+                     .num("x", place.min_x, 1)
+                     .num("y", top + place.max_y - 2, 1)
                      .attr("font-size", "11")
                      .attr("fill", f.result.collides ? "#a00010" : "#3d1f63")
                      .attr("stroke", "white")
                      .attr("stroke-width", "3")
                      .attr("paint-order", "stroke")
-                     .with_text("frame " + std::to_string(f.index) + (f.result.collides ? " (collides)" : ""));
+                     .with_text(text);
         }
         s += svg::element("text")
                  .attr("class", "centroid-label")
