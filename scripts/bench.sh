@@ -2,8 +2,9 @@
 # Benchmarks: installs Google Benchmark if missing, builds the benchmarks in
 # build-bench (Release, -DINFLUENCE2D_BUILD_BENCHMARKS=ON), runs them with 3
 # repetitions into build-bench/bench.json, and prints per scene the detector's
-# time per frame in double, certified and exact, and the ratios to double
-# (medians of the repetitions, CPU time).
+# time per frame in double, certified and exact, and the ratios to double,
+# and the time of each compile-time feature build (medians of the
+# repetitions, CPU time).
 #
 #   bash scripts/bench.sh [extra benchmark arguments, e.g. --benchmark_filter=detector]
 set -euo pipefail
@@ -34,15 +35,18 @@ with open(sys.argv[1]) as f:
 per_frame = {}   # (scene, type) -> ns per frame
 per_call = {}    # (predicate, type) -> ns per call
 fallbacks = {}   # (scene, type) -> exact frames per pass
+per_feature = {} # (scene, type, build) -> (ns per frame, state bytes)
 scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
 for b in data["benchmarks"]:
     if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
         continue
-    kind, what, nt = b.get("run_name", b["name"]).split("/")
+    kind, what, nt, *build = b.get("run_name", b["name"]).split("/")
     ns = b["cpu_time"] * scale[b.get("time_unit", "ns")]
     if kind == "detector":
         per_frame[(what, nt)] = ns / b["frames"]
         fallbacks[(what, nt)] = b.get("exact_frames", 0)
+    elif kind == "features":
+        per_feature[(what, nt, build[0])] = (ns / b["frames"], b.get("state_bytes", 0))
     else:
         per_call[(what, nt)] = ns / 4096
 
@@ -66,6 +70,16 @@ if per_frame:
     print(f"{'scene':<20} " + " ".join(f"{t:>11}" for t in types))
     for s in scenes:
         print(f"{s:<20} " + " ".join(f"{fmt(per_frame.get((s, t))):>11}" for t in types))
+if per_feature:
+    builds = ["minimal", "coherence", "all_unused", "all_witness"]
+    print()
+    print("compile-time features, ns per frame (state bytes); all_unused/coherence = the cost of unused features:")
+    print(f"{'scene':<20} {'type':<7} " + " ".join(f"{c:>18}" for c in builds) + f" {'all_unused/coherence':>21}")
+    for (s, t) in sorted({(s, t) for s, t, _ in per_feature}):
+        cells = [per_feature.get((s, t, c)) for c in builds]
+        row = " ".join(f"{'-' if v is None else fmt(v[0]) + ' (' + str(int(v[1])) + ')':>18}" for v in cells)
+        r = ratio(cells[2][0], cells[1][0]) if cells[1] and cells[2] else "-"
+        print(f"{s:<20} {t:<7} {row} {r:>21}")
 if per_call:
     preds = sorted({p for p, _ in per_call})
     types = sorted({t for _, t in per_call}, key=lambda t: per_call.get(("orientation", t), 0))

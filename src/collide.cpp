@@ -71,7 +71,7 @@ run_result time_frames(Detector& det, const std::vector<pose>& poses) {
 }
 
 /// Builds the detector (not timed), then times the frame loop alone.
-template <template <class> class Detector, class NT>
+template <template <class...> class Detector, class NT>
 run_result run_frames(const polygon& a, const polygon& b, const std::vector<pose>& poses,
                       const detector_options& options) {
     Detector<NT> det(a, b, options);
@@ -81,7 +81,7 @@ run_result run_frames(const polygon& a, const polygon& b, const std::vector<pose
 /// The same for a filtered number type: Wrapper<Detector> runs Detector in the
 /// fast type and answers a frame again in exact rationals when a sign is not
 /// certain (certified_detector, interval_detector).
-template <template <template <class> class> class Wrapper, template <class> class Detector>
+template <template <template <class...> class> class Wrapper, template <class...> class Detector>
 run_result run_filtered(const polygon& a, const polygon& b, const std::vector<pose>& poses,
                         const detector_options& options) {
     Wrapper<Detector> det(a, b, options);
@@ -98,7 +98,7 @@ run_result run_algorithm(const std::string& algorithm, const polygon& a, const p
     return run_frames<detector, NT>(a, b, poses, options);
 }
 
-template <template <template <class> class> class Wrapper>
+template <template <template <class...> class> class Wrapper>
 run_result run_filtered_algorithm(const std::string& algorithm, const polygon& a, const polygon& b,
                                   const std::vector<pose>& poses, const detector_options& options) {
     if (algorithm == "brute-force") return run_filtered<Wrapper, brute_force_detector>(a, b, poses, options);

@@ -69,11 +69,11 @@ template <class D>
 std::size_t exact_frames_of(const D&) {
     return 0;
 }
-template <template <class> class D>
+template <template <class...> class D>
 std::size_t exact_frames_of(const certified_detector<D>& d) {
     return d.exact_frames();
 }
-template <template <class> class D>
+template <template <class...> class D>
 std::size_t exact_frames_of(const interval_detector<D>& d) {
     return d.exact_frames();
 }

@@ -53,8 +53,9 @@ struct ring_input {
 /// cross, rings of zero area (their edges are still boundary).
 class polygon {
 public:
-    /// An empty placeholder to assign to: no ring, no vertex. Only size(),
-    /// vertices() and assignment may be used on it.
+    /// An empty placeholder to assign to: no ring, no vertex (size() and
+    /// ring_count() are 0). Detectors and the readers' writers need a polygon
+    /// built from rings.
     polygon() = default;
 
     /// Builds the polygon from its rings, in time linear in the vertices.
@@ -81,7 +82,7 @@ public:
     /// ring's first vertex after its last).
     std::size_t next(std::size_t i) const { return next_[i]; }
     /// The number of rings, as given to the constructor.
-    std::size_t ring_count() const { return ring_begin_.size() - 1; }
+    std::size_t ring_count() const { return ring_begin_.empty() ? 0 : ring_begin_.size() - 1; }
     /// The index of ring r's first vertex (and edge); requires r < ring_count().
     std::size_t ring_begin(std::size_t r) const { return ring_begin_[r]; }
     /// One past the index of ring r's last vertex (and edge).
@@ -98,6 +99,12 @@ public:
     const point<double>& centroid() const { return centroid_; }
     /// The box of all vertices.
     const box& bounds() const { return bounds_; }
+    /// Bytes of the heap blocks the polygon holds.
+    std::size_t heap_bytes() const {
+        return vertices_.capacity() * sizeof(point<double>) +
+               (next_.capacity() + ring_begin_.capacity() + source_edge_.capacity()) * sizeof(std::size_t) +
+               roles_.capacity() * sizeof(ring_role);
+    }
     /// Signed area in long double, after reorientation (non-negative for a
     /// valid polygon): outer rings add, holes subtract. Rounded, so its sign
     /// is not exact; signed_area_sign() gives a ring's exact sign.

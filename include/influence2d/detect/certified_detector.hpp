@@ -14,7 +14,7 @@ namespace influence2d {
 /// cannot settle is answered again in exact rationals: every answer is the
 /// exact reference's (the fallback needs CGAL, number/cgal.hpp). D is detector or
 /// brute_force_detector.
-template <template <class> class D>
+template <template <class...> class D>
 using certified_detector = filtered_detector<D, certified>;
 
 }  // namespace influence2d

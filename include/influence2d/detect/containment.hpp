@@ -19,18 +19,19 @@ namespace influence2d {
 /// of B's radius, with any rounding margin), a ring of A whose first vertex is
 /// farther than that from B's centroid is skipped without a test; with
 /// `a_may_be_inside_b` false (the caller knows A does not fit in B) no ring of
-/// A is tested, and with `b_may_be_inside_a` false no ring of B.
-template <class NT>
+/// A is tested, and with `b_may_be_inside_a` false no ring of B. With
+/// MultiRing false both polygons are taken to have one ring.
+template <class NT, bool MultiRing = true>
 bool one_contains_other(const static_scene<NT>& a, posed_polygon<NT>& b, std::optional<double> reach = std::nullopt,
                         bool a_may_be_inside_b = true, bool b_may_be_inside_a = true) {
     const polygon& bs = b.shape();
-    for (std::size_t r = 0; r < bs.ring_count() && b_may_be_inside_a; ++r)
+    for (std::size_t r = 0; r < (MultiRing ? bs.ring_count() : 1) && b_may_be_inside_a; ++r)
         if (a.areas.locate(b.vertex(bs.ring_begin(r))) != location::outside) return true;
     if (!a_may_be_inside_b) return false;
     const NT reach_nt = number_traits<NT>::from_double(reach.value_or(0));
     const NT reach2 = reach_nt * reach_nt;
     const polygon& as = a.shape;
-    for (std::size_t r = 0; r < as.ring_count(); ++r) {
+    for (std::size_t r = 0; r < (MultiRing ? as.ring_count() : 1); ++r) {
         const point<NT>& v = a.covering.start(as.ring_begin(r));
         if (reach && squared_distance(v, b.centroid()) > reach2) continue;
         if (locate(bs, b.vertices(), b.centroid(), v) != location::outside) return true;

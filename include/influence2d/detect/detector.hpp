@@ -1,13 +1,16 @@
 #pragma once
-// The sound detector: the paper's method with the defects of its literal form
-// removed (method.md section 7).
+/// \file
+/// The sound detector: the paper's method with the defects of its literal
+/// form removed (method.md section 7).
 
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "influence2d/covering/inclusion.hpp"
 #include "influence2d/detect/containment.hpp"
+#include "influence2d/detect/features.hpp"
 #include "influence2d/detect/pairs.hpp"
 #include "influence2d/detect/result.hpp"
 #include "influence2d/detect/scene.hpp"
@@ -19,7 +22,7 @@ namespace influence2d {
 
 /// Counters of the work a detector did, for studies of its filters.
 struct detector_statistics {
-    std::size_t frames = 0;
+    std::size_t frames = 0;             ///< frames asked (calls of collide)
     std::size_t circle_rejections = 0;  ///< frames answered by the bounding circles
     std::size_t candidate_rebuilds = 0; ///< frames that gathered candidates anew
     std::size_t candidate_edges = 0;    ///< static edges inside their extended area
@@ -27,6 +30,35 @@ struct detector_statistics {
     std::size_t segment_tests = 0;      ///< exact segment-pair tests
     std::size_t containment_tests = 0;  ///< frames that ran the inclusion tests
 };
+
+namespace detail {
+
+/// A member of type T that exists only when `On`; empty otherwise, so that a
+/// class deriving from it stores nothing for it (empty base). Tag tells
+/// several of them apart.
+template <class T, bool On, int Tag>
+struct feature_state {
+    T value{};
+};
+template <class T, int Tag>
+struct feature_state<T, false, Tag> {};
+
+/// What temporal coherence keeps between frames: where the cached candidates
+/// were gathered, and the location of that point when there were none.
+struct coherence_state {
+    double skin = 0;  ///< how far the centroid may move before gathering anew
+    point<double> center;
+    bool valid = false;
+    bool center_inside = false;
+};
+
+/// The separation distance in NT and its square.
+template <class NT>
+struct distance_state {
+    NT distance, distance2;
+};
+
+}  // namespace detail
 
 /// Collision detection between a static polygon A and a moving polygon B, one
 /// pose of B per frame. Exact when NT is (number_traits<NT>::category is not
@@ -60,26 +92,64 @@ struct detector_statistics {
 ///   5. No pair: the regions meet iff one contains a ring of the other. A
 ///      ring's vertex outside the other polygon's bounding circle or box (in
 ///      double, widened) is outside it without a locate.
-template <class NT>
-class detector {
+///
+/// Features (features.hpp) are chosen at compile time; `detector<NT>` has them
+/// all. Without `witness` and `distance` the frame stops at the first meeting
+/// pair and the segment test is the only pair test; without `coherence` the
+/// candidates are gathered every frame; without `holes` the ring bookkeeping
+/// is gone (one ring each); without `statistics` nothing is counted.
+template <class NT, class Features = all_features>
+class detector : detail::feature_state<detector_statistics, Features::has(features::statistics), 0>,
+                 detail::feature_state<detail::coherence_state, Features::has(features::coherence), 1>,
+                 detail::feature_state<detail::pair_collector, Features::has(features::witness), 2>,
+                 detail::feature_state<detail::distance_state<NT>, Features::has(features::distance), 3> {
+    static constexpr bool with_statistics = Features::has(features::statistics);
+    static constexpr bool with_coherence = Features::has(features::coherence);
+    static constexpr bool with_witness = Features::has(features::witness);
+    static constexpr bool with_distance = Features::has(features::distance);
+    static constexpr bool with_holes = Features::has(features::holes);
+    using statistics_state = detail::feature_state<detector_statistics, with_statistics, 0>;
+    using coherence_state = detail::feature_state<detail::coherence_state, with_coherence, 1>;
+    using witness_state = detail::feature_state<detail::pair_collector, with_witness, 2>;
+    using distance_state = detail::feature_state<detail::distance_state<NT>, with_distance, 3>;
+
 public:
+    /// The feature set the detector was built with.
+    using feature_set_type = Features;
+
+    /// Precomputes A's covering, influence areas and edge grid for B's reach.
+    /// Throws std::invalid_argument when `options` asks for witnesses or a
+    /// distance > 0 the detector was built without (or d < 0 or not finite),
+    /// invalid_input for a polygon of several rings without features::holes.
     detector(const polygon& static_polygon, const polygon& moving_polygon, detector_options options = {})
-        : a_(std::make_shared<const static_scene<NT>>(static_polygon)), b_(moving_polygon), options_(options) {
+        : a_(std::make_shared<const static_scene<NT>>(checked(static_polygon, "static"))),
+          b_(checked(moving_polygon, "moving")),
+          options_(options) {
         using tr = number_traits<NT>;
-        reach_ = moving_reach(b_.radius(), options_.distance);
-        skin_ = options_.temporal_coherence ? 0.25 * reach_ : 0.0;
-        margin_ = tr::filter_slack * 4 * (a_->scale + a_->radius + reach_ + skin_ + coordinate_scale(moving_polygon)) +
+        if (!(options_.distance >= 0) || !std::isfinite(options_.distance))
+            throw std::invalid_argument("detector: the distance must be finite and >= 0");
+        if (!with_witness && options_.witness)
+            throw std::invalid_argument("detector: built without features::witness, options.witness must be false");
+        if (!with_distance && options_.distance != 0)
+            throw std::invalid_argument("detector: built without features::distance, options.distance must be 0");
+        reach_ = moving_reach(b_.radius(), distance());
+        if constexpr (with_coherence) coherence_state::value.skin = options_.temporal_coherence ? 0.25 * reach_ : 0.0;
+        margin_ = tr::filter_slack * 4 * (a_->scale + a_->radius + reach_ + skin() + coordinate_scale(moving_polygon)) +
                   std::numeric_limits<double>::min();
-        grid_ = edge_grid(a_->shape, reach_ + skin_, margin_);
+        grid_ = edge_grid(a_->shape, reach_ + skin(), margin_);
         for (const auto& v : a_->shape.vertices()) a_box_.add(v);
         make_chunks();
-        distance_ = tr::from_double(options_.distance);
-        distance2_ = distance_ * distance_;
+        if constexpr (with_distance) {
+            distance_state::value.distance = tr::from_double(options_.distance);
+            distance_state::value.distance2 = distance_state::value.distance * distance_state::value.distance;
+        }
     }
 
+    /// Whether the closed regions of A and of B posed by q are at distance
+    /// <= d (they meet, for d = 0); with witnesses, every edge pair within d.
     frame_result collide(const pose& q) {
         using tr = number_traits<NT>;
-        ++stats_.frames;
+        tally(&detector_statistics::frames);
         const rotation_pose t(q);
         b_.place(t);
         const point<double> pd = b_.approximate_centroid();
@@ -93,20 +163,25 @@ public:
         // 1. Bounding circles (a filter: in double, widened by the margin).
         const point<double>& o = a_->shape.centroid();
         if (filter_length(pd.x - o.x, pd.y - o.y) > a_->radius + n + frame_margin) {
-            ++stats_.circle_rejections;
+            tally(&detector_statistics::circle_rejections);
             return {};
         }
 
         // 2. Candidates gathered within n + skin, reused while p moves < skin.
-        if (!cache_valid_ || filter_length(pd.x - cache_center_.x, pd.y - cache_center_.y) > skin_) gather(pd, frame_margin);
+        if constexpr (with_coherence) {
+            const detail::coherence_state& c = coherence_state::value;
+            if (!c.valid || filter_length(pd.x - c.center.x, pd.y - c.center.y) > c.skin) gather(pd, frame_margin);
+        } else {
+            gather(pd, frame_margin);
+        }
 
         // 3. B's edges against A's bounding circle, then the extended areas of
         // length n (filters: in double, widened).
         const polygon& bs = b_.shape();
         if (chunks_.size() <= cache_.size() + 1 &&
-            edges_clear_of(t, o, a_->radius + options_.distance + 2 * frame_margin, frame_margin)) {
-            ++stats_.disc_rejections;
-            ++stats_.containment_tests;
+            edges_clear_of(t, o, a_->radius + distance() + 2 * frame_margin, frame_margin)) {
+            tally(&detector_statistics::disc_rejections);
+            tally(&detector_statistics::containment_tests);
             // B's vertices lie outside A's circle, so outside A; A can lie in
             // B only if its first vertex lies within B's circle.
             const point<double>& a0 = a_->shape.vertex(0);
@@ -121,7 +196,7 @@ public:
         box bb;  // with B posed in double: B's box grown by d and the margin
         if (placed) {
             for (std::size_t j = 0; j < bs.size(); ++j) bb.add(b_.approximate(j));
-            bb = bb.inflated(options_.distance + frame_margin);
+            bb = bb.inflated(distance() + frame_margin);
         }
         if (!bb.empty()) {
             // Only edges whose box meets B's can meet B.
@@ -132,19 +207,20 @@ public:
                     may_be_in_extended_area(options_.shape, pd, u, v, n + frame_margin))
                     candidates_.push_back(e);
             }
-            stats_.candidate_edges += candidates_.size();
+            tally(&detector_statistics::candidate_edges, candidates_.size());
             if (candidates_.empty()) {  // no boundary pair: step 5
-                ++stats_.containment_tests;
+                tally(&detector_statistics::containment_tests);
                 return {contains(n, frame_margin), {}};
             }
         } else {
             for (std::uint32_t e : cache_)
                 if (may_be_in_extended_area(options_.shape, pd, as.vertex(e), as.vertex(as.next(e)), n + frame_margin))
                     candidates_.push_back(e);
-            stats_.candidate_edges += candidates_.size();
+            tally(&detector_statistics::candidate_edges, candidates_.size());
             if (candidates_.empty()) {
-                ++stats_.containment_tests;
-                if (cache_.empty()) return {cache_center_inside_, {}};
+                tally(&detector_statistics::containment_tests);
+                if constexpr (with_coherence)
+                    if (cache_.empty()) return {coherence_state::value.center_inside, {}};
                 // p outside A's bounding circle (widened) is outside A.
                 if (filter_length(pd.x - o.x, pd.y - o.y) > a_->radius + 2 * frame_margin) return {};
                 return {a_->areas.locate(b_.centroid()) == location::inside, {}};
@@ -153,40 +229,94 @@ public:
 
         // 4. Detailed test on the candidates.
         b_.place_approximate();
-        pairs_.clear();
+        if constexpr (with_witness) witness_state::value.clear();
         for (std::uint32_t e : candidates_)
-            if (test_edge(e, frame_margin) && !options_.witness) return {true, {}};
+            if (test_edge(e, frame_margin) && !witnessing()) return {true, {}};
         frame_result r;
-        if (!pairs_.empty()) {
-            r.collides = true;
-            r.pairs = pairs_.in_input_numbering(a_->shape, b_.shape());
-            return r;
+        if constexpr (with_witness) {
+            const detail::pair_collector& pairs = witness_state::value;
+            if (!pairs.empty()) {
+                r.collides = true;
+                r.pairs = pairs.in_input_numbering(a_->shape, b_.shape());
+                return r;
+            }
         }
 
         // 5. Containment.
-        ++stats_.containment_tests;
+        tally(&detector_statistics::containment_tests);
         r.collides = contains(n, frame_margin);
         return r;
     }
 
-    const detector_statistics& statistics() const { return stats_; }
+    /// Counters of the work done so far (only with features::statistics).
+    const detector_statistics& statistics() const {
+        static_assert(with_statistics, "detector built without features::statistics");
+        return statistics_state::value;
+    }
+    /// The options the detector was built with.
     const detector_options& options() const { return options_; }
 
+    /// Bytes the detector holds beyond A's precomputation (covering and
+    /// influence areas, the same for every feature set): its own size and the
+    /// capacities of its arrays.
+    std::size_t state_bytes() const {
+        const std::size_t grid = (grid_.cell_count() + 1 + grid_.entry_count()) * sizeof(std::uint32_t);
+        std::size_t bytes = sizeof(*this) + grid + chunks_.capacity() * sizeof(chunk) +
+                            (cache_.capacity() + candidates_.capacity()) * sizeof(std::uint32_t) + b_.heap_bytes();
+        if constexpr (with_witness) bytes += witness_state::value.heap_bytes();
+        return bytes;
+    }
+
 private:
+    /// The polygon, refused with several rings when built without holes.
+    static const polygon& checked(const polygon& p, const char* which) {
+        if (!with_holes && p.ring_count() != 1)
+            throw invalid_input(std::string("detector built without features::holes: the ") + which +
+                                " polygon has " + std::to_string(p.ring_count()) + " rings");
+        return p;
+    }
+    /// The separation distance (0 without features::distance).
+    double distance() const {
+        if constexpr (with_distance) return options_.distance;
+        return 0;
+    }
+    /// The skin of the candidate cache (0 without features::coherence).
+    double skin() const {
+        if constexpr (with_coherence) return coherence_state::value.skin;
+        return 0;
+    }
+    bool witnessing() const {
+        if constexpr (with_witness) return options_.witness;
+        return false;
+    }
+    template <class Counter>
+    void tally(Counter counter, std::size_t k = 1) {
+        if constexpr (with_statistics) statistics_state::value.*counter += k;
+    }
+    /// The end vertex of B's edge j.
+    std::size_t next_b(std::size_t j) const {
+        if constexpr (with_holes) return b_.shape().next(j);
+        return j + 1 == b_.size() ? 0 : j + 1;
+    }
+
     /// Gathers the edges within reach + skin of p into the cache. When there
     /// are none, the disk of that radius about p holds no boundary of A, so
     /// every point within the skin of p is located as p is: that is cached too.
+    /// Without features::coherence this is step 2 of every frame.
     void gather(const point<double>& pd, double frame_margin) {
-        ++stats_.candidate_rebuilds;
+        tally(&detector_statistics::candidate_rebuilds);
         cache_.clear();
-        const double keep = reach_ + skin_ + frame_margin + margin_;
+        const double keep = reach_ + skin() + frame_margin + margin_;
         const polygon& s = a_->shape;
         for (std::uint32_t e : grid_.query(pd))
             if (may_be_within(pd, s.vertex(e), s.vertex(s.next(e)), keep)) cache_.push_back(e);
-        cache_center_ = pd;
-        cache_valid_ = false;
-        if (cache_.empty()) cache_center_inside_ = a_->areas.locate(b_.centroid()) == location::inside;
-        cache_valid_ = options_.temporal_coherence;
+        if constexpr (with_coherence) {
+            detail::coherence_state& c = coherence_state::value;
+            c.center = pd;
+            c.valid = false;
+            if (cache_.empty()) c.center_inside = a_->areas.locate(b_.centroid()) == location::inside;
+            c.valid = options_.temporal_coherence;
+        }
     }
 
     /// Step 5, B's vertices posed in double: whether one region holds a ring
@@ -207,13 +337,13 @@ private:
             const polygon& bs = b_.shape();
             const point<double>& o = a_->shape.centroid();
             b_may_be_inside_a = false;
-            for (std::size_t r = 0; r < bs.ring_count() && !b_may_be_inside_a; ++r) {
+            for (std::size_t r = 0; r < (with_holes ? bs.ring_count() : 1) && !b_may_be_inside_a; ++r) {
                 const point<double>& v = b_.approximate(bs.ring_begin(r));
                 const double dist = filter_length(v.x - o.x, v.y - o.y);
                 b_may_be_inside_a = !(dist > a_->radius + 2 * frame_margin);  // NaN: may be
             }
         }
-        return one_contains_other(*a_, b_, std::optional<double>(n), a_may_fit, b_may_be_inside_a);
+        return one_contains_other<NT, with_holes>(*a_, b_, std::optional<double>(n), a_may_fit, b_may_be_inside_a);
     }
 
     /// The paper's detailed test as a filter in double: whether the exactly
@@ -250,7 +380,7 @@ private:
             if (filter_length(q.x - c.x, q.y - c.y) > reach + k.radius + frame_margin) continue;
             point<double> u = t.apply<double>(bs.vertex(k.first));
             for (std::size_t j = k.first; j < k.last; ++j) {
-                const point<double> v = t.apply<double>(bs.vertex(bs.next(j)));
+                const point<double> v = t.apply<double>(bs.vertex(next_b(j)));
                 if (may_be_within(c, u, v, reach)) return false;
                 u = v;
             }
@@ -263,7 +393,7 @@ private:
     /// from it.
     void make_chunks() {
         const polygon& bs = b_.shape();
-        for (std::size_t r = 0; r < bs.ring_count(); ++r)
+        for (std::size_t r = 0; r < (with_holes ? bs.ring_count() : 1); ++r)
             for (std::size_t first = bs.ring_begin(r); first < bs.ring_end(r); first += 8) {
                 chunk k;
                 k.first = first;
@@ -297,28 +427,38 @@ private:
         box eb;
         eb.add(as.vertex(e));
         eb.add(as.vertex(as.next(e)));
-        eb = eb.inflated(frame_margin + options_.distance);
+        eb = eb.inflated(frame_margin + distance());
         const point<NT>& a = cov.start(e);
         const point<NT>& b = cov.end(e);
         bool found = false;
         for (std::size_t j = 0; j < bs.size(); ++j) {
-            const std::size_t k = bs.next(j);
+            const std::size_t k = next_b(j);
             const point<double>& u = b_.approximate(j);
             const point<double>& v = b_.approximate(k);
             if (std::max(u.x, v.x) < eb.min_x || std::min(u.x, v.x) > eb.max_x || std::max(u.y, v.y) < eb.min_y ||
                 std::min(u.y, v.y) > eb.max_y)
                 continue;
-            if (options_.distance == 0 && same_side(as.vertex(e), as.vertex(as.next(e)), u, v, frame_margin)) continue;
-            ++stats_.segment_tests;
-            const bool meet =
-                options_.distance > 0
-                    ? segments_within(a, b, b_.vertex(j), b_.vertex(k), distance2_)
-                    : segments_intersect(orientation(a, b, b_.vertex(j)), orientation(a, b, b_.vertex(k)), a, b,
-                                         b_.vertex(j), b_.vertex(k));
+            if (distance() == 0 && same_side(as.vertex(e), as.vertex(as.next(e)), u, v, frame_margin)) continue;
+            tally(&detector_statistics::segment_tests);
+            const auto cross = [&] {
+                return segments_intersect(orientation(a, b, b_.vertex(j)), orientation(a, b, b_.vertex(k)), a, b,
+                                          b_.vertex(j), b_.vertex(k));
+            };
+            bool meet;
+            if constexpr (with_distance)
+                meet = options_.distance > 0
+                           ? segments_within(a, b, b_.vertex(j), b_.vertex(k), distance_state::value.distance2)
+                           : cross();
+            else
+                meet = cross();
             if (!meet) continue;
-            pairs_.add(e, j);
-            found = true;
-            if (!options_.witness) return true;
+            if constexpr (with_witness) {
+                witness_state::value.add(e, j);
+                found = true;
+                if (!options_.witness) return true;
+            } else {
+                return true;
+            }
         }
         return found;
     }
@@ -326,7 +466,7 @@ private:
     std::shared_ptr<const static_scene<NT>> a_;
     posed_polygon<NT> b_;
     detector_options options_;
-    double reach_ = 0, skin_ = 0, margin_ = 0;
+    double reach_ = 0, margin_ = 0;
     box a_box_;  ///< A's vertices
     struct chunk {
         point<double> center;
@@ -334,16 +474,12 @@ private:
         std::size_t first = 0, last = 0;  ///< B's edges [first, last) of one ring
     };
     std::vector<chunk> chunks_;
-    NT distance_, distance2_;
     edge_grid grid_;
 
+    /// The static edges within reach (+ skin) of where they were gathered:
+    /// kept between frames with features::coherence, else anew each frame.
     std::vector<std::uint32_t> cache_;
-    point<double> cache_center_;
-    bool cache_valid_ = false;
-    bool cache_center_inside_ = false;
     std::vector<std::uint32_t> candidates_;
-    detail::pair_collector pairs_;
-    detector_statistics stats_;
 };
 
 }  // namespace influence2d

@@ -56,7 +56,7 @@ struct fallback<First, Rest...> {
 /// complete, and it holds no other state between frames. Building `D<FastNT>`
 /// decides signs too (the covering's triangles); if one of those is not
 /// certain, every frame is answered exactly.
-template <template <class> class D, class FastNT, class... Uncertain>
+template <template <class...> class D, class FastNT, class... Uncertain>
 class filtered_detector {
 public:
     /// Builds the fast and the exact detector on the same polygons and

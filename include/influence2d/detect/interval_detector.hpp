@@ -23,7 +23,7 @@ namespace influence2d {
 /// The exact reference's answers through CGAL's intervals: every frame runs in `interval`,
 /// and a frame with a sign or a comparison the intervals cannot settle is
 /// answered again in exact rationals. D is detector or brute_force_detector.
-template <template <class> class D>
+template <template <class...> class D>
 using interval_detector = filtered_detector<D, interval, CGAL::Uncertain_conversion_exception>;
 
 }  // namespace influence2d

@@ -16,6 +16,7 @@ public:
     void clear() { pairs_.clear(); }
     void add(std::size_t i, std::size_t j) { pairs_.push_back({i, j}); }
     bool empty() const { return pairs_.empty(); }
+    std::size_t heap_bytes() const { return pairs_.capacity() * sizeof(edge_pair); }
 
     std::vector<edge_pair> in_input_numbering(const polygon& a, const polygon& b) const {
         std::vector<edge_pair> out;

@@ -1,11 +1,14 @@
 #pragma once
-// What the detectors precompute for the static polygon, and the moving
-// polygon posed in NT for a frame.
+/// \file
+/// What the detectors precompute for the static polygon, and the moving
+/// polygon posed in NT for a frame.
 
 #include <algorithm>
 #include <cstdint>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <type_traits>
 #include <vector>
 
 #include "influence2d/core/point.hpp"
@@ -17,12 +20,32 @@
 
 namespace influence2d {
 
+/// The polygon p, checked to lie within the range of a floating NT narrower
+/// than double (float): throws invalid_input naming the first vertex beyond
+/// it (`which` names the polygon). Other types take every finite double.
+template <class NT>
+const polygon& in_range_of(const polygon& p, const char* which) {
+    if constexpr (std::is_floating_point_v<NT> && std::numeric_limits<NT>::is_specialized) {
+        constexpr double top = static_cast<double>(std::numeric_limits<NT>::max());
+        if constexpr (top < std::numeric_limits<double>::max()) {
+            for (const point<double>& v : p.vertices())
+                if (std::fabs(v.x) > top || std::fabs(v.y) > top)
+                    throw invalid_input(std::string("the ") + which + " polygon's vertex (" + std::to_string(v.x) +
+                                        ", " + std::to_string(v.y) + ") is beyond the range of " +
+                                        number_traits<NT>::name);
+        }
+    }
+    return p;
+}
+
 /// The static polygon A: its covering from its centroid, its influence areas
 /// and its bounding radius. Immutable once built, so detectors share it.
 template <class NT>
 struct static_scene {
+    /// Builds everything from A (O(n log n) for n edges); throws invalid_input
+    /// for a polygon beyond NT's range (see in_range_of).
     explicit static_scene(const polygon& a)
-        : shape(a),
+        : shape(in_range_of<NT>(a, "static")),
           covering(shape, shape.centroid()),
           areas(covering),
           radius(bounding_radius(shape, shape.centroid())),
@@ -30,7 +53,7 @@ struct static_scene {
     static_scene(const static_scene&) = delete;
     static_scene& operator=(const static_scene&) = delete;
 
-    polygon shape;
+    polygon shape;                   ///< A as given (rings reoriented)
     triangle_covering<NT> covering;  ///< refers to `shape`
     influence_areas<NT> areas;       ///< refers to `covering`
     double radius;                   ///< bounds the distance from the centroid to A
@@ -45,14 +68,18 @@ struct static_scene {
 template <class NT>
 class posed_polygon {
 public:
+    /// B in its own frame, not yet posed; throws invalid_input for a polygon
+    /// beyond NT's range (see in_range_of).
     explicit posed_polygon(const polygon& b)
-        : shape_(b), local_centroid_(b.centroid()), radius_(bounding_radius(b, b.centroid())) {
+        : shape_(in_range_of<NT>(b, "moving")), local_centroid_(b.centroid()), radius_(bounding_radius(b, b.centroid())) {
         vertices_.resize(b.size());
         approximate_.resize(b.size());
         stamp_.assign(b.size(), 0);
     }
 
+    /// B in its own frame.
     const polygon& shape() const { return shape_; }
+    /// B's number of vertices (and edges).
     std::size_t size() const { return vertices_.size(); }
     /// Bounds the distance from the posed centroid to every posed vertex.
     double radius() const { return radius_; }
@@ -77,6 +104,7 @@ public:
     void place_approximate() {
         for (std::size_t j = 0; j < approximate_.size(); ++j) approximate_[j] = pose_.apply<double>(shape_.vertex(j));
     }
+    /// Vertex j posed in double by the last place_approximate() (rounded).
     const point<double>& approximate(std::size_t j) const { return approximate_[j]; }
 
     /// Vertex j posed in NT.
@@ -89,6 +117,11 @@ public:
     }
     /// The end vertex of edge j, posed in NT.
     const point<NT>& end(std::size_t j) { return vertex(shape_.next(j)); }
+    /// Bytes of the heap blocks held (capacities of the per-vertex arrays).
+    std::size_t heap_bytes() const {
+        return shape_.heap_bytes() + vertices_.capacity() * sizeof(point<NT>) +
+               approximate_.capacity() * sizeof(point<double>) + stamp_.capacity() * sizeof(std::uint64_t);
+    }
     /// Every vertex posed in NT.
     const std::vector<point<NT>>& vertices() {
         for (std::size_t j = 0; j < vertices_.size(); ++j) vertex(j);
@@ -123,6 +156,7 @@ NT squared_distance(const point<NT>& a, const point<NT>& b) {
     return dx * dx + dy * dy;
 }
 
+/// p rounded to double, coordinate by coordinate (number_traits::to_double).
 template <class NT>
 point<double> to_double_point(const point<NT>& p) {
     return {number_traits<NT>::to_double(p.x), number_traits<NT>::to_double(p.y)};
