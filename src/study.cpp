@@ -215,6 +215,11 @@ std::string study_md(const study_result& r, const study_cli_options& o) {
          "sign it could not certify, as for an edge collinear with the centroid); every question of that scene was "
          "answered in the fallback type.\n\n";
 
+    for (const type_summary& t : r.summaries)
+        if (t.refused_scenes > 0)
+            s += t.number_type + " refused " + std::to_string(t.refused_scenes) +
+                 " scenes whose coordinates lie beyond its range; their questions are not in its rows.\n\n";
+
     s += "## Worst examples\n\nThe first disagreements of each type and decision.\n\n";
     if (r.examples.empty()) s += "None.\n";
     for (const study_example& e : r.examples)

@@ -456,6 +456,7 @@ struct type_summary {
     std::size_t questions = 0;
     std::size_t fallbacks = 0;        ///< questions answered by the fallback type
     std::size_t setup_fallbacks = 0;  ///< scenes that could not be set up in the type itself
+    std::size_t refused_scenes = 0;   ///< scenes beyond the type's range (float): not asked
 };
 
 struct study_result {
@@ -531,7 +532,7 @@ private:
     void run_case(const study_case& c, std::index_sequence<I...>) {
         reference_decisions ref(c.a, c.b, c.distance);
         std::tuple<std::optional<typename Modes::evaluator_type>...> evaluators;
-        ((selected_[I] ? (void)std::get<I>(evaluators).emplace(c.a, c.b, c.distance) : (void)0), ...);
+        ((selected_[I] ? set_up(I, std::get<I>(evaluators), c) : void()), ...);
         std::vector<answer_batch> expected(kinds);
         answer_batch got;
         std::vector<query> questions;
@@ -582,6 +583,18 @@ private:
                 if (Mode::claims_exact && !o_.regressions_dir.empty())
                     write_regression<Mode>(c, kind, questions[k]);
             }
+        }
+    }
+
+    /// Builds a type's evaluator for the scene; a type that refuses the scene
+    /// (coordinates beyond float's range) is not asked its questions.
+    template <class Evaluator>
+    void set_up(std::size_t m, std::optional<Evaluator>& ev, const study_case& c) {
+        try {
+            ev.emplace(c.a, c.b, c.distance);
+        } catch (const invalid_input&) {
+            ev.reset();
+            ++summaries_[m].refused_scenes;
         }
     }
 

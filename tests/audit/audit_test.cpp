@@ -139,6 +139,20 @@ TEST_CASE("audit: rings", "[audit]") {
     }
 }
 
+TEST_CASE("audit: turns and crossings are decided exactly, not in rounded double", "[audit]") {
+    // Vertex 1 lies off the line from vertex 0 to vertex 2 by less than
+    // double's rounding of the orientation determinant, which evaluates to 0
+    // in double: not a collinear run.
+    const point<double> a{0.5, 0.5}, b{11.504331949566337, 11.504331949566339}, c{24, 24};
+    REQUIRE((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) == 0);
+    const audit_report r = audit_rings({wkt_ring{{a, b, c, {0, 24}, a}, ring_role::outer}});
+    CHECK(of(r, finding_kind::collinear_run).empty());
+    CHECK(of(r, finding_kind::spike).empty());
+    // The same vertex on the exact line is one.
+    const audit_report on = audit_wkt("POLYGON((0.5 0.5, 11.5 11.5, 24 24, 0 24, 0.5 0.5))");
+    CHECK(of(on, finding_kind::collinear_run).size() == 1);
+}
+
 TEST_CASE("audit: the centroid on an edge's line, and number ranges", "[audit]") {
     // A square's centroid (2 2) lies on the line of no edge; a half-turn
     // pinwheel's radial edges pass through it.

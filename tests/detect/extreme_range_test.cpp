@@ -56,3 +56,17 @@ TEST_CASE("extreme range: B inside a hole at 1e200, 1e-170 and subnormal scale",
         CHECK_FALSE(certified_detector<detector>(a, b).collide(s.p).collides);
     }
 }
+
+TEST_CASE("extreme range: float detectors refuse polygons beyond float's range", "[detector][extreme]") {
+    const polygon small = read_wkt("POLYGON((0 0, 1 0, 0 1, 0 0))");
+    const polygon huge = read_wkt("POLYGON((0 0, 1e39 0, 0 1e39, 0 0))");
+    CHECK_THROWS_WITH(detector<float>(huge, small), Catch::Contains("static polygon") && Catch::Contains("float"));
+    CHECK_THROWS_WITH(detector<float>(small, huge), Catch::Contains("moving polygon") && Catch::Contains("float"));
+    CHECK_THROWS_AS(brute_force_detector<float>(huge, small), invalid_input);
+    // double and exact take them; a translation beyond float's range poses B
+    // at infinity in float, defined behaviour.
+    CHECK_FALSE(detector<double>(huge, small).collide({2e39, 0, 0}).collides);
+    CHECK(number_traits<float>::from_double(1e39) == std::numeric_limits<float>::infinity());
+    CHECK(number_traits<float>::from_double(-1e39) == -std::numeric_limits<float>::infinity());
+    CHECK(number_traits<float>::from_double(0.5) == 0.5f);
+}

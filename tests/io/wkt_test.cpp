@@ -215,3 +215,10 @@ TEST_CASE("wkt: to_wkt round-trips exactly with closed rings in stored orientati
     REQUIRE(m2.ring_count() == 3);
     CHECK(m2.role(2) == ring_role::outer);
 }
+
+TEST_CASE("wkt: an empty polygon has no ring and no WKT", "[wkt]") {
+    const influence2d::polygon empty;
+    CHECK(empty.ring_count() == 0);
+    CHECK(empty.size() == 0);
+    CHECK_THROWS_AS(influence2d::to_wkt(empty), influence2d::invalid_input);
+}

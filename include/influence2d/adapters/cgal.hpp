@@ -61,7 +61,9 @@ struct is_cgal_polygon_with_holes<CGAL::Polygon_with_holes_2<K, C>> : std::true_
 /// evaluated exactly for the check.
 template <class K>
 struct point_traits<CGAL::Point_2<K>> {
+    /// The x coordinate as a double, checked to be exactly a double (invalid_input otherwise).
     static double x(const CGAL::Point_2<K>& p) { return adapter_detail::cgal_coordinate_to_double(p.x()); }
+    /// The y coordinate as a double, checked to be exactly a double (invalid_input otherwise).
     static double y(const CGAL::Point_2<K>& p) { return adapter_detail::cgal_coordinate_to_double(p.y()); }
 };
 

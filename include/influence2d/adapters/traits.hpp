@@ -140,21 +140,27 @@ inline constexpr bool is_ring_range_v = adapter_detail::is_ring_range<R>::value;
 /// influence2d's own point, for any arithmetic coordinate type.
 template <class T>
 struct point_traits<point<T>, std::enable_if_t<std::is_arithmetic_v<T>>> {
+    /// The x coordinate as a double, checked to be exactly a double (invalid_input otherwise).
     static double x(const point<T>& p) { return coordinate_to_double(p.x); }
+    /// The y coordinate as a double, checked to be exactly a double (invalid_input otherwise).
     static double y(const point<T>& p) { return coordinate_to_double(p.y); }
 };
 
 /// std::array<T, 2>: element 0 is x, element 1 is y.
 template <class T>
 struct point_traits<std::array<T, 2>, std::enable_if_t<std::is_arithmetic_v<T>>> {
+    /// The x coordinate as a double, checked to be exactly a double (invalid_input otherwise).
     static double x(const std::array<T, 2>& p) { return coordinate_to_double(p[0]); }
+    /// The y coordinate as a double, checked to be exactly a double (invalid_input otherwise).
     static double y(const std::array<T, 2>& p) { return coordinate_to_double(p[1]); }
 };
 
 /// std::pair<T, T>: first is x, second is y.
 template <class T>
 struct point_traits<std::pair<T, T>, std::enable_if_t<std::is_arithmetic_v<T>>> {
+    /// The x coordinate as a double, checked to be exactly a double (invalid_input otherwise).
     static double x(const std::pair<T, T>& p) { return coordinate_to_double(p.first); }
+    /// The y coordinate as a double, checked to be exactly a double (invalid_input otherwise).
     static double y(const std::pair<T, T>& p) { return coordinate_to_double(p.second); }
 };
 

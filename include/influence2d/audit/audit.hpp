@@ -24,7 +24,6 @@
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/predicates/orientation.hpp"
-#include "influence2d/predicates/segments.hpp"
 
 namespace influence2d {
 
@@ -130,15 +129,37 @@ inline double size_of(const std::vector<std::vector<point<double>>>& rings) {
     return s;
 }
 
+/// The exact orientation of three points with finite double coordinates
+/// (see orientation()).
+inline int orient(const point<double>& a, const point<double>& b, const point<double>& c) {
+    return expansion::orientation_sign(a.x, a.y, b.x, b.y, c.x, c.y);
+}
+
+/// Whether q lies on the closed segment [a, b] (exact).
+inline bool on_closed_segment(const point<double>& q, const point<double>& a, const point<double>& b) {
+    return orient(a, b, q) == 0 && within_collinear_segment(q, a, b);
+}
+
+/// Whether the closed segments [a, b] and [c, d] (each of non-zero length)
+/// meet (exact).
+inline bool segments_meet(const point<double>& a, const point<double>& b, const point<double>& c,
+                          const point<double>& d) {
+    const int oc = orient(a, b, c), od = orient(a, b, d);
+    if (oc == 0 && od == 0)
+        return within_collinear_segment(c, a, b) || within_collinear_segment(d, a, b) ||
+               within_collinear_segment(a, c, d) || within_collinear_segment(b, c, d);
+    return oc * od <= 0 && orient(c, d, a) * orient(c, d, b) <= 0;
+}
+
 /// Where q lies against a closed ring (exact): -1 outside, 0 on, 1 inside.
 inline int locate_in_ring(const point<double>& q, const std::vector<point<double>>& ring) {
     bool inside = false;
     for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
         const point<double>& a = ring[i];
         const point<double>& b = ring[(i + 1) % n];
-        if (on_segment(q, a, b)) return 0;
+        if (on_closed_segment(q, a, b)) return 0;
         if ((a.y > q.y) != (b.y > q.y)) {
-            const int o = orientation(a, b, q);  // q left of a->b
+            const int o = orient(a, b, q);  // q left of a->b
             if ((b.y > a.y) == (o > 0)) inside = !inside;
         }
     }
@@ -175,7 +196,7 @@ void meeting_edges(const std::vector<std::vector<point<double>>>& rings, Visit v
             }
             if (std::max(f->a.y, f->b.y) < std::min(e.a.y, e.b.y) || std::max(e.a.y, e.b.y) < std::min(f->a.y, f->b.y))
                 continue;
-            if (segments_intersect(orientation(f->a, f->b, e.a), orientation(f->a, f->b, e.b), f->a, f->b, e.a, e.b)) {
+            if (segments_meet(f->a, f->b, e.a, e.b)) {
                 const bool first = std::tie(f->ring, f->index) < std::tie(e.ring, e.index);
                 visit(first ? *f : e, first ? e : *f);
             }
@@ -192,12 +213,12 @@ inline std::string coordinates(const point<double>& p) {
 
 /// Audits the rings as read (closing points included where the input has them).
 /// Never throws on bad input: what polygon's constructor would refuse is a
-/// finding with `rejects` set and makes `accepted` false. Exact: equality of
-/// vertices, the ring orientation and zero area (exact shoelace sign), float
-/// representability. Evaluated in double, so possibly wrong for nearly
-/// degenerate input (exact when the products of coordinate differences are,
-/// as for small integers): collinear runs and spikes, edges that meet, holes
-/// outside shells and the centroid on an edge's line; the near_* findings
+/// finding with `rejects` set and makes `accepted` false. Every finding but
+/// the near_* ones is decided exactly (orientation by exact expansions,
+/// coordinate comparisons, the exact shoelace sign): repeated vertices,
+/// collinear runs and spikes, edges that meet, ring orientation and zero area,
+/// holes outside shells, the centroid (the library's, rounded to double) on
+/// an edge's line, number ranges. The near_* findings
 /// compare against the tolerance. Edges that meet are found by a sweep over
 /// x: O(n log n + n a) for n edges of which at most a overlap in x at once.
 inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_options& o = {}) {
@@ -294,9 +315,8 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
             while (ring[before] == p && before != v) before = (before + n - 1) % n;
             while (ring[after] == p && after != v) after = (after + 1) % n;
             if (ring[before] == p || ring[after] == p || (v > 0 && ring[v - 1] == p)) continue;
-            if (orientation(ring[before], p, ring[after]) != 0) continue;
-            const double dot = (p.x - ring[before].x) * (ring[after].x - p.x) + (p.y - ring[before].y) * (ring[after].y - p.y);
-            if (dot > 0)
+            if (orient(ring[before], p, ring[after]) != 0) continue;
+            if (within_collinear_segment(p, ring[before], ring[after]))
                 add(at_vertex(finding_kind::collinear_run, k, v, p, "vertex " + std::to_string(v) +
                                                                         " lies on the line of its neighbours",
                               "kept: a straight run of several edges, each tested as an edge"));
@@ -373,7 +393,8 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
         if (!inside) {
             add(at_ring(finding_kind::hole_outside_shell, k, rings[k][0],
                         "no vertex of the hole lies strictly inside an outer ring",
-                        "kept: a hole outside every outer ring removes nothing (regions count outer +1, hole -1)"));
+                        "kept: the region is where the winding number is not 0, and inside a hole that lies "
+                        "outside every outer ring it is -1: the hole's inside counts as region"));
         }
     }
     {
@@ -428,7 +449,7 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
             for (std::size_t v = 0, n = rings[k].size(); v < n; ++v) {
                 const point<double>& a = rings[k][v];
                 const point<double>& b = rings[k][(v + 1) % n];
-                if (a == b || orientation(c, a, b) != 0) continue;
+                if (a == b || orient(c, a, b) != 0) continue;
                 finding f = at_vertex(finding_kind::centroid_on_edge_line, k, v, a,
                                       "the centroid " + coordinates(c) + " lies on the line of edge " +
                                           std::to_string(v) + ": its covering triangle is flat, its cone empty",
@@ -446,7 +467,7 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
                                        std::fabs(p.y) > 0 ? std::fabs(p.y) : HUGE_VAL);
             if (m > FLT_MAX)
                 add(at_vertex(finding_kind::beyond_float, k, v, p, "a coordinate is beyond float's range",
-                              "float mode refuses to round it: use double or wider"));
+                              "detectors in float refuse the polygon (invalid_input): use double or wider"));
             else if (static_cast<double>(static_cast<float>(p.x)) != p.x ||
                      static_cast<double>(static_cast<float>(p.y)) != p.y)
                 add(at_vertex(finding_kind::inexact_in_float, k, v, p, "a coordinate is not exact in float",

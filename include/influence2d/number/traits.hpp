@@ -52,7 +52,16 @@ struct number_traits<NT, std::enable_if_t<std::is_floating_point_v<NT>>> {
     /// x converted. Exact for double and long double; float rounds it, and
     /// beyond float's range the conversion is undefined behaviour (an
     /// infinity in practice), so float suits inputs within that range only.
-    static NT from_double(double x) { return static_cast<NT>(x); }
+    static NT from_double(double x) {
+        // Converting a double beyond NT's range is undefined: go to infinity
+        // explicitly (detectors refuse such polygons; see in_range_of).
+        if constexpr (std::numeric_limits<NT>::is_specialized &&
+                      std::numeric_limits<NT>::max() < std::numeric_limits<double>::max()) {
+            if (x > static_cast<double>(std::numeric_limits<NT>::max())) return std::numeric_limits<NT>::infinity();
+            if (x < -static_cast<double>(std::numeric_limits<NT>::max())) return -std::numeric_limits<NT>::infinity();
+        }
+        return static_cast<NT>(x);
+    }
     /// x converted: exact from float and double, rounded from long double.
     static double to_double(const NT& x) { return static_cast<double>(x); }
     /// -1, 0 or +1; 0 for NaN (neither above nor below 0).
