@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs the test suite twice: an optimised
-# build, then an AddressSanitizer + UBSan build.
+# build, then an AddressSanitizer + UBSan build; then a short fuzz run.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/deps.sh"
@@ -9,3 +9,6 @@ bash "$root/scripts/build.sh" "$root/build"
 bash "$root/scripts/build.sh" "$root/build-sanitize" -DINFLUENCE2D_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
 # Instrumented code runs several times slower: the heavy tests draw fewer random frames.
 (cd "$root/build-sanitize" && INFLUENCE2D_TEST_EFFORT=0.25 ctest --output-on-failure -j "$(nproc)")
+# A short fuzz run (clang, libFuzzer, ASan + UBSan): each target for
+# INFLUENCE2D_FUZZ_SECONDS (default 30) on the corpus in data/fuzz/.
+bash "$root/scripts/fuzz.sh" "${INFLUENCE2D_FUZZ_SECONDS:-30}"
