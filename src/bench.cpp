@@ -42,12 +42,13 @@ std::string cell_name(const time_cell& c) {
 
 std::string bench_csv(const time_study_result& r) {
     std::string s =
-        "type,trajectory,static,moving,method,trajectory_frames,frames,stride,total_seconds,ns_per_frame,collisions,"
-        "disagreements\n";
+        "type,trajectory,static,moving,method,trajectory_frames,frames,stride,passes,total_seconds,ns_per_frame,"
+        "collisions,disagreements\n";
     for (const time_row& row : r.rows)
         s += row.cell.type + "," + row.cell.trajectory + "," + std::to_string(row.cell.static_size) + "," +
              std::to_string(row.cell.moving_size) + "," + row.method + "," + std::to_string(row.trajectory_frames) +
-             "," + std::to_string(row.frames) + "," + std::to_string(row.stride) + "," + general(row.seconds) + "," +
+             "," + std::to_string(row.frames) + "," + std::to_string(row.stride) + "," + std::to_string(row.passes) + "," +
+             general(row.seconds) + "," +
              fixed(row.ns_per_frame(), 1) + "," + std::to_string(row.collisions) + "," +
              (row.reference ? std::string("reference") : std::to_string(row.disagreements)) + "\n";
     return s;
@@ -90,8 +91,9 @@ std::string bench_md(const time_study_result& r, const time_study_options& o, co
     s += "Machine: " + machine_line() + ". Command: `" + command + "` (" + fixed(r.seconds, 0) + " s).\n\n";
     s += "Frames: the circular trajectory has " + std::to_string(o.circular_frames) + " poses (never colliding, gap " +
          general(o.gap) + "), the linear one " + std::to_string(o.linear_frames) +
-         " (ending in collision). influence2d's double, certified and paper modes run every frame in order; the "
-         "exact mode and the peers run every k-th frame, k chosen so that a run takes about " + general(o.budget) +
+         " (ending in collision). influence2d's double, certified and paper modes run every frame in order, in "
+         "repeated passes on fresh detectors (at least 3, until " + general(o.repeat_seconds) +
+         " s; bench.csv: passes), of which the median pass counts; the exact mode and the peers run every k-th frame, k chosen so that a run takes about " + general(o.budget) +
          " s (bench.csv: stride). Every answer is compared with the reference, the certified mode's exact answers.\n\n";
 
     // Per method: cells run, disagreements, geometric mean of ns per frame.

@@ -88,8 +88,8 @@ TEST_CASE("time study: the command writes the table, the summary and the heat ma
     const std::vector<std::string> csv = lines_of(slurp(dir / "out" / "bench.csv"));
     REQUIRE(!csv.empty());
     CHECK(csv.front() ==
-          "type,trajectory,static,moving,method,trajectory_frames,frames,stride,total_seconds,ns_per_frame,collisions,"
-          "disagreements");
+          "type,trajectory,static,moving,method,trajectory_frames,frames,stride,passes,total_seconds,ns_per_frame,"
+          "collisions,disagreements");
     // 4 cells, every method but Box2D in each, Box2D in 8x8.
     CHECK(csv.size() == 1 + 4 * (time_study_methods().size() - 1) + 1);
     const std::string md = slurp(dir / "out" / "bench.md");
