@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "scene_input.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/detect/brute_force.hpp"
@@ -36,12 +37,7 @@ namespace influence2d::cli {
 namespace {
 
 struct collide_options {
-    std::string static_path;
-    std::string moving_path;
-    std::string poses_path;
-    std::string trajectory;
-    std::size_t frames = 0;  // 0: the trajectory's default
-    double gap = 9.0;
+    scene_options scene;
     std::string number_type = "double";
     std::string algorithm = "sound";
     std::string shape = "capsule";
@@ -127,18 +123,6 @@ run_result run(const std::string& number_type, const std::string& algorithm, con
     return run_algorithm<double>(algorithm, a, b, poses, options);
 }
 
-/// Checks that `out` can be created: its directory exists and it is not a
-/// directory itself. Returns the reason it cannot, or "".
-std::string check_output_path(const std::string& out) {
-    namespace fs = std::filesystem;
-    const fs::path path(out);
-    std::error_code ec;
-    if (fs::is_directory(path, ec)) return out + ": is a directory";
-    const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-    if (!fs::is_directory(dir, ec)) return out + ": directory " + dir.string() + " does not exist";
-    return {};
-}
-
 /// Writes the frames to `out` through `out.tmp` in the same directory, renamed
 /// into place: a failure leaves neither a partial nor a changed file.
 void write_frames_file(const std::string& out, const std::vector<frame_result>& frames,
@@ -177,41 +161,9 @@ void run_collide(const collide_options& o) {
                                     "answered again in exact arithmetic cannot hand back; use "
                                     "--algorithm sound or brute-force, or another number type");
     // Read every input and check the output path first; report all problems at once.
-    std::vector<std::string> errors;
-    polygon a, b;
-    std::vector<pose> poses;
-    try {
-        a = read_wkt_file(o.static_path);
-    } catch (const invalid_input& e) {
-        errors.emplace_back(e.what());
-    }
-    try {
-        b = read_wkt_file(o.moving_path);
-    } catch (const invalid_input& e) {
-        errors.emplace_back(e.what());
-    }
-    if (!o.poses_path.empty()) {
-        try {
-            poses = read_poses_csv(o.poses_path);
-        } catch (const invalid_input& e) {
-            errors.emplace_back(e.what());
-        }
-    }
-    if (!o.out.empty()) {
-        const std::string why = check_output_path(o.out);
-        if (!why.empty()) errors.push_back(why);
-    }
-    if (!errors.empty()) {
-        std::string all = errors.front();
-        for (std::size_t i = 1; i < errors.size(); ++i) all += "\n" + errors[i];
-        throw invalid_input(all);
-    }
-    if (o.poses_path.empty()) {
-        const bool circular = o.trajectory == "circular";
-        const std::size_t frames = o.frames != 0 ? o.frames : circular ? 90000 : 9000;
-        poses = circular ? circular_trajectory(a, b, frames, o.gap)
-                         : linear_trajectory(a, b, frames, o.gap);
-    }
+    const scene_input in = read_scene(o.scene, o.out);
+    const polygon &a = in.a, &b = in.b;
+    const std::vector<pose>& poses = in.poses;
 
     detector_options options;
     options.distance = o.distance;
@@ -248,20 +200,6 @@ void run_collide(const collide_options& o) {
     if (!o.out.empty()) std::cout << "frames written:  " << o.out << "\n";
 }
 
-/// A CLI11 check: the value is a finite number >= 0.
-CLI::Validator finite_non_negative() {
-    return CLI::Validator(
-        [](std::string& value) -> std::string {
-            const char* begin = value.c_str();
-            char* end = nullptr;
-            const double x = std::strtod(begin, &end);
-            if (end == begin || *end != '\0' || !std::isfinite(x) || x < 0)
-                return "must be a finite number >= 0, got '" + value + "'";
-            return {};
-        },
-        "FINITE>=0");
-}
-
 }  // namespace
 
 void register_collide(CLI::App& app) {
@@ -272,48 +210,7 @@ void register_collide(CLI::App& app) {
         "sequence of poses of the moving one (from a CSV file or one of the paper's "
         "trajectories); print a summary and optionally write one line per frame.");
 
-    sub->add_option("--static", o->static_path,
-                    "WKT file (POLYGON or MULTIPOLYGON) of the static polygon A")
-        ->required()
-        ->type_name("A.wkt");
-    sub->add_option("--moving", o->moving_path,
-                    "WKT file (POLYGON or MULTIPOLYGON) of the moving polygon B, in its own frame")
-        ->required()
-        ->type_name("B.wkt");
-
-    CLI::Option_group* motion =
-        sub->add_option_group("Poses", "Where the moving polygon is at each frame (give exactly one)");
-    CLI::Option* poses_opt =
-        motion
-            ->add_option("--poses", o->poses_path,
-                         "CSV file with the header tx,ty,theta and one pose per line: B is "
-                         "rotated by theta radians about its own origin, then moved by (tx, ty)")
-            ->type_name("POSES.csv");
-    CLI::Option* trajectory_opt =
-        motion
-            ->add_option("--trajectory", o->trajectory,
-                         "The paper's trajectories: circular (B orbits A close by without "
-                         "touching, 90000 frames) or linear (B approaches A and ends in "
-                         "collision, 9000 frames)")
-            ->check(CLI::IsMember({"circular", "linear"}))
-            ->type_name("KIND");
-    motion->require_option(1);
-    poses_opt->excludes(trajectory_opt);
-
-    sub->add_option("--frames", o->frames,
-                    "Number of frames of the trajectory (only with --trajectory; default 90000 "
-                    "for circular, 9000 for linear)")
-        ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
-        ->needs(trajectory_opt)
-        ->type_name("N");
-    sub->add_option("--gap", o->gap,
-                    "Clearance of the trajectory (only with --trajectory): on the circular one, "
-                    "the closest B comes to the circle that bounds A; on the linear one, the "
-                    "distance between the bounding circles at the start")
-        ->capture_default_str()
-        ->check(finite_non_negative())
-        ->needs(trajectory_opt)
-        ->type_name("G");
+    add_scene_options(sub, o->scene, "--frames");
     sub->add_option("--number-type", o->number_type,
                     "Arithmetic of the detector's decisions: float, double, long-double, quad "
                     "(113-bit software floating point); exact (CGAL rationals: exact answers, "

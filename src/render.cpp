@@ -8,12 +8,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
-#include <filesystem>
-#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include "commands.hpp"
@@ -31,6 +28,7 @@
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "report.hpp"
+#include "scene_input.hpp"
 #include "svg.hpp"
 
 namespace influence2d::cli {
@@ -38,12 +36,7 @@ namespace influence2d::cli {
 namespace {
 
 struct render_options {
-    std::string static_path;
-    std::string moving_path;
-    std::string poses_path;
-    std::string trajectory;
-    std::size_t trajectory_frames = 0;  // 0: the trajectory's default
-    double gap = 9.0;
+    scene_options scene;
     double distance = 0.0;
     std::string shape = "capsule";
     std::vector<std::string> frames;  // empty: chosen by the command
@@ -54,47 +47,10 @@ struct render_options {
     bool no_extended = false;
 };
 
-/// The inputs of a picture, read and checked.
-struct scene_input {
-    polygon a, b;
-    std::vector<pose> poses;
-    std::string motion;  ///< where the poses come from
-};
-
-/// Reads both polygons and the poses (or makes the trajectory) and checks that
-/// the picture can be written; every problem of the inputs is reported at once.
-scene_input read_scene(const render_options& o) {
-    scene_input in;
-    std::string problems;
-    const auto attempt = [&problems](const std::function<void()>& read) {
-        try {
-            read();
-        } catch (const invalid_input& e) {
-            problems += (problems.empty() ? "" : "\n") + std::string(e.what());
-        }
-    };
-    attempt([&] { in.a = read_wkt_file(o.static_path); });
-    attempt([&] { in.b = read_wkt_file(o.moving_path); });
-    if (!o.poses_path.empty()) attempt([&] { in.poses = read_poses_csv(o.poses_path); });
-    attempt([&] {
-        namespace fs = std::filesystem;
-        std::error_code ec;
-        const fs::path parent = fs::path(o.out).parent_path();
-        if (fs::is_directory(o.out, ec)) throw invalid_input(o.out + ": is a directory");
-        if (!parent.empty() && !fs::is_directory(parent, ec))
-            throw invalid_input(o.out + ": directory " + parent.string() + " does not exist");
-    });
-    if (!problems.empty()) throw invalid_input(problems);
-
-    if (o.poses_path.empty()) {
-        const bool circular = o.trajectory == "circular";
-        const std::size_t count = o.trajectory_frames != 0 ? o.trajectory_frames : circular ? 90000 : 9000;
-        in.poses = circular ? circular_trajectory(in.a, in.b, count, o.gap) : linear_trajectory(in.a, in.b, count, o.gap);
-        in.motion = "the " + o.trajectory + " trajectory (gap " + general(o.gap) + ")";
-    } else {
-        in.motion = o.poses_path;
-    }
-    return in;
+/// Where the poses come from, for the title and the messages.
+std::string motion_of(const scene_options& o) {
+    if (!o.poses_path.empty()) return o.poses_path;
+    return "the " + o.trajectory + " trajectory (gap " + general(o.gap) + ")";
 }
 
 /// The frames to draw: those asked for (each checked against the frame
@@ -112,7 +68,7 @@ std::vector<std::size_t> chosen_frames(const render_options& o, const scene_inpu
         std::size_t f = 0;
         const bool fits = std::from_chars(text.data(), text.data() + text.size(), f).ec == std::errc();
         if (!fits || f >= count)
-            throw invalid_input("--frames: frame " + text + " is out of range: " + in.motion + " has " +
+            throw invalid_input("--frames: frame " + text + " is out of range: " + motion_of(o.scene) + " has " +
                                 std::to_string(count) + " frame" + (count == 1 ? "" : "s") +
                                 (count == 0 ? "" : " (0 to " + std::to_string(count - 1) + ")"));
         frames.push_back(f);
@@ -397,12 +353,12 @@ private:
         const auto width = static_cast<std::size_t>(view_.pixel_width() / 7.2);
         const auto bold_width = static_cast<std::size_t>(view_.pixel_width() / 8.6);
         const std::vector<std::string> files = {
-            "A: " + o_.static_path + " (" + plural(in_.a.size(), "edge") + ")",
-            "B: " + o_.moving_path + " (" + plural(in_.b.size(), "edge") + ")"};
+            "A: " + o_.scene.static_path + " (" + plural(in_.a.size(), "edge") + ")",
+            "B: " + o_.scene.moving_path + " (" + plural(in_.b.size(), "edge") + ")"};
         for (const std::string& line : filled_lines(files, bold_width)) lines.push_back(line);
         bold = lines.size();
         std::vector<std::string> setting = {
-            "poses: " + in_.motion + ", " + plural(in_.poses.size(), "frame"),
+            "poses: " + motion_of(o_.scene) + ", " + plural(in_.poses.size(), "frame"),
             std::string("extended area: ") + (shape_ == extended_area::band ? "band" : "capsule") +
                 ", n = r_B + d = " + general(n_, 4) + " (d = " + general(o_.distance) + ")"};
         if (!first_.empty()) setting.push_back("first collision: " + first_);
@@ -731,7 +687,7 @@ private:
 };
 
 void run_render(const render_options& o) {
-    const scene_input in = read_scene(o);
+    const scene_input in = read_scene(o.scene, o.out);
     detector_options options;
     options.distance = o.distance;
     options.shape = o.shape == "band" ? extended_area::band : extended_area::capsule;
@@ -754,39 +710,12 @@ void register_render(CLI::App& app) {
         "Draw a scene as one SVG file: the static polygon A with its covering triangles (by sign), its centroid and "
         "its influence cones; at each chosen frame the moving polygon B, the extended areas of A's candidate edges "
         "(those whose area holds B's centroid) and the colliding edge pairs found by the exact detector.");
-    sub->add_option("--static", o->static_path, "WKT file (POLYGON or MULTIPOLYGON) of the static polygon A")
-        ->required()
-        ->type_name("A.wkt");
-    sub->add_option("--moving", o->moving_path, "WKT file (POLYGON or MULTIPOLYGON) of the moving polygon B, in its own frame")
-        ->required()
-        ->type_name("B.wkt");
-    CLI::Option_group* motion = sub->add_option_group("Poses", "Where the moving polygon is at each frame (give exactly one)");
-    CLI::Option* poses_opt =
-        motion->add_option("--poses", o->poses_path, "CSV file with the header tx,ty,theta and one pose per line")
-            ->type_name("POSES.csv");
-    CLI::Option* trajectory_opt =
-        motion
-            ->add_option("--trajectory", o->trajectory,
-                         "The paper's trajectories, as `influence2d collide` makes them: circular or linear")
-            ->check(CLI::IsMember({"circular", "linear"}))
-            ->type_name("KIND");
-    motion->require_option(1);
-    poses_opt->excludes(trajectory_opt);
-    sub->add_option("--trajectory-frames", o->trajectory_frames,
-                    "Number of frames of the trajectory (default 90000 for circular, 9000 for linear)")
-        ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
-        ->needs(trajectory_opt)
-        ->type_name("N");
-    sub->add_option("--gap", o->gap, "Clearance of the trajectory, as for `influence2d collide`")
-        ->capture_default_str()
-        ->check(CLI::NonNegativeNumber)
-        ->needs(trajectory_opt)
-        ->type_name("G");
+    add_scene_options(sub, o->scene, "--trajectory-frames");
     sub->add_option("--distance", o->distance,
                     "Separation distance D: a frame collides when the polygons are at distance <= D; the extended "
                     "areas have length n = r_B + D")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber)
+        ->check(finite_non_negative())
         ->type_name("D");
     sub->add_option("--extended-area", o->shape, "Shape of the extended influence areas drawn: capsule or band (the paper's)")
         ->capture_default_str()
