@@ -229,7 +229,8 @@ public:
 
         // 4. Detailed test on the candidates.
         b_.place_approximate();
-        if constexpr (with_witness) witness_state::value.clear();
+        if constexpr (with_witness)
+            if (options_.witness) witness_state::value.clear();
         for (std::uint32_t e : candidates_)
             if (test_edge(e, frame_margin) && !witnessing()) return {true, {}};
         frame_result r;
@@ -452,13 +453,9 @@ private:
             else
                 meet = cross();
             if (!meet) continue;
-            if constexpr (with_witness) {
-                witness_state::value.add(e, j);
-                found = true;
-                if (!options_.witness) return true;
-            } else {
-                return true;
-            }
+            if (!witnessing()) return true;
+            if constexpr (with_witness) witness_state::value.add(e, j);
+            found = true;
         }
         return found;
     }
