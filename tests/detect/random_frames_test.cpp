@@ -13,7 +13,8 @@
 //   - hair apart: each contact frame pushed 2^-20 along that outward normal.
 // 4200 frames for d = 0 (1200 contacts, of which about 45% touch: collide,
 // yet are apart a hair further out) and 1050 for each of d = 0.5 and d = 3.
-// Checks, with witnesses:
+// Some frames of a large A and a small B take A's edge tree (checked: both
+// ways of finding the pairs are exercised). Checks, with witnesses:
 //   detector<exact_rational> == brute_force_detector<exact_rational> ==
 //   cgal_reference (collides and pairs), the detector without witnesses and
 //   with the band areas and no coherence on collides, and
@@ -200,6 +201,7 @@ bool same(const frame_result& x, const frame_result& y) { return x.collides == y
 
 struct tally {
     std::size_t frames = 0, contact = 0, touching = 0, collisions = 0, mismatches = 0;
+    std::size_t tree_frames = 0, exact_frames_past_circles = 0;  ///< detector<exact_rational>
 };
 
 /// Runs every frame of every family pair at distance d; counts and checks.
@@ -254,6 +256,9 @@ tally run_all(double d, frame_counts counts) {
             INFO("brute_force<double>:           " << pairs_text(brute_double));
             FAIL_CHECK("detectors disagree");
         }
+        const detector_statistics& st = det_exact.statistics();
+        t.tree_frames += st.tree_frames;
+        t.exact_frames_past_circles += st.frames - st.circle_rejections;
     }
     return t;
 }
@@ -269,6 +274,11 @@ TEST_CASE("random frames: detectors agree with the CGAL reference, d = 0", "[det
     CHECK(t.collisions >= t.frames / 4);
     CHECK(t.frames - t.collisions >= t.frames / 5);
     CHECK(t.touching * 3 >= t.contact);
+    // Both ways of finding the pairs are exercised: A's edge tree (a large A,
+    // a small B; more of those in edge_tree_frames_test.cpp) and the cached
+    // candidates.
+    CHECK(t.tree_frames >= t.exact_frames_past_circles / 100);
+    CHECK(t.tree_frames * 2 <= t.exact_frames_past_circles);
 }
 
 TEST_CASE("random frames: detectors agree with the CGAL reference, d = 0.5", "[detect][reference][random]") {

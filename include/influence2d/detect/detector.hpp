@@ -15,6 +15,7 @@
 #include "influence2d/detect/result.hpp"
 #include "influence2d/detect/scene.hpp"
 #include "influence2d/influence/edge_grid.hpp"
+#include "influence2d/influence/edge_tree.hpp"
 #include "influence2d/influence/extended_area.hpp"
 #include "influence2d/predicates/segments.hpp"
 
@@ -29,6 +30,7 @@ struct detector_statistics {
     std::size_t disc_rejections = 0;    ///< frames whose moving edges all keep off A's circle
     std::size_t segment_tests = 0;      ///< exact segment-pair tests
     std::size_t containment_tests = 0;  ///< frames that ran the inclusion tests
+    std::size_t tree_frames = 0;        ///< frames whose pairs came from A's edge tree
 };
 
 namespace detail {
@@ -137,6 +139,7 @@ public:
         margin_ = tr::filter_slack * 4 * (a_->scale + a_->radius + reach_ + skin() + coordinate_scale(moving_polygon)) +
                   std::numeric_limits<double>::min();
         grid_ = edge_grid(a_->shape, reach_ + skin(), margin_);
+        tree_ = edge_tree(a_->shape);
         for (const auto& v : a_->shape.vertices()) a_box_.add(v);
         make_chunks();
         if constexpr (with_distance) {
@@ -186,11 +189,29 @@ public:
             // B only if its first vertex lies within B's circle.
             const point<double>& a0 = a_->shape.vertex(0);
             if (filter_length(a0.x - pd.x, a0.y - pd.y) > b_.radius() + 2 * frame_margin) return {};
-            b_.place_approximate();
+            place_approximate(t);
             return {contains(n, frame_margin, false), {}};
         }
+        if (bs.size() * tree_cost < cache_.size()) {
+            // Few moving edges against many cached static edges: each moving
+            // edge finds the static edges near it through A's edge tree.
+            tally(&detector_statistics::tree_frames);
+            place_approximate(t);
+            if constexpr (with_witness)
+                if (options_.witness) witness_state::value.clear();
+            for (std::size_t j = 0; j < bs.size(); ++j) {
+                const point<double>&u = b_.approximate(j), &v = b_.approximate(next_b(j));
+                const bool met = tree_.query(u, v, distance() + frame_margin, distance() + 2 * frame_margin,
+                                             [&](std::uint32_t e) {
+                                                 tally(&detector_statistics::candidate_edges);
+                                                 return test_pair(e, j, frame_margin) && !witnessing();
+                                             });
+                if (met) return {true, {}};
+            }
+            return finish(n, frame_margin);
+        }
         const bool placed = bs.size() <= cache_.size();
-        if (placed) b_.place_approximate();
+        if (placed) place_approximate(t);
         candidates_.clear();
         const polygon& as = a_->shape;
         box bb;  // with B posed in double: B's box grown by d and the margin
@@ -228,25 +249,12 @@ public:
         }
 
         // 4. Detailed test on the candidates.
-        b_.place_approximate();
+        if (!placed) place_approximate(t);
         if constexpr (with_witness)
             if (options_.witness) witness_state::value.clear();
         for (std::uint32_t e : candidates_)
             if (test_edge(e, frame_margin) && !witnessing()) return {true, {}};
-        frame_result r;
-        if constexpr (with_witness) {
-            const detail::pair_collector& pairs = witness_state::value;
-            if (!pairs.empty()) {
-                r.collides = true;
-                r.pairs = pairs.in_input_numbering(a_->shape, b_.shape());
-                return r;
-            }
-        }
-
-        // 5. Containment.
-        tally(&detector_statistics::containment_tests);
-        r.collides = contains(n, frame_margin);
-        return r;
+        return finish(n, frame_margin);
     }
 
     /// Counters of the work done so far (only with features::statistics).
@@ -263,7 +271,9 @@ public:
     std::size_t state_bytes() const {
         const std::size_t grid = (grid_.cell_count() + 1 + grid_.entry_count()) * sizeof(std::uint32_t);
         std::size_t bytes = sizeof(*this) + grid + chunks_.capacity() * sizeof(chunk) +
-                            (cache_.capacity() + candidates_.capacity()) * sizeof(std::uint32_t) + b_.heap_bytes();
+                            chunk_centers_.capacity() * sizeof(point<double>) +
+                            (cache_.capacity() + candidates_.capacity()) * sizeof(std::uint32_t) + b_.heap_bytes() +
+                            tree_.heap_bytes();
         if constexpr (with_witness) bytes += witness_state::value.heap_bytes();
         return bytes;
     }
@@ -300,6 +310,12 @@ private:
         return j + 1 == b_.size() ? 0 : j + 1;
     }
 
+    /// Poses B's vertices and its chunks' centres by t in double.
+    void place_approximate(const rotation_pose& t) {
+        b_.place_approximate();
+        for (std::size_t c = 0; c < chunks_.size(); ++c) chunk_centers_[c] = t.apply<double>(chunks_[c].center);
+    }
+
     /// Gathers the edges within reach + skin of p into the cache. When there
     /// are none, the disk of that radius about p holds no boundary of A, so
     /// every point within the skin of p is located as p is: that is cached too.
@@ -318,6 +334,23 @@ private:
             if (cache_.empty()) c.center_inside = a_->areas.locate(b_.centroid()) == location::inside;
             c.valid = options_.temporal_coherence;
         }
+    }
+
+    /// The end of a frame whose pairs were all tested: the pairs found, if
+    /// any (with witnesses), else step 5.
+    frame_result finish(double n, double frame_margin) {
+        frame_result r;
+        if constexpr (with_witness) {
+            const detail::pair_collector& pairs = witness_state::value;
+            if (!pairs.empty()) {
+                r.collides = true;
+                r.pairs = pairs.in_input_numbering(a_->shape, b_.shape());
+                return r;
+            }
+        }
+        tally(&detector_statistics::containment_tests);
+        r.collides = contains(n, frame_margin);
+        return r;
     }
 
     /// Step 5, B's vertices posed in double: whether one region holds a ring
@@ -347,14 +380,18 @@ private:
         return one_contains_other<NT, with_holes>(*a_, b_, std::optional<double>(n), a_may_fit, b_may_be_inside_a);
     }
 
-    /// The paper's detailed test as a filter in double: whether the exactly
-    /// posed ends of a moving edge, known as u and v to within `e` on each
-    /// coordinate, lie strictly on the same side of the line through the
-    /// static edge a b (alpha has the same non-zero sign at both): then the
-    /// edges cannot meet. The bound on the error of each side value covers
-    /// the error e of the ends and the rounding of the products; when it
-    /// cannot be trusted (values not finite, or so small that the bound itself
-    /// might underflow) the answer is false and the exact test decides.
+    /// The paper's detailed test as a filter in double: whether u and v lie
+    /// strictly on the same side of the line through a and b, farther from
+    /// it than 2e (so that u and v, or the line's ends, may each be off by e
+    /// on each coordinate): then the exact segments cannot meet. Used both
+    /// ways: the exactly posed ends of a moving edge, known as u and v to
+    /// within e, against a static edge's line; and a static edge's ends
+    /// against the line through a moving edge's approximate ends (the exact
+    /// moving edge lies within e sqrt 2 < 2e of that line's segment). The
+    /// bound on each side value covers 2e (|dx| + |dy|) >= 2e |b - a| and the
+    /// rounding of the products; when it cannot be trusted (values not
+    /// finite, or so small that the bound itself might underflow) the answer
+    /// is false and the exact test decides.
     static bool same_side(const point<double>& a, const point<double>& b, const point<double>& u,
                           const point<double>& v, double e) {
         const double dx = b.x - a.x, dy = b.y - a.y;
@@ -413,51 +450,76 @@ private:
                 k.radius = upper_sqrt(r2);
                 chunks_.push_back(k);
             }
+        chunk_centers_.resize(chunks_.size());
     }
 
-    /// Tests static edge e against the moving edges; records the pairs found.
-    /// A moving edge whose box (from the double approximations of its posed
-    /// ends, grown by the rounding margin and the distance) misses the static
-    /// edge's box is skipped; the others get the exact decision: the signs of
-    /// alpha of its two ends (orientation against the static edge's line, equal
-    /// to alpha up to the constant sigma_e), then the segment test.
+    /// Tests static edge e against the moving edges whose boxes (from the
+    /// double approximations of their posed ends, grown by the rounding
+    /// margin and the distance) meet the static edge's; records the pairs
+    /// found. A chunk of B whose posed circle misses that box is skipped
+    /// whole (B's chunks: a subdivision in B's own frame, valid under any
+    /// rigid motion).
     bool test_edge(std::uint32_t e, double frame_margin) {
-        const auto& cov = a_->covering;
         const polygon& as = a_->shape;
-        const polygon& bs = b_.shape();
         box eb;
         eb.add(as.vertex(e));
         eb.add(as.vertex(as.next(e)));
         eb = eb.inflated(frame_margin + distance());
-        const point<NT>& a = cov.start(e);
-        const point<NT>& b = cov.end(e);
         bool found = false;
-        for (std::size_t j = 0; j < bs.size(); ++j) {
-            const std::size_t k = next_b(j);
-            const point<double>& u = b_.approximate(j);
-            const point<double>& v = b_.approximate(k);
-            if (std::max(u.x, v.x) < eb.min_x || std::min(u.x, v.x) > eb.max_x || std::max(u.y, v.y) < eb.min_y ||
-                std::min(u.y, v.y) > eb.max_y)
-                continue;
-            if (distance() == 0 && same_side(as.vertex(e), as.vertex(as.next(e)), u, v, frame_margin)) continue;
-            tally(&detector_statistics::segment_tests);
-            const auto cross = [&] {
-                return segments_intersect(orientation(a, b, b_.vertex(j)), orientation(a, b, b_.vertex(k)), a, b,
-                                          b_.vertex(j), b_.vertex(k));
-            };
-            bool meet;
-            if constexpr (with_distance)
-                meet = options_.distance > 0
-                           ? segments_within(a, b, b_.vertex(j), b_.vertex(k), distance_state::value.distance2)
-                           : cross();
-            else
-                meet = cross();
-            if (!meet) continue;
-            if (!witnessing()) return true;
-            if constexpr (with_witness) witness_state::value.add(e, j);
-            found = true;
+        for (std::size_t c = 0; c < chunks_.size(); ++c) {
+            // The chunk's posed vertices, and so its edges, lie within its
+            // radius of its posed centre, up to the rounding of both.
+            const point<double>& q = chunk_centers_[c];
+            const double r = chunks_[c].radius + 2 * frame_margin;
+            if (q.x < eb.min_x - r || q.x > eb.max_x + r || q.y < eb.min_y - r || q.y > eb.max_y + r) continue;
+            for (std::size_t j = chunks_[c].first; j < chunks_[c].last; ++j) {
+                const point<double>& u = b_.approximate(j);
+                const point<double>& v = b_.approximate(next_b(j));
+                if (std::max(u.x, v.x) < eb.min_x || std::min(u.x, v.x) > eb.max_x || std::max(u.y, v.y) < eb.min_y ||
+                    std::min(u.y, v.y) > eb.max_y)
+                    continue;
+                if (!test_pair(e, j, frame_margin)) continue;
+                if (!witnessing()) return true;
+                found = true;
+            }
         }
         return found;
+    }
+
+    /// The exact decision for static edge e and moving edge j (recorded when
+    /// they meet, with witnesses). For d == 0 two filters in double come
+    /// first, each the paper's detailed test with the roles of the edges
+    /// swapped: both ends of one edge strictly on the same side of the other's
+    /// line (alpha of the same non-zero sign), so the edges cannot meet. Only
+    /// then are the vertices posed in NT: the signs of alpha (orientation
+    /// against the static edge's line, alpha up to the constant sigma_e) and
+    /// the segment test (d == 0), or the exact distance test (d > 0).
+    bool test_pair(std::uint32_t e, std::size_t j, double frame_margin) {
+        const polygon& as = a_->shape;
+        const std::size_t k = next_b(j);
+        if (distance() == 0) {
+            const point<double>&a = as.vertex(e), &b = as.vertex(as.next(e));
+            const point<double>&u = b_.approximate(j), &v = b_.approximate(k);
+            if (same_side(a, b, u, v, frame_margin) || same_side(u, v, a, b, frame_margin)) return false;
+        }
+        tally(&detector_statistics::segment_tests);
+        const auto& cov = a_->covering;
+        const point<NT>& a = cov.start(e);
+        const point<NT>& b = cov.end(e);
+        const auto cross = [&] {
+            return segments_intersect(orientation(a, b, b_.vertex(j)), orientation(a, b, b_.vertex(k)), a, b,
+                                      b_.vertex(j), b_.vertex(k));
+        };
+        bool meet;
+        if constexpr (with_distance)
+            meet = options_.distance > 0
+                       ? segments_within(a, b, b_.vertex(j), b_.vertex(k), distance_state::value.distance2)
+                       : cross();
+        else
+            meet = cross();
+        if constexpr (with_witness)
+            if (meet && options_.witness) witness_state::value.add(e, j);
+        return meet;
     }
 
     std::shared_ptr<const static_scene<NT>> a_;
@@ -471,7 +533,12 @@ private:
         std::size_t first = 0, last = 0;  ///< B's edges [first, last) of one ring
     };
     std::vector<chunk> chunks_;
+    std::vector<point<double>> chunk_centers_;  ///< posed by place_approximate
     edge_grid grid_;
+    edge_tree tree_;  ///< A's edges, for frames with few moving edges
+    /// A frame takes the tree when B's edges times this are fewer than the
+    /// cached static edges: a tree query costs about that many box tests.
+    static constexpr std::size_t tree_cost = 4;
 
     /// The static edges within reach (+ skin) of where they were gathered:
     /// kept between frames with features::coherence, else anew each frame.

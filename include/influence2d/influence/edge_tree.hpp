@@ -1,0 +1,171 @@
+#pragma once
+/// \file
+/// A bounding-volume hierarchy over a polygon's edges in its own (fixed)
+/// frame: it answers "which edges may come within g of the segment [u, v]"
+/// in time that grows with the edges near the segment, not with all of them.
+/// A conservative filter in double, never a decision.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "influence2d/core/box.hpp"
+#include "influence2d/core/point.hpp"
+#include "influence2d/core/polygon.hpp"
+
+namespace influence2d {
+
+/// Whether the box b certainly lies farther than g from the line through u
+/// and v (every corner strictly on the same side, beyond g), in double with
+/// a bound on its own rounding: then no point within g of the segment [u, v]
+/// lies in b. False whenever the bound cannot be trusted (values not finite,
+/// or so small that the bound might underflow), and for u == v.
+inline bool box_beyond_line(const box& b, const point<double>& u, const point<double>& v, double g) {
+    const double dx = v.x - u.x, dy = v.y - u.y;
+    // g |d|_1 >= g |d|_2: the distance beyond g, with room for the rounding
+    // of the threshold itself.
+    const double slack = g * (std::fabs(dx) + std::fabs(dy));
+    int side = 0;
+    const double xs[2] = {b.min_x, b.max_x}, ys[2] = {b.min_y, b.max_y};
+    for (double x : xs)
+        for (double y : ys) {
+            const double l = dx * (y - u.y), r = dy * (x - u.x);
+            const double o = l - r, bound = slack + 0x1p-48 * (std::fabs(l) + std::fabs(r));
+            if (!(bound >= 0x1p-900) || !(bound < HUGE_VAL) || !(std::fabs(o) > bound)) return false;
+            const int s = o > 0 ? 1 : -1;
+            if (side != 0 && s != side) return false;
+            side = s;
+        }
+    return true;
+}
+
+/// A bounding-volume hierarchy of axis-aligned boxes over a polygon's edges,
+/// built once in the polygon's own frame (valid for as long as the polygon
+/// does not move; for a static polygon, always). Leaves hold up to 4 edges;
+/// inner nodes split their edges at the median along the longer side of
+/// their edges' midpoints. In double: boxes of input coordinates are exact.
+class edge_tree {
+public:
+    /// An empty tree: every query visits nothing.
+    edge_tree() = default;
+
+    /// Builds the tree over the edges of `shape` (O(n log n)); `shape` is not kept.
+    explicit edge_tree(const polygon& shape) {
+        const std::size_t n = shape.size();
+        if (n == 0) return;
+        boxes_.resize(n);
+        order_.resize(n);
+        std::vector<point<double>> mid(n);
+        for (std::size_t e = 0; e < n; ++e) {
+            boxes_[e].add(shape.vertex(e));
+            boxes_[e].add(shape.vertex(shape.next(e)));
+            mid[e] = {boxes_[e].min_x / 2 + boxes_[e].max_x / 2, boxes_[e].min_y / 2 + boxes_[e].max_y / 2};
+            order_[e] = static_cast<std::uint32_t>(e);
+        }
+        nodes_.reserve(2 * n / leaf_size + 2);
+        nodes_.emplace_back();
+        fill(0, 0, static_cast<std::uint32_t>(n), mid);
+        // Leaves read their edges' boxes in tree order.
+        std::vector<box> sorted(n);
+        for (std::size_t k = 0; k < n; ++k) sorted[k] = boxes_[order_[k]];
+        boxes_.swap(sorted);
+    }
+
+    /// Calls visit(e) for each edge e whose box meets the box of [u, v] grown
+    /// by `grow` and whose box is not certainly farther than `line_grow` from
+    /// the line through u and v (see box_beyond_line); inner nodes are pruned
+    /// by the same two tests. A superset of the edges within min(grow,
+    /// line_grow) of [u, v]. Stops and returns true as soon as visit returns
+    /// true; returns false once every such edge was visited. When u or v is
+    /// not finite every edge is visited.
+    template <class Visit>
+    bool query(const point<double>& u, const point<double>& v, double grow, double line_grow, Visit&& visit) const {
+        if (nodes_.empty()) return false;
+        box q;
+        q.add(u);
+        q.add(v);
+        q = q.inflated(grow);
+        // (A NaN coordinate leaves the box unchanged: test the ends too.)
+        if (!(std::isfinite(u.x) && std::isfinite(u.y) && std::isfinite(v.x) && std::isfinite(v.y) &&
+              std::isfinite(q.min_x) && std::isfinite(q.min_y) && std::isfinite(q.max_x) && std::isfinite(q.max_y))) {
+            for (std::uint32_t e : order_)
+                if (visit(e)) return true;
+            return false;
+        }
+        const bool lines = u.x != v.x || u.y != v.y;
+        std::uint32_t stack[64];
+        std::size_t top = 0;
+        stack[top++] = 0;
+        while (top > 0) {
+            const node& k = nodes_[stack[--top]];
+            if (!meets(k.bounds, q) || (lines && box_beyond_line(k.bounds, u, v, line_grow))) continue;
+            if (k.count == 0) {
+                stack[top++] = k.first + 1;
+                stack[top++] = k.first;
+                continue;
+            }
+            for (std::uint32_t i = k.first; i < k.first + k.count; ++i)
+                if (meets(boxes_[i], q) && visit(order_[i])) return true;
+        }
+        return false;
+    }
+
+    /// The number of nodes (0 for an empty tree).
+    std::size_t node_count() const { return nodes_.size(); }
+    /// Bytes of the heap blocks held.
+    std::size_t heap_bytes() const {
+        return nodes_.capacity() * sizeof(node) + boxes_.capacity() * sizeof(box) +
+               order_.capacity() * sizeof(std::uint32_t);
+    }
+
+private:
+    static constexpr std::uint32_t leaf_size = 4;
+    struct node {
+        box bounds;
+        std::uint32_t first = 0;  ///< leaf: first position in order_; inner: left child (right is first + 1)
+        std::uint32_t count = 0;  ///< leaf: number of edges; inner: 0
+    };
+
+    static bool meets(const box& a, const box& b) {
+        return a.min_x <= b.max_x && b.min_x <= a.max_x && a.min_y <= b.max_y && b.min_y <= a.max_y;
+    }
+
+    /// Builds the subtree of order_[first, last) into the reserved node `at`.
+    /// Median splits keep the depth within log2(n / leaf_size) + 1, well
+    /// inside the query's stack for any 32-bit edge count.
+    void fill(std::uint32_t at, std::uint32_t first, std::uint32_t last, const std::vector<point<double>>& mid) {
+        box bounds, centres;
+        for (std::uint32_t i = first; i < last; ++i) {
+            const box& b = boxes_[order_[i]];
+            bounds.add({b.min_x, b.min_y});
+            bounds.add({b.max_x, b.max_y});
+            centres.add(mid[order_[i]]);
+        }
+        nodes_[at].bounds = bounds;
+        if (last - first <= leaf_size) {
+            nodes_[at].first = first;
+            nodes_[at].count = last - first;
+            return;
+        }
+        const bool along_x = centres.max_x - centres.min_x >= centres.max_y - centres.min_y;
+        const std::uint32_t half = first + (last - first) / 2;
+        std::nth_element(order_.begin() + first, order_.begin() + half, order_.begin() + last,
+                         [&](std::uint32_t a, std::uint32_t b) {
+                             return along_x ? mid[a].x < mid[b].x : mid[a].y < mid[b].y;
+                         });
+        const auto left = static_cast<std::uint32_t>(nodes_.size());
+        nodes_.emplace_back();
+        nodes_.emplace_back();
+        fill(left, first, half, mid);
+        fill(left + 1, half, last, mid);
+        nodes_[at].first = left;
+        nodes_[at].count = 0;
+    }
+
+    std::vector<node> nodes_;
+    std::vector<box> boxes_;  ///< edges' boxes, in tree order
+    std::vector<std::uint32_t> order_;  ///< edge indices, in tree order
+};
+
+}  // namespace influence2d

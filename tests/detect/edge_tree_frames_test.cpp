@@ -1,0 +1,93 @@
+// Frames of a large static polygon and a moving one of few edges, the case
+// that finds its pairs through A's edge tree: the detector answers as the
+// brute-force reference in the same number type, with witnesses and with a
+// separation distance, and the frames do take the tree.
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "influence2d/detect/brute_force.hpp"
+#include "influence2d/detect/detector.hpp"
+#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/io/wkt.hpp"
+#include "influence2d/number/cgal.hpp"
+#include "support/effort.hpp"
+
+using namespace influence2d;
+
+namespace {
+
+polygon family_polygon(const std::string& id) {
+    return read_wkt_file(std::string(INFLUENCE2D_DATA_DIR) + "/families/" + id + ".wkt");
+}
+
+/// The end of the time study's linear approach (the frames within the
+/// bounding circles), then B's centroid at random points near A's vertices
+/// with random rotations: many frames with edges of A close to B's.
+std::vector<pose> frames_near(const polygon& a, const polygon& b, std::uint64_t seed, int count) {
+    std::vector<pose> out;
+    const std::vector<pose> line = linear_trajectory(a, b, 9000);
+    for (int k = 0; k < count / 2; ++k) out.push_back(line[line.size() - 1 - static_cast<std::size_t>(k) * 700 / count]);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    const point<double> cb = b.centroid();
+    double rb = 0;
+    for (const auto& v : b.vertices()) rb = std::max(rb, std::hypot(v.x - cb.x, v.y - cb.y));
+    while (static_cast<int>(out.size()) < count) {
+        const point<double>& v = a.vertex(static_cast<std::size_t>(rng() % a.size()));
+        const double theta = 3.2 * unit(rng), c = std::cos(theta), s = std::sin(theta);
+        const point<double> at{v.x + rb * unit(rng), v.y + rb * unit(rng)};
+        out.push_back({at.x - (c * cb.x - s * cb.y), at.y - (s * cb.x + c * cb.y), theta});
+    }
+    return out;
+}
+
+template <class NT>
+void check_frames(const polygon& a, const polygon& b, const std::vector<pose>& poses, double d, const std::string& what) {
+    detector_options o;
+    o.witness = true;
+    o.distance = d;
+    detector<NT> det(a, b, o);
+    brute_force_detector<NT> ref(a, b, o);
+    detector_options plain;
+    plain.distance = d;
+    detector<NT> yes_no(a, b, plain);
+    std::size_t collisions = 0;
+    for (std::size_t k = 0; k < poses.size(); ++k) {
+        const frame_result want = ref.collide(poses[k]);
+        const frame_result got = det.collide(poses[k]);
+        INFO(what << " " << number_traits<NT>::name << " d " << d << " frame " << k << " pose " << poses[k].tx << ", "
+                  << poses[k].ty << ", " << poses[k].theta);
+        REQUIRE(got.collides == want.collides);
+        REQUIRE(got.pairs == want.pairs);
+        REQUIRE(yes_no.collide(poses[k]).collides == want.collides);
+        collisions += want.collides;
+    }
+    // Both answers occur, and most frames found their pairs through the tree.
+    CHECK(collisions >= poses.size() / 5);
+    CHECK(collisions < poses.size());
+    CHECK(det.statistics().tree_frames * 2 >= poses.size());
+    CHECK(yes_no.statistics().tree_frames * 2 >= poses.size());
+}
+
+}  // namespace
+
+TEST_CASE("edge tree frames: a large A and a small B answer as the reference", "[detect][tree]") {
+    const int frames = test_effort::scaled(40);
+    const std::vector<std::pair<std::string, std::string>> scenes = {
+        {"contour_1024", "contour_8"}, {"convex_512", "convex_8"},   {"hole_1024", "hole_16"},
+        {"starred_256", "starred_8"},  {"irregular_1024", "irregular_8"}};
+    std::uint64_t seed = 41;
+    for (const auto& [an, bn] : scenes) {
+        const polygon a = family_polygon(an), b = family_polygon(bn);
+        const std::vector<pose> poses = frames_near(a, b, seed++, frames);
+        for (double d : {0.0, 0.5}) {
+            check_frames<double>(a, b, poses, d, an + " x " + bn);
+            check_frames<exact_rational>(a, b, poses, d, an + " x " + bn);
+        }
+    }
+}
