@@ -92,7 +92,7 @@ std::string bench_md(const time_study_result& r, const time_study_options& o, co
     s += "Frames: the circular trajectory has " + std::to_string(o.circular_frames) + " poses (never colliding, gap " +
          general(o.gap) + "), the linear one " + std::to_string(o.linear_frames) +
          " (ending in collision). influence2d's double, certified and paper modes run every frame in order, in "
-         "repeated passes on fresh detectors (at least 3, until " + general(o.repeat_seconds) +
+         "repeated passes on fresh detectors, taking turns pass by pass (at least 3, until " + general(o.repeat_seconds) +
          " s; bench.csv: passes), of which the median pass counts; the exact mode and the peers run every k-th frame, k chosen so that a run takes about " + general(o.budget) +
          " s (bench.csv: stride). Every answer is compared with the reference, the certified mode's exact answers.\n\n";
 

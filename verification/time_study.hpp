@@ -15,7 +15,9 @@
 //               repeated on fresh detectors (at least 3 passes, an odd
 //               number, until `repeat_seconds` of passes) and the median
 //               pass counts, so that a cell of a few milliseconds is not at
-//               the mercy of one interruption;
+//               the mercy of one interruption; the modes take turns pass by
+//               pass, so that a slower spell of the machine falls on all of
+//               them alike and their ratios hold;
 //             - exact mode and the peers, which are slow on large cells, run
 //               every k-th frame, k chosen from a probe of 8 evenly spaced
 //               frames so that the run takes about `budget` seconds (k = 1
@@ -30,6 +32,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -220,6 +223,51 @@ inline std::vector<pose> time_study_poses(const time_study_options& o, const tim
     throw std::invalid_argument("unknown trajectory: " + c.trajectory);
 }
 
+namespace time_study_detail {
+
+/// The timed passes of one of influence2d's every-frame modes on a cell.
+struct timed_passes {
+    std::vector<char> answers;  ///< of the first pass
+    std::size_t passes = 0;
+    double median = 0;  ///< seconds of the median pass
+};
+
+/// Times influence2d's every-frame modes among o.methods (double, certified,
+/// paper) on a cell: passes over every frame on fresh detectors, the modes
+/// taking turns, until each has at least 3 passes (an odd number) and
+/// `repeat_seconds` of them, or 101.
+inline std::map<std::string, timed_passes> time_every_frame_modes(const time_study_options& o, const polygon& a,
+                                                                  const polygon& b, const std::vector<pose>& poses) {
+    std::vector<std::string> modes;
+    for (const std::string& m : o.methods)
+        if (is_own_method(m) && m != "exact" && applies(m, a, b)) modes.push_back(m);
+    std::map<std::string, timed_passes> out;
+    std::map<std::string, std::vector<double>> seconds;
+    std::vector<char> repeated;
+    for (std::size_t round = 0;; ++round) {
+        bool more = round < 3 || round % 2 == 0;  // rounds done so far: at least 3, an odd number
+        for (const std::string& m : modes) {
+            double total = 0;
+            for (double t : seconds[m]) total += t;
+            more = more || (total < o.repeat_seconds && round < 101);
+        }
+        if (!more) break;
+        for (const std::string& m : modes)
+            with_method(m, a, b, [&](auto& fresh) {
+                seconds[m].push_back(run_frames(fresh, poses, 1, round == 0 ? out[m].answers : repeated));
+            });
+    }
+    for (const std::string& m : modes) {
+        std::vector<double>& s = seconds[m];
+        std::nth_element(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(s.size() / 2), s.end());
+        out[m].passes = s.size();
+        out[m].median = s[s.size() / 2];
+    }
+    return out;
+}
+
+}  // namespace time_study_detail
+
 /// Runs the study.
 inline time_study_result run_time_study(const time_study_options& o) {
     using namespace time_study_detail;
@@ -229,7 +277,7 @@ inline time_study_result run_time_study(const time_study_options& o) {
     const auto start = clock::now();
     const std::vector<time_cell> cells = time_study_cells(o);
     time_study_result r;
-    std::vector<char> reference, answers, repeated;
+    std::vector<char> reference, answers;
     for (std::size_t ci = 0; ci < cells.size(); ++ci) {
         const time_cell& c = cells[ci];
         if (o.progress) o.progress({ci, cells.size(), c});
@@ -242,6 +290,7 @@ inline time_study_result run_time_study(const time_study_options& o) {
         // timed: the certified method's row is a run of its own, like every
         // other method's, after this pass has brought the poses into cache).
         with_method("certified", a, b, [&](auto& d) { (void)run_frames(d, poses, 1, reference); });
+        const std::map<std::string, timed_passes> own = time_every_frame_modes(o, a, b, poses);
         for (const std::string& m : o.methods) {
             if (!applies(m, a, b)) continue;
             time_row row;
@@ -249,25 +298,18 @@ inline time_study_result run_time_study(const time_study_options& o) {
             row.method = m;
             row.trajectory_frames = poses.size();
             row.reference = m == "certified";
-            with_method(m, a, b, [&](auto& d) {
-                if (!is_own_method(m) || m == "exact") {
+            if (const auto t = own.find(m); t != own.end()) {
+                answers = t->second.answers;
+                row.passes = t->second.passes;
+                row.seconds = t->second.median;
+            } else {
+                with_method(m, a, b, [&](auto& d) {
                     // The probe runs on a detector of its own: a detector with
                     // temporal coherence must start the timed run fresh.
                     with_method(m, a, b, [&](auto& probe) { row.stride = stride_for(probe, poses, o.budget); });
                     row.seconds = run_frames(d, poses, row.stride, answers);
-                    return;
-                }
-                std::vector<double> passes{run_frames(d, poses, 1, answers)};
-                double total = passes.front();
-                while (passes.size() < 3 || passes.size() % 2 == 0 || (total < o.repeat_seconds && passes.size() < 101))
-                    with_method(m, a, b, [&](auto& fresh) {
-                        passes.push_back(run_frames(fresh, poses, 1, repeated));
-                        total += passes.back();
-                    });
-                std::nth_element(passes.begin(), passes.begin() + passes.size() / 2, passes.end());
-                row.passes = passes.size();
-                row.seconds = passes[passes.size() / 2];
-            });
+                });
+            }
             row.frames = answers.size();
             for (std::size_t k = 0; k < answers.size(); ++k) {
                 row.collisions += answers[k] ? 1 : 0;
