@@ -86,11 +86,17 @@ struct distance_state {
 ///      With B posed in double (a B of no more edges than cached candidates),
 ///      the candidates are also those whose box meets B's, and none means no
 ///      boundary pair: go to 5.
+///      A B of fewer than a quarter as many edges as cached candidates skips
+///      the extended areas: each moving edge, posed in double, finds the
+///      static edges near it through A's edge tree (edge_tree.hpp), and each
+///      such pair goes to the tests of step 4; then step 5.
 ///   4. Pose B's vertices in double. For each candidate edge and each moving edge
-///      whose box meets the candidate's (grown by d and the rounding margin):
-///      the signs of alpha of the moving edge's ends (the paper's detailed
-///      test) and the exact segment test (d == 0), or the exact distance test
-///      (d > 0). Only those vertices are posed in NT.
+///      whose box meets the candidate's (grown by d and the rounding margin;
+///      B's chunks whose posed circle misses that box are skipped whole):
+///      for d == 0, the signs of alpha of the moving edge's ends (the paper's
+///      detailed test) and the same with the edges' roles swapped, as filters
+///      in double; then the exact segment test (d == 0), or the exact
+///      distance test (d > 0). Only those vertices are posed in NT.
 ///   5. No pair: the regions meet iff one contains a ring of the other. A
 ///      ring's vertex outside the other polygon's bounding circle or box (in
 ///      double, widened) is outside it without a locate.
