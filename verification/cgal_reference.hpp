@@ -1,5 +1,5 @@
 #pragma once
-// The exact reference answer of a frame (method.md section 1), built only on
+// The exact reference answer of a frame (docs/method.md, "Semantics"), built only on
 // CGAL's exact kernel (Epeck) and its own predicates, independently of the
 // library's predicates, coverings and filters. It is slow and simple on
 // purpose: the detectors are tested against it.
@@ -14,25 +14,28 @@
 //   double come first (against B's whole box, then each edge's); they can only drop pairs whose boxes are more than d
 //   apart on one axis (rounding of a difference is monotone, so the double
 //   comparison never drops a pair that the exact test would keep).
-// - Regions: outer rings minus holes, closed. A point is in a region when it is
-//   on one of its rings (CGAL::bounded_side_2 says ON_BOUNDARY), or when the
-//   number of outer rings that strictly contain it minus the number of holes
-//   that strictly contain it is positive.
+// - Regions: the library's rule, closed. A point is in a region when it lies
+//   on an edge of one of its rings, or when the sum of the rings' winding
+//   numbers around it (outer rings counter-clockwise, holes clockwise, as the
+//   polygon stores them; the orientation is checked here on exact areas) is
+//   not zero. The winding number is counted by ray crossings decided with
+//   CGAL::orientation, without the library's coverings or cone index.
 // - Collision: some boundary pair exists, or (no pair within d, so the
 //   boundaries are more than d apart and each ring lies wholly on one side of
 //   the other polygon's boundary) the first vertex of some ring of B lies in
 //   region A or the first vertex of some ring of A lies in region B: that
-//   region holds the whole ring, and the regions intersect.
+//   region holds the whole ring, and the regions intersect. Every ring of
+//   both polygons is located: no box or circle decides anything here.
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/intersections.h>
 #include <CGAL/squared_distance_2.h>
 
@@ -148,21 +151,53 @@ private:
             for (std::size_t i = P.ring_begin(r); i < P.ring_end(r); ++i) {
                 if (P.vertex(i) != P.vertex(P.next(i))) g.points.push_back(pts[i]);
             }
+            // The polygon's stored orientation, checked here exactly: an outer
+            // ring of non-zero area turns counter-clockwise, a hole clockwise.
+            const CGAL::Sign area = g.points.size() < 3 ? CGAL::ZERO : signed_area_sign(g.points);
+            if (area != CGAL::ZERO && (area == CGAL::POSITIVE) != !g.hole)
+                throw std::logic_error("cgal_reference: ring " + std::to_string(r) + " is stored with the wrong orientation");
             rings.push_back(std::move(g));
         }
         return rings;
     }
 
+    /// The library's region rule, decided here on CGAL's exact predicates: q
+    /// is in the closed region when it lies on an edge of some ring, or when
+    /// the sum over the rings of their winding numbers around q is not zero.
+    /// Rings come as the polygon stores them (outer rings counter-clockwise,
+    /// holes clockwise; checked in make_rings), so a hole outside every outer
+    /// ring is region (winding -1) and nested outer rings add nothing new.
     static bool in_region(const std::vector<ring>& rings, const point_2& q) {
-        int depth = 0;
+        long winding = 0;
         for (const ring& g : rings) {
-            switch (CGAL::bounded_side_2(g.points.begin(), g.points.end(), q, kernel())) {
-                case CGAL::ON_BOUNDARY: return true;
-                case CGAL::ON_BOUNDED_SIDE: depth += g.hole ? -1 : 1; break;
-                case CGAL::ON_UNBOUNDED_SIDE: break;
+            const std::size_t n = g.points.size();
+            for (std::size_t i = 0; i < n; ++i) {
+                const point_2& a = g.points[i];
+                const point_2& b = g.points[(i + 1) % n];
+                const CGAL::Orientation side = CGAL::orientation(a, b, q);
+                if (side == CGAL::COLLINEAR && CGAL::collinear_are_ordered_along_line(a, q, b)) return true;
+                // Crossings of the horizontal ray from q towards +x: upward
+                // edges with q on their left count +1, downward edges with q
+                // on their right count -1 (each edge half-open in y).
+                if (a.y() <= q.y()) {
+                    if (b.y() > q.y() && side == CGAL::LEFT_TURN) ++winding;
+                } else if (b.y() <= q.y() && side == CGAL::RIGHT_TURN) {
+                    --winding;
+                }
             }
         }
-        return depth > 0;
+        return winding != 0;
+    }
+
+    /// The exact sign of a ring's signed area (shoelace sum in FT).
+    static CGAL::Sign signed_area_sign(const std::vector<point_2>& pts) {
+        FT twice = 0;
+        for (std::size_t i = 0; i < pts.size(); ++i) {
+            const point_2& a = pts[i];
+            const point_2& b = pts[(i + 1) % pts.size()];
+            twice += a.x() * b.y() - a.y() * b.x();
+        }
+        return CGAL::sign(twice);
     }
 
     /// Conservative: false only when the boxes are more than d apart on an axis.

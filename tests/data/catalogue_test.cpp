@@ -14,6 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/catalogue.hpp"
+
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/detector.hpp"
 #include "influence2d/io/wkt.hpp"
@@ -27,55 +29,14 @@ using influence2d::extended_area;
 using influence2d::frame_result;
 using influence2d::polygon;
 using influence2d::pose;
-using json = nlohmann::json;
+using json = test_catalogue::json;
 
-const json& catalogue() {
-    static const json doc = [] {
-        std::ifstream in(std::string(INFLUENCE2D_DATA_DIR) + "/catalogue.json");
-        REQUIRE(in);
-        return json::parse(in);
-    }();
-    return doc;
-}
+using test_catalogue::frame;
+using test_catalogue::test_case;
 
-struct frame {
-    pose where;
-    double distance = 0;
-    bool collides = false;
-    std::vector<edge_pair> pairs;
-    std::string note;
-};
+const json& catalogue() { return test_catalogue::document(); }
 
-struct test_case {
-    std::string name;
-    polygon fixed;
-    polygon moving;
-    std::vector<frame> frames;
-};
-
-std::vector<test_case> load_cases() {
-    std::vector<test_case> cases;
-    for (const json& c : catalogue().at("cases")) {
-        test_case t;
-        t.name = c.at("name").get<std::string>();
-        t.fixed = influence2d::read_wkt(c.at("static").get<std::string>(), t.name + " static");
-        t.moving = influence2d::read_wkt(c.at("moving").get<std::string>(), t.name + " moving");
-        for (const json& f : c.at("frames")) {
-            frame fr;
-            const auto p = f.at("pose").get<std::vector<double>>();
-            REQUIRE(p.size() == 3);
-            fr.where = pose{p[0], p[1], p[2]};
-            fr.distance = f.value("distance", 0.0);
-            fr.collides = f.at("collides").get<bool>();
-            for (const json& q : f.value("pairs", json::array()))
-                fr.pairs.push_back({q.at(0).get<std::size_t>(), q.at(1).get<std::size_t>()});
-            fr.note = f.value("note", std::string());
-            t.frames.push_back(fr);
-        }
-        cases.push_back(std::move(t));
-    }
-    return cases;
-}
+const std::vector<test_case>& load_cases() { return test_catalogue::cases(); }
 
 std::string describe(const std::vector<edge_pair>& pairs) {
     std::ostringstream s;

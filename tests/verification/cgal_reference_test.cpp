@@ -229,3 +229,58 @@ TEST_CASE("reference: input numbering of a clockwise ring and a repeated vertex"
     const auto td = run(rep, unit_square(), pose{1.75, 2, 0}, 1.25);
     CHECK(td.pairs == pairs({{1, 0}, {1, 3}, {2, 0}, {2, 3}, {3, 0}, {3, 3}}));
 }
+
+TEST_CASE("reference: every part of a multipolygon is located in the other polygon", "[reference][multipolygon]") {
+    //  +-----+
+    //  | +-+ |        +-+       A: two unit squares, at x = 0 and x = 10
+    //  | |A| |   ...  |A|       B: the square [-1, 2]^2, posed by a translation
+    //  | +-+ |        +-+
+    //  +-----+
+    // B swallows one part of A without touching any edge: A's box does not
+    // fit in B's, but that part does.
+    const polygon A({ring(rect(0, 0, 1, 1)), ring(rect(10, 0, 11, 1))});
+    const polygon B({ring(rect(-1, -1, 2, 2))});
+    CHECK(run(A, B, pose{0, 0, 0}).collides);
+    CHECK(run(A, B, pose{9.5, 0, 0}).collides);
+    CHECK_FALSE(run(A, B, pose{5, 0, 0}).collides);
+    // Roles swapped: the first or the second part of the moving polygon lies in A.
+    CHECK(run(B, A, pose{0, 0, 0}).collides);
+    CHECK(run(B, A, pose{-9.5, 0, 0}).collides);
+    CHECK_FALSE(run(B, A, pose{-5, 0, 0}).collides);
+}
+
+TEST_CASE("reference: regions by winding number, a hole outside its shell and nested shells", "[reference][region]") {
+    // A hole lying outside every outer ring has winding number -1 there: the
+    // library counts it as region (a count by nesting depth would not).
+    //   +--+
+    //   |  |   [4,5]^2 given as a hole     outer [0,1]^2
+    //   +--+
+    const polygon stray({ring(rect(0, 0, 1, 1)), ring(rect(4, 4, 5, 5), ring_role::hole)});
+    const polygon dot({ring(rect(0, 0, 0.25, 0.25))});
+    CHECK(run(stray, dot, pose{4.5, 4.5, 0}).collides);   // inside the stray hole
+    CHECK_FALSE(run(stray, dot, pose{2.5, 2.5, 0}).collides);
+    CHECK(run(dot, stray, pose{-4.5, -4.5, 0}).collides);  // roles swapped: the stray hole holds A
+    // Nested outer rings: winding 2 inside the inner one, 1 between: all region.
+    const polygon nested({ring(rect(0, 0, 10, 10)), ring(rect(3, 3, 7, 7))});
+    CHECK(run(nested, dot, pose{1, 1, 0}).collides);
+    CHECK(run(nested, dot, pose{5, 5, 0}).collides);
+    // A hole inside an inner shell: winding 2 - 1 = 1, still region.
+    const polygon shell_hole({ring(rect(0, 0, 10, 10)), ring(rect(3, 3, 7, 7)), ring(rect(4, 4, 6, 6), ring_role::hole)});
+    CHECK(run(shell_hole, dot, pose{4.9, 4.9, 0}).collides);
+    // An island inside a hole: region again; the hole around it is not.
+    const polygon island({ring(rect(0, 0, 10, 10)), ring(rect(2, 2, 8, 8), ring_role::hole), ring(rect(4, 4, 6, 6))});
+    CHECK(run(island, dot, pose{4.9, 4.9, 0}).collides);
+    CHECK_FALSE(run(island, dot, pose{2.5, 2.5, 0}).collides);
+}
+
+TEST_CASE("reference: a figure eight bounds both lobes", "[reference][region]") {
+    //  (0,0) ---- (2,2)      the ring (0,0) (2,2) (2,0) (0,2) crosses itself at
+    //     \  /               (1,1): winding +1 in one lobe, -1 in the other;
+    //      \/                both are region.
+    //      /\.
+    const polygon bowtie({ring(pts{{0, 0}, {2, 2}, {2, 0}, {0, 2}})});
+    const polygon dot({ring(rect(0, 0, 0.1, 0.1))});
+    CHECK(run(bowtie, dot, pose{0.15, 0.95, 0}).collides);  // left lobe
+    CHECK(run(bowtie, dot, pose{1.75, 0.95, 0}).collides);  // right lobe
+    CHECK_FALSE(run(bowtie, dot, pose{0.95, 0.15, 0}).collides);  // below the crossing
+}

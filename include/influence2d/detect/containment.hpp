@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// Containment without boundary contact (method.md section 7).
+/// Containment without boundary contact (docs/method.md, "Containment").
 
+#include <cstddef>
 #include <optional>
 
 #include "influence2d/covering/inclusion.hpp"
@@ -9,29 +10,48 @@
 
 namespace influence2d {
 
+/// A ring filter that keeps every ring: each is located.
+struct every_ring {
+    /// Always true: ring r may lie in the other polygon.
+    bool operator()(std::size_t) const { return true; }
+};
+
 /// Whether the closed regions of A and the posed B meet, given that their
-/// boundaries do not (the caller found no boundary pair). B inside a hole of
-/// A does not meet A. Each ring of B then lies wholly inside or outside A,
-/// and each ring of A wholly inside or outside B, and the regions meet exactly
-/// when one vertex of some ring of one lies in the other region. Exact when NT
-/// is; a ring of B costs a locate in A through A's cone index, a ring of A a
-/// scan of B's edges. Given `reach` (a bound
-/// of B's radius, with any rounding margin), a ring of A whose first vertex is
-/// farther than that from B's centroid is skipped without a test; with
-/// `a_may_be_inside_b` false (the caller knows A does not fit in B) no ring of
-/// A is tested, and with `b_may_be_inside_a` false no ring of B. With
-/// MultiRing false both polygons are taken to have one ring.
-template <class NT, bool MultiRing = true>
+/// boundaries do not (the caller found no boundary pair).
+///
+///   for each ring r of B kept by b_ring_may_be_in_a:
+///       if B's ring r's first vertex is not outside A: meet
+///   for each ring r of A kept by a_ring_may_be_in_b:
+///       if its first vertex is farther than reach from B's centroid: skip
+///       if A's ring r's first vertex is not outside B: meet
+///   disjoint
+///
+/// Why one vertex per ring suffices: no ring of one polygon meets a ring of
+/// the other, so every ring lies within one face of the other polygon's
+/// rings, where the winding number is constant: the ring lies wholly inside
+/// or wholly outside the other region. And if the regions meet, the part
+/// they share is bounded and its boundary lies on some ring of A or of B,
+/// which then lies in the other region. Every ring of both polygons is
+/// accounted for: a multipolygon's part inside the other polygon is found
+/// whichever part it is. B inside a hole of A does not meet A.
+///
+/// The filters are the caller's shortcuts and must be valid per ring: a ring
+/// they drop must certainly lie outside the other polygon. `reach`, when
+/// given, bounds the distance from B's centroid to every point of B (with any
+/// rounding margin). Exact when NT is; a ring of B costs a locate in A
+/// through A's cone index, a ring of A a scan of B's edges. With MultiRing
+/// false both polygons are taken to have one ring.
+template <class NT, bool MultiRing = true, class AFilter = every_ring, class BFilter = every_ring>
 bool one_contains_other(const static_scene<NT>& a, posed_polygon<NT>& b, std::optional<double> reach = std::nullopt,
-                        bool a_may_be_inside_b = true, bool b_may_be_inside_a = true) {
+                        AFilter a_ring_may_be_in_b = {}, BFilter b_ring_may_be_in_a = {}) {
     const polygon& bs = b.shape();
-    for (std::size_t r = 0; r < (MultiRing ? bs.ring_count() : 1) && b_may_be_inside_a; ++r)
-        if (a.areas.locate(b.vertex(bs.ring_begin(r))) != location::outside) return true;
-    if (!a_may_be_inside_b) return false;
+    for (std::size_t r = 0; r < (MultiRing ? bs.ring_count() : 1); ++r)
+        if (b_ring_may_be_in_a(r) && a.areas.locate(b.vertex(bs.ring_begin(r))) != location::outside) return true;
     const NT reach_nt = number_traits<NT>::from_double(reach.value_or(0));
     const NT reach2 = reach_nt * reach_nt;
     const polygon& as = a.shape;
     for (std::size_t r = 0; r < (MultiRing ? as.ring_count() : 1); ++r) {
+        if (!a_ring_may_be_in_b(r)) continue;
         const point<NT>& v = a.covering.start(as.ring_begin(r));
         if (reach && squared_distance(v, b.centroid()) > reach2) continue;
         if (locate(bs, b.vertices(), b.centroid(), v) != location::outside) return true;

@@ -146,7 +146,10 @@ public:
                   std::numeric_limits<double>::min();
         grid_ = edge_grid(a_->shape, reach_ + skin(), margin_);
         tree_ = edge_tree(a_->shape);
-        for (const auto& v : a_->shape.vertices()) a_box_.add(v);
+        const polygon& as = a_->shape;
+        a_ring_boxes_.resize(with_holes ? as.ring_count() : 1);
+        for (std::size_t r = 0; r < a_ring_boxes_.size(); ++r)
+            for (std::size_t i = as.ring_begin(r); i < as.ring_end(r); ++i) a_ring_boxes_[r].add(as.vertex(i));
         make_chunks();
         if constexpr (with_distance) {
             distance_state::value.distance = tr::from_double(options_.distance);
@@ -279,7 +282,7 @@ public:
         std::size_t bytes = sizeof(*this) + grid + chunks_.capacity() * sizeof(chunk) +
                             chunk_centers_.capacity() * sizeof(point<double>) +
                             (cache_.capacity() + candidates_.capacity()) * sizeof(std::uint32_t) + b_.heap_bytes() +
-                            tree_.heap_bytes();
+                            tree_.heap_bytes() + a_ring_boxes_.capacity() * sizeof(box);
         if constexpr (with_witness) bytes += witness_state::value.heap_bytes();
         return bytes;
     }
@@ -360,10 +363,13 @@ private:
     }
 
     /// Step 5, B's vertices posed in double: whether one region holds a ring
-    /// of the other (B's rings only if `b_may_be_inside_a`). A can lie in B only if A's box lies in B's (the box of the
-    /// double approximations, grown by the rounding margin; any value that is
-    /// not finite leaves the question open): else no ring of A is located in
-    /// B, which costs a scan of B's edges.
+    /// of the other (B's rings only if `b_may_be_inside_a`). Each shortcut
+    /// holds per ring, so that every part of a multipolygon is accounted for:
+    ///   a ring of A can lie in B only if that ring's box lies in B's box (the
+    ///   box of the double approximations, grown by the rounding margin; a
+    ///   value that is not finite leaves the question open);
+    ///   a ring of B can lie in A only if its first vertex lies within A's
+    ///   bounding circle (widened; NaN leaves it open).
     bool contains(double n, double frame_margin, bool b_may_be_inside_a = true) {
         box bb;
         bool finite = true;
@@ -372,18 +378,17 @@ private:
             finite = std::isfinite(v.x) && std::isfinite(v.y);
             bb.add(v);
         }
-        const bool a_may_fit = !finite || bb.inflated(frame_margin).contains(a_box_);
-        if (b_may_be_inside_a) {
-            const polygon& bs = b_.shape();
-            const point<double>& o = a_->shape.centroid();
-            b_may_be_inside_a = false;
-            for (std::size_t r = 0; r < (with_holes ? bs.ring_count() : 1) && !b_may_be_inside_a; ++r) {
-                const point<double>& v = b_.approximate(bs.ring_begin(r));
-                const double dist = filter_length(v.x - o.x, v.y - o.y);
-                b_may_be_inside_a = !(dist > a_->radius + 2 * frame_margin);  // NaN: may be
-            }
-        }
-        return one_contains_other<NT, with_holes>(*a_, b_, std::optional<double>(n), a_may_fit, b_may_be_inside_a);
+        const box b_box = bb.inflated(frame_margin);
+        const auto a_ring_may_fit = [&](std::size_t r) { return !finite || b_box.contains(a_ring_boxes_[r]); };
+        const polygon& bs = b_.shape();
+        const point<double>& o = a_->shape.centroid();
+        const double a_reach = a_->radius + 2 * frame_margin;
+        const auto b_ring_may_fit = [&](std::size_t r) {
+            if (!b_may_be_inside_a) return false;
+            const point<double>& v = b_.approximate(bs.ring_begin(r));
+            return !(filter_length(v.x - o.x, v.y - o.y) > a_reach);  // NaN: may be
+        };
+        return one_contains_other<NT, with_holes>(*a_, b_, std::optional<double>(n), a_ring_may_fit, b_ring_may_fit);
     }
 
     /// The paper's detailed test as a filter in double: whether u and v lie
@@ -393,23 +398,15 @@ private:
     /// ways: the exactly posed ends of a moving edge, known as u and v to
     /// within e, against a static edge's line; and a static edge's ends
     /// against the line through a moving edge's approximate ends (the exact
-    /// moving edge lies within e sqrt 2 < 2e of that line's segment). The
-    /// bound on each side value covers 2e (|dx| + |dy|) >= 2e |b - a| and the
-    /// rounding of the products; when it cannot be trusted (values not
-    /// finite, or so small that the bound itself might underflow) the answer
-    /// is false and the exact test decides.
+    /// moving edge lies within e sqrt 2 < 2e of that line's segment). Each
+    /// side is side_beyond with slack 2e (|dx| + |dy|) >= 2e |b - a|; when its
+    /// bound cannot be trusted the answer is false and the exact test decides.
     static bool same_side(const point<double>& a, const point<double>& b, const point<double>& u,
                           const point<double>& v, double e) {
         const double dx = b.x - a.x, dy = b.y - a.y;
         const double slack = 2 * e * (std::fabs(dx) + std::fabs(dy));
-        const auto side = [&](const point<double>& q) {
-            const double l = dx * (q.y - a.y), r = dy * (q.x - a.x);
-            const double o = l - r, bound = slack + 0x1p-48 * (std::fabs(l) + std::fabs(r));
-            if (!(bound >= 0x1p-900) || !(bound < HUGE_VAL) || !(std::fabs(o) > bound)) return 0;
-            return o > 0 ? 1 : -1;
-        };
-        const int su = side(u);
-        return su != 0 && side(v) == su;
+        const int su = side_beyond(a, dx, dy, u, slack);
+        return su != 0 && side_beyond(a, dx, dy, v, slack) == su;
     }
 
     /// Whether every moving edge, posed by t in double, is farther than
@@ -532,7 +529,7 @@ private:
     posed_polygon<NT> b_;
     detector_options options_;
     double reach_ = 0, margin_ = 0;
-    box a_box_;  ///< A's vertices
+    std::vector<box> a_ring_boxes_;  ///< the box of each ring of A
     struct chunk {
         point<double> center;
         double radius = 0;

@@ -16,11 +16,23 @@
 
 namespace influence2d {
 
+/// The side of q with respect to the line through a with direction (dx, dy),
+/// when q certainly lies beyond `slack` / (|dx| + |dy|) from it: +1 (left),
+/// -1 (right); else 0. In double, with a bound on its own rounding: 0
+/// whenever the bound cannot be trusted (values not finite, or so small that
+/// the bound might underflow).
+inline int side_beyond(const point<double>& a, double dx, double dy, const point<double>& q, double slack) {
+    const double l = dx * (q.y - a.y), r = dy * (q.x - a.x);
+    const double o = l - r, bound = slack + 0x1p-48 * (std::fabs(l) + std::fabs(r));
+    if (!(bound >= 0x1p-900) || !(bound < HUGE_VAL) || !(std::fabs(o) > bound)) return 0;
+    return o > 0 ? 1 : -1;
+}
+
 /// Whether the box b certainly lies farther than g from the line through u
 /// and v (every corner strictly on the same side, beyond g), in double with
-/// a bound on its own rounding: then no point within g of the segment [u, v]
-/// lies in b. False whenever the bound cannot be trusted (values not finite,
-/// or so small that the bound might underflow), and for u == v.
+/// a bound on its own rounding (side_beyond): then no point within g of the
+/// segment [u, v] lies in b. False whenever the bound cannot be trusted, and
+/// for u == v.
 inline bool box_beyond_line(const box& b, const point<double>& u, const point<double>& v, double g) {
     const double dx = v.x - u.x, dy = v.y - u.y;
     // g |d|_1 >= g |d|_2: the distance beyond g, with room for the rounding
@@ -30,11 +42,8 @@ inline bool box_beyond_line(const box& b, const point<double>& u, const point<do
     const double xs[2] = {b.min_x, b.max_x}, ys[2] = {b.min_y, b.max_y};
     for (double x : xs)
         for (double y : ys) {
-            const double l = dx * (y - u.y), r = dy * (x - u.x);
-            const double o = l - r, bound = slack + 0x1p-48 * (std::fabs(l) + std::fabs(r));
-            if (!(bound >= 0x1p-900) || !(bound < HUGE_VAL) || !(std::fabs(o) > bound)) return false;
-            const int s = o > 0 ? 1 : -1;
-            if (side != 0 && s != side) return false;
+            const int s = side_beyond(u, dx, dy, {x, y}, slack);
+            if (s == 0 || (side != 0 && s != side)) return false;
             side = s;
         }
     return true;
