@@ -15,6 +15,9 @@
 #include "influence2d/detect/detector.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "support/process.hpp"
+#include "verification/cgal_reference.hpp"
+
+#include <geos_c.h>
 
 namespace {
 
@@ -200,11 +203,12 @@ TEST_CASE("audit: the command, its text, JSON and exit codes", "[audit][cli]") {
     CHECK(run_cli(dir, "audit " + quote((dir / "missing.wkt").string())).exit_code == 2);
 }
 
-TEST_CASE("audit: the detector on the degenerate inputs it accepts equals the brute-force reference",
+TEST_CASE("audit: the detector on the degenerate inputs it accepts equals the references",
           "[audit][detector]") {
     // Each accepted degeneracy of the table in the README, as static and as
     // moving polygon, swept across a unit square in exact arithmetic: the
-    // sound detector answers (and names witness edges) as the all-pairs test.
+    // sound detector answers (and names witness edges) as the all-pairs test
+    // and as the independent CGAL reference.
     const char* cases[] = {
         "POLYGON((0 0, 4 0, 4 0, 4 4, 0 4, 0 0))",                      // repeated vertex
         "POLYGON((0 0, 4 0, 4 1e-13, 4 4, 0 4, 0 0))",                  // near-repeated vertex
@@ -218,6 +222,9 @@ TEST_CASE("audit: the detector on the degenerate inputs it accepts equals the br
         "POLYGON((0 0, 2 0, 4 0, 2 0, 0 0))",                           // zero area
         "POLYGON((0 0, 4 0, 2 1e-14, 0 0))",                            // near-zero area
         "POLYGON((-2 -1, 0 0, 2 -1, 1 0, 2 1, 0 0, -2 1, -1 0, -2 -1))",  // centroid on edges' lines
+        "MULTIPOLYGON(((0 0, 4 0, 4 4, 0 4, 0 0)), ((1 1, 3 1, 3 3, 1 3, 1 1)))",          // nested shells
+        "POLYGON((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 3 1, 3 3, 1 3, 1 1), (1.5 1.5, 2.5 1.5, 2.5 2.5, 1.5 2.5, 1.5 1.5))",  // nested holes
+        "POLYGON((0 0, 4 0, 4 4, 0 4, 0 0), EMPTY)",                    // empty ring
     };
     const polygon unit = read_wkt("POLYGON((0 0, 1 0, 1 1, 0 1, 0 0))");
     detector_options o;
@@ -229,13 +236,142 @@ TEST_CASE("audit: the detector on the degenerate inputs it accepts equals the br
             const polygon& b = role == 0 ? unit : p;
             detector<exact_rational> d(a, b, o);
             brute_force_detector<exact_rational> brute(a, b, o);
+            const verification::cgal_reference reference(a, b, 0, true);
             for (int k = 0; k <= 160; ++k) {
                 const pose q{-3 + 0.0625 * k, -2 + 0.05 * k, 0.01 * k};
-                const frame_result got = d.collide(q), want = brute.collide(q);
+                const frame_result got = d.collide(q), want = brute.collide(q), exact = reference.collide(q);
                 INFO(wkt << (role == 0 ? " static" : " moving") << ", frame " << k);
                 CHECK(got.collides == want.collides);
                 CHECK(got.pairs == want.pairs);
+                CHECK(got.collides == exact.collides);
+                CHECK(got.pairs == exact.pairs);
             }
         }
     }
+}
+
+namespace {
+
+/// Whether a small square (side 2^-6) at (x, y) meets the polygon, asked of
+/// the exact detector and of the independent CGAL reference (which must agree).
+bool probe(const polygon& p, double x, double y) {
+    const polygon dot = read_wkt("POLYGON((0 0, 0.015625 0, 0.015625 0.015625, 0 0.015625, 0 0))");
+    const bool got = detector<exact_rational>(p, dot).collide(pose{x, y, 0}).collides;
+    CHECK(got == verification::cgal_reference(p, dot).collide(pose{x, y, 0}).collides);
+    return got;
+}
+
+bool says(const finding& f, const std::string& words) {
+    return f.effect.find(words) != std::string::npos || f.what.find(words) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE("audit: its words agree with what the detector does", "[audit][region]") {
+    SECTION("a figure eight has zero signed area but bounds both lobes") {
+        const char* text = "POLYGON((0 0, 2 2, 2 0, 0 2, 0 0))";
+        const auto f = of(audit_wkt(text), finding_kind::zero_area);
+        REQUIRE(f.size() == 1);
+        CHECK(says(f[0], "each lobe has winding number +1 or -1 and is region"));
+        CHECK_FALSE(says(f[0], "bounds no region"));
+        const polygon p = read_wkt(text);
+        CHECK(probe(p, 0.2, 0.95));   // left lobe
+        CHECK(probe(p, 1.7, 0.95));   // right lobe
+        CHECK_FALSE(probe(p, 0.95, 0.2));
+    }
+    SECTION("a ring on one line bounds no region") {
+        const auto f = of(audit_wkt("POLYGON((0 0, 2 0, 4 0, 2 0, 0 0))"), finding_kind::zero_area);
+        REQUIRE(f.size() == 1);
+        CHECK(says(f[0], "it bounds no region"));
+    }
+    SECTION("a hole outside its shell, and a hole inside a hole, are region") {
+        const auto stray = of(audit_wkt("POLYGON((0 0, 10 0, 10 10, 0 10, 0 0), (20 4, 22 4, 22 6, 20 6, 20 4))"),
+                              finding_kind::hole_outside_shell);
+        REQUIRE(stray.size() == 1);
+        CHECK(says(stray[0], "the hole's inside counts as region"));
+        CHECK(probe(read_wkt("POLYGON((0 0, 10 0, 10 10, 0 10, 0 0), (20 4, 22 4, 22 6, 20 6, 20 4))"), 21, 5));
+        const char* nested = "POLYGON((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 8 2, 8 8, 2 8, 2 2), (4 4, 6 4, 6 6, 4 6, 4 4))";
+        const audit_report r = audit_wkt(nested);
+        const auto inner = of(r, finding_kind::hole_outside_shell);
+        REQUIRE(inner.size() == 1);
+        CHECK(inner[0].ring == 2);
+        const polygon p = read_wkt(nested);
+        CHECK(probe(p, 5, 5));       // inside the inner hole: winding -1
+        CHECK_FALSE(probe(p, 3, 3));  // inside the outer hole only: winding 0
+        CHECK(probe(p, 1, 1));
+    }
+    SECTION("nested shells: the inner adds no region; a shell inside a stray hole cuts it out") {
+        const char* shells = "MULTIPOLYGON(((0 0, 10 0, 10 10, 0 10, 0 0)), ((3 3, 7 3, 7 7, 3 7, 3 3)))";
+        const auto f = of(audit_wkt(shells), finding_kind::nested_ring);
+        REQUIRE(f.size() == 1);
+        CHECK(f[0].ring == 1);
+        CHECK(says(f[0], "winding number is 2, region as around it"));
+        const polygon p = read_wkt(shells);
+        CHECK(probe(p, 5, 5));
+        CHECK(probe(p, 1, 1));
+        // A stray hole (winding -1 inside) with a shell in it: winding 0 there;
+        // a hole in the stray hole: winding -2, region.
+        const char* cut =
+            "MULTIPOLYGON(((0 0, 1 0, 1 1, 0 1, 0 0), (20 0, 30 0, 30 10, 20 10, 20 0)), ((24 4, 26 4, 26 6, 24 6, 24 4)))";
+        const polygon q = read_wkt(cut);
+        const auto g = of(audit_wkt(cut), finding_kind::nested_ring);
+        REQUIRE(g.size() == 1);
+        CHECK(g[0].ring == 2);
+        CHECK(says(g[0], "not region"));
+        CHECK_FALSE(probe(q, 25, 5));
+        CHECK(probe(q, 21, 1));
+        const char* hole_in_stray = "POLYGON((0 0, 1 0, 1 1, 0 1, 0 0), (20 0, 30 0, 30 10, 20 10, 20 0), (24 4, 26 4, 26 6, 24 6, 24 4))";
+        const auto h = of(audit_wkt(hole_in_stray), finding_kind::nested_ring);
+        REQUIRE(h.size() == 1);
+        CHECK(says(h[0], "winding number is -2, region as around it"));
+        CHECK(probe(read_wkt(hole_in_stray), 25, 5));
+    }
+    SECTION("size means extent: a short edge far from the origin") {
+        // An edge of 1e-9 on a polygon of extent 4 placed at 1e6: not near
+        // (2^-40 * 4 ~ 3.6e-12); it would be against the largest coordinate.
+        const audit_report far =
+            audit_wkt("POLYGON((1000000 1000000, 1000004 1000000, 1000004 1000000.000000001, 1000004 1000004, "
+                      "1000000 1000004, 1000000 1000000))");
+        CHECK(of(far, finding_kind::near_repeated_vertex).empty());
+        const auto near = of(audit_wkt("POLYGON((0 0, 4 0, 4 1e-13, 4 4, 0 4, 0 0))"), finding_kind::near_repeated_vertex);
+        REQUIRE(near.size() == 1);
+        CHECK(says(near[0], "of the polygon's extent (the longer side of its bounding box)"));
+    }
+    SECTION("an empty ring is ignored, as GEOS and JTS read it") {
+        const audit_report r = audit_wkt("POLYGON((0 0, 4 0, 4 4, 0 4, 0 0), EMPTY)");
+        CHECK(r.accepted);
+        const auto f = of(r, finding_kind::empty_ring);
+        REQUIRE(f.size() == 1);
+        CHECK_FALSE(f[0].rejects);
+        CHECK(says(f[0], "ignored"));
+        CHECK_FALSE(audit_wkt("POLYGON(EMPTY, (1 1, 2 1, 2 2, 1 1))").accepted);
+    }
+}
+
+TEST_CASE("audit: a repeated vertex is not a self-intersection; GEOS-valid polygons get none", "[audit][geos]") {
+    // Edges on either side of a zero-length edge share its point by
+    // construction. Every polygon here is valid for GEOS.
+    GEOSContextHandle_t ctx = GEOS_init_r();
+    GEOSWKTReader* reader = GEOSWKTReader_create_r(ctx);
+    const char* valid[] = {
+        "POLYGON((0 0, 4 0, 4 0, 4 4, 0 4, 0 0))",
+        "POLYGON((0 0, 4 0, 4 0, 4 0, 4 4, 0 4, 0 4, 0 0))",
+        "POLYGON((0 0, 0 0, 4 0, 4 4, 0 4, 0 0))",
+        "POLYGON((0 0, 4 0, 4 4, 0 4, 0 0, 0 0))",
+        "POLYGON((0 0, 4 0, 2 0.5, 2 0.5, 4 4, 0 4, 0 0))",
+        "POLYGON((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 2 2, 4 2, 4 4, 2 4, 2 2))",
+        "MULTIPOLYGON(((0 0, 1 0, 1 1, 0 0)), ((1 1, 2 1, 2 2, 2 2, 1 1)))",
+    };
+    for (const char* text : valid) {
+        INFO(text);
+        GEOSGeometry* g = GEOSWKTReader_read_r(ctx, reader, text);
+        REQUIRE(g != nullptr);
+        CHECK(GEOSisValid_r(ctx, g) == 1);
+        GEOSGeom_destroy_r(ctx, g);
+        const audit_report r = audit_wkt(text);
+        CHECK(r.accepted);
+        CHECK(of(r, finding_kind::self_intersection).empty());
+    }
+    GEOSWKTReader_destroy_r(ctx, reader);
+    GEOS_finish_r(ctx);
 }

@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include "influence2d/adapters/traits.hpp"
+
 #include "influence2d/core/polygon.hpp"
 #include "support/shapes.hpp"
 
@@ -57,6 +59,21 @@ TEST_CASE("polygon: repeated vertices stay as zero-length edges", "[polygon]") {
     polygon p({ring({{0, 0}, {1, 0}, {1, 0}, {1, 1}})});
     CHECK(p.size() == 4);
     CHECK(p.vertex(1) == p.vertex(2));
+}
+
+TEST_CASE("polygon: a closing copy of the first vertex is dropped, as make_polygon drops it", "[polygon]") {
+    // The same ring closed and open numbers its edges the same way, here and
+    // through the adapters.
+    const polygon closed({ring({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}})});
+    const polygon open({ring({{0, 0}, {1, 0}, {1, 1}, {0, 1}})});
+    CHECK(closed.size() == 4);
+    CHECK(closed.vertices() == open.vertices());
+    const std::vector<point<double>> pts{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}};
+    const polygon adapted = influence2d::make_polygon(pts);
+    CHECK(adapted.vertices() == closed.vertices());
+    for (std::size_t i = 0; i < closed.size(); ++i) CHECK(adapted.source_edge(i) == closed.source_edge(i));
+    // A repeat elsewhere stays.
+    CHECK(polygon({ring({{0, 0}, {0, 0}, {1, 0}, {1, 1}, {0, 0}})}).size() == 4);
 }
 
 TEST_CASE("polygon: ring orientation is exact at 1e200 and at subnormal scale", "[polygon]") {

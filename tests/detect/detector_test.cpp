@@ -1,9 +1,13 @@
 #include <catch2/catch.hpp>
 
+#include <limits>
 #include <random>
+#include <string>
 
 #include "influence2d/detect/brute_force.hpp"
+#include "influence2d/detect/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
+#include "influence2d/detect/paper_detector.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "support/shapes.hpp"
@@ -254,4 +258,46 @@ TEST_CASE("detector: a large moving polygon passing close by, and one holding A,
         if (b == &big) CHECK(exact.collide({0, 0, 0}).collides);     // A inside B: the regions meet
         if (b == &frame) CHECK_FALSE(exact.collide({0, 0, 0}).collides);  // A in B's hole: they do not
     }
+}
+
+namespace {
+
+/// The message of the invalid_input that f throws ("" when it throws none).
+template <class F>
+std::string refusal(F&& f) {
+    try {
+        f();
+    } catch (const influence2d::invalid_input& e) {
+        return e.what();
+    }
+    return "";
+}
+
+template <class Detector>
+void check_refuses_bad_input() {
+    using influence2d::pose;
+    const influence2d::polygon empty;
+    const influence2d::polygon sq = test_shapes::square(0, 0, 1);
+    CHECK(refusal([&] { Detector d(empty, sq); }) == "the static polygon is empty (it has no ring)");
+    CHECK(refusal([&] { Detector d(sq, empty); }) == "the moving polygon is empty (it has no ring)");
+    Detector d(sq, sq);
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    CHECK(refusal([&] { d.collide(pose{nan, 0, 0}); }) == "pose: tx is NaN, not a finite number");
+    CHECK(refusal([&] { d.collide(pose{0, inf, 0}); }) == "pose: ty is +infinity, not a finite number");
+    CHECK(refusal([&] { d.collide(pose{0, 0, -inf}); }) == "pose: theta is -infinity, not a finite number");
+    CHECK(refusal([&] { d.collide(pose{nan, inf, 0}); }) == "pose: tx is NaN, not a finite number");
+    // The detector is still usable after a refused pose.
+    CHECK_NOTHROW(d.collide(pose{0.5, 0.5, 0}));
+    CHECK_NOTHROW(d.collide(pose{3, 0, 1e300}));  // a huge but finite angle is a pose
+}
+
+}  // namespace
+
+TEST_CASE("detector: an empty polygon and a non-finite pose are refused with invalid_input", "[detector][input]") {
+    check_refuses_bad_input<influence2d::detector<double>>();
+    check_refuses_bad_input<influence2d::detector<float, influence2d::minimal_features>>();
+    check_refuses_bad_input<influence2d::detector<influence2d::exact_rational>>();
+    check_refuses_bad_input<influence2d::brute_force_detector<double>>();
+    check_refuses_bad_input<influence2d::paper_detector<double>>();
+    check_refuses_bad_input<influence2d::certified_detector<influence2d::detector>>();
 }

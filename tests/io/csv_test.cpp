@@ -2,6 +2,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -152,4 +154,21 @@ TEST_CASE("csv: frames with and without witness pairs", "[io][csv]") {
     write_frames_csv(witness, results, true);
     CHECK(plain.str() == "frame,collides\n0,1\n1,1\n2,0\n");
     CHECK(witness.str() == "frame,collides,edges\n0,1,0:2;3:1\n1,1,\n2,0,\n");
+}
+
+TEST_CASE("csv: every bad line is reported, not only the first", "[io][csv]") {
+    const std::string m = csv_error("tx,ty,theta\n1,2\n1,2,3\n1,x,3\n\n4,5,6\nnan,1,1\n");
+    // The message starts with the path (checked by csv_error); each later
+    // line starts with it too.
+    CHECK(m.find("line 2: 2 columns, expected 3; missing column theta") == 0);
+    CHECK(m.find("line 4, column ty: \"x\" is not a number") != std::string::npos);
+    CHECK(m.find("line 5: blank line between pose rows") != std::string::npos);
+    CHECK(m.find("line 7, column tx: \"nan\" is not a finite number") != std::string::npos);
+    CHECK(std::count(m.begin(), m.end(), '\n') == 3);
+    // Beyond max_reported_csv_errors, a count.
+    std::string many = "tx,ty,theta\n";
+    for (int k = 0; k < 30; ++k) many += "a,b,c\n";
+    const std::string capped = csv_error(many);
+    CHECK(std::count(capped.begin(), capped.end(), '\n') == 20);
+    CHECK(capped.find("and 10 more bad lines") != std::string::npos);
 }

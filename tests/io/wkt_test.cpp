@@ -139,7 +139,10 @@ TEST_CASE("wkt: rejects other geometry types and empty input", "[io][wkt]") {
     CHECK(wkt_error(" \n\t ") == "<text>: empty input: expected POLYGON or MULTIPOLYGON");
     CHECK(wkt_error("POLYGON EMPTY") == "<text>: POLYGON is empty");
     CHECK(wkt_error("multipolygon empty") == "<text>: MULTIPOLYGON is empty");
-    CHECK(wkt_error("POLYGON((),(0 0,1 0,1 1,0 0))") == "<text>: ring 0: empty ring");
+    CHECK(wkt_error("POLYGON((),(0 0,1 0,1 1,0 0))") == "<text>: ring 0: empty exterior ring with holes");
+    CHECK(wkt_error("POLYGON(EMPTY,(0 0,1 0,1 1,0 0))") == "<text>: ring 0: empty exterior ring with holes");
+    CHECK(wkt_error("POLYGON((),())") == "<text>: ring 0: empty exterior ring with holes");
+    CHECK(wkt_error("MULTIPOLYGON(EMPTY,EMPTY)") == "<text>: polygon has no ring");
 }
 
 TEST_CASE("wkt: rejects truncated text and trailing garbage", "[io][wkt]") {
@@ -221,4 +224,20 @@ TEST_CASE("wkt: an empty polygon has no ring and no WKT", "[wkt]") {
     CHECK(empty.ring_count() == 0);
     CHECK(empty.size() == 0);
     CHECK_THROWS_AS(influence2d::to_wkt(empty), influence2d::invalid_input);
+}
+
+TEST_CASE("wkt: an empty ring is no ring, as GEOS and JTS read it", "[io][wkt]") {
+    // Hole EMPTY, an empty part of a multipolygon, the empty list: ignored;
+    // the edges keep their numbers (an empty ring has none).
+    for (const char* text : {"POLYGON((0 0,4 0,4 4,0 4,0 0),EMPTY)", "POLYGON((0 0,4 0,4 4,0 4,0 0), empty )",
+                             "POLYGON((0 0,4 0,4 4,0 4,0 0),())", "MULTIPOLYGON(((0 0,4 0,4 4,0 4,0 0)),EMPTY)",
+                             "MULTIPOLYGON(EMPTY,((0 0,4 0,4 4,0 4,0 0)))"}) {
+        INFO(text);
+        const influence2d::polygon p = influence2d::read_wkt(text);
+        CHECK(p.ring_count() == 1);
+        CHECK(p.size() == 4);
+    }
+    const influence2d::polygon two = influence2d::read_wkt("MULTIPOLYGON(((0 0,4 0,4 4,0 4,0 0),EMPTY),((8 0,9 0,9 1,8 0)))");
+    CHECK(two.ring_count() == 2);
+    CHECK(two.size() == 7);
 }

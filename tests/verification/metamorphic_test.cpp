@@ -66,12 +66,15 @@ numbered_rings rings_of(const polygon& p) {
     return out;
 }
 
-/// Every ring starting at a random vertex.
+/// Every ring starting at a random vertex; never between two copies of a
+/// repeated vertex, where the last vertex would equal the first and be read
+/// as the ring's closing copy.
 numbered_rings rotated_starts(numbered_rings in, rng& g) {
     for (std::size_t r = 0; r < in.rings.size(); ++r) {
         auto& v = in.rings[r].vertices;
         auto& l = in.labels[r];
-        const std::size_t s = g.index(v.size());
+        std::size_t s = g.index(v.size());
+        while (v[s] == v[(s + v.size() - 1) % v.size()]) s = (s + 1) % v.size();
         std::rotate(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(s), v.end());
         std::rotate(l.begin(), l.begin() + static_cast<std::ptrdiff_t>(s), l.end());
     }

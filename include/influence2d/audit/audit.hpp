@@ -27,10 +27,12 @@
 
 namespace influence2d {
 
-/// What an audit finding is about. The first four make the input refused;
-/// the library keeps the others as they are (reversed_orientation: reversed).
+/// What an audit finding is about. unclosed_ring, non_finite and
+/// too_few_vertices make the input refused, as does an empty exterior ring
+/// followed by holes; the library keeps the others as they are
+/// (reversed_orientation: reversed; an empty ring: ignored).
 enum class finding_kind {
-    empty_ring,             ///< a ring without points
+    empty_ring,             ///< a ring without points (WKT `EMPTY` or `()`)
     unclosed_ring,          ///< the last point differs from the first (or the ring has one point)
     non_finite,             ///< a coordinate is NaN or infinite
     too_few_vertices,       ///< a ring with fewer than three distinct vertices
@@ -41,10 +43,15 @@ enum class finding_kind {
     self_intersection,      ///< two edges of one ring, not adjacent, meet (touching counts)
     rings_meet,             ///< edges of two rings meet (touching counts)
     reversed_orientation,   ///< a clockwise outer ring or a counter-clockwise hole
-    /// No vertex of a hole lies strictly inside an outer ring. Where no outer
-    /// ring encloses the hole, its inside has winding number -1 and so belongs
-    /// to the region (see polygon).
+    /// A hole that no outer ring winds around (the other rings' winding
+    /// number there is 0): inside it the winding number is -1, so its inside
+    /// belongs to the region (see polygon). A hole inside another hole is one.
     hole_outside_shell,
+    /// A ring that meets no other lying where the other rings already wind
+    /// (an outer ring inside an outer ring, a hole inside nested shells or a
+    /// stray hole): the finding says which winding numbers it separates and
+    /// whether its inside is region.
+    nested_ring,
     non_manifold_vertex,    ///< one point is a vertex at two places that are not consecutive
     zero_area,              ///< a ring whose exact signed area is 0
     near_zero_area,         ///< a ring whose area is below the tolerance (audit_options)
@@ -70,6 +77,7 @@ inline const char* finding_name(finding_kind k) {
         case finding_kind::rings_meet: return "rings_meet";
         case finding_kind::reversed_orientation: return "reversed_orientation";
         case finding_kind::hole_outside_shell: return "hole_outside_shell";
+        case finding_kind::nested_ring: return "nested_ring";
         case finding_kind::non_manifold_vertex: return "non_manifold_vertex";
         case finding_kind::zero_area: return "zero_area";
         case finding_kind::near_zero_area: return "near_zero_area";
@@ -110,9 +118,9 @@ struct audit_report {
 
 /// The tolerances and limits of audit_rings.
 struct audit_options {
-    /// Points closer than this times the polygon's size (its largest absolute
-    /// coordinate) are near-repeated; a ring whose area is below this times
-    /// the square of its box's diagonal has near-zero area.
+    /// Points closer than this times the polygon's extent (the longer side of
+    /// the box of all its vertices) are near-repeated; a ring whose area is
+    /// below this times the square of its box's diagonal has near-zero area.
     double relative_tolerance = 0x1p-40;
     /// At most this many findings of one kind are listed (audit_report::total
     /// counts them all).
@@ -121,12 +129,14 @@ struct audit_options {
 
 namespace audit_detail {
 
-inline double size_of(const std::vector<std::vector<point<double>>>& rings) {
-    double s = 0;
+/// The polygon's extent: the longer side of the box of its finite vertices
+/// (0 without any).
+inline double extent_of(const std::vector<std::vector<point<double>>>& rings) {
+    box b;
     for (const auto& r : rings)
         for (const auto& p : r)
-            if (std::isfinite(p.x) && std::isfinite(p.y)) s = std::max({s, std::fabs(p.x), std::fabs(p.y)});
-    return s;
+            if (std::isfinite(p.x) && std::isfinite(p.y)) b.add(p);
+    return b.empty() ? 0 : std::max(b.max_x - b.min_x, b.max_y - b.min_y);
 }
 
 /// The exact orientation of three points with finite double coordinates
@@ -151,19 +161,42 @@ inline bool segments_meet(const point<double>& a, const point<double>& b, const 
     return oc * od <= 0 && orient(c, d, a) * orient(c, d, b) <= 0;
 }
 
-/// Where q lies against a closed ring (exact): -1 outside, 0 on, 1 inside.
-inline int locate_in_ring(const point<double>& q, const std::vector<point<double>>& ring) {
-    bool inside = false;
+/// The winding number of a closed ring around q, as the ring is given (exact:
+/// crossings of the ray from q towards +x, upward edges with q on their left
+/// +1, downward edges with q on their right -1); empty when q lies on the ring.
+inline std::optional<int> winding_of_ring(const point<double>& q, const std::vector<point<double>>& ring) {
+    int w = 0;
     for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
         const point<double>& a = ring[i];
         const point<double>& b = ring[(i + 1) % n];
-        if (on_closed_segment(q, a, b)) return 0;
-        if ((a.y > q.y) != (b.y > q.y)) {
-            const int o = orient(a, b, q);  // q left of a->b
-            if ((b.y > a.y) == (o > 0)) inside = !inside;
+        if (on_closed_segment(q, a, b)) return std::nullopt;
+        if (a.y <= q.y) {
+            if (b.y > q.y && orient(a, b, q) > 0) ++w;
+        } else if (b.y <= q.y && orient(a, b, q) < 0) {
+            --w;
         }
     }
-    return inside ? 1 : -1;
+    return w;
+}
+
+/// Whether every vertex of the ring lies on one line (exact).
+inline bool all_collinear(const std::vector<point<double>>& ring) {
+    std::size_t other = 1;
+    while (other < ring.size() && ring[other] == ring[0]) ++other;
+    for (std::size_t i = other + 1; i < ring.size(); ++i)
+        if (orient(ring[0], ring[other], ring[i]) != 0) return false;
+    return true;
+}
+
+/// Whether edge j follows edge i on the ring with only zero-length edges
+/// between them (so that they share the end of i).
+inline bool adjacent(const std::vector<point<double>>& ring, std::size_t i, std::size_t j) {
+    const std::size_t n = ring.size();
+    for (std::size_t k = (i + 1) % n; k != i; k = (k + 1) % n) {
+        if (k == j) return true;
+        if (!(ring[k] == ring[(k + 1) % n])) return false;
+    }
+    return false;
 }
 
 struct edge_ref {
@@ -172,8 +205,10 @@ struct edge_ref {
     double min_x, max_x;
 };
 
-/// Every pair of edges that meet, except edges adjacent on a ring (which
-/// share their vertex) and zero-length edges; a sweep over x.
+/// Every pair of edges that meet, except zero-length edges and edges adjacent
+/// on a ring, which share their vertex by construction: consecutive edges, or
+/// edges with only zero-length edges between them (a repeated vertex); a
+/// sweep over x.
 template <class Visit>
 void meeting_edges(const std::vector<std::vector<point<double>>>& rings, Visit visit) {
     std::vector<edge_ref> edges;
@@ -190,10 +225,8 @@ void meeting_edges(const std::vector<std::vector<point<double>>>& rings, Visit v
         active.erase(std::remove_if(active.begin(), active.end(), [&](const edge_ref* f) { return f->max_x < e.min_x; }),
                      active.end());
         for (const edge_ref* f : active) {
-            if (f->ring == e.ring) {
-                const std::size_t n = rings[e.ring].size();
-                if ((f->index + 1) % n == e.index || (e.index + 1) % n == f->index) continue;
-            }
+            if (f->ring == e.ring && (adjacent(rings[e.ring], f->index, e.index) || adjacent(rings[e.ring], e.index, f->index)))
+                continue;
             if (std::max(f->a.y, f->b.y) < std::min(e.a.y, e.b.y) || std::max(e.a.y, e.b.y) < std::min(f->a.y, f->b.y))
                 continue;
             if (segments_meet(f->a, f->b, e.a, e.b)) {
@@ -258,7 +291,15 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
         const auto& pts = input[k].points;
         bool ok = true;
         if (pts.empty()) {
-            add(at_ring(finding_kind::empty_ring, k, {}, "empty ring", "refused", true));
+            // GEOS and JTS read an empty ring as no ring; an empty exterior
+            // followed by its holes leaves holes without a part.
+            const bool shell_of_holes = input[k].role == ring_role::outer && k + 1 < input.size() &&
+                                        input[k + 1].role == ring_role::hole;
+            if (shell_of_holes)
+                add(at_ring(finding_kind::empty_ring, k, {}, "empty exterior ring with holes", "refused", true));
+            else
+                add(at_ring(finding_kind::empty_ring, k, {}, "empty ring",
+                            "ignored, as GEOS and JTS read it: the polygon has the other rings"));
             rings.emplace_back();
             usable.push_back(false);
             continue;
@@ -288,8 +329,9 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
         usable.push_back(ok);
     }
 
-    const double size = size_of(rings);
-    const double near = o.relative_tolerance * size;
+    const double near = o.relative_tolerance * extent_of(rings);
+    // -1 for a ring the polygon stores reversed (its winding numbers flip).
+    std::vector<int> stored_turn(rings.size(), 1);
     for (std::size_t k = 0; k < rings.size(); ++k) {
         if (!usable[k]) continue;
         const auto& ring = rings[k];
@@ -306,7 +348,8 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
             } else if (std::max(std::fabs(p.x - q.x), std::fabs(p.y - q.y)) <= near) {
                 add(at_vertex(finding_kind::near_repeated_vertex, k, v, p,
                               "edge " + std::to_string(v) + " is shorter than " +
-                                  wkt_detail::format_coordinate(o.relative_tolerance) + " of the polygon's size",
+                                  wkt_detail::format_coordinate(o.relative_tolerance) +
+                                  " of the polygon's extent (the longer side of its bounding box)",
                               "kept as it is; exact and certified modes decide on it exactly, float and double may "
                               "not"));
             }
@@ -339,9 +382,14 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
         box bounds;
         for (const auto& p : ring) bounds.add(p);
         const double w = bounds.max_x - bounds.min_x, h = bounds.max_y - bounds.min_y;
-        if (sign == 0) {
-            add(at_ring(finding_kind::zero_area, k, ring[0], "the ring encloses zero area",
-                        "kept: its edges still collide; it bounds no region"));
+        if (sign == 0 && all_collinear(ring)) {
+            add(at_ring(finding_kind::zero_area, k, ring[0], "the ring's vertices all lie on one line: zero area",
+                        "kept: its edges still collide; it bounds no region (winding number 0 off its edges)"));
+        } else if (sign == 0) {
+            add(at_ring(finding_kind::zero_area, k, ring[0],
+                        "the ring's signed area is zero: lobes of opposite turn cancel (a figure eight)",
+                        "kept in its input orientation: each lobe has winding number +1 or -1 and is region; only "
+                        "the signed sum is zero"));
         } else if (std::fabs(area) / 2 <= static_cast<long double>(o.relative_tolerance) * (static_cast<long double>(w) * w +
                                                                                        static_cast<long double>(h) * h)) {
             add(at_ring(finding_kind::near_zero_area, k, ring[0],
@@ -349,6 +397,7 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
                         "kept as it is; its orientation is decided exactly"));
         }
         if (reversed) {
+            stored_turn[k] = -1;
             add(at_ring(finding_kind::reversed_orientation, k, ring[0],
                         std::string(hole ? "hole" : "outer ring") + " is " + (hole ? "counter-clockwise" : "clockwise"),
                         "reversed when stored (orientation decided exactly); witnesses keep the input's edge numbers"));
@@ -363,7 +412,14 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
             live.push_back(rings[k]);
             live_index.push_back(k);
         }
+    std::vector<bool> meets_other(rings.size(), false), meets_itself(rings.size(), false);
     meeting_edges(live, [&](const edge_ref& f, const edge_ref& e) {
+        if (f.ring == e.ring) {
+            meets_itself[live_index[f.ring]] = true;
+        } else {
+            meets_other[live_index[f.ring]] = true;
+            meets_other[live_index[e.ring]] = true;
+        }
         finding g{f.ring == e.ring ? finding_kind::self_intersection : finding_kind::rings_meet};
         g.ring = live_index[f.ring];
         g.vertex = f.index;
@@ -372,30 +428,44 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
         g.at = f.a;
         if (f.ring == e.ring) {
             g.what = "edges " + std::to_string(f.index) + " and " + std::to_string(e.index) + " meet";
-            g.effect = "kept: the region is counted by how many rings hold a point (outer +1, hole -1), and the "
-                       "boundary is every edge";
+            g.effect = "kept: the region is where the rings' winding numbers (outer +1, hole -1) do not sum to "
+                       "0, and every edge is boundary";
         } else {
             g.what = "edge " + std::to_string(f.index) + " of ring " + std::to_string(live_index[f.ring]) +
                      " meets edge " + std::to_string(e.index) + " of ring " + std::to_string(live_index[e.ring]);
-            g.effect = "kept: rings may touch or cross; the region is counted by nesting";
+            g.effect = "kept: rings may touch or cross; the region is where the rings' winding numbers (outer +1, "
+                       "hole -1) do not sum to 0, and every edge is boundary";
         }
         add(g);
     });
 
-    // Holes against the outer rings; repeated coordinates at separate places.
+    // Rings within other rings: the winding number the other rings give
+    // about a ring that meets none of them (constant along it), and so what
+    // its inside is.
     for (std::size_t k = 0; k < rings.size(); ++k) {
-        if (!usable[k] || input[k].role != ring_role::hole) continue;
-        bool inside = false;
-        for (std::size_t s = 0; s < rings.size() && !inside; ++s)
-            if (usable[s] && input[s].role == ring_role::outer)
-                for (const auto& p : rings[k])
-                    if (locate_in_ring(p, rings[s]) > 0) inside = true;
-        if (!inside) {
-            add(at_ring(finding_kind::hole_outside_shell, k, rings[k][0],
-                        "no vertex of the hole lies strictly inside an outer ring",
-                        "kept: the region is where the winding number is not 0, and inside a hole that lies "
-                        "outside every outer ring it is -1: the hole's inside counts as region"));
+        if (!usable[k] || meets_other[k] || meets_itself[k]) continue;
+        const point<double>& q = rings[k][0];
+        int w = 0;
+        for (std::size_t s = 0; s < rings.size(); ++s)
+            if (s != k && usable[s]) w += stored_turn[s] * winding_of_ring(q, rings[s]).value_or(0);
+        const bool hole = input[k].role == ring_role::hole;
+        if (w == (hole ? 1 : 0)) continue;  // an outer ring outside the others, a hole in one shell
+        const int inside = w + (hole ? -1 : 1);
+        if (hole && w == 0) {
+            add(at_ring(finding_kind::hole_outside_shell, k, q,
+                        "no outer ring winds around the hole (the other rings' winding number there is 0)",
+                        "kept: the region is where the winding number is not 0, and inside this hole it is -1: the "
+                        "hole's inside counts as region"));
+            continue;
         }
+        add(at_ring(finding_kind::nested_ring, k, q,
+                    std::string(hole ? "the hole" : "the outer ring") +
+                        " lies where the other rings' winding number is " + std::to_string(w) +
+                        (hole ? "" : " (a shell inside a shell)"),
+                    "kept: inside it the winding number is " + std::to_string(inside) +
+                        (inside != 0 ? ", region as around it: the ring adds or removes no region (its edges are "
+                                       "still boundary)"
+                                     : ", not region: the ring cuts its inside out of the region around it")));
     }
     {
         struct place {
@@ -435,7 +505,8 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
     std::optional<polygon> whole;
     if (r.accepted) {
         std::vector<ring_input> all;
-        for (std::size_t k = 0; k < rings.size(); ++k) all.push_back({rings[k], input[k].role});
+        for (std::size_t k = 0; k < rings.size(); ++k)
+            if (!rings[k].empty()) all.push_back({rings[k], input[k].role});
         try {
             whole.emplace(std::move(all));
         } catch (const invalid_input& e) {

@@ -10,19 +10,11 @@
 #include <vector>
 
 #include "influence2d/core/box.hpp"
+#include "influence2d/core/invalid_input.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/number/expansion.hpp"
 
 namespace influence2d {
-
-/// Raised for input the library cannot interpret: by polygon's constructor,
-/// the readers and writers in io/, and detectors given polygons they do not
-/// take. `what()` names the place (ring and vertex); the readers prefix the
-/// file or source name.
-class invalid_input : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
 
 /// What a ring bounds: the region (outer) or a hole in it.
 enum class ring_role : std::uint8_t {
@@ -33,7 +25,8 @@ enum class ring_role : std::uint8_t {
 /// One ring as read: its vertices without the closing repetition of the first.
 struct ring_input {
     /// The vertices in order, in either orientation. A closing copy of the
-    /// first vertex, if given, is kept as a zero-length last edge.
+    /// first vertex, if given, is dropped (as make_polygon and the WKT reader
+    /// drop it), so a ring numbers its edges the same closed or open.
     std::vector<point<double>> vertices;
     ring_role role = ring_role::outer;  ///< decides the stored orientation
 };
@@ -142,6 +135,7 @@ public:
 private:
     void add_ring(std::size_t r, ring_input ring) {
         auto& vs = ring.vertices;
+        if (vs.size() > 1 && vs.front() == vs.back()) vs.pop_back();  // the closing copy
         for (std::size_t k = 0; k < vs.size(); ++k) {
             if (!std::isfinite(vs[k].x) || !std::isfinite(vs[k].y))
                 throw invalid_input("ring " + std::to_string(r) + ", vertex " + std::to_string(k) +

@@ -3,6 +3,9 @@
 /// Rigid poses of the moving polygon (method.md section 1).
 
 #include <cmath>
+#include <string>
+
+#include "influence2d/core/invalid_input.hpp"
 
 #include "influence2d/core/point.hpp"
 #include "influence2d/number/traits.hpp"
@@ -10,9 +13,9 @@
 namespace influence2d {
 
 /// A rigid pose: rotation by `theta` radians about the moving polygon's own
-/// origin, then translation by (tx, ty). The default is the identity. The
-/// values should be finite: detectors do not check them, and a non-finite
-/// pose gives an unspecified answer.
+/// origin, then translation by (tx, ty). The default is the identity. Every
+/// component must be finite: detectors throw invalid_input naming the first
+/// one that is not (rotation_pose).
 struct pose {
     double tx = 0;     ///< translation along x
     double ty = 0;     ///< translation along y
@@ -30,9 +33,15 @@ struct rotation_pose {
     double tx = 0;  ///< translation along x
     double ty = 0;  ///< translation along y
 
-    /// Takes the cosine and sine of `p.theta` once, in double.
+    /// Takes the cosine and sine of `p.theta` once, in double. Throws
+    /// invalid_input naming the first component of p that is NaN or infinite;
+    /// the check is one comparison: x - x is 0 for every finite x and NaN
+    /// otherwise, so the sum of the three differences is 0 exactly when all
+    /// three are finite.
     explicit rotation_pose(const pose& p)
-        : c(std::cos(p.theta)), s(std::sin(p.theta)), tx(p.tx), ty(p.ty) {}
+        : c(std::cos(p.theta)), s(std::sin(p.theta)), tx(p.tx), ty(p.ty) {
+        if (!((p.tx - p.tx) + (p.ty - p.ty) + (p.theta - p.theta) == 0)) refuse(p);
+    }
 
     /// q posed in number type NT: `x' = c*qx - s*qy + tx`,
     /// `y' = s*qx + c*qy + ty`, every operation an NT operation on the input
@@ -45,6 +54,14 @@ struct rotation_pose {
         const NT qx = tr::from_double(q.x), qy = tr::from_double(q.y);
         return point<NT>{cx * qx - sx * qy + tr::from_double(tx),
                          sx * qx + cx * qy + tr::from_double(ty)};
+    }
+
+private:
+    [[noreturn]] static void refuse(const pose& p) {
+        const char* name = !std::isfinite(p.tx) ? "tx" : !std::isfinite(p.ty) ? "ty" : "theta";
+        const double value = !std::isfinite(p.tx) ? p.tx : !std::isfinite(p.ty) ? p.ty : p.theta;
+        throw invalid_input(std::string("pose: ") + name + " is " + (std::isnan(value) ? "NaN" : value > 0 ? "+infinity" : "-infinity") +
+                            ", not a finite number");
     }
 };
 

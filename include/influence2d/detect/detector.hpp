@@ -128,7 +128,9 @@ public:
     /// Precomputes A's covering, influence areas and edge grid for B's reach.
     /// Throws std::invalid_argument when `options` asks for witnesses or a
     /// distance > 0 the detector was built without (or d < 0 or not finite),
-    /// invalid_input for a polygon of several rings without features::holes.
+    /// invalid_input for an empty polygon, one beyond NT's range, or one of
+    /// several rings without features::holes. collide throws invalid_input
+    /// for a pose with a NaN or infinite component.
     detector(const polygon& static_polygon, const polygon& moving_polygon, detector_options options = {})
         : a_(std::make_shared<const static_scene<NT>>(checked(static_polygon, "static"))),
           b_(checked(moving_polygon, "moving")),
@@ -288,8 +290,10 @@ public:
     }
 
 private:
-    /// The polygon, refused with several rings when built without holes.
+    /// The polygon, refused when empty, beyond NT's range (accepted_polygon)
+    /// or, built without holes, with several rings.
     static const polygon& checked(const polygon& p, const char* which) {
+        accepted_polygon<NT>(p, which);
         if (!with_holes && p.ring_count() != 1)
             throw invalid_input(std::string("detector built without features::holes: the ") + which +
                                 " polygon has " + std::to_string(p.ring_count()) + " rings");

@@ -20,11 +20,14 @@
 
 namespace influence2d {
 
-/// The polygon p, checked to lie within the range of a floating NT narrower
-/// than double (float): throws invalid_input naming the first vertex beyond
-/// it (`which` names the polygon). Other types take every finite double.
+/// The polygon p, checked to be one a detector in NT can take: not empty (a
+/// default-constructed polygon has no ring), and within the range of a
+/// floating NT narrower than double (float). Throws invalid_input saying
+/// which polygon (`which`) is empty, or naming its first vertex beyond
+/// NT's range. Other types take every finite double.
 template <class NT>
-const polygon& in_range_of(const polygon& p, const char* which) {
+const polygon& accepted_polygon(const polygon& p, const char* which) {
+    if (p.size() == 0) throw invalid_input(std::string("the ") + which + " polygon is empty (it has no ring)");
     if constexpr (std::is_floating_point_v<NT> && std::numeric_limits<NT>::is_specialized) {
         constexpr double top = static_cast<double>(std::numeric_limits<NT>::max());
         if constexpr (top < std::numeric_limits<double>::max()) {
@@ -43,9 +46,9 @@ const polygon& in_range_of(const polygon& p, const char* which) {
 template <class NT>
 struct static_scene {
     /// Builds everything from A (O(n log n) for n edges); throws invalid_input
-    /// for a polygon beyond NT's range (see in_range_of).
+    /// for an empty polygon or one beyond NT's range (see accepted_polygon).
     explicit static_scene(const polygon& a)
-        : shape(in_range_of<NT>(a, "static")),
+        : shape(accepted_polygon<NT>(a, "static")),
           covering(shape, shape.centroid()),
           areas(covering),
           radius(bounding_radius(shape, shape.centroid())),
@@ -69,9 +72,9 @@ template <class NT>
 class posed_polygon {
 public:
     /// B in its own frame, not yet posed; throws invalid_input for a polygon
-    /// beyond NT's range (see in_range_of).
+    /// empty or beyond NT's range (see accepted_polygon).
     explicit posed_polygon(const polygon& b)
-        : shape_(in_range_of<NT>(b, "moving")), local_centroid_(b.centroid()), radius_(bounding_radius(b, b.centroid())) {
+        : shape_(accepted_polygon<NT>(b, "moving")), local_centroid_(b.centroid()), radius_(bounding_radius(b, b.centroid())) {
         vertices_.resize(b.size());
         approximate_.resize(b.size());
         stamp_.assign(b.size(), 0);

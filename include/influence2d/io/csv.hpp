@@ -27,6 +27,9 @@ namespace influence2d {
 
 /// Pose files larger than this (512 MiB) are refused by read_poses_csv.
 inline constexpr std::size_t max_csv_file_bytes = std::size_t{512} << 20;
+/// At most this many bad pose rows are named in read_poses_csv's message
+/// (one line each); the count of the others follows.
+inline constexpr std::size_t max_reported_csv_errors = 20;
 
 namespace csv_detail {
 
@@ -85,10 +88,15 @@ inline std::string format_number(double x) {
 /// Reads poses from a stream in the format of the file reader below; messages
 /// start with `path`, the name the stream is reported by. A UTF-8 byte-order
 /// mark before the header is skipped; more than max_csv_file_bytes of input
-/// is refused. Throws invalid_input naming the line (from 1) and column.
+/// is refused. Throws invalid_input naming the line (from 1) and column: at
+/// once for the header, the size or a read error; for the pose rows after
+/// reading them all, one line of the message per bad row (the first
+/// max_reported_csv_errors, then how many more).
 inline std::vector<pose> read_poses_csv(std::istream& in, const std::string& path) {
     using namespace csv_detail;
     auto fail = [&](const std::string& what) -> void { throw invalid_input(path + ": " + what); };
+    std::vector<std::string> bad_rows;
+    const auto bad = [&](const std::string& what) { bad_rows.push_back(path + ": " + what); };
     const std::string too_large =
         "file is larger than " + std::to_string(max_csv_file_bytes >> 20) + " MiB";
     std::vector<pose> poses;
@@ -118,27 +126,42 @@ inline std::vector<pose> read_poses_csv(std::istream& in, const std::string& pat
             header_seen = true;
             continue;
         }
-        if (blank_line != 0)
-            fail("line " + std::to_string(blank_line) + ": blank line between pose rows");
-        const auto fields = split(text);
-        if (fields.size() < pose_columns.size())
-            fail(place + ": " + std::to_string(fields.size()) +
-                 (fields.size() == 1 ? " column" : " columns") + ", expected 3; missing column " +
-                 pose_columns[fields.size()]);
-        if (fields.size() > pose_columns.size())
-            fail(place + ": " + std::to_string(fields.size()) +
-                 " columns, expected 3 (tx,ty,theta)");
-        std::array<double, 3> v{};
-        for (std::size_t c = 0; c < 3; ++c) {
-            const std::string why = parse_number(fields[c], v[c]);
-            if (!why.empty()) fail(place + ", column " + pose_columns[c] + ": " + why);
+        if (blank_line != 0) {
+            bad("line " + std::to_string(blank_line) + ": blank line between pose rows");
+            blank_line = 0;
         }
-        poses.push_back(pose{v[0], v[1], v[2]});
+        const auto fields = split(text);
+        if (fields.size() < pose_columns.size()) {
+            bad(place + ": " + std::to_string(fields.size()) + (fields.size() == 1 ? " column" : " columns") +
+                ", expected 3; missing column " + pose_columns[fields.size()]);
+            continue;
+        }
+        if (fields.size() > pose_columns.size()) {
+            bad(place + ": " + std::to_string(fields.size()) + " columns, expected 3 (tx,ty,theta)");
+            continue;
+        }
+        std::array<double, 3> v{};
+        bool ok = true;
+        for (std::size_t c = 0; c < 3 && ok; ++c) {
+            const std::string why = parse_number(fields[c], v[c]);
+            if (!why.empty()) bad(place + ", column " + pose_columns[c] + ": " + why);
+            ok = why.empty();
+        }
+        if (ok) poses.push_back(pose{v[0], v[1], v[2]});
     }
     if (in.bad()) fail("read error");
     if (!header_seen)
         fail(line_no == 0 ? "empty file: expected the header \"tx,ty,theta\""
                            : "no header: expected \"tx,ty,theta\"");
+    if (!bad_rows.empty()) {
+        std::string message;
+        for (std::size_t k = 0; k < bad_rows.size() && k < max_reported_csv_errors; ++k)
+            message += (k ? "\n" : "") + bad_rows[k];
+        if (bad_rows.size() > max_reported_csv_errors)
+            message += "\n" + path + ": and " + std::to_string(bad_rows.size() - max_reported_csv_errors) +
+                       " more bad lines";
+        throw invalid_input(message);
+    }
     return poses;
 }
 

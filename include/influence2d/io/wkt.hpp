@@ -77,6 +77,35 @@ inline std::string normalise(std::string_view text) {
     return out.substr(first, last - first + 1);
 }
 
+/// An element `EMPTY` inside the geometry's list, which Boost's reader does
+/// not take, written as the empty list it stands for: `()` for a ring of a
+/// polygon, `(())` for a polygon of a multipolygon. `ring_depth` is the
+/// nesting depth of a ring's list (2 for POLYGON, 3 for MULTIPOLYGON).
+inline std::string empty_elements_as_lists(const std::string& text, int ring_depth) {
+    std::string out;
+    int depth = 0;
+    for (std::size_t i = 0; i < text.size();) {
+        const char c = text[i];
+        if (std::isalpha(static_cast<unsigned char>(c))) {
+            std::size_t end = i;
+            while (end < text.size() && std::isalpha(static_cast<unsigned char>(text[end]))) ++end;
+            std::string word = text.substr(i, end - i);
+            for (char& w : word) w = static_cast<char>(std::toupper(static_cast<unsigned char>(w)));
+            if (depth > 0 && word == "EMPTY")
+                out += depth + 1 == ring_depth ? "()" : "(())";
+            else
+                out.append(text, i, end - i);
+            i = end;
+            continue;
+        }
+        if (c == '(') ++depth;
+        if (c == ')') --depth;
+        out += c;
+        ++i;
+    }
+    return out;
+}
+
 /// Boost's reader fills missing coordinates with zero, turns extra
 /// coordinates into extra points and accepts an empty element before ')'.
 /// This pass, run on text Boost has accepted, checks that every point at
@@ -129,12 +158,18 @@ inline void check_coordinate_tuples(std::string_view source, const std::string& 
     }
 }
 
-/// Appends the ring as a ring_input after checking it: not empty, finite
-/// coordinates, closed (first point repeated at the end, which is dropped).
-inline void append_ring(std::string_view source, const wkt_ring& r, std::vector<ring_input>& rings) {
-    const std::size_t index = rings.size();
+/// Appends ring `index` of the text as a ring_input after checking it:
+/// finite coordinates, closed (first point repeated at the end, which is
+/// dropped), three distinct vertices. An empty ring is no ring (as GEOS and
+/// JTS read it) and adds nothing, unless it is an exterior followed by holes
+/// (`holes_follow`): refused.
+inline void append_ring(std::string_view source, std::size_t index, const wkt_ring& r, bool holes_follow,
+                        std::vector<ring_input>& rings) {
     const auto& pts = r.points;
-    if (pts.empty()) fail(source, ring_place(index) + ": empty ring");
+    if (pts.empty()) {
+        if (r.role == ring_role::outer && holes_follow) fail(source, ring_place(index) + ": empty exterior ring with holes");
+        return;
+    }
     for (std::size_t k = 0; k < pts.size(); ++k) {
         if (!std::isfinite(pts[k].x) || !std::isfinite(pts[k].y))
             fail(source, vertex_place(index, k) + ": coordinate is not a finite number");
@@ -148,6 +183,7 @@ inline void append_ring(std::string_view source, const wkt_ring& r, std::vector<
     ring_input in;
     in.role = r.role;
     in.vertices.assign(pts.begin(), pts.end() - 1);
+    if (polygon::count_distinct(in.vertices) < 3) fail(source, ring_place(index) + ": fewer than three distinct vertices");
     rings.push_back(std::move(in));
 }
 
@@ -161,20 +197,21 @@ inline void append_ring(std::string_view source, const wkt_ring& r, std::vector<
 inline std::vector<wkt_ring> read_wkt_rings(std::string_view text, std::string_view source = "<text>") {
     namespace bg = boost::geometry;
     using namespace wkt_detail;
-    const std::string wkt = normalise(text);
-    if (wkt.empty()) fail(source, "empty input: expected POLYGON or MULTIPOLYGON");
+    const std::string plain = normalise(text);
+    if (plain.empty()) fail(source, "empty input: expected POLYGON or MULTIPOLYGON");
 
     std::size_t kw_end = 0;
-    while (kw_end < wkt.size() && std::isalpha(static_cast<unsigned char>(wkt[kw_end]))) ++kw_end;
-    std::string keyword = wkt.substr(0, kw_end);
+    while (kw_end < plain.size() && std::isalpha(static_cast<unsigned char>(plain[kw_end]))) ++kw_end;
+    std::string keyword = plain.substr(0, kw_end);
     for (char& c : keyword) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     const bool multi = keyword == "MULTIPOLYGON";
     if (!multi && keyword != "POLYGON") {
-        std::string found = wkt.substr(0, wkt.find_first_of(" (", kw_end == 0 ? 1 : kw_end));
+        std::string found = plain.substr(0, plain.find_first_of(" (", kw_end == 0 ? 1 : kw_end));
         if (found.size() > 40) found = found.substr(0, 40) + "...";
         fail(source, "expected POLYGON or MULTIPOLYGON, found '" + found + "'");
     }
 
+    const std::string wkt = empty_elements_as_lists(plain, multi ? 3 : 2);
     std::vector<wkt_ring> rings;
     const auto add = [&](const bg_ring& r, ring_role role) {
         wkt_ring out;
@@ -213,15 +250,19 @@ inline std::vector<wkt_ring> read_wkt_rings(std::string_view text, std::string_v
 /// keywords in any case, surrounding white space allowed. Rings must be
 /// closed; the closing point is dropped. Rings are numbered 0, 1, ... in text
 /// order across the whole geometry and vertices 0, 1, ... within a ring.
+/// An empty ring (`EMPTY` or `()`) is no ring, as GEOS and JTS read it; it
+/// holds no vertex, so the numbers of the edges do not change.
 /// Throws invalid_input with a message starting with `source` for what
-/// read_wkt_rings refuses, an empty or unclosed ring, a non-finite
-/// coordinate, and what polygon's constructor refuses (a ring with fewer
-/// than three distinct vertices). Degenerate but usable rings (repeated
+/// read_wkt_rings refuses, an unclosed ring, an empty exterior ring followed
+/// by holes, a non-finite coordinate, a ring with fewer than three distinct
+/// vertices, and a geometry whose rings are all empty. Degenerate but usable rings (repeated
 /// vertices, collinear runs, self-intersections, zero area) are accepted as
 /// polygon takes them; audit_rings (audit/audit.hpp) lists them.
 inline polygon read_wkt(std::string_view text, std::string_view source = "<text>") {
     std::vector<ring_input> rings;
-    for (const wkt_ring& r : read_wkt_rings(text, source)) wkt_detail::append_ring(source, r, rings);
+    const std::vector<wkt_ring> read = read_wkt_rings(text, source);
+    for (std::size_t k = 0; k < read.size(); ++k)
+        wkt_detail::append_ring(source, k, read[k], k + 1 < read.size() && read[k + 1].role == ring_role::hole, rings);
     try {
         return polygon(std::move(rings));
     } catch (const invalid_input& e) {

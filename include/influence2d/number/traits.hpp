@@ -54,7 +54,7 @@ struct number_traits<NT, std::enable_if_t<std::is_floating_point_v<NT>>> {
     /// infinity in practice), so float suits inputs within that range only.
     static NT from_double(double x) {
         // Converting a double beyond NT's range is undefined: go to infinity
-        // explicitly (detectors refuse such polygons; see in_range_of).
+        // explicitly (detectors refuse such polygons; see accepted_polygon).
         if constexpr (std::numeric_limits<NT>::is_specialized &&
                       std::numeric_limits<NT>::max() < std::numeric_limits<double>::max()) {
             if (x > static_cast<double>(std::numeric_limits<NT>::max())) return std::numeric_limits<NT>::infinity();
