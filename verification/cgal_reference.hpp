@@ -1,5 +1,5 @@
 #pragma once
-// The exact reference answer of a frame (docs/method.md, "Semantics"), built only on
+// The exact reference answer of a frame (docs/method.md section 1), built only on
 // CGAL's exact kernel (Epeck) and its own predicates, independently of the
 // library's predicates, coverings and filters. It is slow and simple on
 // purpose: the detectors are tested against it.

@@ -1,6 +1,6 @@
 #pragma once
 // The method's decisions, one at a time, in any number type NT, on the same
-// input doubles (method.md section 9), with answers that compare across types:
+// input doubles (docs/method.md section 9), with answers that compare across types:
 //
 //   cone_membership       the influence areas containing a query point
 //                         (influence_areas<NT>::for_each_containing), sorted

@@ -1,5 +1,5 @@
 #pragma once
-// The paper's five polygon families (method.md section 8): convex, starred,
+// The paper's five polygon families (docs/method.md section 8): convex, starred,
 // irregular, irregular contour and with hole, for any vertex count n >= 8,
 // all enclosed in the same size: every vertex within radius 50 of (0, 0) and
 // vertex 0 at (50, 0) exactly.

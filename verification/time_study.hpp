@@ -1,5 +1,5 @@
 #pragma once
-// The time study (method.md section 8): the paper's grid of cells, each method
+// The time study (docs/method.md section 8): the paper's grid of cells, each method
 // on the same frames, every answer counted against the exact reference.
 //
 //   for each polygon type, trajectory, static size n, moving size m (a cell):

@@ -1,4 +1,4 @@
-// The paper-literal variant fails exactly where method.md section 7 says it
+// The paper-literal variant fails exactly where docs/method.md section 7 says it
 // must; the sound detector answers each of these cases correctly.
 
 #include <catch2/catch.hpp>
@@ -79,4 +79,17 @@ TEMPLATE_TEST_CASE("paper-literal: where its premises hold it answers correctly"
     // Far away: the circles reject; crossing the right edge on the first frame.
     CHECK_FALSE(paper_detector<NT>(a, b).collide({9, 1.5, 0}).collides);
     CHECK(paper_detector<NT>(a, b).collide({3.5, 1.5, 0}).collides);
+}
+
+TEMPLATE_TEST_CASE("paper-literal: a multipolygon part inside the other polygon is missed", "[paper][multipolygon]",
+                   double, influence2d::exact_rational) {
+    // A: unit squares at x = 0 and x = 10; B: the square [-1, 2]^2 holding
+    // the second part at tx = 9.5, with no boundary contact. The sound
+    // detector finds it; the literal algorithm has no containment test.
+    using NT = TestType;
+    const polygon a({test_shapes::square_ring(0, 0, 1), test_shapes::square_ring(10, 0, 1)});
+    const polygon b = square(-1, -1, 3);
+    const pose p{9.5, 0, 0};
+    CHECK(detector<NT>(a, b).collide(p).collides);
+    CHECK_FALSE(paper_detector<NT>(a, b).collide(p).collides);
 }

@@ -88,7 +88,7 @@ public:
     /// The area centroid (the vertex mean for a polygon of zero area), rounded
     /// to double once so that every number type uses the same point.
     /// Computed in long double relative to the first vertex: approximate, and
-    /// any point would do for the covering; it is the origin O of method.md.
+    /// any point would do for the covering; it is the origin O of the covering (docs/method.md section 2).
     const point<double>& centroid() const { return centroid_; }
     /// The box of all vertices.
     const box& bounds() const { return bounds_; }

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Rigid poses of the moving polygon (method.md section 1).
+/// Rigid poses of the moving polygon (docs/method.md section 1).
 
 #include <cmath>
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The signed triangle covering of a polygon and the barycentric signs of a
-/// point in its triangles (method.md sections 2 and 3).
+/// point in its triangles (docs/method.md sections 2 and 3).
 
 #include <cstdint>
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Feito's inclusion test on the signed triangle covering (method.md section 2).
+/// Feito's inclusion test on the signed triangle covering (docs/method.md section 2).
 
 #include <cstddef>
 #include <vector>

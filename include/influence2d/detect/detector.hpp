@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The sound detector: the paper's method with the defects of its literal
-/// form removed (method.md section 7).
+/// form removed (docs/method.md section 7).
 
 #include <cmath>
 #include <memory>

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Algorithm 3 of Jimenez, Segura and Feito (WSCG 2004) as published, kept to
-/// reproduce the paper and to show where it fails (method.md sections 6, 7).
+/// reproduce the paper and to show where it fails (docs/method.md sections 6, 7).
 /// It is NOT a correct detector: it misses collisions and reports false ones.
 
 #include <memory>
@@ -26,8 +26,9 @@ namespace influence2d {
 ///      band, whatever options.shape says) contains p; an edge collides with the
 ///      moving edges whose ends change the sign of alpha. Else OUT.
 /// No segment confirmation, no containment test: the literal algorithm. It
-/// misses collisions (an approach along one cone, containment, contacts the
-/// gate misses) and reports false ones (B straddling an edge's line beyond
+/// misses collisions (an approach along one cone, contacts the gate misses,
+/// and every collision by containment: B inside A, A inside B, a part of a
+/// multipolygon inside the other polygon) and reports false ones (B straddling an edge's line beyond
 /// the segment); use detector for correct answers. Its signs are exact when
 /// NT is, so its failures are the algorithm's, not rounding's.
 template <class NT>

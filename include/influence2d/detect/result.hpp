@@ -26,7 +26,7 @@ inline bool operator<(const edge_pair& a, const edge_pair& b) {
                                           : a.moving_edge < b.moving_edge;
 }
 
-/// The shape used for the extended influence area of an edge (method.md 5).
+/// The shape used for the extended influence area of an edge (docs/method.md section 5).
 enum class extended_area {
     capsule,  ///< points within n of the edge segment
     band      ///< the paper's band between parallels at distance n, axis-parallel caps

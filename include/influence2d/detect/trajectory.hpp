@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The paper's trajectories (method.md section 8) as sequences of poses.
+/// The paper's trajectories (docs/method.md section 8) as sequences of poses.
 
 #include <algorithm>
 #include <cmath>

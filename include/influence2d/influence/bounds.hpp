@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Bounding radii as upper bounds in double (method.md section 9: radii carry
+/// Bounding radii as upper bounds in double (docs/method.md section 9: radii carry
 /// square roots, so filters use bounds, never the roots themselves).
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Extended influence areas of length n (method.md section 5): exact membership
+/// Extended influence areas of length n (docs/method.md section 5): exact membership
 /// of a point, in either shape. Both contain every point within n of the edge.
 
 #include <algorithm>

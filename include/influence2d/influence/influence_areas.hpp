@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Influence areas (the cones from the covering origin through each edge) and
-/// the influence mask of a point (method.md section 4).
+/// the influence mask of a point (docs/method.md section 4).
 
 #include <cmath>
 #include <algorithm>
