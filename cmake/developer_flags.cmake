@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Flags for what this repository builds itself (tool, tests); never exported.
 add_library(influence2d_developer_flags INTERFACE)
 target_compile_options(influence2d_developer_flags INTERFACE

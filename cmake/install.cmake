@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # Installation: the headers, a CMake package (find_package(influence2d)
 # giving influence2d::influence2d, and influence2d::cgal with the CGAL
 # component) with its version file, and a pkg-config file.

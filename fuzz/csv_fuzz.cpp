@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // libFuzzer target: the pose CSV reader on arbitrary text: it refuses with
 // invalid_input or returns finite poses that write and read back the same.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // libFuzzer target: the detector on arbitrary small multipolygons and poses.
 // The bytes give A and B, each of 1 to 3 rings (ring 0 outer, the others
 // outer or hole), each ring of 3 to 8 vertices k / 16 (k in -128..127) about

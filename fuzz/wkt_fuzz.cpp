@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // libFuzzer target: the WKT reader and the audit on arbitrary text. Either
 // refuses with invalid_input or returns; an accepted polygon is written back
 // and must read back to the same vertices.

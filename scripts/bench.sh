@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Benchmarks: installs Google Benchmark if missing, builds the benchmarks in
 # build-bench (Release, -DINFLUENCE2D_BUILD_BENCHMARKS=ON), runs them with 3
 # repetitions into build-bench/bench.json, and prints per scene the detector's

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Configures and builds one build tree: scripts/build.sh DIR [extra cmake args].
 set -euo pipefail
 dir=$1

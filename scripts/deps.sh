@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Installs the Debian packages the build needs, only those missing.
 set -euo pipefail
 packages=(g++ cmake make libcgal-dev libgmp-dev libmpfr-dev libboost-dev catch2 libcli11-dev nlohmann-json3-dev gnuplot-nox

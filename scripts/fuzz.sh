@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Builds the libFuzzer targets (clang, ASan + UBSan) in build-fuzz and runs
 # each for SECONDS (default 60) on a copy of its corpus from data/fuzz/; new
 # inputs that widen coverage go to build-fuzz/corpus/, crashes to

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # The long verification run: the final answer (collides) of the certified and
 # the exact modes against the exact reference (CGAL's exact kernel) on at least
 # a million frames of every case family, the stiff and extreme ones included.

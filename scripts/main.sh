@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # The main job: installs what is missing, builds, and runs the paper's worst
 # case (irregular contour polygons) on the circular and the linear trajectory,
 # in double and in exact arithmetic, with the sound and the paper-literal

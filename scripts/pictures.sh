@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Regenerates the README's pictures, docs/pictures/*.svg, with `influence2d render`
 # from the polygon families of data/families/.
 #

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSL-1.0
 # Installs what is missing, builds, and runs the test suite twice: an optimised
 # build, then an AddressSanitizer + UBSan build; then a short fuzz run.
 set -euo pipefail

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // `influence2d audit POLYGON.wkt`: every degeneracy of the polygon, found with
 // exact predicates (include/influence2d/audit/audit.hpp), as readable lines on
 // standard output and, with --json, as JSON.

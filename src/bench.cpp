@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // `influence2d bench`: the paper's time study (verification/time_study.hpp)
 // against the libraries a user would pick instead; writes bench.csv, bench.md
 // (our speed-up over the fastest peer per cell, the targets, peak memory) and

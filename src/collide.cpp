@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // `influence2d collide`: runs a detector over a sequence of poses of the moving
 // polygon and reports the frames that collide.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // The subcommands of the influence2d tool, one source file each.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Writing output files so that a reader never sees a half-written one.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // `influence2d generate`: writes the paper's polygon families as WKT files.
 
 #include <cstdint>

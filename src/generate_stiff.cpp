@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // `influence2d generate-stiff`: writes the stiff and extreme scenes of the
 // precision study (verification/stiff_cases.hpp) as WKT and CSV files.
 

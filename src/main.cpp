@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The influence2d command-line tool.
 //
 // Exit codes: 0 success (or --help), 1 `audit`: the library refuses the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // `influence2d render`: one SVG picture of a scene. The static polygon A with
 // its covering triangles (coloured by sign), its centroid and its influence
 // cones; at each chosen frame the moving polygon B, the extended areas of A's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Pieces shared by the reporting commands (study, bench): number formatting,
 // name-list checks and gnuplot.

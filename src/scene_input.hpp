@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // The scene of the commands that run a detector over poses (`collide`,
 // `render`): the options that name it, and the reading of its files with every

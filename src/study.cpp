@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // `influence2d study`: the method's decisions in every number type against the
 // exact reference (verification/study.hpp); writes the tables, a summary and
 // the plots of error against run time.

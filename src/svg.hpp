@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // A small SVG writer for `influence2d render`: XML escaping, compact numbers,
 // elements built attribute by attribute, and path data.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # The test api_docs: Doxygen runs over the public headers with docs/Doxyfile
 # and must print no warning, so that every public entity outside the detail
 # namespaces carries a comment and every comment parses. The reference it

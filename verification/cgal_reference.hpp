@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // The exact reference answer of a frame (docs/method.md section 1), built only on
 // CGAL's exact kernel (Epeck) and its own predicates, independently of the

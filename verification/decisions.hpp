@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // The method's decisions, one at a time, in any number type NT, on the same
 // input doubles (docs/method.md section 9), with answers that compare across types:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // The paper's five polygon families (docs/method.md section 8): convex, starred,
 // irregular, irregular contour and with hole, for any vertex count n >= 8,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The counting allocators behind verification/heap_meter.hpp: the global
 // operator new / delete of the tool, and GMP's memory functions. Blocks are
 // measured with malloc_usable_size, so a block freed after stop() or allocated

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Heap use of a piece of work: the bytes allocated through the global
 // operator new (C++ code: the library, CGAL, Boost.Geometry, GEOS) and through

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // The libraries a user would pick instead of influence2d, each behind the same
 // small interface as the time study's own methods:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Stiff and extreme scenes for the precision study: polygons and poses built so
 // that many frames lie within a few ulps of contact, on geometry that strains

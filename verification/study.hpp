@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // The precision study: the method's decisions (verification/decisions.hpp)
 // evaluated in each number type, compared with the exact reference and timed.

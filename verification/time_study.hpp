@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // The time study (docs/method.md section 8): the paper's grid of cells, each method
 // on the same frames, every answer counted against the exact reference.

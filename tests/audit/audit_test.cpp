@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The audit (include/influence2d/audit/audit.hpp, `influence2d audit`): each
 // kind of degeneracy found where it is, with the library's verdict; clean
 // polygons give no finding; the command's text, JSON and exit codes.

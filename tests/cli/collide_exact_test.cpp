@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // `influence2d collide --number-type exact`, run as a user runs it, against the
 // independent CGAL reference on every frame: random poses near contact, exact
 // contacts, and contacts moved by one ulp, with witnesses, at d = 0 and d > 0.

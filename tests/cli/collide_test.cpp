@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // `influence2d collide`, run as a separate process on files in a temporary directory.
 
 #include <catch2/catch.hpp>

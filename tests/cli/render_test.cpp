@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // `influence2d render`, run as a separate process: the SVG is well-formed XML,
 // shows one covering triangle per edge of A with its sign, and at each frame
 // the exact detector's answer and witness pairs; bad input leaves no file.

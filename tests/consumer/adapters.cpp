@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // An adapter from outside the library: polygons from std::array points
 // (<influence2d/adapters/traits.hpp>), a closed ring and an open one.
 #include <array>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSL-1.0
 # The test package_consumer: installs the library from BUILD_DIR into a fresh
 # prefix under WORK_DIR, then configures, builds and runs tests/consumer three
 # ways (find_package of the installed package, add_subdirectory, FetchContent),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The catalogue of degenerate and contact cases (data/catalogue.json): every
 // frame's expected answer, for the sound detector (both extended-area shapes,
 // with and without temporal coherence) and the brute-force reference, in

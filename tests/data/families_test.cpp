@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The committed polygon families (data/families) and their generator
 // (verification/families.hpp): the files are what the generator writes, and
 // every polygon has the promised size, shape and simplicity, checked exactly.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // certified_detector<detector> and certified_detector<brute_force_detector>
 // give the answers of detector<exact_rational>, witness pairs included.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Frames of a large static polygon and a moving one of few edges, the case
 // that finds its pairs through A's edge tree: the detector answers as the
 // brute-force reference in the same number type, with witnesses and with a

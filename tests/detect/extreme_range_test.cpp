@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Scenes whose coordinate products leave double's range. Ring orientation was
 // once decided with double products there, so a hole could be stored with the
 // outer ring's orientation and the exact detectors reported B, inside the hole,

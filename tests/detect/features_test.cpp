@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Compile-time features of the detector: every feature set answers as the
 // brute-force reference on what it supports, a detector without a feature
 // stores less and refuses what needs it, and without coherence it gathers

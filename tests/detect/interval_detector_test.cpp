@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // CGAL's interval arithmetic as a number type: its traits decide a sign only
 // when the interval does, and interval_detector, which falls back to exact
 // rationals on both kinds of undecided results (uncertain_sign from the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The paper-literal variant fails exactly where docs/method.md section 7 says it
 // must; the sound detector answers each of these cases correctly.
 

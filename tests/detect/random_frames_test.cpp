@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Agreement of the detectors with the exact CGAL reference on many frames.
 //
 // Polygons: data/families/<family>_<n>.wkt, families convex, starred,

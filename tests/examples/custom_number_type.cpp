@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // A number type of your own: any type with +, -, * and comparisons becomes a
 // detector number type once influence2d::number_traits is specialised for it.
 // Here Boost.Multiprecision's 50-digit binary floating point (header-only),

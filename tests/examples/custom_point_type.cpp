@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Your own point type: specialise influence2d::point_traits for it, then build
 // polygons from any range of it with make_polygon (influence2d/adapters/).
 #include <cstdio>

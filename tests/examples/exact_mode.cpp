@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Exact mode: the same loop as the README's example in exact rationals
 // (CGAL), where "touching" means touching exactly: B slides along A's top
 // side at heights 4 + 2^-k (k = 50..1, each a double) and at 4, and only the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The smallest useful program: a static polygon read from WKT text, a moving
 // polygon built in code, a trajectory of poses, and the first frame at which
 // the two collide.

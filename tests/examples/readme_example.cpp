@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The usage example of the README, built and run by the tests.
 #include <cstdio>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Separation distance: with detector_options::distance = d > 0 a frame
 // "collides" when the two polygons come within d of each other, for a safety
 // margin around an obstacle. With d = 0 only touching or overlapping counts.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Witness pairs: with detector_options::witness the detector also reports
 // which edges are in contact, as (static edge, moving edge) pairs. Edges are
 // numbered in the input order of the vertices, ring after ring: edge k goes

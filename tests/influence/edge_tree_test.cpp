@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // A's edge tree: the edges near a segment are all visited, whatever the
 // segment; the line test that prunes boxes holds exactly.
 

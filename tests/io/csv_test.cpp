@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Poses and frame results as CSV.
 
 #include <catch2/catch.hpp>

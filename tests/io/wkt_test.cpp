@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Reading and writing polygons as WKT.
 
 #include <catch2/catch.hpp>

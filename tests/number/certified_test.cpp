@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The certified number type: its error bound contains the exact value of the
 // same operations, a sign it gives is the exact sign, and a sign it cannot
 // know raises uncertain_sign.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Quadruple precision number types (number/multiprecision.hpp): traits, and
 // the detector in them agreeing with the exact one on frames with no exact
 // degeneracy (they round, at 113 bits).

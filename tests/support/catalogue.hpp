@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // The catalogue of degenerate and contact cases (data/catalogue.json), loaded
 // once: each case's polygons and its frames with their expected answers.

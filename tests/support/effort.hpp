@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // How much of their full work the heavy tests do: 1 by default, less when the
 // environment variable INFLUENCE2D_TEST_EFFORT says so (the sanitizer run, whose

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Running the influence2d tool as a separate process on files in a temporary directory.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Random scenes that the detector's own design does not produce: multipolygons
 // of 2 to 20 star-shaped parts of very different sizes, some with holes and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Small cases with known answers for the exact reference (verification/cgal_reference.hpp).
 // Edge numbers are input numbers: edge k runs from input vertex k to vertex k+1.
 // The unit square used below is input counter-clockwise:

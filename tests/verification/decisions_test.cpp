@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The decisions of verification/decisions.hpp: every number type agrees with
 // the exact reference on easy inputs; at the precision cliff double does not,
 // and the certified evaluation (certified, then exact rationals) does.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Changes of a scene that must not change its answer, in exact arithmetic,
 // on the catalogue and on random multipolygon scenes:
 //   - roles swapped at theta = 0: collide(A, B, (tx, ty, 0)) equals

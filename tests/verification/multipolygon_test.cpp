@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // Random multipolygons against the exact reference, in every mode that claims
 // exact answers, with both roles; and GEOS as a second, independent check on
 // translated valid scenes.

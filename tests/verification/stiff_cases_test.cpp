@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The stiff and extreme scenes (verification/stiff_cases.hpp) and their
 // committed files (data/stiff): the files are what the generator and the
 // generate-stiff command write; every polygon is valid and simple and every

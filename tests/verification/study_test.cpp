@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The precision study (verification/study.hpp, `influence2d study`): a tiny
 // run writes its files with the right headers, the types that claim exactness
 // never disagree with the reference, float does on a stiff family; the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The time study (verification/time_study.hpp, `influence2d bench`): every
 // method runs on the same frames of each cell, influence2d's modes agree with
 // the reference on every frame, a peer's strided frames are counted, the

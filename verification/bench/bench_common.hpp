@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Shared pieces of the benchmarks: the number types measured, their names,
 // and the polygon families read once.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // (b) The sound detector per number type on the paper's scenes: contour
 // polygons (the paper's hardest family), A static and B moving, on the
 // circular trajectory (90,000 frames, gap 9: B orbits A close by, no frame

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // (c) What the detector's compile-time features cost on a scene that does not
 // use them: the scenes of (b) but 8x1024, in double (and in exact rationals on
 // 64x64), yes/no answers at d = 0, in four builds of the detector:

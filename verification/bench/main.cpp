@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // The influence2d benchmarks (Google Benchmark): predicates and detectors per
 // number type, and the detector's compile-time features. See
 // predicates_bench.cpp, detector_bench.cpp and features_bench.cpp; scripts/bench.sh

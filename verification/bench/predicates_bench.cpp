@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 // (a) The predicates per number type, on inputs taken from the contour_64
 // polygon (static, converted from double) and the same polygon posed at random
 // places over it (moving: every coordinate the result of NT operations, as in

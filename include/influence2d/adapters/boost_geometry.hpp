@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Adapters for Boost.Geometry: its points, rings, polygons and multi-polygons
 // as influence2d input. Header-only; needs Boost (1.74 or later).

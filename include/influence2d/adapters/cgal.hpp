@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Adapters for CGAL: Point_2 of any kernel, Polygon_2 and Polygon_with_holes_2
 // as influence2d input. Part of the CGAL component (CMake target

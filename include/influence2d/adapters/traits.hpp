@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 // Adapters: polygons built from the caller's own point and ring types.
 //

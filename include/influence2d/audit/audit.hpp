@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
 /// Audit of a polygon's input: every degeneracy the library meets, each with

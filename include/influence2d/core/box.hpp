@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
 /// Axis-aligned boxes in double coordinates, used only by conservative filters.

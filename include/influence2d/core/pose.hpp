@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
 /// Rigid poses of the moving polygon (docs/method.md section 1).

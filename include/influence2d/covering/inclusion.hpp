@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
 /// Feito's inclusion test on the signed triangle covering (docs/method.md section 2).

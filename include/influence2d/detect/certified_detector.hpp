@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
 /// Certified detection: `D<certified>` with a per-frame exact fallback.

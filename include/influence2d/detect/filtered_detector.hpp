@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
 /// Filtered detection: the answers of the exact reference at nearly the cost of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
 /// Interval detection: filtered_detector with CGAL's interval arithmetic as the

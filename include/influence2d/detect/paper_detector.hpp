@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
 /// Algorithm 3 of Jimenez, Segura and Feito (WSCG 2004) as published, kept to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
 /// The paper's trajectories (docs/method.md section 8) as sequences of poses.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
 /// Bounding radii as upper bounds in double (docs/method.md section 9: radii carry

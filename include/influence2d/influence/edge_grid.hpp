@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
 /// A uniform grid over the static polygon, in its own (fixed) frame, listing for

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
 /// A bounding-volume hierarchy over a polygon's edges in its own (fixed)

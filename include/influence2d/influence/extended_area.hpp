@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
 /// Extended influence areas of length n (docs/method.md section 5): exact membership

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
 /// Polygons as WKT text: POLYGON and MULTIPOLYGON, read with Boost.Geometry's
