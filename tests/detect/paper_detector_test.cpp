@@ -82,15 +82,23 @@ TEMPLATE_TEST_CASE("paper-literal: where its premises hold it answers correctly"
     CHECK(paper_detector<NT>(a, b).collide({3.5, 1.5, 0}).collides);
 }
 
-TEMPLATE_TEST_CASE("paper-literal: a multipolygon part inside the other polygon is missed", "[paper][multipolygon]",
-                   double, influence2d::exact_rational) {
+TEMPLATE_TEST_CASE("paper-literal: a multipolygon part held by B is found only by the straddle defect",
+                   "[paper][multipolygon]", double, influence2d::exact_rational) {
     // A: unit squares at x = 0 and x = 10; B: the square [-1, 2]^2 holding
     // the second part at tx = 9.5, with no boundary contact. The sound
-    // detector finds it; the literal algorithm has no containment test.
+    // detector answers by containment (no pair). The literal algorithm has
+    // no containment test: its yes comes from B's edges straddling the lines
+    // of the held part's edges, pairs whose segments do not meet.
     using NT = TestType;
     const polygon a({test_shapes::square_ring(0, 0, 1), test_shapes::square_ring(10, 0, 1)});
     const polygon b = square(-1, -1, 3);
     const pose p{9.5, 0, 0};
-    CHECK(detector<NT>(a, b).collide(p).collides);
-    CHECK_FALSE(paper_detector<NT>(a, b).collide(p).collides);
+    detector_options o;
+    o.witness = true;
+    const frame_result sound = detector<NT>(a, b, o).collide(p);
+    CHECK(sound.collides);
+    CHECK(sound.pairs.empty());
+    const frame_result literal = paper_detector<NT>(a, b, o).collide(p);
+    CHECK(literal.collides);
+    CHECK_FALSE(literal.pairs.empty());
 }

@@ -28,8 +28,9 @@ namespace influence2d {
 ///      moving edges whose ends change the sign of alpha. Else OUT.
 /// No segment confirmation, no containment test: the literal algorithm. It
 /// misses collisions (an approach along one cone, contacts the gate misses,
-/// and every collision by containment: B inside A, A inside B, a part of a
-/// multipolygon inside the other polygon) and reports false ones (B straddling an edge's line beyond
+/// B inside A away from the lines of A's edges: it has no containment test;
+/// when B holds A or a part of a multipolygon A, B's edges straddle the lines
+/// of that part's edges and the straddle test says yes for that wrong reason) and reports false ones (B straddling an edge's line beyond
 /// the segment); use detector for correct answers. Its signs are exact when
 /// NT is, so its failures are the algorithm's, not rounding's.
 template <class NT>
