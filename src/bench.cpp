@@ -98,6 +98,9 @@ std::string bench_md(const time_study_result& r, const time_study_options& o, co
          " s (bench.csv: stride). Every answer is compared with the reference, the certified mode's exact answers.\n\n";
 
     // Per method: cells run, disagreements, geometric mean of ns per frame.
+    const std::vector<std::string> missing = missing_methods();
+    if (!missing.empty())
+        s += "Peers this build lacks (their libraries were not found when it was built): " + joined(missing) + ".\n\n";
     s += "## Methods\n\n| method | cells | frames run | disagreements | geometric mean ns per frame |\n|---|---:|---:|---:|---:|\n";
     for (const std::string& m : o.methods) {
         std::size_t n = 0, frames = 0, wrong = 0;

@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "influence2d/version.hpp"
 
 namespace {
 
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
         "Collision detection between 2D polygons with triangle coverings and influence areas "
         "(Jimenez, Segura and Feito, WSCG 2004).",
         "influence2d"};
+    app.set_version_flag("--version", std::string("influence2d ") + influence2d::version);
     app.require_subcommand(1);
     influence2d::cli::register_collide(app);
     influence2d::cli::register_generate(app);

@@ -22,8 +22,12 @@
 // Every peer but cgal poses B in double: x' = c x - s y + tx, y' = s x + c y + ty
 // with c = cos(theta), s = sin(theta), the library's formula.
 
+#if INFLUENCE2D_HAVE_BOX2D
 #include <box2d/box2d.h>
+#endif
+#if INFLUENCE2D_HAVE_GEOS
 #include <geos_c.h>
+#endif
 
 #include <CGAL/Boolean_set_operations_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -115,6 +119,7 @@ private:
     polygon_type a_, b_;
 };
 
+#if INFLUENCE2D_HAVE_GEOS
 /// GEOS through its reentrant C API, the static polygon prepared.
 class geos_peer {
 public:
@@ -187,6 +192,7 @@ private:
     GEOSGeometry* a_ = nullptr;
     const GEOSPreparedGeometry* prepared_ = nullptr;
 };
+#endif  // INFLUENCE2D_HAVE_GEOS
 
 /// CGAL's Boolean-set do_intersect over the exact kernel (regularised: touching
 /// is not an intersection).
@@ -229,6 +235,7 @@ private:
     polygon_with_holes_2 a_;
 };
 
+#if INFLUENCE2D_HAVE_BOX2D
 /// Box2D's convex polygon overlap test (b2TestOverlap, GJK in float).
 class box2d_peer {
 public:
@@ -275,5 +282,6 @@ private:
 
     b2PolygonShape a_, b_;
 };
+#endif  // INFLUENCE2D_HAVE_BOX2D
 
 }  // namespace influence2d::verification

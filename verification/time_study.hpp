@@ -51,11 +51,38 @@
 
 namespace influence2d::verification {
 
-/// The methods of the time study, ours first.
-inline const std::vector<std::string>& time_study_methods() {
+/// Whether the peer library of a method was found when this was built (GEOS
+/// and Box2D are optional; every other method is always there).
+inline bool method_available(const std::string& m) {
+    if (m == "geos") return INFLUENCE2D_HAVE_GEOS + 0 == 1;
+    if (m == "box2d") return INFLUENCE2D_HAVE_BOX2D + 0 == 1;
+    return true;
+}
+
+/// Every method the time study knows, ours first, available or not.
+inline const std::vector<std::string>& known_methods() {
     static const std::vector<std::string> all = {"double", "certified", "exact",          "paper", "brute_force",
                                                  "boost_geometry", "geos",   "cgal", "box2d"};
     return all;
+}
+
+/// The methods of the time study, ours first: those this build has.
+inline const std::vector<std::string>& time_study_methods() {
+    static const std::vector<std::string> available = [] {
+        std::vector<std::string> out;
+        for (const std::string& m : known_methods())
+            if (method_available(m)) out.push_back(m);
+        return out;
+    }();
+    return available;
+}
+
+/// The peers this build lacks (their libraries were not found), for reports.
+inline std::vector<std::string> missing_methods() {
+    std::vector<std::string> out;
+    for (const std::string& m : known_methods())
+        if (!method_available(m)) out.push_back(m);
+    return out;
 }
 
 /// Whether a method is one of influence2d's (else a peer).
@@ -152,18 +179,23 @@ void with_method(const std::string& m, const polygon& a, const polygon& b, F&& f
         boost_geometry_peer d(a, b);
         return f(d);
     }
+#if INFLUENCE2D_HAVE_GEOS
     if (m == "geos") {
         geos_peer d(a, b);
         return f(d);
     }
+#endif
     if (m == "cgal") {
         cgal_peer d(a, b);
         return f(d);
     }
+#if INFLUENCE2D_HAVE_BOX2D
     if (m == "box2d") {
         box2d_peer d(a, b);
         return f(d);
     }
+#endif
+    if (!method_available(m)) throw std::invalid_argument("method " + m + ": its library was not found when this was built");
     throw std::invalid_argument("unknown method: " + m);
 }
 
@@ -177,7 +209,10 @@ bool collides(D& d, const pose& p) {
 
 /// Whether the method can take the cell (Box2D: convex, at most 8 vertices).
 inline bool applies(const std::string& m, const polygon& a, const polygon& b) {
-    return m != "box2d" || box2d_peer::applies(a, b);
+#if INFLUENCE2D_HAVE_BOX2D
+    if (m == "box2d") return box2d_peer::applies(a, b);
+#endif
+    return method_available(m);
 }
 
 /// Runs d on poses[0], poses[stride], ...; answers into `answers` (one per

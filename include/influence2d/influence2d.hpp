@@ -14,6 +14,7 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/version.hpp"
 #include "influence2d/covering/covering.hpp"
 #include "influence2d/covering/inclusion.hpp"
 #include "influence2d/detect/brute_force.hpp"

@@ -18,7 +18,9 @@
 #include "support/process.hpp"
 #include "verification/cgal_reference.hpp"
 
+#if INFLUENCE2D_HAVE_GEOS
 #include <geos_c.h>
+#endif
 
 namespace {
 
@@ -349,6 +351,7 @@ TEST_CASE("audit: its words agree with what the detector does", "[audit][region]
     }
 }
 
+#if INFLUENCE2D_HAVE_GEOS
 TEST_CASE("audit: a repeated vertex is not a self-intersection; GEOS-valid polygons get none", "[audit][geos]") {
     // Edges on either side of a zero-length edge share its point by
     // construction. Every polygon here is valid for GEOS.
@@ -376,3 +379,4 @@ TEST_CASE("audit: a repeated vertex is not a self-intersection; GEOS-valid polyg
     GEOSWKTReader_destroy_r(ctx, reader);
     GEOS_finish_r(ctx);
 }
+#endif  // INFLUENCE2D_HAVE_GEOS

@@ -23,7 +23,9 @@
 #include <string>
 #include <vector>
 
+#if INFLUENCE2D_HAVE_GEOS
 #include <geos_c.h>
+#endif
 
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/certified_detector.hpp"
@@ -146,6 +148,7 @@ TEST_CASE("random multipolygons: every exact mode agrees with the exact referenc
     CHECK(collide < total);
 }
 
+#if INFLUENCE2D_HAVE_GEOS
 namespace {
 
 /// GEOS's intersects on WKT text (closed semantics, as the library's).
@@ -211,6 +214,7 @@ TEST_CASE("random multipolygons: the exact answer equals GEOS's on valid transla
     CHECK(collide * 5 > checked);
     CHECK(collide < checked);
 }
+#endif  // INFLUENCE2D_HAVE_GEOS
 
 TEST_CASE("random rings under the winding rule: exact modes agree with the reference", "[multipolygon][reference][winding]") {
     // Overlapping and nested shells, holes outside every shell, self-crossing

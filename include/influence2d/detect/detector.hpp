@@ -18,6 +18,7 @@
 #include "influence2d/influence/edge_grid.hpp"
 #include "influence2d/influence/edge_tree.hpp"
 #include "influence2d/influence/extended_area.hpp"
+#include "influence2d/predicates/filters.hpp"
 #include "influence2d/predicates/segments.hpp"
 
 namespace influence2d {
@@ -79,7 +80,7 @@ struct distance_state {
 ///   3. If no moving edge (posed in double) comes within R_A + d of O_A, no
 ///      boundary pair exists: go to 5. B's bounding circle may cover much of A
 ///      while its edges keep clear of A's circle (a large B passing close by).
-///      B's edges are tested in chunks of 8 under bounding circles fixed in
+///      B's edges are tested in chunks of chunk_edges (8) under bounding circles fixed in
 ///      B's frame, when there are no more chunks than cached candidates.
 ///      Then keep the candidates whose extended area of length n contains p.
 ///      None: no edge of A comes within n of p, the disk of radius n about p is
@@ -162,111 +163,28 @@ public:
 
     /// Whether the closed regions of A and of B posed by q are at distance
     /// <= d (they meet, for d = 0); with witnesses, every edge pair within d.
+    /// Throws invalid_input for a pose with a NaN or infinite component.
+    ///
+    ///   f <- the frame: B's centroid p posed in double, the rounding margin
+    ///   if A's and B's bounding circles are apart:            disjoint
+    ///   refresh the cached candidates if p left their skin
+    ///   if circle_test_pays() and B's edges keep off A's circle:
+    ///       no boundary pair:                                  containment of A in B
+    ///   if tree_pays():   pairs from each moving edge's query of A's edge tree
+    ///   else:             pairs from the candidates in p's extended areas
+    ///   (both end in containment when no pair meets)
     frame_result collide(const pose& q) {
-        using tr = number_traits<NT>;
         tally(&detector_statistics::frames);
-        const rotation_pose t(q);
-        b_.place(t);
-        const point<double> pd = b_.approximate_centroid();
-        // Rounding of the posed coordinates is relative to the magnitudes of
-        // the terms that make them: B's own coordinates (in margin_), the
-        // translation, and the result.
-        const double frame_margin =
-            margin_ + tr::filter_slack * (std::fabs(pd.x) + std::fabs(pd.y) + std::fabs(q.tx) + std::fabs(q.ty));
-        const double n = reach_ + frame_margin;
-
-        // 1. Bounding circles (a filter: in double, widened by the margin).
-        const point<double>& o = a_->shape.centroid();
-        if (filter_length(pd.x - o.x, pd.y - o.y) > a_->radius + n + frame_margin) {
+        const frame f = begin_frame(q);
+        if (circles_apart(f)) {
             tally(&detector_statistics::circle_rejections);
             return {};
         }
-
-        // 2. Candidates gathered within n + skin, reused while p moves < skin.
-        if constexpr (with_coherence) {
-            const detail::coherence_state& c = coherence_state::value;
-            if (!c.valid || filter_length(pd.x - c.center.x, pd.y - c.center.y) > c.skin) gather(pd, frame_margin);
-        } else {
-            gather(pd, frame_margin);
-        }
-
-        // 3. B's edges against A's bounding circle, then the extended areas of
-        // length n (filters: in double, widened).
-        const polygon& bs = b_.shape();
-        if (chunks_.size() <= cache_.size() + 1 &&
-            edges_clear_of(t, o, a_->radius + distance() + 2 * frame_margin, frame_margin)) {
-            tally(&detector_statistics::disc_rejections);
-            tally(&detector_statistics::containment_tests);
-            // B's vertices lie outside A's circle, so outside A; A can lie in
-            // B only if its first vertex lies within B's circle.
-            const point<double>& a0 = a_->shape.vertex(0);
-            if (filter_length(a0.x - pd.x, a0.y - pd.y) > b_.radius() + 2 * frame_margin) return {};
-            place_approximate(t);
-            return {contains(n, frame_margin, false), {}};
-        }
-        if (bs.size() * tree_cost < cache_.size()) {
-            // Few moving edges against many cached static edges: each moving
-            // edge finds the static edges near it through A's edge tree.
-            tally(&detector_statistics::tree_frames);
-            place_approximate(t);
-            if constexpr (with_witness)
-                if (options_.witness) witness_state::value.clear();
-            for (std::size_t j = 0; j < bs.size(); ++j) {
-                const point<double>&u = b_.approximate(j), &v = b_.approximate(next_b(j));
-                const bool met = tree_.query(u, v, distance() + frame_margin, distance() + 2 * frame_margin,
-                                             [&](std::uint32_t e) {
-                                                 tally(&detector_statistics::candidate_edges);
-                                                 return test_pair(e, j, frame_margin) && !witnessing();
-                                             });
-                if (met) return {true, {}};
-            }
-            return finish(n, frame_margin);
-        }
-        const bool placed = bs.size() <= cache_.size();
-        if (placed) place_approximate(t);
-        candidates_.clear();
-        const polygon& as = a_->shape;
-        box bb;  // with B posed in double: B's box grown by d and the margin
-        if (placed) {
-            for (std::size_t j = 0; j < bs.size(); ++j) bb.add(b_.approximate(j));
-            bb = bb.inflated(distance() + frame_margin);
-        }
-        if (!bb.empty()) {
-            // Only edges whose box meets B's can meet B.
-            for (std::uint32_t e : cache_) {
-                const point<double>&u = as.vertex(e), &v = as.vertex(as.next(e));
-                if (std::max(u.x, v.x) >= bb.min_x && std::min(u.x, v.x) <= bb.max_x && std::max(u.y, v.y) >= bb.min_y &&
-                    std::min(u.y, v.y) <= bb.max_y &&
-                    may_be_in_extended_area(options_.shape, pd, u, v, n + frame_margin))
-                    candidates_.push_back(e);
-            }
-            tally(&detector_statistics::candidate_edges, candidates_.size());
-            if (candidates_.empty()) {  // no boundary pair: step 5
-                tally(&detector_statistics::containment_tests);
-                return {contains(n, frame_margin), {}};
-            }
-        } else {
-            for (std::uint32_t e : cache_)
-                if (may_be_in_extended_area(options_.shape, pd, as.vertex(e), as.vertex(as.next(e)), n + frame_margin))
-                    candidates_.push_back(e);
-            tally(&detector_statistics::candidate_edges, candidates_.size());
-            if (candidates_.empty()) {
-                tally(&detector_statistics::containment_tests);
-                if constexpr (with_coherence)
-                    if (cache_.empty()) return {coherence_state::value.center_inside, {}};
-                // p outside A's bounding circle (widened) is outside A.
-                if (filter_length(pd.x - o.x, pd.y - o.y) > a_->radius + 2 * frame_margin) return {};
-                return {a_->areas.locate(b_.centroid()) == location::inside, {}};
-            }
-        }
-
-        // 4. Detailed test on the candidates.
-        if (!placed) place_approximate(t);
-        if constexpr (with_witness)
-            if (options_.witness) witness_state::value.clear();
-        for (std::uint32_t e : candidates_)
-            if (test_edge(e, frame_margin) && !witnessing()) return {true, {}};
-        return finish(n, frame_margin);
+        refresh_candidates(f);
+        if (circle_test_pays() && edges_clear_of(f.t, a_->shape.centroid(), a_->radius + distance() + 2 * f.margin, f.margin))
+            return clear_of_a(f);
+        if (tree_pays()) return pairs_through_tree(f);
+        return pairs_through_candidates(f);
     }
 
     /// Counters of the work done so far (only with features::statistics).
@@ -291,6 +209,146 @@ public:
     }
 
 private:
+    /// One frame's pose and the filters' rounding: B's centroid posed in
+    /// double (p), the margin of the frame's double values, and B's reach
+    /// widened by it (n).
+    struct frame {
+        rotation_pose t;
+        point<double> p;
+        double margin = 0, n = 0;
+    };
+
+    /// Poses B's centroid for the frame. Rounding of the posed coordinates is
+    /// relative to the magnitudes of the terms that make them: B's own
+    /// coordinates (in margin_), the translation, and the result.
+    frame begin_frame(const pose& q) {
+        using tr = number_traits<NT>;
+        frame f{rotation_pose(q), {}, 0, 0};
+        b_.place(f.t);
+        f.p = b_.approximate_centroid();
+        f.margin = margin_ + tr::filter_slack * (std::fabs(f.p.x) + std::fabs(f.p.y) + std::fabs(q.tx) + std::fabs(q.ty));
+        f.n = reach_ + f.margin;
+        return f;
+    }
+
+    /// Step 1: whether the bounding circles are certainly apart (a filter in
+    /// double, widened by the margin).
+    bool circles_apart(const frame& f) const {
+        const point<double>& o = a_->shape.centroid();
+        return filter_length(f.p.x - o.x, f.p.y - o.y) > a_->radius + f.n + f.margin;
+    }
+
+    /// Step 2: the candidates gathered within n + skin, reused while p moves
+    /// less than the skin.
+    void refresh_candidates(const frame& f) {
+        if constexpr (with_coherence) {
+            const detail::coherence_state& c = coherence_state::value;
+            if (c.valid && !(filter_length(f.p.x - c.center.x, f.p.y - c.center.y) > c.skin)) return;
+        }
+        gather(f.p, f.margin);
+    }
+
+    /// The strategies' size heuristics. The circle test of B's edges against
+    /// A's circle pays when B has no more chunks than cached candidates (+1):
+    /// it then costs about what one pass over the candidates would.
+    bool circle_test_pays() const { return chunks_.size() <= cache_.size() + 1; }
+    /// A's edge tree pays when B's edges times tree_cost are fewer than the
+    /// cached candidates: a tree query costs about tree_cost box tests.
+    bool tree_pays() const { return b_.shape().size() * tree_cost < cache_.size(); }
+    /// B is posed in double before the candidates are filtered when it has no
+    /// more edges than there are cached candidates: its box then prunes them.
+    bool pose_b_first() const { return b_.shape().size() <= cache_.size(); }
+
+    /// Step 3, when B's edges keep off A's bounding circle: no boundary pair.
+    /// B's vertices lie outside A's circle, so outside A; A lies wholly in
+    /// B or wholly outside it, and can lie in B only if its first vertex
+    /// lies within B's circle.
+    frame_result clear_of_a(const frame& f) {
+        tally(&detector_statistics::disc_rejections);
+        tally(&detector_statistics::containment_tests);
+        const point<double>& a0 = a_->shape.vertex(0);
+        if (filter_length(a0.x - f.p.x, a0.y - f.p.y) > b_.radius() + 2 * f.margin) return {};
+        place_approximate(f.t);
+        return {contains(f.n, f.margin, false), {}};
+    }
+
+    /// Steps 3 and 4 through A's edge tree: each moving edge, posed in double,
+    /// finds the static edges near it, and each such pair gets the tests of
+    /// step 4; then step 5.
+    frame_result pairs_through_tree(const frame& f) {
+        tally(&detector_statistics::tree_frames);
+        place_approximate(f.t);
+        if constexpr (with_witness)
+            if (options_.witness) witness_state::value.clear();
+        const polygon& bs = b_.shape();
+        for (std::size_t j = 0; j < bs.size(); ++j) {
+            const point<double>&u = b_.approximate(j), &v = b_.approximate(next_b(j));
+            const bool met = tree_.query(u, v, distance() + f.margin, distance() + 2 * f.margin, [&](std::uint32_t e) {
+                tally(&detector_statistics::candidate_edges);
+                return test_pair(e, j, f.margin) && !witnessing();
+            });
+            if (met) return {true, {}};
+        }
+        return finish(f.n, f.margin);
+    }
+
+    /// Steps 3 to 5 through the cached candidates: keep those whose extended
+    /// area of length n contains p (and, with B posed first, whose box meets
+    /// B's); none decides at once (step 5, or p's location when B's box was
+    /// not used: the disk of radius n about p then holds no edge of A, so B
+    /// lies wholly inside or outside A); else each candidate against the
+    /// moving edges near it (step 4), then step 5.
+    frame_result pairs_through_candidates(const frame& f) {
+        const bool posed = pose_b_first();
+        if (posed) place_approximate(f.t);
+        candidates_.clear();
+        const polygon& as = a_->shape;
+        const polygon& bs = b_.shape();
+        box bb;  // with B posed in double: B's box grown by d and the margin
+        if (posed) {
+            for (std::size_t j = 0; j < bs.size(); ++j) bb.add(b_.approximate(j));
+            bb = bb.inflated(distance() + f.margin);
+        }
+        if (!bb.empty()) {
+            // Only edges whose box meets B's can meet B.
+            for (std::uint32_t e : cache_) {
+                const point<double>&u = as.vertex(e), &v = as.vertex(as.next(e));
+                if (std::max(u.x, v.x) >= bb.min_x && std::min(u.x, v.x) <= bb.max_x && std::max(u.y, v.y) >= bb.min_y &&
+                    std::min(u.y, v.y) <= bb.max_y && may_be_in_extended_area(options_.shape, f.p, u, v, f.n + f.margin))
+                    candidates_.push_back(e);
+            }
+            tally(&detector_statistics::candidate_edges, candidates_.size());
+            if (candidates_.empty()) {  // no boundary pair: step 5
+                tally(&detector_statistics::containment_tests);
+                return {contains(f.n, f.margin), {}};
+            }
+        } else {
+            for (std::uint32_t e : cache_)
+                if (may_be_in_extended_area(options_.shape, f.p, as.vertex(e), as.vertex(as.next(e)), f.n + f.margin))
+                    candidates_.push_back(e);
+            tally(&detector_statistics::candidate_edges, candidates_.size());
+            if (candidates_.empty()) return p_located(f);
+        }
+        if (!posed) place_approximate(f.t);
+        if constexpr (with_witness)
+            if (options_.witness) witness_state::value.clear();
+        for (std::uint32_t e : candidates_)
+            if (test_edge(e, f.margin) && !witnessing()) return {true, {}};
+        return finish(f.n, f.margin);
+    }
+
+    /// No edge of A within n of p: B lies wholly inside or outside A, as p
+    /// does (cached with the candidates when there were none to gather).
+    frame_result p_located(const frame& f) {
+        tally(&detector_statistics::containment_tests);
+        if constexpr (with_coherence)
+            if (cache_.empty()) return {coherence_state::value.center_inside, {}};
+        // p outside A's bounding circle (widened) is outside A.
+        const point<double>& o = a_->shape.centroid();
+        if (filter_length(f.p.x - o.x, f.p.y - o.y) > a_->radius + 2 * f.margin) return {};
+        return {a_->areas.locate(b_.centroid()) == location::inside, {}};
+    }
+
     /// The polygon, refused when empty, beyond NT's range (accepted_polygon)
     /// or, built without holes, with several rings.
     static const polygon& checked(const polygon& p, const char* which) {
@@ -396,27 +454,9 @@ private:
         return one_contains_other<NT, with_holes>(*a_, b_, std::optional<double>(n), a_ring_may_fit, b_ring_may_fit);
     }
 
-    /// The paper's detailed test as a filter in double: whether u and v lie
-    /// strictly on the same side of the line through a and b, farther from
-    /// it than 2e (so that u and v, or the line's ends, may each be off by e
-    /// on each coordinate): then the exact segments cannot meet. Used both
-    /// ways: the exactly posed ends of a moving edge, known as u and v to
-    /// within e, against a static edge's line; and a static edge's ends
-    /// against the line through a moving edge's approximate ends (the exact
-    /// moving edge lies within e sqrt 2 < 2e of that line's segment). Each
-    /// side is side_beyond with slack 2e (|dx| + |dy|) >= 2e |b - a|; when its
-    /// bound cannot be trusted the answer is false and the exact test decides.
-    static bool same_side(const point<double>& a, const point<double>& b, const point<double>& u,
-                          const point<double>& v, double e) {
-        const double dx = b.x - a.x, dy = b.y - a.y;
-        const double slack = 2 * e * (std::fabs(dx) + std::fabs(dy));
-        const int su = side_beyond(a, dx, dy, u, slack);
-        return su != 0 && side_beyond(a, dx, dy, v, slack) == su;
-    }
-
     /// Whether every moving edge, posed by t in double, is farther than
     /// `reach` from c (a distance that is not finite counts as near). B's
-    /// edges come in chunks of up to 8 with a bounding circle in B's own frame
+    /// edges come in chunks of up to chunk_edges (8) with a bounding circle in B's own frame
     /// (valid under any rigid motion): a chunk whose posed circle keeps clear
     /// of the disc is not looked into.
     bool edges_clear_of(const rotation_pose& t, const point<double>& c, double reach, double frame_margin) const {
@@ -434,16 +474,16 @@ private:
         return true;
     }
 
-    /// B's edges in chunks of up to 8 consecutive edges of a ring, each with
+    /// B's edges in chunks of up to chunk_edges (8) consecutive edges of a ring, each with
     /// the centre of its vertices' box and an upper bound of their distance
     /// from it.
     void make_chunks() {
         const polygon& bs = b_.shape();
         for (std::size_t r = 0; r < (with_holes ? bs.ring_count() : 1); ++r)
-            for (std::size_t first = bs.ring_begin(r); first < bs.ring_end(r); first += 8) {
+            for (std::size_t first = bs.ring_begin(r); first < bs.ring_end(r); first += chunk_edges) {
                 chunk k;
                 k.first = first;
-                k.last = std::min(first + 8, bs.ring_end(r));
+                k.last = std::min(first + chunk_edges, bs.ring_end(r));
                 box around;
                 for (std::size_t j = k.first; j < k.last; ++j) around.add(bs.vertex(j));
                 around.add(bs.vertex(bs.next(k.last - 1)));
@@ -508,7 +548,7 @@ private:
         if (distance() == 0) {
             const point<double>&a = as.vertex(e), &b = as.vertex(as.next(e));
             const point<double>&u = b_.approximate(j), &v = b_.approximate(k);
-            if (same_side(a, b, u, v, frame_margin) || same_side(u, v, a, b, frame_margin)) return false;
+            if (!segments_may_meet(a, b, u, v, frame_margin)) return false;
         }
         tally(&detector_statistics::segment_tests);
         const auto& cov = a_->covering;
@@ -535,6 +575,11 @@ private:
     detector_options options_;
     double reach_ = 0, margin_ = 0;
     std::vector<box> a_ring_boxes_;  ///< the box of each ring of A
+    /// B's edges per chunk: a chunk's circle test replaces this many edge
+    /// tests when it misses, and costs one more when it does not; 8 keeps the
+    /// circles tight on the families' polygons while dividing the edge tests
+    /// of a far chunk by 8.
+    static constexpr std::size_t chunk_edges = 8;
     struct chunk {
         point<double> center;
         double radius = 0;

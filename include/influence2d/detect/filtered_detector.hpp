@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <optional>
 
+#include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/detect/result.hpp"
 #include "influence2d/number/certified.hpp"

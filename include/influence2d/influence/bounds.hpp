@@ -10,21 +10,14 @@
 
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
+#include "influence2d/predicates/filters.hpp"
 
 namespace influence2d {
-
-/// An upper bound of sqrt(x) for x >= 0 given in long double, as a double:
-/// strictly above the root, by a relative 1e-12 and one ulp. Infinity for an
-/// infinite x (or one beyond double's range); NaN for x < 0 or NaN.
-inline double upper_sqrt(long double x) {
-    const double r = static_cast<double>(std::sqrt(x));
-    return std::nextafter(r * (1 + 1e-12), std::numeric_limits<double>::infinity());
-}
 
 /// An upper bound of the largest distance from `center` to a vertex of `shape`,
 /// and so of the radius of the circle about `center` that encloses it. It
 /// also bounds the radius of the polygon posed with rotation doubles c, s,
-/// whose scale sqrt(c^2 + s^2) differs from 1 by less than 1e-15. Time linear
+/// whose scale sqrt(c^2 + s^2) differs from 1 by less than pose_scale_widening. Time linear
 /// in the number of vertices; since A's edges are segments between vertices,
 /// the circle holds the whole closed region.
 inline double bounding_radius(const polygon& shape, const point<double>& center) {

@@ -15,6 +15,7 @@
 #include "influence2d/core/box.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
+#include "influence2d/predicates/filters.hpp"
 
 namespace influence2d {
 
@@ -32,46 +33,6 @@ struct edge_list {
     /// How many indices the run holds.
     std::size_t size() const { return static_cast<std::size_t>(last - first); }
 };
-
-/// Whether the double distance from p to [a, b] may be at most `reach`: also
-/// when it is not finite (coordinates whose differences overflow), so that a
-/// filter built on it stays conservative.
-inline bool may_be_within(const point<double>& p, const point<double>& a, const point<double>& b, double reach);
-
-/// The length of (x, y) in double, for filters only: sqrt(x^2 + y^2) where
-/// the squares can neither overflow nor underflow, std::hypot (slower, and
-/// safe at any magnitude) elsewhere. Within about an ulp of the true length
-/// either way.
-inline double filter_length(double x, double y) {
-    const double big = std::max(std::fabs(x), std::fabs(y));
-    if (big > 0x1p-400 && big < 0x1p400) return std::sqrt(x * x + y * y);
-    return std::hypot(x, y);
-}
-
-/// Distance from p to the segment [a, b] in double, for filters only. The
-/// differences are first scaled by a power of two (exactly) to magnitude ~1,
-/// so that squaring them neither overflows nor underflows at any scale.
-/// Rounded (not a bound); 0 when all three points coincide, the distance to
-/// a for a == b, infinity when a difference is not finite (overflow or NaN).
-inline double segment_distance(const point<double>& p, const point<double>& a, const point<double>& b) {
-    double abx = b.x - a.x, aby = b.y - a.y, apx = p.x - a.x, apy = p.y - a.y;
-    const double big = std::max({std::fabs(abx), std::fabs(aby), std::fabs(apx), std::fabs(apy)});
-    if (big == 0) return 0;
-    if (!std::isfinite(big)) return std::numeric_limits<double>::infinity();
-    // Outside this range squares could over- or underflow: scale first.
-    const int e = big > 0x1p-400 && big < 0x1p400 ? 0 : std::ilogb(big);
-    if (e != 0) abx = std::ldexp(abx, -e), aby = std::ldexp(aby, -e), apx = std::ldexp(apx, -e), apy = std::ldexp(apy, -e);
-    const double ab2 = abx * abx + aby * aby;
-    double t = ab2 > 0 ? (abx * apx + aby * apy) / ab2 : 0;
-    t = std::min(1.0, std::max(0.0, t));
-    const double d = filter_length(apx - t * abx, apy - t * aby);
-    return e != 0 ? std::ldexp(d, e) : d;
-}
-
-inline bool may_be_within(const point<double>& p, const point<double>& a, const point<double>& b, double reach) {
-    const double d = segment_distance(p, a, b);
-    return d <= reach || !std::isfinite(d);
-}
 
 /// A uniform grid over a polygon's box grown by the reach, each cell listing
 /// the edges that may come within the reach of one of its points. Cells are
@@ -130,7 +91,7 @@ public:
                     const point<double> c{area_.min_x + (static_cast<double>(x) + 0.5) * cw,
                                           area_.min_y + (static_cast<double>(y) + 0.5) * ch};
                     // Points of the cell are within half a diagonal of its centre.
-                    if (may_be_within(c, a, b, r + half_diagonal * (1 + 1e-12) + slack))
+                    if (may_be_within(c, a, b, r + half_diagonal * (1 + sqrt_widening) + slack))
                         visit(y * nx_ + x);
                 }
         };

@@ -14,41 +14,9 @@
 #include "influence2d/core/box.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
+#include "influence2d/predicates/filters.hpp"
 
 namespace influence2d {
-
-/// The side of q with respect to the line through a with direction (dx, dy),
-/// when q certainly lies beyond `slack` / (|dx| + |dy|) from it: +1 (left),
-/// -1 (right); else 0. In double, with a bound on its own rounding: 0
-/// whenever the bound cannot be trusted (values not finite, or so small that
-/// the bound might underflow).
-inline int side_beyond(const point<double>& a, double dx, double dy, const point<double>& q, double slack) {
-    const double l = dx * (q.y - a.y), r = dy * (q.x - a.x);
-    const double o = l - r, bound = slack + 0x1p-48 * (std::fabs(l) + std::fabs(r));
-    if (!(bound >= 0x1p-900) || !(bound < HUGE_VAL) || !(std::fabs(o) > bound)) return 0;
-    return o > 0 ? 1 : -1;
-}
-
-/// Whether the box b certainly lies farther than g from the line through u
-/// and v (every corner strictly on the same side, beyond g), in double with
-/// a bound on its own rounding (side_beyond): then no point within g of the
-/// segment [u, v] lies in b. False whenever the bound cannot be trusted, and
-/// for u == v.
-inline bool box_beyond_line(const box& b, const point<double>& u, const point<double>& v, double g) {
-    const double dx = v.x - u.x, dy = v.y - u.y;
-    // g |d|_1 >= g |d|_2: the distance beyond g, with room for the rounding
-    // of the threshold itself.
-    const double slack = g * (std::fabs(dx) + std::fabs(dy));
-    int side = 0;
-    const double xs[2] = {b.min_x, b.max_x}, ys[2] = {b.min_y, b.max_y};
-    for (double x : xs)
-        for (double y : ys) {
-            const int s = side_beyond(u, dx, dy, {x, y}, slack);
-            if (s == 0 || (side != 0 && s != side)) return false;
-            side = s;
-        }
-    return true;
-}
 
 /// A bounding-volume hierarchy of axis-aligned boxes over a polygon's edges,
 /// built once in the polygon's own frame (valid for as long as the polygon
@@ -84,7 +52,7 @@ public:
 
     /// Calls visit(e) for each edge e whose box meets the box of [u, v] grown
     /// by `grow` and whose box is not certainly farther than `line_grow` from
-    /// the line through u and v (see box_beyond_line); inner nodes are pruned
+    /// the line through u and v (see box_may_be_near_line); inner nodes are pruned
     /// by the same two tests. A superset of the edges within min(grow,
     /// line_grow) of [u, v]. Stops and returns true as soon as visit returns
     /// true; returns false once every such edge was visited. When u or v is
@@ -109,7 +77,7 @@ public:
         stack[top++] = 0;
         while (top > 0) {
             const node& k = nodes_[stack[--top]];
-            if (!meets(k.bounds, q) || (lines && box_beyond_line(k.bounds, u, v, line_grow))) continue;
+            if (!meets(k.bounds, q) || (lines && !box_may_be_near_line(k.bounds, u, v, line_grow))) continue;
             if (k.count == 0) {
                 stack[top++] = k.first + 1;
                 stack[top++] = k.first;

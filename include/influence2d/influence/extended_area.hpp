@@ -9,6 +9,7 @@
 
 #include "influence2d/core/point.hpp"
 #include "influence2d/detect/result.hpp"
+#include "influence2d/predicates/filters.hpp"
 #include "influence2d/predicates/segments.hpp"
 
 namespace influence2d {
@@ -61,7 +62,7 @@ inline bool may_be_in_extended_area(extended_area shape, const point<double>& p,
     if (!std::isfinite(big)) return true;
     if (big == 0) return true;
     // Within this range no square over- or underflows: no scaling needed.
-    if (big > 0x1p-400 && big < 0x1p400) return in_extended_area(shape, p, a, b, n);
+    if (big > square_safe_low && big < square_safe_high) return in_extended_area(shape, p, a, b, n);
     const int e = std::ilogb(big);
     const auto scaled = [&](const point<double>& q) {
         return point<double>{std::ldexp(q.x - a.x, -e), std::ldexp(q.y - a.y, -e)};

@@ -14,6 +14,7 @@
 #include "influence2d/covering/covering.hpp"
 #include "influence2d/covering/inclusion.hpp"
 #include "influence2d/number/traits.hpp"
+#include "influence2d/predicates/filters.hpp"
 
 namespace influence2d {
 
@@ -85,7 +86,7 @@ public:
         const std::size_t n = cov.size();
         buckets_ = 16;
         while (buckets_ < 2 * n && buckets_ < (std::size_t{1} << 20)) buckets_ *= 2;
-        const double widen = number_traits<NT>::filter_slack + 1e-12;
+        const double widen = number_traits<NT>::filter_slack + atan2_widening;
         std::vector<std::vector<std::uint32_t>> lists(buckets_);
         const point<double> o = to_double_point(cov.origin());
         for (std::size_t i = 0; i < n; ++i) {
@@ -135,7 +136,7 @@ public:
         const double dy = tr::to_double(p.y - cov_->origin().y);
         const double scale = origin_scale_ + std::fabs(tr::to_double(p.x)) + std::fabs(tr::to_double(p.y));
         const bool direction_known =
-            std::fabs(dx) + std::fabs(dy) > 1e3 * tr::filter_slack * scale && std::isfinite(dx + dy + scale);
+            std::fabs(dx) + std::fabs(dy) > direction_trust_factor * tr::filter_slack * scale && std::isfinite(dx + dy + scale);
         const std::uint32_t* first = all_.data();
         const std::uint32_t* last = all_.data() + all_.size();
         if (direction_known) {

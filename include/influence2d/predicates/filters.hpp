@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// The conservative filters in double: every test that may keep too much but
+/// never drops what an exact decision needs, with its constants and their
+/// derivations. A filter named `may_be_...` or `..._may_...` answers true
+/// whenever the exact answer could be true (also when its own arithmetic
+/// cannot be trusted: overflow, underflow, NaN); `certain_side` answers a
+/// side only when its rounding bound proves it. Decisions (exact signs) are
+/// in orientation.hpp and segments.hpp.
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "influence2d/core/box.hpp"
+#include "influence2d/core/point.hpp"
+
+namespace influence2d {
+
+/// Within (square_safe_low, square_safe_high) a magnitude's square lies in
+/// (2^-800, 2^800) and a sum of a few such squares in (2^-800, 2^803): far
+/// from double's overflow (2^1024) and from its subnormal range (below
+/// 2^-1022). Filters square coordinates only between these bounds and scale
+/// by a power of two (exact) outside them.
+inline constexpr double square_safe_low = 0x1p-400;
+/// See square_safe_low.
+inline constexpr double square_safe_high = 0x1p400;
+
+/// The relative rounding bound of certain_side. Its value l - r, with
+/// l = dx (q.y - a.y) and r = dy (q.x - a.x), takes a rounded difference and
+/// a rounded product for each of l and r (relative error below 2u each, u =
+/// 2^-53) and a rounded subtraction (below u (|l| + |r|)); the direction
+/// (dx, dy), itself a rounded difference, moves the value by less than
+/// u (|l| + |r|) more. In all below 6u (|l| + |r|) < 2^-50 (|l| + |r|);
+/// 2^-48 leaves a factor of four.
+inline constexpr double side_rounding = 0x1p-48;
+
+/// Below this a bound built from products may have lost its meaning to
+/// underflow (a product of two magnitudes near 2^-450 is subnormal): a side
+/// test whose bound is smaller is not trusted.
+inline constexpr double side_bound_floor = 0x1p-900;
+
+/// The relative widening of upper_sqrt: a long double square root rounded to
+/// double is within 2^-53 + 2^-64 of the root; 1e-12 (about 2^-40) is far
+/// above that, and the step to the next double makes the bound strict.
+inline constexpr double sqrt_widening = 1e-12;
+
+/// The relative widening of a posed radius: B posed with the rotation doubles
+/// c = cos(theta), s = sin(theta), each correctly rounded, is B scaled by
+/// sqrt(c^2 + s^2), which differs from 1 by less than 2^-52 < 2.3e-16; 1e-15
+/// covers it with room.
+inline constexpr double pose_scale_widening = 1e-15;
+
+/// The widening, in radians, of a cone's angular range in the cone index
+/// beyond NT's filter_slack: std::atan2 is within a few ulps (below 1e-15
+/// rad) of the true angle of its rounded arguments; 1e-12 covers it.
+inline constexpr double atan2_widening = 1e-12;
+
+/// The cone index trusts the direction of a point from O only when the
+/// offset exceeds this many times filter_slack times the coordinates' scale:
+/// the offset's own rounding is at most filter_slack times that scale, so
+/// its direction is then known to within about 1e-3 rad, far inside a
+/// bucket's widened range.
+inline constexpr double direction_trust_factor = 1e3;
+
+/// The length of (x, y) in double, for filters only: sqrt(x^2 + y^2) where
+/// the squares can neither overflow nor underflow (square_safe_low and
+/// square_safe_high), std::hypot (slower, and safe at any magnitude)
+/// elsewhere. Within about an ulp of the true length either way.
+inline double filter_length(double x, double y) {
+    const double big = std::max(std::fabs(x), std::fabs(y));
+    if (big > square_safe_low && big < square_safe_high) return std::sqrt(x * x + y * y);
+    return std::hypot(x, y);
+}
+
+/// An upper bound of sqrt(x) for x >= 0 given in long double, as a double:
+/// strictly above the root (sqrt_widening and one ulp). Infinity for an
+/// infinite x (or one beyond double's range); NaN for x < 0 or NaN.
+inline double upper_sqrt(long double x) {
+    const double r = static_cast<double>(std::sqrt(x));
+    return std::nextafter(r * (1 + sqrt_widening), std::numeric_limits<double>::infinity());
+}
+
+/// Distance from p to the segment [a, b] in double, for filters only. The
+/// differences are first scaled by a power of two (exactly) to magnitude ~1,
+/// so that squaring them neither overflows nor underflows at any scale.
+/// Rounded (not a bound); 0 when all three points coincide, the distance to
+/// a for a == b, infinity when a difference is not finite (overflow or NaN).
+inline double segment_distance(const point<double>& p, const point<double>& a, const point<double>& b) {
+    double abx = b.x - a.x, aby = b.y - a.y, apx = p.x - a.x, apy = p.y - a.y;
+    const double big = std::max({std::fabs(abx), std::fabs(aby), std::fabs(apx), std::fabs(apy)});
+    if (big == 0) return 0;
+    if (!std::isfinite(big)) return std::numeric_limits<double>::infinity();
+    const int e = big > square_safe_low && big < square_safe_high ? 0 : std::ilogb(big);
+    if (e != 0) abx = std::ldexp(abx, -e), aby = std::ldexp(aby, -e), apx = std::ldexp(apx, -e), apy = std::ldexp(apy, -e);
+    const double ab2 = abx * abx + aby * aby;
+    double t = ab2 > 0 ? (abx * apx + aby * apy) / ab2 : 0;
+    t = std::min(1.0, std::max(0.0, t));
+    const double d = filter_length(apx - t * abx, apy - t * aby);
+    return e != 0 ? std::ldexp(d, e) : d;
+}
+
+/// Whether the double distance from p to [a, b] may be at most `reach`: also
+/// when it is not finite (coordinates whose differences overflow), so that a
+/// filter built on it stays conservative. Callers widen `reach` by their
+/// rounding margin.
+inline bool may_be_within(const point<double>& p, const point<double>& a, const point<double>& b, double reach) {
+    const double d = segment_distance(p, a, b);
+    return d <= reach || !std::isfinite(d);
+}
+
+/// The side of q with respect to the line through a with direction (dx, dy),
+/// when q certainly lies beyond `slack` / (|dx| + |dy|) from it: +1 (left),
+/// -1 (right); else 0. Evaluated in double with the bound side_rounding on
+/// its own rounding; 0 whenever the bound cannot be trusted (not finite, or
+/// below side_bound_floor).
+inline int certain_side(const point<double>& a, double dx, double dy, const point<double>& q, double slack) {
+    const double l = dx * (q.y - a.y), r = dy * (q.x - a.x);
+    const double o = l - r, bound = slack + side_rounding * (std::fabs(l) + std::fabs(r));
+    if (!(bound >= side_bound_floor) || !(bound < HUGE_VAL) || !(std::fabs(o) > bound)) return 0;
+    return o > 0 ? 1 : -1;
+}
+
+/// Whether the segments [a, b] and [u, v] may meet, each point known only to
+/// within e on each coordinate (the paper's detailed test, both ways, as a
+/// filter): false when u and v lie certainly on one side of the line through
+/// a and b farther than 2e from it, or a and b certainly on one side of the
+/// line through u and v (an exact segment within e sqrt 2 < 2e of its
+/// approximation). The slack of each side is 2e (|dx| + |dy|) >= 2e |b - a|.
+inline bool segments_may_meet(const point<double>& a, const point<double>& b, const point<double>& u,
+                              const point<double>& v, double e) {
+    const auto one_side = [e](const point<double>& p, const point<double>& q, const point<double>& s,
+                              const point<double>& t) {
+        const double dx = q.x - p.x, dy = q.y - p.y;
+        const double slack = 2 * e * (std::fabs(dx) + std::fabs(dy));
+        const int side = certain_side(p, dx, dy, s, slack);
+        return side != 0 && certain_side(p, dx, dy, t, slack) == side;
+    };
+    return !one_side(a, b, u, v) && !one_side(u, v, a, b);
+}
+
+/// Whether some point of box b may lie within g of the line through u and v:
+/// false only when every corner lies certainly on one side, beyond g (then
+/// no point within g of the segment [u, v] lies in b). True for u == v and
+/// whenever the arithmetic cannot be trusted.
+inline bool box_may_be_near_line(const box& b, const point<double>& u, const point<double>& v, double g) {
+    const double dx = v.x - u.x, dy = v.y - u.y;
+    // g |d|_1 >= g |d|_2: the distance beyond g, with room for the rounding.
+    const double slack = g * (std::fabs(dx) + std::fabs(dy));
+    int side = 0;
+    const double xs[2] = {b.min_x, b.max_x}, ys[2] = {b.min_y, b.max_y};
+    for (double x : xs)
+        for (double y : ys) {
+            const int s = certain_side(u, dx, dy, {x, y}, slack);
+            if (s == 0 || (side != 0 && s != side)) return true;
+            side = s;
+        }
+    return false;
+}
+
+}  // namespace influence2d
