@@ -51,11 +51,23 @@
 
 namespace influence2d::verification {
 
+/// Whether GEOS and Box2D were found when this was built.
+#if INFLUENCE2D_HAVE_GEOS
+inline constexpr bool have_geos = true;
+#else
+inline constexpr bool have_geos = false;
+#endif
+#if INFLUENCE2D_HAVE_BOX2D
+inline constexpr bool have_box2d = true;  ///< see have_geos
+#else
+inline constexpr bool have_box2d = false;  ///< see have_geos
+#endif
+
 /// Whether the peer library of a method was found when this was built (GEOS
 /// and Box2D are optional; every other method is always there).
 inline bool method_available(const std::string& m) {
-    if (m == "geos") return INFLUENCE2D_HAVE_GEOS + 0 == 1;
-    if (m == "box2d") return INFLUENCE2D_HAVE_BOX2D + 0 == 1;
+    if (m == "geos") return have_geos;
+    if (m == "box2d") return have_box2d;
     return true;
 }
 
@@ -208,7 +220,7 @@ bool collides(D& d, const pose& p) {
 }
 
 /// Whether the method can take the cell (Box2D: convex, at most 8 vertices).
-inline bool applies(const std::string& m, const polygon& a, const polygon& b) {
+inline bool applies(const std::string& m, [[maybe_unused]] const polygon& a, [[maybe_unused]] const polygon& b) {
 #if INFLUENCE2D_HAVE_BOX2D
     if (m == "box2d") return box2d_peer::applies(a, b);
 #endif
