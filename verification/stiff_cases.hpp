@@ -1052,9 +1052,12 @@ inline stiff_scene make_scene(stiff_family f, double magnitude, std::size_t inde
     return s;
 }
 
-// Magnitudes are limited to where products of two coordinates stay normal
-// doubles: beyond, polygon's exact ring orientation (floating-point
-// expansions) overflows or underflows, and a ring can be stored clockwise.
+// Magnitudes are limited to where products of two coordinates (up to 1e300)
+// and their sums stay normal doubles, so that the study's floating types
+// measure rounding, not overflow. The library is not limited there: its ring
+// orientation sums products exactly over the whole range of double (a
+// fixed-point accumulator, number/expansion.hpp), and the exact and certified
+// modes are tested at 1e200, 1e-170 and subnormal scale (tests/detect).
 inline void check_offset(double offset) {
     if (!(offset >= 1 && offset <= 1e150))
         throw std::invalid_argument("make_offset_scenes: the offset must be in [1, 1e150]");
