@@ -6,6 +6,7 @@
 // pairs the exact detector reports.
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
@@ -40,7 +41,7 @@ struct render_options {
     scene_options scene;
     double distance = 0.0;
     std::string shape = "capsule";
-    std::vector<std::string> frames;  // empty: chosen by the command
+    std::string frames;  // the list as given, commas included; empty: chosen by the command
     std::string out;
     std::size_t width = 800;
     bool no_cones = false;
@@ -62,7 +63,17 @@ std::vector<std::size_t> chosen_frames(const render_options& o, const scene_inpu
                                        std::string& first) {
     const std::size_t count = in.poses.size();
     std::vector<std::size_t> frames;
-    for (const std::string& text : o.frames) {
+    // Split here rather than by the option parser, so that an empty element
+    // ("1,,2", a trailing comma) is refused, not dropped.
+    std::vector<std::string> items;
+    if (!o.frames.empty())
+        for (std::size_t start = 0;;) {
+            const std::size_t comma = o.frames.find(',', start);
+            items.push_back(o.frames.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+            if (comma == std::string::npos) break;
+            start = comma + 1;
+        }
+    for (const std::string& text : items) {
         if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
             throw invalid_input("--frames: '" + text + "' is not a frame number (frames are numbered from 0)");
         // A number too large for std::size_t is out of range all the same.
@@ -687,7 +698,17 @@ private:
     view view_;
 };
 
+/// Whether the path ends in ".svg", in any case: render writes SVG only.
+bool names_svg(const std::string& path) {
+    if (path.size() < 4) return false;
+    std::string end = path.substr(path.size() - 4);
+    for (char& c : end) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return end == ".svg";
+}
+
 void run_render(const render_options& o) {
+    if (!names_svg(o.out))
+        throw invalid_input("--out " + o.out + ": render writes SVG; give a file name ending in .svg");
     const scene_input in = read_scene(o.scene, o.out);
     detector_options options;
     options.distance = o.distance;
@@ -725,7 +746,6 @@ void register_render(CLI::App& app) {
     sub->add_option("--frames", o->frames,
                     "Frames to draw, numbered from 0, separated by commas (default: four spread evenly over the "
                     "poses and the first colliding frame)")
-        ->delimiter(',')
         ->type_name("LIST");
     sub->add_option("--out", o->out, "The SVG file to write; it is replaced only when the whole picture is made")
         ->required()

@@ -455,7 +455,7 @@ TEST_CASE("render: bad input exits 2 and leaves no file", "[render]") {
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("frame 99999999999999999999999 is out of range") != std::string::npos);
     no_file();
-    for (const char* list : {"1,x", "-1", "1.5"}) {
+    for (const char* list : {"1,x", "-1", "1.5", "1,,2", "1,", ","}) {
         INFO(list);
         r = s.render(svg, std::string("--frames=") + list);
         CHECK(r.exit_code == 2);
@@ -468,6 +468,13 @@ TEST_CASE("render: bad input exits 2 and leaves no file", "[render]") {
     CHECK(r.err.find("frame 10") != std::string::npos);
     CHECK(r.err.find("10 frames") != std::string::npos);
     no_file();
+
+    // render writes SVG only: another file name is refused, nothing written.
+    const auto png = dir / "picture.png";
+    r = run_cli(dir, scene_args(a, b) + " --poses " + quote(poses.string()) + " --out " + quote(png.string()));
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("render writes SVG") != std::string::npos);
+    CHECK(!fs::exists(png));
 
     r = run_cli(dir, scene_args(a, b) + " --poses " + quote(poses.string()));  // no --out
     CHECK(r.exit_code == 2);
