@@ -294,9 +294,7 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
         if (pts.empty()) {
             // GEOS and JTS read an empty ring as no ring; an empty exterior
             // followed by its holes leaves holes without a part.
-            const bool shell_of_holes = input[k].role == ring_role::outer && k + 1 < input.size() &&
-                                        input[k + 1].role == ring_role::hole;
-            if (shell_of_holes)
+            if (wkt_detail::empty_exterior_with_holes(input, k))
                 add(at_ring(finding_kind::empty_ring, k, {}, "empty exterior ring with holes", "refused", true));
             else
                 add(at_ring(finding_kind::empty_ring, k, {}, "empty ring",

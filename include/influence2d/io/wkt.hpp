@@ -159,18 +159,24 @@ inline void check_coordinate_tuples(std::string_view source, const std::string& 
     }
 }
 
+/// Whether ring `index` of the text is an empty exterior ring followed by
+/// its holes: holes without a part, which the reader refuses (any other empty
+/// ring is no ring, as GEOS and JTS read it).
+inline bool empty_exterior_with_holes(const std::vector<wkt_ring>& read, std::size_t index) {
+    return read[index].points.empty() && read[index].role == ring_role::outer && index + 1 < read.size() &&
+           read[index + 1].role == ring_role::hole;
+}
+
 /// Appends ring `index` of the text as a ring_input after checking it:
 /// finite coordinates, closed (first point repeated at the end, which is
-/// dropped), three distinct vertices. An empty ring is no ring (as GEOS and
-/// JTS read it) and adds nothing, unless it is an exterior followed by holes
-/// (`holes_follow`): refused.
-inline void append_ring(std::string_view source, std::size_t index, const wkt_ring& r, bool holes_follow,
+/// dropped), three distinct vertices. An empty ring adds nothing, unless it
+/// is an exterior followed by holes (empty_exterior_with_holes): refused.
+inline void append_ring(std::string_view source, const std::vector<wkt_ring>& read, std::size_t index,
                         std::vector<ring_input>& rings) {
+    const wkt_ring& r = read[index];
     const auto& pts = r.points;
-    if (pts.empty()) {
-        if (r.role == ring_role::outer && holes_follow) fail(source, ring_place(index) + ": empty exterior ring with holes");
-        return;
-    }
+    if (empty_exterior_with_holes(read, index)) fail(source, ring_place(index) + ": empty exterior ring with holes");
+    if (pts.empty()) return;
     for (std::size_t k = 0; k < pts.size(); ++k) {
         if (!std::isfinite(pts[k].x) || !std::isfinite(pts[k].y))
             fail(source, vertex_place(index, k) + ": coordinate is not a finite number");
@@ -262,8 +268,7 @@ inline std::vector<wkt_ring> read_wkt_rings(std::string_view text, std::string_v
 inline polygon read_wkt(std::string_view text, std::string_view source = "<text>") {
     std::vector<ring_input> rings;
     const std::vector<wkt_ring> read = read_wkt_rings(text, source);
-    for (std::size_t k = 0; k < read.size(); ++k)
-        wkt_detail::append_ring(source, k, read[k], k + 1 < read.size() && read[k + 1].role == ring_role::hole, rings);
+    for (std::size_t k = 0; k < read.size(); ++k) wkt_detail::append_ring(source, read, k, rings);
     try {
         return polygon(std::move(rings));
     } catch (const invalid_input& e) {
