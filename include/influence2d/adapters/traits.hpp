@@ -30,7 +30,10 @@
 namespace influence2d {
 
 /// How the adapters read a point of type P. The primary template is left
-/// undefined: a type is a point once a specialisation provides
+/// undefined (so that is_point_v can ask about any type); a ring of a point
+/// type without a specialisation stops make_polygon and polygon_builder with
+/// a static_assert saying to specialise point_traits. A type is a point once a
+/// specialisation provides
 ///
 ///     static double x(const P&);   // the x coordinate as a double
 ///     static double y(const P&);   // the y coordinate as a double
@@ -113,6 +116,11 @@ template <class R>
 using element_t = std::decay_t<decltype(*std::declval<range_lookup::begin_t<R>>())>;
 
 template <class R, class = void>
+struct is_range : std::false_type {};
+template <class R>
+struct is_range<R, std::void_t<element_t<R>, range_lookup::end_t<R>>> : std::true_type {};
+
+template <class R, class = void>
 struct is_ring : std::false_type {};
 template <class R>
 struct is_ring<R, std::void_t<element_t<R>, range_lookup::end_t<R>>> : has_point_traits<element_t<R>> {};
@@ -121,6 +129,25 @@ template <class R, class = void>
 struct is_ring_range : std::false_type {};
 template <class R>
 struct is_ring_range<R, std::void_t<element_t<R>, range_lookup::end_t<R>>> : is_ring<element_t<R>> {};
+
+/// Instantiated first by every function that reads a ring, so that a ring of
+/// a point type without point_traits stops the compilation with this message
+/// rather than with a missing member deep inside the adapters.
+template <class Ring>
+struct ring_check {
+    static_assert(is_range<Ring>::value, "a ring is a range of points (a type with begin and end)");
+    static_assert(!is_range<Ring>::value || is_ring<Ring>::value,
+                  "the ring's point type has no point traits: specialise influence2d::point_traits for it "
+                  "(see influence2d/adapters/traits.hpp)");
+    static constexpr bool value = true;  ///< true once the checks pass
+};
+
+/// As ring_check, for a range of rings (the holes).
+template <class Rings>
+struct ring_range_check {
+    static_assert(is_range<Rings>::value, "the holes are a range of rings (a type with begin and end)");
+    static constexpr bool value = ring_check<element_t<Rings>>::value;  ///< true once the checks pass
+};
 
 inline std::string vertex_place(std::size_t ring, std::size_t vertex) {
     return "ring " + std::to_string(ring) + ", vertex " + std::to_string(vertex);
@@ -188,8 +215,9 @@ struct point_traits<std::pair<T, T>, std::enable_if_t<std::is_arithmetic_v<T>>> 
 class polygon_builder {
 public:
     /// Adds a ring of the given role; returns *this for chaining.
-    template <class Ring, std::enable_if_t<is_ring_v<Ring>, int> = 0>
+    template <class Ring>
     polygon_builder& add_ring(const Ring& ring, ring_role role) {
+        static_assert(adapter_detail::ring_check<Ring>::value);
         using P = adapter_detail::element_t<Ring>;
         ring_input in;
         in.role = role;
@@ -205,14 +233,15 @@ public:
         return *this;
     }
     /// Adds an outer boundary.
-    template <class Ring, std::enable_if_t<is_ring_v<Ring>, int> = 0>
+    template <class Ring>
     polygon_builder& add_outer(const Ring& ring) { return add_ring(ring, ring_role::outer); }
     /// Adds a hole.
-    template <class Ring, std::enable_if_t<is_ring_v<Ring>, int> = 0>
+    template <class Ring>
     polygon_builder& add_hole(const Ring& ring) { return add_ring(ring, ring_role::hole); }
     /// Adds every ring of a range of rings as a hole.
-    template <class Rings, std::enable_if_t<is_ring_range_v<Rings>, int> = 0>
+    template <class Rings>
     polygon_builder& add_holes(const Rings& rings) {
+        static_assert(adapter_detail::ring_range_check<Rings>::value);
         for (const auto& ring : rings) add_hole(ring);
         return *this;
     }
@@ -251,20 +280,41 @@ polygon build_from_parts(const Parts& parts) {
     return builder.build();
 }
 
+/// Whether add_polygon takes a T (a polygon type of some library, adapted by
+/// the headers that declare add_polygon for it).
+template <class T, class = void>
+struct is_part : std::false_type {};
+template <class T>
+struct is_part<T, std::void_t<decltype(add_polygon(std::declval<polygon_builder&>(), std::declval<const T&>()))>>
+    : std::true_type {};
+
+/// What make_polygon takes as a ring: a range of points, or a range of
+/// elements that are neither ranges nor polygons of an adapted library (then
+/// most likely points without point_traits, which ring_check reports).
+template <class R, class = void>
+struct is_ring_candidate : is_ring<R> {};
+template <class R>
+struct is_ring_candidate<R, std::enable_if_t<is_range<R>::value && !is_ring<R>::value>>
+    : std::bool_constant<!is_range<element_t<R>>::value && !is_part<element_t<R>>::value> {};
+
 }  // namespace adapter_detail
 
 /// The polygon bounded by one ring (a range of points, closed or open, either
 /// orientation; see polygon_builder for numbering and errors).
-template <class Ring, std::enable_if_t<is_ring_v<Ring>, int> = 0>
+template <class Ring, std::enable_if_t<adapter_detail::is_ring_candidate<Ring>::value, int> = 0>
 polygon make_polygon(const Ring& outer) {
+    static_assert(adapter_detail::ring_check<Ring>::value);
     return polygon_builder().add_outer(outer).build();
 }
 
 /// The polygon bounded by `outer` (ring 0) with the rings of `holes` as holes
 /// (rings 1, 2, ... in range order). Holes are meant to lie inside the outer
 /// ring; nothing checks it. See polygon_builder for numbering and errors.
-template <class Ring, class Holes, std::enable_if_t<is_ring_v<Ring> && is_ring_range_v<Holes>, int> = 0>
+template <class Ring, class Holes,
+          std::enable_if_t<adapter_detail::is_ring_candidate<Ring>::value && adapter_detail::is_range<Holes>::value,
+                           int> = 0>
 polygon make_polygon(const Ring& outer, const Holes& holes) {
+    static_assert(adapter_detail::ring_check<Ring>::value && adapter_detail::ring_range_check<Holes>::value);
     return polygon_builder().add_outer(outer).add_holes(holes).build();
 }
 

@@ -20,8 +20,17 @@ enum class number_category {
     filtered
 };
 
-/// What the library needs of a number type NT. The primary template is left
-/// undefined: a type is usable once it has a specialisation, which provides
+namespace detail {
+/// False, but only once NT is known: a static_assert on it fires when its
+/// template is instantiated, not when it is defined.
+template <class NT>
+struct dependent_false : std::false_type {};
+}  // namespace detail
+
+/// What the library needs of a number type NT. The primary template serves
+/// no type: naming a member of it stops the compilation with a static_assert
+/// saying to specialise number_traits. A type is usable once it has a
+/// specialisation, which provides
 /// - `static constexpr number_category category;`
 /// - `static constexpr const char* name;` a short name for output;
 /// - `static NT from_double(double);` exact whenever category != floating;
@@ -40,7 +49,11 @@ enum class number_category {
 /// no division and no square root is ever asked of it. `Enable` serves
 /// partial specialisations through std::enable_if_t.
 template <class NT, class Enable = void>
-struct number_traits;
+struct number_traits {
+    static_assert(detail::dependent_false<NT>::value,
+                  "no number traits for this number type: specialise influence2d::number_traits for it "
+                  "(see influence2d/number/traits.hpp)");
+};
 
 /// The traits of float, double and long double: rounded arithmetic.
 template <class NT>
