@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "influence2d/core/polygon.hpp"
@@ -93,6 +94,40 @@ inline std::vector<pose> linear_trajectory(const polygon& a, const polygon& b, s
         }
         const double f = static_cast<double>(k) / static_cast<double>(frames - 1);
         poses.push_back({start.x + (end.x - start.x) * f, start.y + (end.y - start.y) * f, 0});
+    }
+    return poses;
+}
+
+/// Poses of B drawn independently (no coherence between frames): frame k puts
+/// B's centroid at a point uniform in area in the annulus inner..outer about
+/// A's centroid O_A and turns B by an angle uniform in [0, 2 pi). The way a
+/// motion planner's sampler, a Monte Carlo study or a game with large steps
+/// asks. Seeded and portable: the draws come from a splitmix64 sequence
+/// (the top 53 bits of each word), never from a library distribution, so a
+/// seed gives the same poses on every platform. Time linear in the frames.
+/// Requires 0 <= inner <= outer.
+inline std::vector<pose> random_poses(const polygon& a, const polygon& b, std::size_t frames, double inner,
+                                      double outer, std::uint64_t seed) {
+    const point<double> o = a.centroid(), cb = b.centroid();
+    std::uint64_t state = seed;
+    const auto uniform = [&state] {
+        std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+        z ^= z >> 31;
+        return static_cast<double>(z >> 11) * 0x1.0p-53;
+    };
+    const double two_pi = 2 * 3.141592653589793;
+    std::vector<pose> poses;
+    poses.reserve(frames);
+    for (std::size_t k = 0; k < frames; ++k) {
+        // Uniform in area: the radius's square is uniform between the bounds'.
+        const double rho = std::sqrt(inner * inner + (outer * outer - inner * inner) * uniform());
+        const double phi = two_pi * uniform(), theta = two_pi * uniform();
+        const double c = std::cos(theta), s = std::sin(theta);
+        const point<double> p{o.x + rho * std::cos(phi), o.y + rho * std::sin(phi)};
+        // Centroid to p: t = p - R(theta) c_B.
+        poses.push_back({p.x - (c * cb.x - s * cb.y), p.y - (s * cb.x + c * cb.y), theta});
     }
     return poses;
 }

@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: BSL-1.0
+// One-shot queries (intersects, certified_intersects) against the exact
+// reference on CGAL's kernel, on poses nobody tuned: the families under
+// random poses near contact, random multipolygons (parts inside the other
+// polygon, swallowing polygons, both roles), rings nothing keeps apart, and
+// the scenes scaled far from 1.
+
+#include <catch2/catch.hpp>
+
+#include "support/effort.hpp"
+#include "support/random_scenes.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "influence2d/detect/certified_detector.hpp"
+#include "influence2d/detect/one_shot.hpp"
+#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/number/cgal.hpp"
+#include "verification/cgal_reference.hpp"
+#include "verification/families.hpp"
+
+namespace {
+
+using namespace influence2d;
+using verification::cgal_reference;
+
+std::string describe(const polygon& a, const polygon& b, const pose& p) {
+    std::ostringstream s;
+    s.precision(17);
+    s << "static " << a.size() << " vertices, moving " << b.size() << ", pose " << p.tx << ',' << p.ty << ','
+      << p.theta;
+    return s.str();
+}
+
+/// Counts of the reference's answers, so that a run is seen not to be vacuous.
+struct tally {
+    std::size_t frames = 0, collide = 0;
+};
+
+/// Every one-shot mode on (a, b, p) against the reference; float and double
+/// are checked only where their answers must be exact (never here): they run
+/// for crashes and refusals.
+void check_frame(const polygon& a, const polygon& b, const pose& p, tally& t) {
+    const bool expected = cgal_reference(a, b).collide(p).collides;
+    INFO(describe(a, b, p));
+    CHECK(intersects<exact_rational>(a, b, p) == expected);
+    CHECK(certified_intersects(a, b, p) == expected);
+    (void)intersects<double>(a, b, p);
+    ++t.frames;
+    t.collide += expected;
+}
+
+}  // namespace
+
+TEST_CASE("one-shot: the families under random poses near contact", "[one_shot][reference]") {
+    using namespace verification;
+    tally t;
+    const int frames = test_effort::scaled(40);
+    for (family f : all_families)
+        for (std::size_t n : {8u, 64u, 256u})
+            for (std::size_t m : {8u, 64u}) {
+                const polygon a = make_family_polygon(f, n, default_family_seed);
+                const polygon b = make_family_polygon(f, m, default_family_seed + 1);
+                for (const pose& p : random_poses(a, b, static_cast<std::size_t>(frames), 40, 110, n * 131 + m))
+                    check_frame(a, b, p, t);
+            }
+    CHECK(t.collide > t.frames / 4);
+    CHECK(t.collide < t.frames * 3 / 4 + t.frames / 5);
+}
+
+TEST_CASE("one-shot: random multipolygons, both roles, and rings nothing keeps apart", "[one_shot][reference]") {
+    using test_scenes::rng;
+    tally t;
+    const int scenes = test_effort::scaled(36);
+    for (int k = 0; k < scenes; ++k) {
+        rng g(0x0517ULL + static_cast<std::uint64_t>(k));
+        test_scenes::multi ma = test_scenes::random_multi(g, 30), mb = test_scenes::random_swallower(g);
+        if (k % 2 == 1) std::swap(ma, mb);
+        const polygon a = ma.to_polygon(), b = mb.to_polygon();
+        const polygon messy_a(test_scenes::random_messy(g, 10)), messy_b(test_scenes::random_messy(g, 10));
+        for (int f = 0; f < 12; ++f) {
+            const test_scenes::part& pa = ma.parts[g.index(ma.parts.size())];
+            const test_scenes::part& pb = mb.parts[g.index(mb.parts.size())];
+            const double reach = pa.radius * g.uniform(0, 1.6) + pb.radius * g.uniform(0, 1.2);
+            const double angle = g.uniform(0, 6.283185307179586);
+            const point<double> target{pa.center.x + reach * std::cos(angle), pa.center.y + reach * std::sin(angle)};
+            const double theta = g.chance(0.5) ? 0 : g.uniform(-3.2, 3.2);
+            check_frame(a, b, test_scenes::aimed(pb.center, target, theta), t);
+            check_frame(messy_a, messy_b, test_scenes::aimed({0, 0}, {g.uniform(-8, 8), g.uniform(-8, 8)}, theta), t);
+        }
+    }
+    CHECK(t.collide > t.frames / 5);
+    CHECK(t.collide < t.frames);
+}
+
+TEST_CASE("one-shot: far from 1 in scale, exact modes stay exact", "[one_shot][reference]") {
+    using namespace verification;
+    tally t;
+    const polygon a0 = make_family_polygon(family::contour, 64, default_family_seed);
+    const polygon b0 = make_family_polygon(family::starred, 16, default_family_seed);
+    for (int e : {-600, -40, 40, 600}) {
+        const auto scaled = [e](const polygon& p) {
+            std::vector<ring_input> rings;
+            for (std::size_t r = 0; r < p.ring_count(); ++r) {
+                ring_input in;
+                in.role = r == 0 ? ring_role::outer : ring_role::hole;
+                for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
+                    in.vertices.push_back({std::ldexp(p.vertex(i).x, e), std::ldexp(p.vertex(i).y, e)});
+                rings.push_back(in);
+            }
+            return polygon(rings);
+        };
+        const polygon a = scaled(a0), b = scaled(b0);
+        for (pose p : random_poses(a0, b0, static_cast<std::size_t>(test_effort::scaled(30)), 40, 110, 99)) {
+            p.tx = std::ldexp(p.tx, e);
+            p.ty = std::ldexp(p.ty, e);
+            check_frame(a, b, p, t);
+        }
+    }
+    CHECK(t.collide > 0);
+    CHECK(t.collide < t.frames);
+}
+
+TEST_CASE("one-shot: bad input is refused", "[one_shot]") {
+    const polygon a({ring_input{{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, ring_role::outer}});
+    CHECK_THROWS_AS(intersects<double>(a, polygon{}, pose{}), invalid_input);
+    CHECK_THROWS_AS(intersects<double>(polygon{}, a, pose{}), invalid_input);
+    CHECK_THROWS_AS(intersects<double>(a, a, pose{std::nan(""), 0, 0}), invalid_input);
+    CHECK_THROWS_AS(certified_intersects(a, a, pose{0, HUGE_VAL, 0}), invalid_input);
+    // Touching counts; a hole's inside does not.
+    const polygon holed({ring_input{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, ring_role::outer},
+                         ring_input{{{2, 2}, {8, 2}, {8, 8}, {2, 8}}, ring_role::hole}});
+    const polygon small({ring_input{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, ring_role::outer}});
+    CHECK(intersects<exact_rational>(a, small, pose{4, 0, 0}));
+    CHECK_FALSE(intersects<exact_rational>(a, small, pose{4.5, 0, 0}));
+    CHECK_FALSE(certified_intersects(holed, small, pose{4, 4, 0}));
+    CHECK(certified_intersects(holed, small, pose{0.5, 0.5, 0}));
+    CHECK(certified_intersects(small, holed, pose{-0.5, -0.5, 0}));
+}
