@@ -202,7 +202,11 @@ bool same(const frame_result& x, const frame_result& y) { return x.collides == y
 
 struct tally {
     std::size_t frames = 0, contact = 0, touching = 0, collisions = 0, mismatches = 0;
-    std::size_t tree_frames = 0, exact_frames_past_circles = 0;  ///< detector<exact_rational>
+    /// Strategies taken by detector<exact_rational>: frames of jumps (both
+    /// edge trees) and, for the detector led to each frame in small steps,
+    /// A's edge tree and the cached candidates.
+    std::size_t pair_tree_frames = 0, jump_frames_past_circles = 0;
+    std::size_t tree_frames = 0, steady_frames_past_circles = 0;
 };
 
 /// Runs every frame of every family pair at distance d; counts and checks.
@@ -220,6 +224,10 @@ tally run_all(double d, frame_counts counts) {
         plain.temporal_coherence = false;
         detector<exact_rational> det_exact(A, B, wit);
         detector<exact_rational> det_plain(A, B, plain);
+        // Led to each frame by two small steps, so that the frame uses
+        // coherence (cached candidates or A's edge tree) instead of a jump's
+        // strategy.
+        detector<exact_rational> det_steady(A, B, wit);
         brute_force_detector<exact_rational> bf_exact(A, B, wit);
         detector<double> det_double(A, B, wit);
         brute_force_detector<double> bf_double(A, B, wit);
@@ -233,6 +241,12 @@ tally run_all(double d, frame_counts counts) {
             ++t.frames;
             const frame_result expected = ref.collide(f.p);
             const frame_result got = det_exact.collide(f.p);
+            for (double lead : {2e-3, 1e-3}) (void)det_steady.collide(pose{f.p.tx - lead, f.p.ty, f.p.theta});
+            const detector_statistics before = det_steady.statistics();
+            const frame_result steady = det_steady.collide(f.p);
+            const detector_statistics& after = det_steady.statistics();
+            t.tree_frames += after.tree_frames - before.tree_frames;
+            t.steady_frames_past_circles += after.circle_rejections == before.circle_rejections;
             const frame_result brute = bf_exact.collide(f.p);
             const bool got_plain = det_plain.collide(f.p).collides;
             const frame_result got_double = det_double.collide(f.p);
@@ -243,7 +257,8 @@ tally run_all(double d, frame_counts counts) {
                 // Touching: collides here, apart once pushed a hair outwards.
                 if (d == 0 && expected.collides && !ref_touch.collide(frames[k + 1].p).collides) ++t.touching;
             }
-            const bool ok = same(got, expected) && same(brute, expected) && got_plain == expected.collides &&
+            const bool ok = same(got, expected) && same(steady, expected) && same(brute, expected) &&
+                            got_plain == expected.collides &&
                             same(got_double, brute_double);
             if (ok) continue;
             ++t.mismatches;
@@ -251,6 +266,7 @@ tally run_all(double d, frame_counts counts) {
             INFO(describe(fp, k, f, d));
             INFO("reference:                     " << pairs_text(expected));
             INFO("detector<exact>:               " << pairs_text(got));
+            INFO("detector<exact> led in steps:  " << pairs_text(steady));
             INFO("brute_force<exact>:            " << pairs_text(brute));
             INFO("detector<exact> band, no coh.: " << (got_plain ? "collides" : "apart"));
             INFO("detector<double>:              " << pairs_text(got_double));
@@ -258,8 +274,8 @@ tally run_all(double d, frame_counts counts) {
             FAIL_CHECK("detectors disagree");
         }
         const detector_statistics& st = det_exact.statistics();
-        t.tree_frames += st.tree_frames;
-        t.exact_frames_past_circles += st.frames - st.circle_rejections;
+        t.pair_tree_frames += st.pair_tree_frames;
+        t.jump_frames_past_circles += st.frames - st.circle_rejections;
     }
     return t;
 }
@@ -275,11 +291,13 @@ TEST_CASE("random frames: detectors agree with the CGAL reference, d = 0", "[det
     CHECK(t.collisions >= t.frames / 4);
     CHECK(t.frames - t.collisions >= t.frames / 5);
     CHECK(t.touching * 3 >= t.contact);
-    // Both ways of finding the pairs are exercised: A's edge tree (a large A,
-    // a small B; more of those in edge_tree_frames_test.cpp) and the cached
+    // Every way of finding the pairs is exercised: frames that jump take both
+    // edge trees; frames reached in small steps take A's edge tree (a large
+    // A, a small B; more of those in edge_tree_frames_test.cpp) or the cached
     // candidates.
-    CHECK(t.tree_frames >= t.exact_frames_past_circles / 100);
-    CHECK(t.tree_frames * 2 <= t.exact_frames_past_circles);
+    CHECK(t.pair_tree_frames * 10 >= t.jump_frames_past_circles * 9);
+    CHECK(t.tree_frames >= t.steady_frames_past_circles / 100);
+    CHECK(t.tree_frames * 2 <= t.steady_frames_past_circles);
 }
 
 TEST_CASE("random frames: detectors agree with the CGAL reference, d = 0.5", "[detect][reference][random]") {

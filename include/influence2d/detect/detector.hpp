@@ -33,6 +33,7 @@ struct detector_statistics {
     std::size_t segment_tests = 0;      ///< exact segment-pair tests
     std::size_t containment_tests = 0;  ///< frames that ran the inclusion tests
     std::size_t tree_frames = 0;        ///< frames whose pairs came from A's edge tree
+    std::size_t pair_tree_frames = 0;   ///< frames whose pairs came from both trees (incoherent frames)
 };
 
 namespace detail {
@@ -54,6 +55,9 @@ struct coherence_state {
     point<double> center;
     bool valid = false;
     bool center_inside = false;
+    point<double> last;  ///< the previous frame's posed centroid
+    bool has_last = false;
+    bool last_step_small = false;  ///< whether the previous frame moved less than the skin
 };
 
 /// The separation distance in NT and its square.
@@ -73,6 +77,12 @@ struct distance_state {
 ///   1. Pose p. If |p - O_A| > R_A + n: the bounding circles are apart: disjoint.
 ///      Steps 1 to 3 are filters: evaluated in double, widened by a margin that
 ///      covers rounding, so that they can keep too much but never drop anything.
+///      If p jumped since the last frames (no coherence to use: a random pose,
+///      or a detector without features::coherence), A's edge tree and B's
+///      (each in its polygon's own frame) are traversed together, B's circles
+///      posed: below a leaf of B each of its edges, posed in double, finds the
+///      static edges near it, and each pair gets step 4's tests; then step 5.
+///      Nothing is gathered for such a frame.
 ///   2. Candidates: the static edges within n + skin of p, gathered through the
 ///      edge grid and kept while p stays within `skin` of where they were
 ///      gathered (temporal coherence; sound because the skin is part of the
@@ -105,8 +115,8 @@ struct distance_state {
 ///
 /// Features (features.hpp) are chosen at compile time; `detector<NT>` has them
 /// all. Without `witness` and `distance` the frame stops at the first meeting
-/// pair and the segment test is the only pair test; without `coherence` the
-/// candidates are gathered every frame; without `holes` the ring bookkeeping
+/// pair and the segment test is the only pair test; without `coherence` every
+/// frame takes the edge trees (step 1); without `holes` the ring bookkeeping
 /// is gone (one ring each); without `statistics` nothing is counted.
 template <class NT, class Features = all_features>
 class detector : detail::feature_state<detector_statistics, Features::has(features::statistics), 0>,
@@ -127,7 +137,8 @@ public:
     /// The feature set the detector was built with.
     using feature_set_type = Features;
 
-    /// Precomputes A's covering, influence areas and edge grid for B's reach.
+    /// Precomputes A's covering and influence areas; the edge grid (for B's
+    /// reach) and the edge trees are built by the first frame that needs them.
     /// Throws std::invalid_argument when `options` asks for witnesses or a
     /// distance > 0 the detector was built without (or d < 0 or not finite),
     /// invalid_input for an empty polygon, one beyond NT's range, or one of
@@ -148,8 +159,6 @@ public:
         if constexpr (with_coherence) coherence_state::value.skin = options_.temporal_coherence ? 0.25 * reach_ : 0.0;
         margin_ = tr::filter_slack * 4 * (a_->scale + a_->radius + reach_ + skin() + coordinate_scale(moving_polygon)) +
                   std::numeric_limits<double>::min();
-        grid_ = edge_grid(a_->shape, reach_ + skin(), margin_);
-        tree_ = edge_tree(a_->shape);
         const polygon& as = a_->shape;
         a_ring_boxes_.resize(with_holes ? as.ring_count() : 1);
         for (std::size_t r = 0; r < a_ring_boxes_.size(); ++r)
@@ -167,6 +176,8 @@ public:
     ///
     ///   f <- the frame: B's centroid p posed in double, the rounding margin
     ///   if A's and B's bounding circles are apart:            disjoint
+    ///   if p jumped (no coherence to use):  pairs from A's and B's edge trees
+    ///       traversed together, then containment
     ///   refresh the cached candidates if p left their skin
     ///   if circle_test_pays() and B's edges keep off A's circle:
     ///       no boundary pair:                                  containment of A in B
@@ -180,6 +191,7 @@ public:
             tally(&detector_statistics::circle_rejections);
             return {};
         }
+        if (!coherent_step(f)) return pairs_through_trees(f);
         refresh_candidates(f);
         if (circle_test_pays() && edges_clear_of(f.t, a_->shape.centroid(), a_->radius + distance() + 2 * f.margin, f.margin))
             return clear_of_a(f);
@@ -199,11 +211,11 @@ public:
     /// influence areas, the same for every feature set): its own size and the
     /// capacities of its arrays.
     std::size_t state_bytes() const {
-        const std::size_t grid = (grid_.cell_count() + 1 + grid_.entry_count()) * sizeof(std::uint32_t);
+        const std::size_t grid = grid_built_ ? (grid_.cell_count() + 1 + grid_.entry_count()) * sizeof(std::uint32_t) : 0;
         std::size_t bytes = sizeof(*this) + grid + chunks_.capacity() * sizeof(chunk) +
                             chunk_centers_.capacity() * sizeof(point<double>) +
                             (cache_.capacity() + candidates_.capacity()) * sizeof(std::uint32_t) + b_.heap_bytes() +
-                            tree_.heap_bytes() + a_ring_boxes_.capacity() * sizeof(box);
+                            tree_.heap_bytes() + b_tree_.heap_bytes() + a_ring_boxes_.capacity() * sizeof(box);
         if constexpr (with_witness) bytes += witness_state::value.heap_bytes();
         return bytes;
     }
@@ -248,6 +260,29 @@ private:
         gather(f.p, f.margin);
     }
 
+    /// Whether this frame can use coherence: the cached candidates are still
+    /// valid (p within their skin), or p moved less than the skin in each of
+    /// the last two frames, so that candidates gathered now are likely to
+    /// serve the next frames (a trajectory's steps; two, so that a random
+    /// pose landing near the last one by chance does not gather). A jump (a random pose, a first frame far
+    /// from the last, or a detector without features::coherence) takes the
+    /// edge trees instead: gathering would cost about as much as the frame
+    /// and serve no other.
+    bool coherent_step(const frame& f) {
+        if constexpr (with_coherence) {
+            detail::coherence_state& c = coherence_state::value;
+            if (!options_.temporal_coherence) return false;
+            const bool in_skin = c.valid && !(filter_length(f.p.x - c.center.x, f.p.y - c.center.y) > c.skin);
+            const bool small_step = c.has_last && !(filter_length(f.p.x - c.last.x, f.p.y - c.last.y) > c.skin);
+            const bool moving_steadily = small_step && c.last_step_small;
+            c.last = f.p;
+            c.has_last = true;
+            c.last_step_small = small_step;
+            return in_skin || moving_steadily;
+        }
+        return false;
+    }
+
     /// The strategies' size heuristics. The circle test of B's edges against
     /// A's circle pays when B has no more chunks than cached candidates (+1):
     /// it then costs about what one pass over the candidates would.
@@ -272,6 +307,47 @@ private:
         return {contains(f.n, f.margin, false), {}};
     }
 
+    /// Steps 3 and 4 without candidates, for a frame with no coherence to use:
+    /// A's edge tree (in A's frame) and B's (in B's frame, its circles posed
+    /// by the frame's pose) traversed together (edge_tree::query_pairs):
+    /// below a leaf of B each of its edges, posed in double only then, finds
+    /// the static edges near it, and each such pair gets the tests of step 4,
+    /// stopping at the first meeting pair without witnesses; then step 5
+    /// with B's box taken from its posed bounding circle.
+    frame_result pairs_through_trees(const frame& f) {
+        tally(&detector_statistics::pair_tree_frames);
+        if constexpr (with_witness)
+            if (options_.witness) witness_state::value.clear();
+        // The posed circles hold B's posed edges up to the pose's scale
+        // factor (pose_scale_widening) and the rounding of the posed centre
+        // (the frame margin).
+        const double circle_grow = distance() + 2 * f.margin + b_.radius() * pose_scale_widening;
+        const auto ends = [&](std::uint32_t j) {
+            return std::pair<point<double>, point<double>>(b_.approximate_now(j), b_.approximate_now(next_b(j)));
+        };
+        const bool met = a_tree().query_pairs(
+            b_tree(), f.t, circle_grow, distance() + f.margin, distance() + 2 * f.margin, ends,
+            [&](std::uint32_t e, std::uint32_t j) {
+                tally(&detector_statistics::candidate_edges);
+                return test_pair(e, j, b_.approximate(j), b_.approximate(next_b(j)), f.margin) && !witnessing();
+            });
+        if (met) return {true, {}};
+        if constexpr (with_witness) {
+            const detail::pair_collector& pairs = witness_state::value;
+            if (!pairs.empty()) return {true, pairs.in_input_numbering(a_->shape, b_.shape())};
+        }
+        tally(&detector_statistics::containment_tests);
+        // B's box from its posed root circle, as the traversal saw it.
+        const point<double> c = f.t.template apply<double>(b_tree().root_center());
+        const double r = b_tree().root_radius() * (1 + pose_scale_widening) + 2 * f.margin;
+        box bb;
+        bb.add({c.x - r, c.y - r});
+        bb.add({c.x + r, c.y + r});
+        const bool finite = std::isfinite(bb.min_x) && std::isfinite(bb.min_y) && std::isfinite(bb.max_x) &&
+                            std::isfinite(bb.max_y);
+        return {contains_within(bb, finite, f.n, f.margin, true, [&](std::size_t j) { return b_.approximate_now(j); }), {}};
+    }
+
     /// Steps 3 and 4 through A's edge tree: each moving edge, posed in double,
     /// finds the static edges near it, and each such pair gets the tests of
     /// step 4; then step 5.
@@ -283,9 +359,9 @@ private:
         const polygon& bs = b_.shape();
         for (std::size_t j = 0; j < bs.size(); ++j) {
             const point<double>&u = b_.approximate(j), &v = b_.approximate(next_b(j));
-            const bool met = tree_.query(u, v, distance() + f.margin, distance() + 2 * f.margin, [&](std::uint32_t e) {
+            const bool met = a_tree().query(u, v, distance() + f.margin, distance() + 2 * f.margin, [&](std::uint32_t e) {
                 tally(&detector_statistics::candidate_edges);
-                return test_pair(e, j, f.margin) && !witnessing();
+                return test_pair(e, j, u, v, f.margin) && !witnessing();
             });
             if (met) return {true, {}};
         }
@@ -397,6 +473,10 @@ private:
         cache_.clear();
         const double keep = reach_ + skin() + frame_margin + margin_;
         const polygon& s = a_->shape;
+        if (!grid_built_) {
+            grid_ = edge_grid(s, reach_ + skin(), margin_);
+            grid_built_ = true;
+        }
         for (std::uint32_t e : grid_.query(pd))
             if (may_be_within(pd, s.vertex(e), s.vertex(s.next(e)), keep)) cache_.push_back(e);
         if constexpr (with_coherence) {
@@ -441,14 +521,23 @@ private:
             finite = std::isfinite(v.x) && std::isfinite(v.y);
             bb.add(v);
         }
-        const box b_box = bb.inflated(frame_margin);
+        return contains_within(bb.inflated(frame_margin), finite, n, frame_margin, b_may_be_inside_a,
+                               [&](std::size_t j) { return b_.approximate(j); });
+    }
+
+    /// Step 5 given B's box (a box that holds posed B, with its rounding;
+    /// `finite` false when it cannot be trusted) and B's vertices posed in
+    /// double by `approximate(j)`.
+    template <class Approximate>
+    bool contains_within(const box& b_box, bool finite, double n, double frame_margin, bool b_may_be_inside_a,
+                         Approximate&& approximate) {
         const auto a_ring_may_fit = [&](std::size_t r) { return !finite || b_box.contains(a_ring_boxes_[r]); };
         const polygon& bs = b_.shape();
         const point<double>& o = a_->shape.centroid();
         const double a_reach = a_->radius + 2 * frame_margin;
         const auto b_ring_may_fit = [&](std::size_t r) {
             if (!b_may_be_inside_a) return false;
-            const point<double>& v = b_.approximate(bs.ring_begin(r));
+            const point<double> v = approximate(bs.ring_begin(r));
             return !(filter_length(v.x - o.x, v.y - o.y) > a_reach);  // NaN: may be
         };
         return one_contains_other<NT, with_holes>(*a_, b_, std::optional<double>(n), a_ring_may_fit, b_ring_may_fit);
@@ -526,7 +615,7 @@ private:
                 if (std::max(u.x, v.x) < eb.min_x || std::min(u.x, v.x) > eb.max_x || std::max(u.y, v.y) < eb.min_y ||
                     std::min(u.y, v.y) > eb.max_y)
                     continue;
-                if (!test_pair(e, j, frame_margin)) continue;
+                if (!test_pair(e, j, u, v, frame_margin)) continue;
                 if (!witnessing()) return true;
                 found = true;
             }
@@ -542,14 +631,13 @@ private:
     /// then are the vertices posed in NT: the signs of alpha (orientation
     /// against the static edge's line, alpha up to the constant sigma_e) and
     /// the segment test (d == 0), or the exact distance test (d > 0).
-    bool test_pair(std::uint32_t e, std::size_t j, double frame_margin) {
+    /// u and v are the moving edge's ends posed in double.
+    bool test_pair(std::uint32_t e, std::size_t j, const point<double>& u, const point<double>& v,
+                   double frame_margin) {
         const polygon& as = a_->shape;
         const std::size_t k = next_b(j);
-        if (distance() == 0) {
-            const point<double>&a = as.vertex(e), &b = as.vertex(as.next(e));
-            const point<double>&u = b_.approximate(j), &v = b_.approximate(k);
-            if (!segments_may_meet(a, b, u, v, frame_margin)) return false;
-        }
+        if (distance() == 0 && !segments_may_meet(as.vertex(e), as.vertex(as.next(e)), u, v, frame_margin))
+            return false;
         tally(&detector_statistics::segment_tests);
         const auto& cov = a_->covering;
         const point<NT>& a = cov.start(e);
@@ -587,8 +675,21 @@ private:
     };
     std::vector<chunk> chunks_;
     std::vector<point<double>> chunk_centers_;  ///< posed by place_approximate
-    edge_grid grid_;
-    edge_tree tree_;  ///< A's edges, for frames with few moving edges
+    /// A's edge tree (built on the first frame that asks for it).
+    const edge_tree& a_tree() {
+        if (tree_.node_count() == 0) tree_ = edge_tree(a_->shape);
+        return tree_;
+    }
+    /// B's edge tree in B's own frame (built on the first frame that asks).
+    const edge_tree& b_tree() {
+        if (b_tree_.node_count() == 0) b_tree_ = edge_tree(b_.shape());
+        return b_tree_;
+    }
+
+    edge_grid grid_;  ///< built by the first gather
+    bool grid_built_ = false;
+    edge_tree tree_;    ///< A's edges, for frames with few moving edges or none to reuse
+    edge_tree b_tree_;  ///< B's edges in B's frame, for frames with none to reuse
     /// A frame takes the tree when B's edges times this are fewer than the
     /// cached static edges: a tree query costs about that many box tests.
     static constexpr std::size_t tree_cost = 4;

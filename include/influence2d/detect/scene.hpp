@@ -79,6 +79,7 @@ public:
         vertices_.resize(b.size());
         approximate_.resize(b.size());
         stamp_.assign(b.size(), 0);
+        approximate_stamp_.assign(b.size(), 0);
     }
 
     /// B in its own frame.
@@ -106,10 +107,22 @@ public:
     }
     /// Poses every vertex in double (rounded; for conservative filters only).
     void place_approximate() {
-        for (std::size_t j = 0; j < approximate_.size(); ++j) approximate_[j] = pose_.apply<double>(shape_.vertex(j));
+        for (std::size_t j = 0; j < approximate_.size(); ++j) {
+            approximate_[j] = pose_.apply<double>(shape_.vertex(j));
+            approximate_stamp_[j] = frame_;
+        }
     }
     /// Vertex j posed in double by the last place_approximate() (rounded).
     const point<double>& approximate(std::size_t j) const { return approximate_[j]; }
+    /// Vertex j posed in double for this frame, posed now if it was not yet
+    /// (for frames that look at a few vertices only).
+    const point<double>& approximate_now(std::size_t j) {
+        if (approximate_stamp_[j] != frame_) {
+            approximate_[j] = pose_.apply<double>(shape_.vertex(j));
+            approximate_stamp_[j] = frame_;
+        }
+        return approximate_[j];
+    }
 
     /// Vertex j posed in NT.
     const point<NT>& vertex(std::size_t j) {
@@ -124,7 +137,8 @@ public:
     /// Bytes of the heap blocks held (capacities of the per-vertex arrays).
     std::size_t heap_bytes() const {
         return shape_.heap_bytes() + vertices_.capacity() * sizeof(point<NT>) +
-               approximate_.capacity() * sizeof(point<double>) + stamp_.capacity() * sizeof(std::uint64_t);
+               approximate_.capacity() * sizeof(point<double>) +
+               (stamp_.capacity() + approximate_stamp_.capacity()) * sizeof(std::uint64_t);
     }
     /// Every vertex posed in NT.
     const std::vector<point<NT>>& vertices() {
@@ -144,6 +158,7 @@ private:
     std::vector<point<NT>> vertices_;
     std::vector<point<double>> approximate_;
     std::vector<std::uint64_t> stamp_;
+    std::vector<std::uint64_t> approximate_stamp_;
 };
 
 /// The reach of the moving polygon for a separation distance d: an upper

@@ -14,6 +14,7 @@
 #include "influence2d/core/box.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
+#include "influence2d/core/pose.hpp"
 #include "influence2d/predicates/filters.hpp"
 
 namespace influence2d {
@@ -48,6 +49,17 @@ public:
         std::vector<box> sorted(n);
         for (std::size_t k = 0; k < n; ++k) sorted[k] = boxes_[order_[k]];
         boxes_.swap(sorted);
+        // Each node's bounding circle: its box's centre and half diagonal,
+        // the latter rounded up (upper_sqrt), for the pairwise traversal.
+        for (node& k : nodes_) {
+            k.center = {k.bounds.min_x / 2 + k.bounds.max_x / 2, k.bounds.min_y / 2 + k.bounds.max_y / 2};
+            const long double hx = static_cast<long double>(k.bounds.max_x) - k.center.x;
+            const long double hy = static_cast<long double>(k.bounds.max_y) - k.center.y;
+            const long double lx = static_cast<long double>(k.center.x) - k.bounds.min_x;
+            const long double ly = static_cast<long double>(k.center.y) - k.bounds.min_y;
+            const long double wx = std::max(hx, lx), wy = std::max(hy, ly);
+            k.radius = upper_sqrt(wx * wx + wy * wy);
+        }
     }
 
     /// Calls visit(e) for each edge e whose box meets the box of [u, v] grown
@@ -59,35 +71,71 @@ public:
     /// not finite every edge is visited.
     template <class Visit>
     bool query(const point<double>& u, const point<double>& v, double grow, double line_grow, Visit&& visit) const {
-        if (nodes_.empty()) return false;
-        box q;
-        q.add(u);
-        q.add(v);
-        q = q.inflated(grow);
-        // (A NaN coordinate leaves the box unchanged: test the ends too.)
-        if (!(std::isfinite(u.x) && std::isfinite(u.y) && std::isfinite(v.x) && std::isfinite(v.y) &&
-              std::isfinite(q.min_x) && std::isfinite(q.min_y) && std::isfinite(q.max_x) && std::isfinite(q.max_y))) {
-            for (std::uint32_t e : order_)
-                if (visit(e)) return true;
-            return false;
-        }
-        const bool lines = u.x != v.x || u.y != v.y;
-        std::uint32_t stack[64];
+        return query_below(0, u, v, grow, line_grow, visit);
+    }
+
+    /// Calls visit(e, f) for each edge e of this tree (in its own frame) and
+    /// edge f of `moving` (a tree of another polygon in that polygon's own
+    /// frame, posed into this frame by t) that may come within the distance
+    /// the grows stand for. Pairs of nodes are pruned by the moving node's
+    /// bounding circle, its centre posed in double by t, kept farther than
+    /// its radius + `circle_grow` from the static node's box; below a moving
+    /// leaf each of its edges, its ends posed by ends(f) (a pair of points in
+    /// this frame), queries the static subtree as query() does with `grow`
+    /// and `line_grow`. `circle_grow` must cover the separation distance and
+    /// the rounding of a posed centre and of the pose's scale factor (the
+    /// posed circle holds the posed edges up to it). Stops and returns true
+    /// as soon as visit does. A centre that is not finite prunes nothing.
+    ///
+    ///   stack <- (root, root)
+    ///   while stack: (s, m) <- pop
+    ///       if dist(posed centre of m, box of s) > radius of m + circle_grow: prune
+    ///       m a leaf: each edge of m queries s's subtree with its posed ends
+    ///       else split the node with the larger circle (m when s is a leaf)
+    template <class Ends, class Visit>
+    bool query_pairs(const edge_tree& moving, const rotation_pose& t, double circle_grow, double grow,
+                     double line_grow, Ends&& ends, Visit&& visit) const {
+        if (nodes_.empty() || moving.nodes_.empty()) return false;
+        struct pair_of {
+            std::uint32_t s, m;
+        };
+        // Each pop pushes at most two pairs, each one level deeper in one of
+        // the trees: the stack holds at most depth(s) + depth(m) + 1 pairs.
+        pair_of stack[2 * max_depth + 2];
         std::size_t top = 0;
-        stack[top++] = 0;
+        stack[top++] = {0, 0};
         while (top > 0) {
-            const node& k = nodes_[stack[--top]];
-            if (!meets(k.bounds, q) || (lines && !box_may_be_near_line(k.bounds, u, v, line_grow))) continue;
-            if (k.count == 0) {
-                stack[top++] = k.first + 1;
-                stack[top++] = k.first;
-                continue;
+            const pair_of p = stack[--top];
+            const node& s = nodes_[p.s];
+            const node& m = moving.nodes_[p.m];
+            const point<double> c = t.apply<double>(m.center);
+            const double dx = std::max({s.bounds.min_x - c.x, 0.0, c.x - s.bounds.max_x});
+            const double dy = std::max({s.bounds.min_y - c.y, 0.0, c.y - s.bounds.max_y});
+            // (NaN: the comparison fails and the pair stays.)
+            if (filter_length(dx, dy) > m.radius + circle_grow) continue;
+            if (m.count != 0) {
+                for (std::uint32_t j = m.first; j < m.first + m.count; ++j) {
+                    const std::uint32_t f = moving.order_[j];
+                    const auto [u, v] = ends(f);
+                    if (query_below(p.s, u, v, grow, line_grow, [&](std::uint32_t e) { return visit(e, f); }))
+                        return true;
+                }
+            } else if (s.count == 0 && s.radius > m.radius) {
+                stack[top++] = {s.first + 1, p.m};
+                stack[top++] = {s.first, p.m};
+            } else {
+                stack[top++] = {p.s, m.first + 1};
+                stack[top++] = {p.s, m.first};
             }
-            for (std::uint32_t i = k.first; i < k.first + k.count; ++i)
-                if (meets(boxes_[i], q) && visit(order_[i])) return true;
         }
         return false;
     }
+
+    /// The bounding circle of all the edges: the root's (radius 0, centre the
+    /// origin, for an empty tree).
+    point<double> root_center() const { return nodes_.empty() ? point<double>{} : nodes_[0].center; }
+    /// See root_center.
+    double root_radius() const { return nodes_.empty() ? 0 : nodes_[0].radius; }
 
     /// The number of nodes (0 for an empty tree).
     std::size_t node_count() const { return nodes_.size(); }
@@ -99,14 +147,52 @@ public:
 
 private:
     static constexpr std::uint32_t leaf_size = 4;
+    /// Median splits over at most 2^32 edges in leaves of up to 4: at most 31
+    /// levels below the root; 32 with room.
+    static constexpr std::size_t max_depth = 32;
     struct node {
         box bounds;
+        point<double> center;  ///< the centre of bounds
+        double radius = 0;     ///< bounds every point of bounds from center
         std::uint32_t first = 0;  ///< leaf: first position in order_; inner: left child (right is first + 1)
         std::uint32_t count = 0;  ///< leaf: number of edges; inner: 0
     };
 
     static bool meets(const box& a, const box& b) {
         return a.min_x <= b.max_x && b.min_x <= a.max_x && a.min_y <= b.max_y && b.min_y <= a.max_y;
+    }
+
+    /// query() on the subtree of node `start`. When an end or the grown box
+    /// is not finite, nothing is pruned.
+    template <class Visit>
+    bool query_below(std::uint32_t start, const point<double>& u, const point<double>& v, double grow,
+                     double line_grow, Visit&& visit) const {
+        if (nodes_.empty()) return false;
+        box q;
+        q.add(u);
+        q.add(v);
+        q = q.inflated(grow);
+        // (A NaN coordinate leaves the box unchanged: test the ends too.)
+        const bool prune = std::isfinite(u.x) && std::isfinite(u.y) && std::isfinite(v.x) && std::isfinite(v.y) &&
+                           std::isfinite(q.min_x) && std::isfinite(q.min_y) && std::isfinite(q.max_x) &&
+                           std::isfinite(q.max_y);
+        const bool lines = u.x != v.x || u.y != v.y;
+        std::uint32_t stack[max_depth + 2];
+        std::size_t top = 0;
+        stack[top++] = start;
+        while (top > 0) {
+            const node& k = nodes_[stack[--top]];
+            if (prune && (!meets(k.bounds, q) || (lines && !box_may_be_near_line(k.bounds, u, v, line_grow))))
+                continue;
+            if (k.count == 0) {
+                stack[top++] = k.first + 1;
+                stack[top++] = k.first;
+                continue;
+            }
+            for (std::uint32_t i = k.first; i < k.first + k.count; ++i)
+                if ((!prune || meets(boxes_[i], q)) && visit(order_[i])) return true;
+        }
+        return false;
     }
 
     /// Builds the subtree of order_[first, last) into the reserved node `at`.
