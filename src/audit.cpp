@@ -61,21 +61,16 @@ nlohmann::json to_json(const std::string& file, const audit_report& r) {
 }
 
 void run_audit(const audit_cli_options& o) {
-    const audit_report r = audit_rings(read_wkt_rings(read_wkt_text_file(o.file), o.file));
-    if (!o.json.empty()) {
-        const std::string text = to_json(o.file, r).dump(2) + "\n";
-        if (o.json == "-")
-            std::cout << text;
-        else
-            write_atomically(o.json, text);
-    }
-    if (o.json != "-") {
-        std::cout << o.file << ": " << r.rings << " ring(s), " << r.vertices << " vertices, "
+    const std::string name = shown_name(o.file);
+    const audit_report r = audit_rings(read_wkt_rings(read_wkt_text_input(o.file), name));
+    if (!o.json.empty()) write_output(o.json, to_json(name, r).dump(2) + "\n");
+    if (!is_standard_stream(o.json)) {
+        std::cout << name << ": " << r.rings << " ring(s), " << r.vertices << " vertices, "
                   << r.total << " finding(s)"
                   << (r.total > r.findings.size() ? " (" + std::to_string(r.findings.size()) + " listed)" : "") << "; "
                   << (r.accepted ? "accepted" : "refused: " + r.rejection) << "\n";
         for (const finding& f : r.findings)
-            std::cout << o.file << ": " << place(f) << ": " << finding_name(f.kind) << ": " << f.what << "\n    -> "
+            std::cout << name << ": " << place(f) << ": " << finding_name(f.kind) << ": " << f.what << "\n    -> "
                       << f.effect << "\n";
     }
     if (!r.accepted) throw exit_status{1};
@@ -92,7 +87,9 @@ void register_audit(CLI::App& app) {
         "non-manifold vertices, zero area, the centroid on an edge's line, coordinates beyond a number type's "
         "range; for each, where it is and what the library does with it. Exit code 0: the library accepts the "
         "polygon; 1: it refuses it; 2: the file cannot be read as WKT.");
-    sub->add_option("POLYGON", o->file, "WKT file (POLYGON or MULTIPOLYGON)")->required()->type_name("FILE");
+    sub->add_option("POLYGON", o->file, "WKT file (POLYGON or MULTIPOLYGON); '-': standard input")
+        ->required()
+        ->type_name("FILE");
     sub->add_option("--json", o->json, "Also write the findings as JSON to FILE ('-': standard output, instead of "
                                        "the readable lines)")
         ->type_name("FILE");

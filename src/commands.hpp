@@ -10,7 +10,9 @@ namespace influence2d::cli {
 void register_collide(CLI::App& app);
 /// `influence2d generate`: write the paper's polygon families as WKT.
 void register_generate(CLI::App& app);
-void register_generate_stiff(CLI::App&);
+/// `influence2d generate-stiff`: write the stiff and extreme scenes as WKT and CSV.
+void register_generate_stiff(CLI::App& app);
+/// `influence2d study`: every number type's decisions against the exact reference.
 void register_study(CLI::App& app);
 /// `influence2d bench`: the time study against the peers.
 void register_bench(CLI::App& app);

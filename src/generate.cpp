@@ -3,12 +3,9 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
-#include <stdexcept>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include "commands.hpp"
@@ -20,17 +17,13 @@ namespace influence2d::cli {
 namespace {
 
 struct generate_options {
-    std::string out = "data/families";
+    std::string out;
     std::uint64_t seed = verification::default_family_seed;
     std::vector<std::size_t> sizes = verification::default_family_sizes();
 };
 
 void run_generate(const generate_options& o) {
-    const std::filesystem::path dir(o.out);
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec || !std::filesystem::is_directory(dir))
-        throw std::runtime_error(o.out + ": cannot create the output directory");
+    const std::filesystem::path dir = output_directory(o.out);
     std::size_t files = 0, vertices = 0;
     for (const auto f : verification::all_families) {
         for (const std::size_t n : o.sizes) {
@@ -55,8 +48,10 @@ void register_generate(CLI::App& app) {
         "one file <family>_<n>.wkt per family and vertex count. Every polygon has its vertices "
         "within radius 50 of the origin and vertex 0 at (50, 0); the output is the same on every "
         "platform for a given seed.");
-    sub->add_option("--out", o->out, "Output directory, created if missing")
-        ->capture_default_str()
+    sub->add_option("--out", o->out,
+                    "Output directory, created if missing (required: the committed families are data/families "
+                    "of the source tree); files are written through temporary files renamed into place")
+        ->required()
         ->type_name("DIR");
     sub->add_option("--seed", o->seed,
                     "Seed of the random shapes; the committed data/families use the default")

@@ -4,12 +4,9 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
-#include <stdexcept>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include "commands.hpp"
@@ -27,11 +24,7 @@ struct generate_stiff_options {
 };
 
 void run_generate_stiff(const generate_stiff_options& o) {
-    const std::filesystem::path dir(o.out);
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec || !std::filesystem::is_directory(dir))
-        throw std::runtime_error(o.out + ": cannot create the output directory");
+    const std::filesystem::path dir = output_directory(o.out);
     const auto scenes = verification::stiff_data_scenes(o.seed, o.count);
     const auto files = verification::stiff_data_files(scenes);
     std::size_t bytes = 0;

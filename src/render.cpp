@@ -51,7 +51,7 @@ struct render_options {
 
 /// Where the poses come from, for the title and the messages.
 std::string motion_of(const scene_options& o) {
-    if (!o.poses_path.empty()) return o.poses_path;
+    if (!o.poses_path.empty()) return shown_name(o.poses_path);
     return "the " + o.trajectory + " trajectory (gap " + general(o.gap) + ")";
 }
 
@@ -365,8 +365,8 @@ private:
         const auto width = static_cast<std::size_t>(view_.pixel_width() / 7.2);
         const auto bold_width = static_cast<std::size_t>(view_.pixel_width() / 8.6);
         const std::vector<std::string> files = {
-            "A: " + o_.scene.static_path + " (" + plural(in_.a.size(), "edge") + ")",
-            "B: " + o_.scene.moving_path + " (" + plural(in_.b.size(), "edge") + ")"};
+            "A: " + shown_name(o_.scene.static_path) + " (" + plural(in_.a.size(), "edge") + ")",
+            "B: " + shown_name(o_.scene.moving_path) + " (" + plural(in_.b.size(), "edge") + ")"};
         for (const std::string& line : filled_lines(files, bold_width)) lines.push_back(line);
         bold = lines.size();
         std::vector<std::string> setting = {
@@ -698,8 +698,10 @@ private:
     view view_;
 };
 
-/// Whether the path ends in ".svg", in any case: render writes SVG only.
+/// Whether the path ends in ".svg", in any case, or is '-' (standard
+/// output): render writes SVG only.
 bool names_svg(const std::string& path) {
+    if (is_standard_stream(path)) return true;
     if (path.size() < 4) return false;
     std::string end = path.substr(path.size() - 4);
     for (char& c : end) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -708,7 +710,8 @@ bool names_svg(const std::string& path) {
 
 void run_render(const render_options& o) {
     if (!names_svg(o.out))
-        throw invalid_input("--out " + o.out + ": render writes SVG; give a file name ending in .svg");
+        throw invalid_input("--out " + o.out + ": render writes SVG; give a file name ending in .svg, or '-' for "
+                            "standard output");
     const scene_input in = read_scene(o.scene, o.out);
     detector_options options;
     options.distance = o.distance;
@@ -720,7 +723,7 @@ void run_render(const render_options& o) {
     const triangle_covering<exact_rational> cov(in.a, in.a.centroid());
     const double n = moving_reach(bounding_radius(in.b, in.b.centroid()), o.distance);
     picture pic(o, in, cov, n, evaluate(in, frames, options, cov, n), first);
-    write_atomically(o.out, pic.text());
+    write_output(o.out, pic.text());
 }
 
 }  // namespace
@@ -732,7 +735,7 @@ void register_render(CLI::App& app) {
         "Draw a scene as one SVG file: the static polygon A with its covering triangles (by sign), its centroid and "
         "its influence cones; at each chosen frame the moving polygon B, the extended areas of A's candidate edges "
         "(those whose area holds B's centroid) and the colliding edge pairs found by the exact detector.");
-    add_scene_options(sub, o->scene, "--trajectory-frames");
+    add_scene_options(sub, o->scene);
     sub->add_option("--distance", o->distance,
                     "Separation distance D: a frame collides when the polygons are at distance <= D; the extended "
                     "areas have length n = r_B + D")
@@ -747,7 +750,9 @@ void register_render(CLI::App& app) {
                     "Frames to draw, numbered from 0, separated by commas (default: four spread evenly over the "
                     "poses and the first colliding frame)")
         ->type_name("LIST");
-    sub->add_option("--out", o->out, "The SVG file to write; it is replaced only when the whole picture is made")
+    sub->add_option("--out", o->out,
+                    "The SVG file to write; it is replaced only when the whole picture is made ('-': standard "
+                    "output, written once the picture is made)")
         ->required()
         ->type_name("FILE.svg");
     sub->add_option("--width", o->width, "Width of the picture in pixels")

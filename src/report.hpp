@@ -53,15 +53,6 @@ inline void check_names(const std::vector<std::string>& given, const std::vector
     }
 }
 
-/// The output directory `out`, created if missing.
-inline std::filesystem::path output_directory(const std::string& out) {
-    const std::filesystem::path dir(out);
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (!std::filesystem::is_directory(dir)) throw std::runtime_error(out + ": cannot create the output directory");
-    return dir;
-}
-
 /// A progress reporter on stderr: report(line, done, milestone) rewrites one
 /// line in place on a terminal; elsewhere, when `forced`, it prints the
 /// milestones and the end. Empty (no reporting) when neither.

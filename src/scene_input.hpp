@@ -7,9 +7,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
-#include <filesystem>
+#include <iostream>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -19,6 +18,7 @@
 #include "influence2d/detect/trajectory.hpp"
 #include "influence2d/io/csv.hpp"
 #include "influence2d/io/wkt.hpp"
+#include "files.hpp"
 
 namespace influence2d::cli {
 
@@ -28,7 +28,7 @@ struct scene_options {
     std::string moving_path;
     std::string poses_path;  ///< empty: the trajectory
     std::string trajectory;  ///< circular or linear
-    std::size_t frames = 0;  ///< frames of the trajectory; 0: its default
+    std::size_t frames = 0;  ///< frames of the trajectory (--trajectory-frames); 0: its default
     double gap = 9.0;
 };
 
@@ -52,14 +52,19 @@ inline CLI::Validator finite_non_negative() {
         "FINITE>=0");
 }
 
-/// Adds --static, --moving, the group of --poses and --trajectory (exactly one),
-/// the trajectory's frame count under `frames_flag`, and --gap.
-inline void add_scene_options(CLI::App* sub, scene_options& o, const std::string& frames_flag) {
-    sub->add_option("--static", o.static_path, "WKT file (POLYGON or MULTIPOLYGON) of the static polygon A")
+/// The check of a trajectory's frame count.
+inline CLI::Validator trajectory_frames_range() { return CLI::Range(std::size_t{1}, std::size_t{100000000}); }
+
+/// Adds --static, --moving, the group of --poses and --trajectory (exactly
+/// one), --trajectory-frames and --gap; returns the --trajectory option.
+inline CLI::Option* add_scene_options(CLI::App* sub, scene_options& o) {
+    sub->add_option("--static", o.static_path,
+                    "WKT file (POLYGON or MULTIPOLYGON) of the static polygon A ('-': standard input)")
         ->required()
         ->type_name("A.wkt");
     sub->add_option("--moving", o.moving_path,
-                    "WKT file (POLYGON or MULTIPOLYGON) of the moving polygon B, in its own frame")
+                    "WKT file (POLYGON or MULTIPOLYGON) of the moving polygon B, in its own frame ('-': "
+                    "standard input)")
         ->required()
         ->type_name("B.wkt");
 
@@ -69,7 +74,8 @@ inline void add_scene_options(CLI::App* sub, scene_options& o, const std::string
         motion
             ->add_option("--poses", o.poses_path,
                          "CSV file with the header tx,ty,theta and one pose per line: B is "
-                         "rotated by theta radians about its own origin, then moved by (tx, ty)")
+                         "rotated by theta radians about its own origin, then moved by (tx, ty) ('-': "
+                         "standard input)")
             ->type_name("POSES.csv");
     CLI::Option* trajectory_opt =
         motion
@@ -82,10 +88,10 @@ inline void add_scene_options(CLI::App* sub, scene_options& o, const std::string
     motion->require_option(1);
     poses_opt->excludes(trajectory_opt);
 
-    sub->add_option(frames_flag, o.frames,
+    sub->add_option("--trajectory-frames", o.frames,
                     "Number of frames of the trajectory (only with --trajectory; default 90000 "
                     "for circular, 9000 for linear)")
-        ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
+        ->check(trajectory_frames_range())
         ->needs(trajectory_opt)
         ->type_name("N");
     sub->add_option("--gap", o.gap,
@@ -96,24 +102,15 @@ inline void add_scene_options(CLI::App* sub, scene_options& o, const std::string
         ->check(finite_non_negative())
         ->needs(trajectory_opt)
         ->type_name("G");
+    return trajectory_opt;
 }
 
-/// Checks that `out` can be created: its directory exists and it is not a
-/// directory itself. Returns the reason it cannot, or "".
-inline std::string check_output_path(const std::string& out) {
-    namespace fs = std::filesystem;
-    const fs::path path(out);
-    std::error_code ec;
-    if (fs::is_directory(path, ec)) return out + ": is a directory";
-    const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-    if (!fs::is_directory(dir, ec)) return out + ": directory " + dir.string() + " does not exist";
-    return {};
-}
-
-/// Reads both polygons and the poses (or makes the trajectory), and checks
+/// Reads both polygons and the poses (or makes the trajectory), each from its
+/// file or, for '-', from standard input (one of them at most), and checks
 /// that `out` (unless empty) can be written; throws one invalid_input naming
 /// every problem of the inputs, one per line.
 inline scene_input read_scene(const scene_options& o, const std::string& out) {
+    check_one_standard_input({{"--static", o.static_path}, {"--moving", o.moving_path}, {"--poses", o.poses_path}});
     scene_input in;
     std::vector<std::string> errors;
     const auto attempt = [&errors](auto&& read) {
@@ -123,9 +120,13 @@ inline scene_input read_scene(const scene_options& o, const std::string& out) {
             errors.emplace_back(e.what());
         }
     };
-    attempt([&] { in.a = read_wkt_file(o.static_path); });
-    attempt([&] { in.b = read_wkt_file(o.moving_path); });
-    if (!o.poses_path.empty()) attempt([&] { in.poses = read_poses_csv(o.poses_path); });
+    attempt([&] { in.a = read_wkt_input(o.static_path); });
+    attempt([&] { in.b = read_wkt_input(o.moving_path); });
+    if (!o.poses_path.empty())
+        attempt([&] {
+            in.poses = is_standard_stream(o.poses_path) ? read_poses_csv(std::cin, shown_name(o.poses_path))
+                                                        : read_poses_csv(o.poses_path);
+        });
     if (!out.empty()) {
         const std::string why = check_output_path(out);
         if (!why.empty()) errors.push_back(why);

@@ -34,8 +34,8 @@ struct study_cli_options {
     std::size_t cases = 3;
     std::size_t frames = 256;
     std::uint64_t seed = study_options{}.seed;
-    std::string out = "study";
-    std::string regressions = "data/regressions";
+    std::string out;
+    std::string regressions;  ///< empty: OUT/regressions
     bool quick = false;
     bool progress = false;
 };
@@ -309,8 +309,12 @@ void run_study_command(study_cli_options o, bool cases_given, bool frames_given)
     so.cases = o.cases;
     so.frames = o.frames;
     so.seed = o.seed;
-    so.regressions_dir = o.regressions;
+    if (is_standard_stream(o.regressions))
+        throw std::invalid_argument("--regressions -: reproducible cases are files in a directory, which standard "
+                                    "output cannot hold; name a directory");
     const fs::path dir = output_directory(o.out);
+    if (o.regressions.empty()) o.regressions = (dir / "regressions").string();
+    so.regressions_dir = o.regressions;
     if (auto report = progress_reporter(o.progress)) {
         so.progress = [report](const study_progress& p) {
             const bool done = p.family == p.families;
@@ -371,10 +375,10 @@ void register_study(CLI::App& app) {
                               ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 32))
                               ->type_name("N");
     sub->add_option("--seed", o->seed, "Seed of the shapes, poses and points")->capture_default_str()->type_name("S");
-    sub->add_option("--out", o->out, "Output directory, created if missing")->capture_default_str()->type_name("DIR");
+    sub->add_option("--out", o->out, "Output directory, created if missing")->required()->type_name("DIR");
     sub->add_option("--regressions", o->regressions,
-                    "Where a disagreement of a type that claims exactness is written as a reproducible case")
-        ->capture_default_str()
+                    "Where a disagreement of a type that claims exactness is written as a reproducible case "
+                    "[default: OUT/regressions; the tests replay the cases in data/regressions of the source tree]")
         ->type_name("DIR");
     sub->add_flag("--quick", o->quick,
                   "A short run (" + std::to_string(quick_cases) + " scene per family, " + std::to_string(quick_frames) +

@@ -64,7 +64,7 @@ TEST_CASE("cli collide: trajectories give the requested number of frames", "[cli
     const auto b = dir.file("B.wkt", "POLYGON((0 0,2 0,1 2,0 0))");
     const auto frames = dir / "frames.csv";
 
-    auto r = run_cli(dir, scene_args(a, b) + " --trajectory linear --frames 40 --witness --out " +
+    auto r = run_cli(dir, scene_args(a, b) + " --trajectory linear --trajectory-frames 40 --witness --out " +
                               quote(frames.string()));
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
@@ -74,7 +74,7 @@ TEST_CASE("cli collide: trajectories give the requested number of frames", "[cli
     CHECK(lines[1] == "0,0,");                      // starts apart
     CHECK(lines[40].rfind("39,1", 0) == 0);          // ends in collision
 
-    r = run_cli(dir, scene_args(a, b) + " --trajectory circular --frames 64 --gap 1 --out " +
+    r = run_cli(dir, scene_args(a, b) + " --trajectory circular --trajectory-frames 64 --gap 1 --out " +
                          quote(frames.string()));
     REQUIRE(r.exit_code == 0);
     lines = lines_of(slurp(frames));
@@ -243,9 +243,9 @@ TEST_CASE("cli collide: usage errors exit 2", "[cli]") {
     CHECK(run_cli(dir, "").exit_code == 2);                                     // no subcommand
     CHECK(run_cli(dir, base).exit_code == 2);                                   // no poses
     CHECK(run_cli(dir, base + p + " --trajectory linear").exit_code == 2);      // both
-    CHECK(run_cli(dir, base + p + " --frames 10").exit_code == 2);              // frames w/o trajectory
+    CHECK(run_cli(dir, base + p + " --trajectory-frames 10").exit_code == 2);   // frames w/o trajectory
     CHECK(run_cli(dir, base + " --trajectory spiral").exit_code == 2);
-    CHECK(run_cli(dir, base + " --trajectory linear --frames 0").exit_code == 2);
+    CHECK(run_cli(dir, base + " --trajectory linear --trajectory-frames 0").exit_code == 2);
     CHECK(run_cli(dir, base + p + " --distance -1").exit_code == 2);
     CHECK(run_cli(dir, base + p + " --distance nan").exit_code == 2);
     CHECK(run_cli(dir, base + p + " --distance inf").exit_code == 2);
@@ -262,7 +262,7 @@ TEST_CASE("cli collide: --help exits 0 and documents every option", "[cli]") {
     const auto r = run_cli(dir, "collide --help");
     CHECK(r.exit_code == 0);
     for (const char* option :
-         {"--static", "--moving", "--poses", "--trajectory", "--frames", "--gap", "--number-type",
+         {"--static", "--moving", "--poses", "--trajectory", "--trajectory-frames", "--gap", "--number-type",
           "--algorithm", "--extended-area", "--distance", "--witness", "--out", "circular",
           "linear", "float", "long-double", "quad", "exact", "certified", "interval", "exact fallbacks",
           "brute-force", "paper", "capsule", "band"}) {
@@ -273,4 +273,43 @@ TEST_CASE("cli collide: --help exits 0 and documents every option", "[cli]") {
     CHECK(top.exit_code == 0);
     CHECK(top.out.find("collide") != std::string::npos);
     CHECK(top.out.find("generate") != std::string::npos);
+}
+
+TEST_CASE("cli collide: --frames, the old name of --trajectory-frames, still works with a warning", "[cli]") {
+    const temp_dir dir;
+    const auto a = dir.file("A.wkt", "POLYGON((0 0,10 0,10 10,0 10,0 0))");
+    const auto b = dir.file("B.wkt", "POLYGON((0 0,2 0,1 2,0 0))");
+    const auto old_name = run_cli(dir, scene_args(a, b) + " --trajectory linear --frames 40");
+    INFO(old_name.err);
+    REQUIRE(old_name.exit_code == 0);
+    CHECK(old_name.out.find("frames:          40\n") != std::string::npos);
+    CHECK(old_name.err.find("influence2d: warning: --frames is the old name of --trajectory-frames") !=
+          std::string::npos);
+    const auto new_name = run_cli(dir, scene_args(a, b) + " --trajectory linear --trajectory-frames 40");
+    REQUIRE(new_name.exit_code == 0);
+    CHECK(new_name.err.empty());
+    CHECK(new_name.out.find("frames:          40\n") != std::string::npos);
+    // Not both, not without a trajectory, and out of the help.
+    CHECK(run_cli(dir, scene_args(a, b) + " --trajectory linear --frames 40 --trajectory-frames 40").exit_code == 2);
+    CHECK(run_cli(dir, scene_args(a, b) + " --poses " + quote(dir.file("p.csv", three_poses).string()) +
+                           " --frames 3")
+              .exit_code == 2);
+    CHECK(run_cli(dir, "collide --help").out.find("--frames") == std::string::npos);
+}
+
+TEST_CASE("cli collide: the help of --number-type lists every type with its answers", "[cli]") {
+    const temp_dir dir;
+    const auto r = run_cli(dir, "collide --help");
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.out.find("TYPE:{float,double,long-double,quad,exact,certified,interval}=double") != std::string::npos);
+    for (const char* rounded : {"float", "double", "long-double", "quad"}) {
+        INFO(rounded);
+        CHECK(r.out.find(std::string(rounded) + " (rounded answers): ") != std::string::npos);
+    }
+    for (const char* exact : {"exact", "certified", "interval"}) {
+        INFO(exact);
+        CHECK(r.out.find(std::string(exact) + " (exact answers): ") != std::string::npos);
+    }
+    CHECK(r.out.find("certified and interval (exact fallback) run with --algorithm sound or brute-force only") !=
+          std::string::npos);
 }

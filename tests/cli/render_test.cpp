@@ -373,7 +373,7 @@ TEST_CASE("render: default frames are spread over the trajectory and include the
     const auto all = parse_svg(svg);
 
     const auto c = run_cli(dir, "collide --static " + quote(a.string()) + " --moving " + quote(b.string()) +
-                                    " --trajectory linear --frames 40 --number-type exact");
+                                    " --trajectory linear --trajectory-frames 40 --number-type exact");
     REQUIRE(c.exit_code == 0);
     const std::string key = "first collision: frame ";
     const std::size_t at = c.out.find(key);

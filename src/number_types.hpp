@@ -1,0 +1,168 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// The number types the tool runs a detector in (--number-type): one table,
+// `number_types` below, gives each its name, the words of the help, whether
+// its answers are exact, whether it answers frames in doubt again in exact
+// rationals, and how a detector runs in it. The option's accepted names, its
+// help text and the dispatch all come from that table: a new type is one line
+// there.
+
+#include <chrono>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/core/pose.hpp"
+#include "influence2d/detect/brute_force.hpp"
+#include "influence2d/detect/certified_detector.hpp"
+#include "influence2d/detect/detector.hpp"
+#include "influence2d/detect/interval_detector.hpp"
+#include "influence2d/detect/paper_detector.hpp"
+#include "influence2d/detect/result.hpp"
+#include "influence2d/number/cgal.hpp"
+#include "influence2d/number/multiprecision.hpp"
+
+namespace influence2d::cli {
+
+/// What a detector is asked to do: the scene, the options and the algorithm
+/// (sound, paper or brute-force).
+struct detector_job {
+    const polygon& a;
+    const polygon& b;
+    const std::vector<pose>& poses;
+    detector_options options;
+    std::string algorithm;
+};
+
+/// A detector's answers over the poses, and the time of the frame loop alone.
+struct frames_run {
+    std::vector<frame_result> frames;
+    double seconds = 0;
+    /// Types with an exact fallback: frames answered again in exact rationals.
+    std::optional<std::size_t> exact_frames;
+};
+
+namespace number_type_detail {
+
+/// Times the frame loop of a built detector.
+template <class Detector>
+frames_run time_frames(Detector& det, const std::vector<pose>& poses) {
+    frames_run r;
+    r.frames.resize(poses.size());
+    const auto start = std::chrono::steady_clock::now();
+    for (std::size_t i = 0; i < poses.size(); ++i) r.frames[i] = det.collide(poses[i]);
+    const auto stop = std::chrono::steady_clock::now();
+    r.seconds = std::chrono::duration<double>(stop - start).count();
+    return r;
+}
+
+/// Builds the detector (not timed), then times the frame loop.
+template <class Detector>
+frames_run build_and_run(const detector_job& job) {
+    Detector det(job.a, job.b, job.options);
+    return time_frames(det, job.poses);
+}
+
+/// A plain number type: every algorithm's detector in NT.
+template <class NT>
+frames_run run_in(const detector_job& job) {
+    if (job.algorithm == "paper") return build_and_run<paper_detector<NT>>(job);
+    if (job.algorithm == "brute-force") return build_and_run<brute_force_detector<NT>>(job);
+    return build_and_run<detector<NT>>(job);
+}
+
+/// A filtered type: Wrapper<Detector> runs Detector in a fast type and answers
+/// a frame again in exact rationals when a sign is not certain
+/// (certified_detector, interval_detector). Not for the paper's algorithm
+/// (number_type::exact_fallback says why).
+template <template <template <class...> class> class Wrapper>
+frames_run run_filtered(const detector_job& job) {
+    const auto run = [&job](auto&& det) {
+        frames_run r = time_frames(det, job.poses);
+        r.exact_frames = det.exact_frames();
+        return r;
+    };
+    if (job.algorithm == "brute-force") return run(Wrapper<brute_force_detector>(job.a, job.b, job.options));
+    return run(Wrapper<detector>(job.a, job.b, job.options));
+}
+
+}  // namespace number_type_detail
+
+/// One number type of the tool.
+struct number_type {
+    const char* name;         ///< as --number-type takes it
+    const char* description;  ///< for the help
+    /// Whether every answer is the exact one (else rounded: it may differ
+    /// near contact).
+    bool claims_exact;
+    /// Whether a frame in doubt is answered again in exact rationals. The
+    /// paper's detector cannot take such a type: its influence mask carries
+    /// over from frame to frame, and a frame redone in exact rationals would
+    /// not see the mask the fast detector built (nor leave it one).
+    bool exact_fallback;
+    /// Runs the detector of an algorithm in this type over the poses.
+    frames_run (*run)(const detector_job&);
+};
+
+/// Every number type, in the order the help lists them.
+inline const number_type number_types[] = {
+    // clang-format off
+    {"float", "IEEE single precision, refusing coordinates beyond float's range", false, false, &number_type_detail::run_in<float>},
+    {"double", "IEEE double precision", false, false, &number_type_detail::run_in<double>},
+    {"long-double", "the platform's long double (64-bit significand on x86)", false, false, &number_type_detail::run_in<long double>},
+    {"quad", "113-bit software floating point (Boost cpp_bin_float_quad)", false, false, &number_type_detail::run_in<quad>},
+    {"exact", "CGAL's exact rationals, slower", true, false, &number_type_detail::run_in<exact_rational>},
+    {"certified", "double with a running error bound, a frame whose signs it cannot certify answered again in exact rationals (counted as 'exact fallbacks')", true, true, &number_type_detail::run_filtered<certified_detector>},
+    {"interval", "the same with CGAL's interval arithmetic", true, true, &number_type_detail::run_filtered<interval_detector>},
+    // clang-format on
+};
+
+/// The type --number-type takes when not given.
+inline constexpr const char* default_number_type = "double";
+
+/// The type named `name`, or nullptr.
+inline const number_type* find_number_type(std::string_view name) {
+    for (const number_type& t : number_types)
+        if (name == t.name) return &t;
+    return nullptr;
+}
+
+/// The names, in table order.
+inline std::vector<std::string> number_type_names() {
+    std::vector<std::string> names;
+    for (const number_type& t : number_types) names.emplace_back(t.name);
+    return names;
+}
+
+/// The help of --number-type: every type with its answers and description.
+inline std::string number_type_help() {
+    std::string help = "Arithmetic of the detector's decisions. ";
+    std::vector<std::string> fallback;
+    for (const number_type& t : number_types) {
+        help += std::string(t.name) + (t.claims_exact ? " (exact answers): " : " (rounded answers): ") +
+                t.description + "; ";
+        if (t.exact_fallback) fallback.emplace_back(t.name);
+    }
+    help.replace(help.size() - 2, 2, ".");
+    for (std::size_t i = 0; i < fallback.size(); ++i)
+        help += (i == 0 ? " " : i + 1 == fallback.size() ? " and " : ", ") + fallback[i];
+    if (!fallback.empty()) help += " (exact fallback) run with --algorithm sound or brute-force only";
+    return help;
+}
+
+/// Adds --number-type to `sub`, storing the name in `value` (which starts
+/// as default_number_type): the names, the check and the help from the table.
+inline CLI::Option* add_number_type_option(CLI::App* sub, std::string& value) {
+    value = default_number_type;
+    return sub->add_option("--number-type", value, number_type_help())
+        ->capture_default_str()
+        ->check(CLI::IsMember(number_type_names()))
+        ->type_name("TYPE");
+}
+
+}  // namespace influence2d::cli
