@@ -63,7 +63,7 @@ location feito_locate(const polygon& shape, const std::vector<point<NT>>& v, con
 template <class NT>
 location locate(const polygon& shape, const std::vector<point<NT>>& v, const point<NT>& o,
                 const point<NT>& p) {
-    return detail::feito_locate(shape, v, p == o ? v.front() : o, p);
+    return detail::feito_locate(shape, v, same_point(p, o) ? v.front() : o, p);
 }
 
 /// Locates P in the region covered by `cov` (as the overload above).

@@ -159,7 +159,7 @@ public:
     /// edge), at the cost of the cones near P's direction.
     location locate(const point<NT>& p) const {
         const auto& cov = *cov_;
-        if (p == cov.origin()) return influence2d::locate(cov, p);
+        if (same_point(p, cov.origin())) return influence2d::locate(cov, p);
         for (std::uint32_t i : degenerate_)
             if (on_segment(p, cov.start(i), cov.end(i))) return location::boundary;
         long long doubled = 0;

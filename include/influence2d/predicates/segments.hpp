@@ -2,10 +2,13 @@
 #pragma once
 /// \file
 /// Closed segment-segment questions: intersection and distance bounds. All of
-/// them use ring operations and comparisons only, so they are exact when NT's
-/// ring operations are; a filtered NT gives the exact answer or throws.
+/// them use ring operations and signs taken by number_traits (directly, or
+/// through orientation() and compare_values()) only, so they are exact when
+/// NT's ring operations are; a filtered NT gives the exact answer or throws
+/// uncertain_sign.
 
 #include "influence2d/core/point.hpp"
+#include "influence2d/number/traits.hpp"
 #include "influence2d/predicates/orientation.hpp"
 
 namespace influence2d {
@@ -24,11 +27,12 @@ bool segments_intersect(int o_c, int o_d, const point<NT>& a, const point<NT>& b
         // a == b and that point is off the line of [c, d].
         if (orientation(c, d, a) != 0 || orientation(c, d, b) != 0) return false;
         const auto overlap = [](const NT& p0, const NT& p1, const NT& q0, const NT& q1) {
-            const NT& pmin = p0 < p1 ? p0 : p1;
-            const NT& pmax = p0 < p1 ? p1 : p0;
-            const NT& qmin = q0 < q1 ? q0 : q1;
-            const NT& qmax = q0 < q1 ? q1 : q0;
-            return !(pmax < qmin) && !(qmax < pmin);
+            const bool p_up = compare_values(p0, p1) < 0, q_up = compare_values(q0, q1) < 0;
+            const NT& pmin = p_up ? p0 : p1;
+            const NT& pmax = p_up ? p1 : p0;
+            const NT& qmin = q_up ? q0 : q1;
+            const NT& qmax = q_up ? q1 : q0;
+            return compare_values(pmax, qmin) >= 0 && compare_values(qmax, pmin) >= 0;
         };
         return overlap(a.x, b.x, c.x, d.x) && overlap(a.y, b.y, c.y, d.y);
     }
@@ -49,17 +53,18 @@ bool segments_intersect(const point<NT>& a, const point<NT>& b, const point<NT>&
 /// after multiplying by |ab|^2. For a == b, the distance to that point.
 template <class NT>
 bool point_segment_within(const point<NT>& p, const point<NT>& a, const point<NT>& b, const NT& d2) {
+    using tr = number_traits<NT>;
     const NT abx = b.x - a.x, aby = b.y - a.y;
     const NT apx = p.x - a.x, apy = p.y - a.y;
     const NT t = abx * apx + aby * apy;
     const NT ab2 = abx * abx + aby * aby;
-    if (!(t > NT(0)) || ab2 == NT(0)) return !(apx * apx + apy * apy > d2);
-    if (!(t < ab2)) {
+    if (tr::sign(t) <= 0 || tr::sign(ab2) == 0) return compare_values<NT>(apx * apx + apy * apy, d2) <= 0;
+    if (compare_values(t, ab2) >= 0) {
         const NT bpx = p.x - b.x, bpy = p.y - b.y;
-        return !(bpx * bpx + bpy * bpy > d2);
+        return compare_values<NT>(bpx * bpx + bpy * bpy, d2) <= 0;
     }
     const NT cross = abx * apy - aby * apx;
-    return !(cross * cross > d2 * ab2);
+    return compare_values<NT>(cross * cross, d2 * ab2) <= 0;
 }
 
 /// Whether dist([a, b], [c, d])^2 <= d2 (d2 >= 0; equality counts): the
