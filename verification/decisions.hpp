@@ -166,12 +166,12 @@ public:
 
     void cone_membership(const point<double>& q, answer& out) const {
         const std::size_t first = out.size();
-        scene_.areas.for_each_containing(to_nt(q), [&](std::size_t i) { out.push_back(static_cast<long>(i)); });
+        scene_.areas().for_each_containing(to_nt(q), [&](std::size_t i) { out.push_back(static_cast<long>(i)); });
         std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
     }
 
     void mask(const point<double>& q, answer& out) {
-        scene_.areas.mask(to_nt(q), mask_);
+        scene_.areas().mask(to_nt(q), mask_);
         for (std::size_t i = 0; i < scene_.shape.size(); ++i)
             if (mask_.test(i)) out.push_back(static_cast<long>(i));
     }
@@ -226,7 +226,7 @@ public:
     void containment(const pose& p, answer& out) {
         pose_vertices(p);
         for (std::size_t r = 0; r < b_.ring_count(); ++r)
-            out.push_back(static_cast<long>(scene_.areas.locate(posed_[b_.ring_begin(r)])));
+            out.push_back(static_cast<long>(scene_.areas().locate(posed_[b_.ring_begin(r)])));
         const point<NT> c = rotation_pose(p).apply<NT>(b_.centroid());
         const polygon& as = scene_.shape;
         for (std::size_t r = 0; r < as.ring_count(); ++r)

@@ -125,7 +125,7 @@ void bench_segments(benchmark::State& state) {
 template <class NT>
 void bench_locate(benchmark::State& state) {
     const auto& in = predicate_inputs<NT>::get();
-    run_inputs(state, [&](std::size_t k) { benchmark::DoNotOptimize(in.scene->areas.locate(in.probes[k])); });
+    run_inputs(state, [&](std::size_t k) { benchmark::DoNotOptimize(in.scene->areas().locate(in.probes[k])); });
 }
 
 template <class NT>
@@ -133,7 +133,7 @@ void bench_mask(benchmark::State& state) {
     const auto& in = predicate_inputs<NT>::get();
     influence_mask mask(in.scene->shape.size());
     run_inputs(state, [&](std::size_t k) {
-        in.scene->areas.mask(in.probes[k], mask);
+        in.scene->areas().mask(in.probes[k], mask);
         benchmark::DoNotOptimize(mask.any());
     });
 }

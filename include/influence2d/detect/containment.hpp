@@ -47,7 +47,7 @@ bool one_contains_other(const static_scene<NT>& a, posed_polygon<NT>& b, std::op
                         AFilter a_ring_may_be_in_b = {}, BFilter b_ring_may_be_in_a = {}) {
     const polygon& bs = b.shape();
     for (std::size_t r = 0; r < (MultiRing ? bs.ring_count() : 1); ++r)
-        if (b_ring_may_be_in_a(r) && a.areas.locate(b.vertex(bs.ring_begin(r))) != location::outside) return true;
+        if (b_ring_may_be_in_a(r) && a.areas().locate(b.vertex(bs.ring_begin(r))) != location::outside) return true;
     const NT reach_nt = number_traits<NT>::from_double(reach.value_or(0));
     const NT reach2 = reach_nt * reach_nt;
     const polygon& as = a.shape;

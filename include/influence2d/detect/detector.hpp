@@ -145,8 +145,17 @@ public:
     /// several rings without features::holes. collide throws invalid_input
     /// for a pose with a NaN or infinite component.
     detector(const polygon& static_polygon, const polygon& moving_polygon, detector_options options = {})
-        : a_(std::make_shared<const static_scene<NT>>(checked(static_polygon, "static"))),
-          b_(checked(moving_polygon, "moving")),
+        : detector(prepare_static<NT>(checked(static_polygon, "static")),
+                   prepare_moving<NT>(checked(moving_polygon, "moving")), options) {}
+
+    /// A detector on prepared polygons (prepare_static, prepare_moving),
+    /// which many detectors may share, in any number of threads: one A for
+    /// many B, one B for many A. Building it costs the per-frame arrays
+    /// (linear in B's vertices); A's and B's structures are the shared ones.
+    /// Throws as the constructor from polygons.
+    detector(std::shared_ptr<const static_scene<NT>> static_polygon,
+             std::shared_ptr<const moving_scene<NT>> moving_polygon, detector_options options = {})
+        : a_(checked(std::move(static_polygon), "static")), b_(checked(std::move(moving_polygon), "moving")),
           options_(options) {
         using tr = number_traits<NT>;
         if (!(options_.distance >= 0) || !std::isfinite(options_.distance))
@@ -157,7 +166,7 @@ public:
             throw std::invalid_argument("detector: built without features::distance, options.distance must be 0");
         reach_ = moving_reach(b_.radius(), distance());
         if constexpr (with_coherence) coherence_state::value.skin = options_.temporal_coherence ? 0.25 * reach_ : 0.0;
-        margin_ = tr::filter_slack * 4 * (a_->scale + a_->radius + reach_ + skin() + coordinate_scale(moving_polygon)) +
+        margin_ = tr::filter_slack * 4 * (a_->scale + a_->radius + reach_ + skin() + b_.scene().scale) +
                   std::numeric_limits<double>::min();
         const polygon& as = a_->shape;
         a_ring_boxes_.resize(with_holes ? as.ring_count() : 1);
@@ -207,15 +216,16 @@ public:
     /// The options the detector was built with.
     const detector_options& options() const { return options_; }
 
-    /// Bytes the detector holds beyond A's precomputation (covering and
-    /// influence areas, the same for every feature set): its own size and the
-    /// capacities of its arrays.
+    /// Bytes the detector holds beyond the prepared polygons it shares (A's
+    /// covering, influence areas and edge tree, B's shape and edge tree: the
+    /// same for every feature set, see static_scene and moving_scene): its own
+    /// size and the capacities of its arrays.
     std::size_t state_bytes() const {
         const std::size_t grid = grid_built_ ? (grid_.cell_count() + 1 + grid_.entry_count()) * sizeof(std::uint32_t) : 0;
         std::size_t bytes = sizeof(*this) + grid + chunks_.capacity() * sizeof(chunk) +
                             chunk_centers_.capacity() * sizeof(point<double>) +
                             (cache_.capacity() + candidates_.capacity()) * sizeof(std::uint32_t) + b_.heap_bytes() +
-                            tree_.heap_bytes() + b_tree_.heap_bytes() + a_ring_boxes_.capacity() * sizeof(box);
+                            a_ring_boxes_.capacity() * sizeof(box);
         if constexpr (with_witness) bytes += witness_state::value.heap_bytes();
         return bytes;
     }
@@ -422,7 +432,7 @@ private:
         // p outside A's bounding circle (widened) is outside A.
         const point<double>& o = a_->shape.centroid();
         if (filter_length(f.p.x - o.x, f.p.y - o.y) > a_->radius + 2 * f.margin) return {};
-        return {a_->areas.locate(b_.centroid()) == location::inside, {}};
+        return {a_->areas().locate(b_.centroid()) == location::inside, {}};
     }
 
     /// The polygon, refused when empty, beyond NT's range (accepted_polygon)
@@ -433,6 +443,13 @@ private:
             throw invalid_input(std::string("detector built without features::holes: the ") + which +
                                 " polygon has " + std::to_string(p.ring_count()) + " rings");
         return p;
+    }
+    /// A prepared polygon, checked as above (and refused when null).
+    template <class Scene>
+    static std::shared_ptr<const Scene> checked(std::shared_ptr<const Scene> s, const char* which) {
+        if (!s) throw invalid_input(std::string("detector: no prepared ") + which + " polygon (a null pointer)");
+        checked(s->shape, which);
+        return s;
     }
     /// The separation distance (0 without features::distance).
     double distance() const {
@@ -483,7 +500,7 @@ private:
             detail::coherence_state& c = coherence_state::value;
             c.center = pd;
             c.valid = false;
-            if (cache_.empty()) c.center_inside = a_->areas.locate(b_.centroid()) == location::inside;
+            if (cache_.empty()) c.center_inside = a_->areas().locate(b_.centroid()) == location::inside;
             c.valid = options_.temporal_coherence;
         }
     }
@@ -675,21 +692,13 @@ private:
     };
     std::vector<chunk> chunks_;
     std::vector<point<double>> chunk_centers_;  ///< posed by place_approximate
-    /// A's edge tree (built on the first frame that asks for it).
-    const edge_tree& a_tree() {
-        if (tree_.node_count() == 0) tree_ = edge_tree(a_->shape);
-        return tree_;
-    }
-    /// B's edge tree in B's own frame (built on the first frame that asks).
-    const edge_tree& b_tree() {
-        if (b_tree_.node_count() == 0) b_tree_ = edge_tree(b_.shape());
-        return b_tree_;
-    }
+    /// A's edge tree (shared; built by the first frame that asks for it).
+    const edge_tree& a_tree() const { return a_->tree(); }
+    /// B's edge tree in B's own frame (shared; built by the first frame that asks).
+    const edge_tree& b_tree() const { return b_.scene().tree(); }
 
     edge_grid grid_;  ///< built by the first gather
     bool grid_built_ = false;
-    edge_tree tree_;    ///< A's edges, for frames with few moving edges or none to reuse
-    edge_tree b_tree_;  ///< B's edges in B's frame, for frames with none to reuse
     /// A frame takes the tree when B's edges times this are fewer than the
     /// cached static edges: a tree query costs about that many box tests.
     static constexpr std::size_t tree_cost = 4;

@@ -69,7 +69,7 @@ public:
         if (squared_distance(p, cov.origin()) > outer * outer) return {};
 
         // 2. Influence mask against the previous frame's.
-        a_->areas.mask(p, current_);
+        a_->areas().mask(p, current_);
         const bool left = first_frame_ || current_.left_some_area_of(previous_);
         std::swap(previous_, current_);
         first_frame_ = false;
@@ -77,7 +77,7 @@ public:
 
         // 3. Influence area of length n, then the extended areas.
         bool gate = false;
-        a_->areas.for_each_containing(p, [&](std::size_t i) {
+        a_->areas().for_each_containing(p, [&](std::size_t i) {
             gate = gate || cov.signs(i, p).alpha >= 0 || line_within(p, cov.start(i), cov.end(i), n2);
         });
         if (!gate) return {};

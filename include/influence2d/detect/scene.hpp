@@ -5,9 +5,13 @@
 /// polygon posed in NT for a frame.
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <mutex>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -17,6 +21,7 @@
 #include "influence2d/core/pose.hpp"
 #include "influence2d/covering/covering.hpp"
 #include "influence2d/influence/bounds.hpp"
+#include "influence2d/influence/edge_tree.hpp"
 #include "influence2d/influence/influence_areas.hpp"
 
 namespace influence2d {
@@ -42,16 +47,47 @@ const polygon& accepted_polygon(const polygon& p, const char* which) {
     return p;
 }
 
-/// The static polygon A: its covering from its centroid, its influence areas
-/// and its bounding radius. Immutable once built, so detectors share it.
+/// A structure built by the first call that asks for it and then kept:
+/// callers from several threads at once get the one value, built once
+/// (std::call_once). Neither copied nor moved.
+template <class T>
+class built_once {
+public:
+    built_once() = default;
+    built_once(const built_once&) = delete;
+    built_once& operator=(const built_once&) = delete;
+
+    /// The value, built by make() if no call has built it yet.
+    template <class Make>
+    const T& get(Make&& make) const {
+        std::call_once(once_, [&] {
+            value_.emplace(make());
+            built_.store(true, std::memory_order_release);
+        });
+        return *value_;
+    }
+    /// The value if it was built, else nullptr (never waits).
+    const T* if_built() const { return built_.load(std::memory_order_acquire) ? &*value_ : nullptr; }
+
+private:
+    mutable std::once_flag once_;
+    mutable std::optional<T> value_;
+    mutable std::atomic<bool> built_{false};
+};
+
+/// The static polygon A prepared for detectors in NT: its covering from its
+/// centroid and its bounding radius, built at once (linear time); its
+/// influence areas (the cone index) and its edge tree, built by the first
+/// frame that asks for them. Immutable to its users and safe to share: one
+/// A serves detectors for many B, in any number of threads (see
+/// prepare_static).
 template <class NT>
 struct static_scene {
-    /// Builds everything from A (O(n log n) for n edges); throws invalid_input
-    /// for an empty polygon or one beyond NT's range (see accepted_polygon).
+    /// Takes A (linear time); throws invalid_input for an empty polygon or
+    /// one beyond NT's range (see accepted_polygon).
     explicit static_scene(const polygon& a)
         : shape(accepted_polygon<NT>(a, "static")),
           covering(shape, shape.centroid()),
-          areas(covering),
           radius(bounding_radius(shape, shape.centroid())),
           scale(coordinate_scale(shape)) {}
     static_scene(const static_scene&) = delete;
@@ -59,10 +95,71 @@ struct static_scene {
 
     polygon shape;                   ///< A as given (rings reoriented)
     triangle_covering<NT> covering;  ///< refers to `shape`
-    influence_areas<NT> areas;       ///< refers to `covering`
     double radius;                   ///< bounds the distance from the centroid to A
     double scale;                    ///< largest absolute coordinate of A
+
+    /// A's influence areas, which index `covering` (built on first use, O(n)
+    /// with n edges; thread-safe).
+    const influence_areas<NT>& areas() const { return areas_.get([this] { return influence_areas<NT>(covering); }); }
+    /// A's edge tree in A's frame (built on first use, O(n log n); thread-safe).
+    const edge_tree& tree() const { return tree_.get([this] { return edge_tree(shape); }); }
+    /// Bytes of the heap blocks held by the shape and the edge tree (when
+    /// built).
+    std::size_t heap_bytes() const {
+        const edge_tree* t = tree_.if_built();
+        return shape.heap_bytes() + (t ? t->heap_bytes() : 0);
+    }
+
+private:
+    built_once<influence_areas<NT>> areas_;
+    built_once<edge_tree> tree_;
 };
+
+/// The moving polygon B prepared in its own frame: its centroid and bounding
+/// radius (linear time), and its edge tree built by the first frame that
+/// asks for it. Immutable to its users and safe to share: one B serves
+/// detectors for many A, in any number of threads (see prepare_moving).
+template <class NT>
+struct moving_scene {
+    /// Takes B (linear time); throws invalid_input for an empty polygon or
+    /// one beyond NT's range (see accepted_polygon).
+    explicit moving_scene(const polygon& b)
+        : shape(accepted_polygon<NT>(b, "moving")),
+          centroid(shape.centroid()),
+          radius(bounding_radius(shape, centroid)),
+          scale(coordinate_scale(shape)) {}
+    moving_scene(const moving_scene&) = delete;
+    moving_scene& operator=(const moving_scene&) = delete;
+
+    polygon shape;           ///< B in its own frame (rings reoriented)
+    point<double> centroid;  ///< B's centroid in its own frame
+    double radius;           ///< bounds the distance from the centroid to B
+    double scale;            ///< largest absolute coordinate of B
+
+    /// B's edge tree in B's own frame (built on first use; thread-safe).
+    const edge_tree& tree() const { return tree_.get([this] { return edge_tree(shape); }); }
+    /// Bytes of the heap blocks held by the parts built so far.
+    std::size_t heap_bytes() const {
+        const edge_tree* t = tree_.if_built();
+        return shape.heap_bytes() + (t ? t->heap_bytes() : 0);
+    }
+
+private:
+    built_once<edge_tree> tree_;
+};
+
+/// A prepared for detectors in NT, to be shared by many (detector's
+/// constructor from prepared polygons). Throws as static_scene's constructor.
+template <class NT>
+std::shared_ptr<const static_scene<NT>> prepare_static(const polygon& a) {
+    return std::make_shared<const static_scene<NT>>(a);
+}
+/// B prepared for detectors in NT, to be shared by many. Throws as
+/// moving_scene's constructor.
+template <class NT>
+std::shared_ptr<const moving_scene<NT>> prepare_moving(const polygon& b) {
+    return std::make_shared<const moving_scene<NT>>(b);
+}
 
 /// The moving polygon B: given in its own frame, posed once per frame. A frame
 /// first poses the centroid in double; then, if a filter passes, every vertex
@@ -74,14 +171,18 @@ class posed_polygon {
 public:
     /// B in its own frame, not yet posed; throws invalid_input for a polygon
     /// empty or beyond NT's range (see accepted_polygon).
-    explicit posed_polygon(const polygon& b)
-        : shape_(accepted_polygon<NT>(b, "moving")), local_centroid_(b.centroid()), radius_(bounding_radius(b, b.centroid())) {
-        vertices_.resize(b.size());
-        approximate_.resize(b.size());
-        stamp_.assign(b.size(), 0);
-        approximate_stamp_.assign(b.size(), 0);
+    explicit posed_polygon(const polygon& b) : posed_polygon(prepare_moving<NT>(b)) {}
+    /// B prepared (shared with other detectors), not yet posed.
+    explicit posed_polygon(std::shared_ptr<const moving_scene<NT>> b)
+        : scene_(std::move(b)), shape_(scene_->shape), local_centroid_(scene_->centroid), radius_(scene_->radius) {
+        vertices_.resize(shape_.size());
+        approximate_.resize(shape_.size());
+        stamp_.assign(shape_.size(), 0);
+        approximate_stamp_.assign(shape_.size(), 0);
     }
 
+    /// B as prepared (shared).
+    const moving_scene<NT>& scene() const { return *scene_; }
     /// B in its own frame.
     const polygon& shape() const { return shape_; }
     /// B's number of vertices (and edges).
@@ -134,9 +235,10 @@ public:
     }
     /// The end vertex of edge j, posed in NT.
     const point<NT>& end(std::size_t j) { return vertex(shape_.next(j)); }
-    /// Bytes of the heap blocks held (capacities of the per-vertex arrays).
+    /// Bytes of the heap blocks held for the frames (capacities of the
+    /// per-vertex arrays; the prepared B is counted by its own heap_bytes).
     std::size_t heap_bytes() const {
-        return shape_.heap_bytes() + vertices_.capacity() * sizeof(point<NT>) +
+        return vertices_.capacity() * sizeof(point<NT>) +
                approximate_.capacity() * sizeof(point<double>) +
                (stamp_.capacity() + approximate_stamp_.capacity()) * sizeof(std::uint64_t);
     }
@@ -147,7 +249,8 @@ public:
     }
 
 private:
-    polygon shape_;
+    std::shared_ptr<const moving_scene<NT>> scene_;
+    const polygon& shape_;  ///< scene_->shape
     point<double> local_centroid_;
     double radius_;
     rotation_pose pose_{pose{}};

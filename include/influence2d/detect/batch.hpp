@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// Many queries at once on all cores: many poses of one pair, or many pairs.
+
+#include <algorithm>
+#include <cstddef>
+#include <exception>
+#include <functional>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/core/pose.hpp"
+#include "influence2d/detect/one_shot.hpp"
+#include "influence2d/detect/result.hpp"
+
+namespace influence2d {
+
+/// The number of threads a batch uses for `threads`: itself when > 0, else
+/// the machine's hardware threads (at least 1).
+inline unsigned batch_threads(unsigned threads) {
+    if (threads > 0) return threads;
+    return std::max(1u, std::thread::hardware_concurrency());
+}
+
+namespace detail {
+
+/// Runs block(first, last) over [0, count) cut into one contiguous block per
+/// thread (the calling thread takes the first), and waits for all. The first
+/// exception thrown, in block order, is rethrown after every thread ended.
+template <class Block>
+void in_blocks(std::size_t count, unsigned threads, Block&& block) {
+    const std::size_t t = std::min<std::size_t>(batch_threads(threads), std::max<std::size_t>(count, 1));
+    std::vector<std::exception_ptr> failed(t);
+    const auto run = [&](std::size_t k) {
+        try {
+            block(count * k / t, count * (k + 1) / t);
+        } catch (...) {
+            failed[k] = std::current_exception();
+        }
+    };
+    std::vector<std::thread> workers;
+    workers.reserve(t - 1);
+    for (std::size_t k = 1; k < t; ++k) workers.emplace_back(run, k);
+    run(0);
+    for (std::thread& w : workers) w.join();
+    for (const std::exception_ptr& e : failed)
+        if (e) std::rethrow_exception(e);
+}
+
+}  // namespace detail
+
+/// The answers for every pose, in order, from detectors made by
+/// `make_detector()` (one per thread, each answering a contiguous run of the
+/// poses in order, so that a run keeps the coherence of consecutive poses).
+/// Any detector type with `collide(const pose&)` returning frame_result
+/// serves: detector<NT> (built on prepared polygons shared by all threads,
+/// see prepare_static and prepare_moving), certified_detector, brute force.
+///
+/// The answers are the serial loop's: in exact and certified modes every
+/// answer is the exact one whatever a detector's history; a floating NT
+/// decides each frame's signs on the same posed values in every strategy,
+/// so a different start of the coherence can change an answer only where
+/// its own rounding makes the frame ambiguous. `threads` 0 uses every
+/// hardware thread. The first exception a detector throws (invalid_input
+/// for a non-finite pose) is rethrown after every thread ended.
+template <class MakeDetector>
+std::vector<frame_result> collide_batch(const std::vector<pose>& poses, MakeDetector&& make_detector,
+                                        unsigned threads = 0) {
+    std::vector<frame_result> out(poses.size());
+    detail::in_blocks(poses.size(), threads, [&](std::size_t first, std::size_t last) {
+        if (first == last) return;
+        auto d = make_detector();
+        for (std::size_t k = first; k < last; ++k) out[k] = d.collide(poses[k]);
+    });
+    return out;
+}
+
+/// One query of a batch over many pairs: A, B and B's pose (the polygons are
+/// referred to, not copied, and must outlive the call).
+struct pair_query {
+    const polygon* static_polygon = nullptr;  ///< A
+    const polygon* moving_polygon = nullptr;  ///< B
+    pose moving_pose;                         ///< B's pose
+};
+
+/// ask(A, B, pose) for every query, in order, on `threads` threads (0:
+/// every hardware thread): an audit of many pairs, each asked once; `ask` is
+/// a one-shot query such as `intersects<double>` or `certified_intersects`
+/// (one_shot.hpp, certified_detector.hpp) and must be safe to call from
+/// several threads (those are). 1 for a pair that meets, else 0. Throws
+/// invalid_input for a null polygon, and the first exception `ask` throws
+/// (in query order) after every thread ended.
+template <class Ask>
+std::vector<char> intersects_batch(const std::vector<pair_query>& queries, Ask&& ask, unsigned threads = 0) {
+    std::vector<char> out(queries.size(), 0);
+    detail::in_blocks(queries.size(), threads, [&](std::size_t first, std::size_t last) {
+        for (std::size_t k = first; k < last; ++k) {
+            const pair_query& q = queries[k];
+            if (q.static_polygon == nullptr || q.moving_polygon == nullptr)
+                throw invalid_input("intersects_batch: query " + std::to_string(k) + " has a null polygon");
+            out[k] = ask(*q.static_polygon, *q.moving_polygon, q.moving_pose) ? 1 : 0;
+        }
+    });
+    return out;
+}
+
+}  // namespace influence2d
