@@ -4,13 +4,14 @@
 /// Interval detection: filtered_detector with CGAL's interval arithmetic as the
 /// fast number type.
 ///
-/// Why it catches one more exception type than certified_detector: the library decides
-/// signs through number_traits::sign, which raises uncertain_sign for an
-/// undecided interval, but it also compares NT values directly (segment
-/// extents, distance bounds: `a < b`), and on intervals those comparisons are
-/// CGAL's, whose undecided results raise CGAL::Uncertain_conversion_exception
-/// when converted to bool. The traits cannot change what operator< does, so the
-/// fallback has to catch both.
+/// Why it catches one more exception type than certified_detector: the
+/// predicates take every sign and comparison through number_traits::sign
+/// (orientation(), compare_values()), which raises uncertain_sign for an
+/// undecided interval; but one test outside them still compares NT values
+/// with `>` (the reach test of one_contains_other, detect/containment.hpp),
+/// and on intervals that comparison is CGAL's, whose undecided result raises
+/// CGAL::Uncertain_conversion_exception when converted to bool. Until that
+/// test goes through compare_values too, the fallback catches both.
 
 #include <CGAL/Uncertain.h>
 

@@ -58,12 +58,12 @@ struct number_traits<CGAL::Lazy_exact_nt<ET>> {
 /// adds the -frounding-math that GCC needs for it). An interval always contains
 /// the exact value of the same ring operations on the input doubles, so a sign
 /// it decides is the exact sign; one it cannot decide raises uncertain_sign,
-/// as the certified type does. Comparisons are CGAL's own: `a < b` is an
+/// as the certified type does. Its own comparisons are CGAL's: `a < b` is an
 /// `Uncertain<bool>` whose conversion to bool throws
-/// CGAL::Uncertain_conversion_exception when the intervals overlap. The library
-/// compares NT values directly in a few places (segment extents, distance
-/// bounds), so a detector on intervals raises either exception; run it through
-/// interval_detector (detect/interval_detector.hpp), which answers such frames
+/// CGAL::Uncertain_conversion_exception when the intervals overlap. The
+/// predicates never use them (they compare through compare_values, so through
+/// sign); run a detector on intervals through interval_detector
+/// (detect/interval_detector.hpp), which answers the frames it cannot decide
 /// in exact rationals.
 using interval = CGAL::Interval_nt<true>;
 

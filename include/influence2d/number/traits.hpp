@@ -87,6 +87,19 @@ struct number_traits<NT, std::enable_if_t<std::is_floating_point_v<NT>>> {
         std::numeric_limits<NT>::epsilon() > 1e-12 ? 1e-4 : 1e-9;
 };
 
+/// The sign of a - b (-1, 0 or +1), taken by number_traits<NT>::sign: the
+/// one way the library compares two NT values, so that a filtered type
+/// raises on an undecided comparison what it raises on an undecided sign
+/// (uncertain_sign). Exact when NT's ring operations are; for a floating NT,
+/// whose differences are rounded but keep their sign (gradual underflow), it
+/// agrees with the built-in comparisons on finite values, and gives 0 when
+/// either value is NaN. For an NT with expression templates (GMP's, Boost's)
+/// name NT when an argument is an expression: `compare_values<NT>(a * b, c)`.
+template <class NT>
+int compare_values(const NT& a, const NT& b) {
+    return number_traits<NT>::sign(a - b);
+}
+
 /// Whether NT's answers are the exact ones: true unless its category is
 /// floating.
 template <class NT>

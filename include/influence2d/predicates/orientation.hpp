@@ -45,14 +45,29 @@ int orientation(const point<NT>& a, const point<NT>& b, const point<NT>& c) {
     return tr::sign(det);
 }
 
+/// Whether p and q are the same point: both coordinates equal by
+/// compare_values (so a filtered NT raises uncertain_sign when it cannot
+/// tell). Exact when NT's ring operations are.
+template <class NT>
+bool same_point(const point<NT>& p, const point<NT>& q) {
+    return compare_values(p.x, q.x) == 0 && compare_values(p.y, q.y) == 0;
+}
+
+/// Whether the value p lies between the values a and b, both included, in
+/// either order: a - p and p - b do not have opposite signs (two calls of
+/// compare_values).
+template <class NT>
+bool between(const NT& p, const NT& a, const NT& b) {
+    return compare_values(a, p) * compare_values(p, b) >= 0;
+}
+
 /// Whether p, known to be collinear with a and b, lies on the closed segment
 /// [a, b] (endpoints included; for a == b, whether p is that point). Compares
-/// coordinates only, so the result is meaningless when p is not collinear.
+/// coordinates only (through compare_values), so the result is meaningless
+/// when p is not collinear.
 template <class NT>
 bool within_collinear_segment(const point<NT>& p, const point<NT>& a, const point<NT>& b) {
-    const bool in_x = (a.x <= p.x && p.x <= b.x) || (b.x <= p.x && p.x <= a.x);
-    const bool in_y = (a.y <= p.y && p.y <= b.y) || (b.y <= p.y && p.y <= a.y);
-    return in_x && in_y;
+    return between(p.x, a.x, b.x) && between(p.y, a.y, b.y);
 }
 
 /// Whether p lies on the closed segment [a, b] (endpoints included; a == b
