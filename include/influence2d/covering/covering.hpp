@@ -4,9 +4,11 @@
 /// The signed triangle covering of a polygon and the barycentric signs of a
 /// point in its triangles (docs/method.md sections 2 and 3).
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
+#include "influence2d/core/assert.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/predicates/orientation.hpp"
@@ -22,6 +24,26 @@ struct barycentric_signs {
     int beta = 0;   ///< sign of the coordinate of V_i; >= 0 with gamma >= 0: P in the edge's cone
     int gamma = 0;  ///< sign of the coordinate of V_i+1; P in T_i when all three are >= 0
 };
+
+namespace detail {
+
+/// Whether every ring of `shape` is stored with its interior on the left, as
+/// the winding rule of the covering needs: no outer ring clockwise, no hole
+/// counter-clockwise (exact signs of the rings' areas). Linear time; for
+/// assertions.
+inline bool rings_stored_interior_left(const polygon& shape) {
+    std::vector<point<double>> ring;
+    for (std::size_t r = 0; r < shape.ring_count(); ++r) {
+        const auto first = shape.vertices().begin();
+        ring.assign(first + static_cast<std::ptrdiff_t>(shape.ring_begin(r)),
+                    first + static_cast<std::ptrdiff_t>(shape.ring_end(r)));
+        const int turn = polygon::signed_area_sign(ring);
+        if (shape.role(r) == ring_role::outer ? turn < 0 : turn > 0) return false;
+    }
+    return true;
+}
+
+}  // namespace detail
 
 /// The covering triangles of a polygon's edges from one origin O: triangle i is
 /// (O, V_i, V_next(i)) with sign sigma_i = orientation(O, V_i, V_next(i)).
@@ -39,6 +61,8 @@ public:
     /// Keeps a reference to `shape`, which must outlive the covering. For a
     /// filtered NT without exact fallback, may throw uncertain_sign.
     triangle_covering(const polygon& shape, const point<double>& origin) : shape_(&shape) {
+        INFLUENCE2D_ASSERT(detail::rings_stored_interior_left(shape),
+                           "a ring is stored with its interior on the right: the winding numbers would be wrong");
         using tr = number_traits<NT>;
         vertices_.reserve(shape.size());
         for (const auto& v : shape.vertices()) vertices_.push_back({tr::from_double(v.x), tr::from_double(v.y)});
@@ -57,11 +81,20 @@ public:
     /// The number of triangles, one per edge.
     std::size_t size() const { return vertices_.size(); }
     /// V_i, the start of edge i, in NT.
-    const point<NT>& start(std::size_t i) const { return vertices_[i]; }
+    const point<NT>& start(std::size_t i) const {
+        INFLUENCE2D_ASSERT(i < size(), "edge index beyond the covering");
+        return vertices_[i];
+    }
     /// V_i+1, the end of edge i (the next vertex on its ring), in NT.
-    const point<NT>& end(std::size_t i) const { return vertices_[shape_->next(i)]; }
+    const point<NT>& end(std::size_t i) const {
+        INFLUENCE2D_ASSERT(i < size(), "edge index beyond the covering");
+        return vertices_[shape_->next(i)];
+    }
     /// orientation(O, V_i, V_i+1): +1, -1, or 0 for an edge collinear with O.
-    int sigma(std::size_t i) const { return sigma_[i]; }
+    int sigma(std::size_t i) const {
+        INFLUENCE2D_ASSERT(i < size(), "edge index beyond the covering");
+        return sigma_[i];
+    }
 
     /// Barycentric signs of P in triangle i: three orientation signs times
     /// sigma_i, no division; all 0 when sigma_i is 0. Exact when NT is.

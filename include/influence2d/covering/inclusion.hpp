@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "influence2d/core/assert.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/covering/covering.hpp"
@@ -34,6 +35,7 @@ namespace detail {
 template <class NT>
 location feito_locate(const polygon& shape, const std::vector<point<NT>>& v, const point<NT>& o,
                       const point<NT>& p) {
+    INFLUENCE2D_ASSERT(v.size() == shape.size(), "the vertices in NT are not the polygon's");
     long long doubled = 0;
     for (std::size_t i = 0; i < shape.size(); ++i) {
         const point<NT>& a = v[i];

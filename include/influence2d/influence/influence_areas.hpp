@@ -10,6 +10,7 @@
 #include <limits>
 #include <vector>
 
+#include "influence2d/core/assert.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/covering/covering.hpp"
 #include "influence2d/covering/inclusion.hpp"
@@ -42,9 +43,15 @@ public:
     /// Clears every bit.
     void clear() { std::fill(words_.begin(), words_.end(), std::uint64_t{0}); }
     /// Sets bit i; requires i below the size given at construction.
-    void set(std::size_t i) { words_[i / 64] |= std::uint64_t{1} << (i % 64); }
+    void set(std::size_t i) {
+        INFLUENCE2D_ASSERT(i / 64 < words_.size(), "bit beyond the mask");
+        words_[i / 64] |= std::uint64_t{1} << (i % 64);
+    }
     /// Whether bit i is set; requires i below the size given at construction.
-    bool test(std::size_t i) const { return (words_[i / 64] >> (i % 64)) & 1u; }
+    bool test(std::size_t i) const {
+        INFLUENCE2D_ASSERT(i / 64 < words_.size(), "bit beyond the mask");
+        return (words_[i / 64] >> (i % 64)) & 1u;
+    }
     /// Whether some bit is set.
     bool any() const {
         for (auto w : words_) if (w) return true;
@@ -53,6 +60,7 @@ public:
     /// Whether some area of `before` is not in this mask: the point left it.
     /// Requires masks of the same size.
     bool left_some_area_of(const influence_mask& before) const {
+        INFLUENCE2D_ASSERT(before.words_.size() == words_.size(), "masks of different sizes");
         for (std::size_t k = 0; k < words_.size(); ++k)
             if (before.words_[k] & ~words_[k]) return true;
         return false;
@@ -84,6 +92,7 @@ public:
     explicit influence_areas(const triangle_covering<NT>& cov) : cov_(&cov) {
         constexpr double two_pi = 6.283185307179586;
         const std::size_t n = cov.size();
+        INFLUENCE2D_ASSERT(n <= std::numeric_limits<std::uint32_t>::max(), "edge numbers beyond the index's 32 bits");
         buckets_ = 16;
         while (buckets_ < 2 * n && buckets_ < (std::size_t{1} << 20)) buckets_ *= 2;
         const double widen = number_traits<NT>::filter_slack + atan2_widening;

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "influence2d/core/assert.hpp"
+
 /// Exact signs of sums of products of doubles (no number type involved).
 namespace influence2d::expansion {
 
@@ -57,6 +59,8 @@ private:
 
     /// Adds (or subtracts) (high 2^64 + low) 2^position to the integer.
     void add_shifted(std::uint64_t low, std::uint64_t high, int position, bool negative) {
+        INFLUENCE2D_ASSERT(position >= 0 && position / 64 + 3 <= count,
+                           "a product's bits beyond the accumulator's words");
         const int word = position / 64, shift = position % 64;
         // The value shifted spans at most three words.
         const std::uint64_t part[3] = {low << shift, shift ? (high << shift) | (low >> (64 - shift)) : high,

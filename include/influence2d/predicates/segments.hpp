@@ -7,6 +7,7 @@
 /// NT's ring operations are; a filtered NT gives the exact answer or throws
 /// uncertain_sign.
 
+#include "influence2d/core/assert.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/number/traits.hpp"
 #include "influence2d/predicates/orientation.hpp"
@@ -21,6 +22,8 @@ namespace influence2d {
 template <class NT>
 bool segments_intersect(int o_c, int o_d, const point<NT>& a, const point<NT>& b,
                         const point<NT>& c, const point<NT>& d) {
+    INFLUENCE2D_ASSERT(o_c == orientation(a, b, c) && o_d == orientation(a, b, d),
+                       "the orientations given are not those of c and d against [a, b]");
     if (o_c * o_d > 0) return false;
     if (o_c == 0 && o_d == 0) {
         // [c, d] lies on the line of [a, b] (or a == b): compare extents, unless
