@@ -28,6 +28,12 @@ inline unsigned batch_threads(unsigned threads) {
 
 namespace detail {
 
+/// A callable that does nothing, whatever it is given.
+struct no_op {
+    template <class... T>
+    void operator()(T&&...) const {}
+};
+
 /// Runs block(first, last) over [0, count) cut into one contiguous block per
 /// thread (the calling thread takes the first), and waits for all. The first
 /// exception thrown, in block order, is rethrown after every thread ended.
@@ -65,16 +71,20 @@ void in_blocks(std::size_t count, unsigned threads, Block&& block) {
 /// decides each frame's signs on the same posed values in every strategy,
 /// so a different start of the coherence can change an answer only where
 /// its own rounding makes the frame ambiguous. `threads` 0 uses every
-/// hardware thread. The first exception a detector throws (invalid_input
-/// for a non-finite pose) is rethrown after every thread ended.
-template <class MakeDetector>
+/// hardware thread. `done(detector)`, when given, is called by each thread
+/// with its detector after its last frame (to gather counters; calls from
+/// different threads may overlap). The first exception a detector throws
+/// (invalid_input for a non-finite pose) is rethrown after every thread
+/// ended.
+template <class MakeDetector, class Done = detail::no_op>
 std::vector<frame_result> collide_batch(const std::vector<pose>& poses, MakeDetector&& make_detector,
-                                        unsigned threads = 0) {
+                                        unsigned threads = 0, Done&& done = {}) {
     std::vector<frame_result> out(poses.size());
     detail::in_blocks(poses.size(), threads, [&](std::size_t first, std::size_t last) {
         if (first == last) return;
         auto d = make_detector();
         for (std::size_t k = first; k < last; ++k) out[k] = d.collide(poses[k]);
+        done(d);
     });
     return out;
 }
