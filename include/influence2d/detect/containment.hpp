@@ -54,7 +54,7 @@ bool one_contains_other(const static_scene<NT>& a, posed_polygon<NT>& b, std::op
     for (std::size_t r = 0; r < (MultiRing ? as.ring_count() : 1); ++r) {
         if (!a_ring_may_be_in_b(r)) continue;
         const point<NT>& v = a.covering.start(as.ring_begin(r));
-        if (reach && squared_distance(v, b.centroid()) > reach2) continue;
+        if (reach && compare_values<NT>(squared_distance(v, b.centroid()), reach2) > 0) continue;
         if (locate(bs, b.vertices(), b.centroid(), v) != location::outside) return true;
     }
     return false;

@@ -53,7 +53,9 @@ struct fallback<First, Rest...> {
 /// answers every frame whose decisions it makes with certainty, which is then
 /// the exact answer; a frame that raises uncertain_sign (or one of the
 /// exception types Uncertain..., for number types whose comparisons raise
-/// their own) is answered by `D<exact_rational>`. The fast detector's state stays
+/// their own) is answered by `D<exact_rational>`, built by the first such
+/// frame (a run with no frame in doubt pays for the fast detector alone).
+/// The fast detector's state stays
 /// valid after such a frame: its candidate cache is marked valid only once
 /// complete, and it holds no other state between frames. Building `D<FastNT>`
 /// decides signs too (the covering's triangles); if one of those is not
@@ -61,18 +63,21 @@ struct fallback<First, Rest...> {
 template <template <class...> class D, class FastNT, class... Uncertain>
 class filtered_detector {
 public:
-    /// Builds the fast and the exact detector on the same polygons and
-    /// options, so both precomputations are paid once. Whatever D's
-    /// constructor throws, other than an uncertain sign, propagates.
+    /// Builds the fast detector; the exact one is built by the first frame
+    /// the fast one cannot settle (or at once, when building the fast one
+    /// asks a sign it cannot settle), from copies of both polygons kept for
+    /// that. Whatever D's constructor throws, other than an uncertain sign,
+    /// propagates.
     filtered_detector(const polygon& static_polygon, const polygon& moving_polygon, detector_options options = {})
-        : exact_(static_polygon, moving_polygon, options) {
+        : a_(static_polygon), b_(moving_polygon), options_(options) {
         detail::fallback<Uncertain...>::run(
             [&] {
-                fast_.emplace(static_polygon, moving_polygon, options);
+                fast_.emplace(a_, b_, options_);
                 return 0;
             },
             [&] {
                 fast_.reset();
+                exact();
                 return 0;
             });
     }
@@ -83,7 +88,7 @@ public:
     frame_result collide(const pose& p) {
         const auto exactly = [&] {
             ++exact_frames_;
-            return exact_.collide(p);
+            return exact().collide(p);
         };
         if (!fast_) return exactly();
         return detail::fallback<Uncertain...>::run([&] { return fast_->collide(p); }, exactly);
@@ -95,8 +100,16 @@ public:
     bool filtered() const { return fast_.has_value(); }
 
 private:
+    /// The exact detector, built on first use.
+    D<exact_rational>& exact() {
+        if (!exact_) exact_.emplace(a_, b_, options_);
+        return *exact_;
+    }
+
+    polygon a_, b_;
+    detector_options options_;
     std::optional<D<FastNT>> fast_;
-    D<exact_rational> exact_;
+    std::optional<D<exact_rational>> exact_;
     std::size_t exact_frames_ = 0;
 };
 

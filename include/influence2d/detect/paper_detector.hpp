@@ -66,7 +66,7 @@ public:
 
         // 1. Bounding circles.
         const NT outer = tr::from_double(a_->radius) + n;
-        if (squared_distance(p, cov.origin()) > outer * outer) return {};
+        if (compare_values<NT>(squared_distance(p, cov.origin()), outer * outer) > 0) return {};
 
         // 2. Influence mask against the previous frame's.
         a_->areas().mask(p, current_);
@@ -102,7 +102,7 @@ private:
     static bool line_within(const point<NT>& p, const point<NT>& a, const point<NT>& b, const NT& n2) {
         const NT abx = b.x - a.x, aby = b.y - a.y;
         const NT cross = abx * (p.y - a.y) - aby * (p.x - a.x);
-        return !(cross * cross > n2 * (abx * abx + aby * aby));
+        return compare_values<NT>(cross * cross, n2 * (abx * abx + aby * aby)) <= 0;
     }
 
     std::shared_ptr<const static_scene<NT>> a_;
