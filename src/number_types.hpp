@@ -7,6 +7,7 @@
 // help text and the dispatch all come from that table: a new type is one line
 // there.
 
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <optional>
@@ -18,6 +19,7 @@
 
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/detect/batch.hpp"
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
@@ -29,14 +31,17 @@
 
 namespace influence2d::cli {
 
-/// What a detector is asked to do: the scene, the options and the algorithm
-/// (sound, paper or brute-force).
+/// What a detector is asked to do: the scene, the options, the algorithm
+/// (sound, paper or brute-force) and the threads (1: one detector answers
+/// every pose in order; more: collide_batch, one detector per thread on a
+/// contiguous run of the poses).
 struct detector_job {
     const polygon& a;
     const polygon& b;
     const std::vector<pose>& poses;
     detector_options options;
     std::string algorithm;
+    unsigned threads = 1;
 };
 
 /// A detector's answers over the poses, and the time of the frame loop alone.
@@ -49,31 +54,40 @@ struct frames_run {
 
 namespace number_type_detail {
 
-/// Times the frame loop of a built detector.
-template <class Detector>
-frames_run time_frames(Detector& det, const std::vector<pose>& poses) {
+/// Times the frames: with one thread, the loop of one detector built before
+/// the clock starts; with more, the whole batch (each thread builds its
+/// detector from `make`, on shared prepared polygons where the detector
+/// takes them). `done(detector)` sees each detector after its frames.
+template <class Make, class Done>
+frames_run time_frames(const detector_job& job, Make&& make, Done&& done) {
     frames_run r;
-    r.frames.resize(poses.size());
+    if (job.threads <= 1) {
+        auto det = make();
+        r.frames.resize(job.poses.size());
+        const auto start = std::chrono::steady_clock::now();
+        for (std::size_t i = 0; i < job.poses.size(); ++i) r.frames[i] = det.collide(job.poses[i]);
+        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        done(det);
+        return r;
+    }
     const auto start = std::chrono::steady_clock::now();
-    for (std::size_t i = 0; i < poses.size(); ++i) r.frames[i] = det.collide(poses[i]);
-    const auto stop = std::chrono::steady_clock::now();
-    r.seconds = std::chrono::duration<double>(stop - start).count();
+    r.frames = collide_batch(job.poses, make, job.threads, done);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
 }
 
-/// Builds the detector (not timed), then times the frame loop.
-template <class Detector>
-frames_run build_and_run(const detector_job& job) {
-    Detector det(job.a, job.b, job.options);
-    return time_frames(det, job.poses);
-}
-
-/// A plain number type: every algorithm's detector in NT.
+/// A plain number type: every algorithm's detector in NT; the sound one on
+/// A and B prepared once for every thread.
 template <class NT>
 frames_run run_in(const detector_job& job) {
-    if (job.algorithm == "paper") return build_and_run<paper_detector<NT>>(job);
-    if (job.algorithm == "brute-force") return build_and_run<brute_force_detector<NT>>(job);
-    return build_and_run<detector<NT>>(job);
+    const auto nothing = [](const auto&) {};
+    if (job.algorithm == "paper")
+        return time_frames(job, [&] { return paper_detector<NT>(job.a, job.b, job.options); }, nothing);
+    if (job.algorithm == "brute-force")
+        return time_frames(job, [&] { return brute_force_detector<NT>(job.a, job.b, job.options); }, nothing);
+    const auto a = prepare_static<NT>(job.a);
+    const auto b = prepare_moving<NT>(job.b);
+    return time_frames(job, [&] { return detector<NT>(a, b, job.options); }, nothing);
 }
 
 /// A filtered type: Wrapper<Detector> runs Detector in a fast type and answers
@@ -82,13 +96,14 @@ frames_run run_in(const detector_job& job) {
 /// (number_type::exact_fallback says why).
 template <template <template <class...> class> class Wrapper>
 frames_run run_filtered(const detector_job& job) {
-    const auto run = [&job](auto&& det) {
-        frames_run r = time_frames(det, job.poses);
-        r.exact_frames = det.exact_frames();
-        return r;
-    };
-    if (job.algorithm == "brute-force") return run(Wrapper<brute_force_detector>(job.a, job.b, job.options));
-    return run(Wrapper<detector>(job.a, job.b, job.options));
+    std::atomic<std::size_t> exact_frames{0};
+    const auto count = [&](const auto& det) { exact_frames += det.exact_frames(); };
+    frames_run r =
+        job.algorithm == "brute-force"
+            ? time_frames(job, [&] { return Wrapper<brute_force_detector>(job.a, job.b, job.options); }, count)
+            : time_frames(job, [&] { return Wrapper<detector>(job.a, job.b, job.options); }, count);
+    r.exact_frames = exact_frames.load();
+    return r;
 }
 
 }  // namespace number_type_detail
