@@ -78,6 +78,11 @@ public:
     const point<NT>& origin() const { return origin_; }
     /// The polygon's vertices in NT, in its stored order.
     const std::vector<point<NT>>& vertices() const { return vertices_; }
+    /// Bytes of the heap blocks held (capacities; for an exact NT, the
+    /// numbers' own limbs are not counted).
+    std::size_t heap_bytes() const {
+        return vertices_.capacity() * sizeof(point<NT>) + sigma_.capacity() * sizeof(std::int8_t);
+    }
     /// The number of triangles, one per edge.
     std::size_t size() const { return vertices_.size(); }
     /// V_i, the start of edge i, in NT.

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "influence2d/core/box.hpp"
@@ -34,6 +35,7 @@ struct edge_box {
 inline void edges_meeting(const polygon& shape, const std::vector<point<double>>& v, const box& window, double grow,
                           std::vector<edge_box>& out) {
     out.clear();
+    out.reserve(shape.size());
     for (std::size_t e = 0; e < shape.size(); ++e) {
         const point<double>&a = v[e], &b = v[shape.next(e)];
         const edge_box k{std::min(a.x, b.x) - grow, std::max(a.x, b.x) + grow, std::min(a.y, b.y) - grow,
@@ -83,13 +85,16 @@ bool overlapping_pairs(std::vector<edge_box>& as, std::vector<edge_box>& bs, Mee
 ///
 ///   pose B's vertices in double; e <- their rounding margin
 ///   if the boxes of A and of posed B (grown by e) are apart:   disjoint
+///   for one vertex of every ring of each polygon, within the other's box:
+///       located in the other polygon (exact), not outside:     meet
 ///   A's edges whose box meets B's box, B's edges whose box meets A's box
 ///   for each pair of those whose boxes overlap (sort and sweep along x):
 ///       filter in double: the paper's detailed test both ways (segments_may_meet)
 ///       exact segment test in NT on the posed vertices:       meet
-///   no pair: one ring holds the other (one vertex of every ring located)
+///   disjoint
 ///
-/// Time O((n + m) log(n + m) + k) for n and m edges and k overlapping boxes;
+/// Time O((n + m) log(n + m) + k) for n and m edges and k overlapping boxes
+/// (linear for most poses that meet: a located vertex answers them);
 /// no structure outlives the call. For many poses of one pair a detector is
 /// faster (it keeps A's precomputation and the last frame's candidates).
 template <class NT>
@@ -127,62 +132,75 @@ bool intersects(const polygon& a, const polygon& b, const pose& q) {
         b_window.min_y > ab.max_y)
         return false;
 
-    // Candidate edges: those whose box meets the other polygon's box.
-    std::vector<edge_box> a_edges, b_edges;
-    edges_meeting(a, a.vertices(), b_window, e, a_edges);
-    edges_meeting(b, bv, a_window, e, b_edges);
-
-    // B's vertices posed in NT when a decision asks for them.
-    std::vector<point<NT>> posed(b.size());
-    std::vector<char> have(b.size(), 0);
+    // B's vertices posed in NT when a decision asks for them (in double,
+    // the filters' own values: the same operations on the same doubles).
+    constexpr bool in_double = std::is_same_v<NT, double>;
+    std::vector<point<NT>> posed(in_double ? 0 : b.size());
+    std::vector<char> have(in_double ? 0 : b.size(), 0);
     const auto b_vertex = [&](std::size_t j) -> const point<NT>& {
-        if (!have[j]) {
-            posed[j] = t.apply<NT>(b.vertex(j));
-            have[j] = 1;
+        if constexpr (in_double) {
+            return bv[j];
+        } else {
+            if (!have[j]) {
+                posed[j] = t.apply<NT>(b.vertex(j));
+                have[j] = 1;
+            }
+            return posed[j];
         }
-        return posed[j];
     };
     const auto a_vertex = [&](std::size_t i) {
         return point<NT>{tr::from_double(a.vertex(i).x), tr::from_double(a.vertex(i).y)};
     };
-    const bool boundaries_meet = overlapping_pairs(a_edges, b_edges, [&](std::uint32_t i, std::uint32_t j) {
-        const std::size_t i2 = a.next(i), j2 = b.next(j);
-        if (!segments_may_meet(a.vertex(i), a.vertex(i2), bv[j], bv[j2], e)) return false;
-        return segments_intersect(a_vertex(i), a_vertex(i2), b_vertex(j), b_vertex(j2));
-    });
-    if (boundaries_meet) return true;
 
-    // No boundary pair: the regions meet iff one holds a ring of the other
-    // (containment.hpp). A ring of B can lie in A only if its first vertex
-    // lies in A's box, a ring of A in B only if its box lies in B's.
-    std::vector<point<NT>> av;
-    const auto a_in_nt = [&]() -> const std::vector<point<NT>>& {
-        if (av.empty()) {
-            av.reserve(a.size());
-            for (std::size_t i = 0; i < a.size(); ++i) av.push_back(a_vertex(i));
+    // Containment first: one vertex of every ring located in the other
+    // polygon (containment.hpp says why that decides the case of no
+    // boundary pair). A vertex in the other's closed region is a meeting
+    // point whatever the boundaries do, and most poses that meet are
+    // answered here in linear time, before any sorting. A vertex outside the
+    // other polygon's box (widened) is outside it without a locate.
+    const auto outside = [](const point<double>& v, const box& w) {
+        return v.x < w.min_x || v.x > w.max_x || v.y < w.min_y || v.y > w.max_y;  // NaN: may be inside
+    };
+    std::vector<point<NT>> av;  // A's vertices in NT (A's own, in double)
+    const auto a_vertices = [&]() -> const std::vector<point<NT>>& {
+        if constexpr (in_double) {
+            return a.vertices();
+        } else {
+            if (av.empty())
+                for (std::size_t i = 0; i < a.size(); ++i) av.push_back(a_vertex(i));
+            return av;
         }
-        return av;
+    };
+    const auto b_vertices = [&]() -> const std::vector<point<NT>>& {
+        if constexpr (in_double) {
+            return bv;
+        } else {
+            for (std::size_t j = 0; j < b.size(); ++j) b_vertex(j);
+            return posed;
+        }
     };
     const point<NT> a_origin{tr::from_double(a.centroid().x), tr::from_double(a.centroid().y)};
     for (std::size_t r = 0; r < b.ring_count(); ++r) {
         const std::size_t j = b.ring_begin(r);
-        const point<double>& v = bv[j];
-        if (v.x < a_window.min_x || v.x > a_window.max_x || v.y < a_window.min_y || v.y > a_window.max_y) continue;
-        if (locate(a, a_in_nt(), a_origin, b_vertex(j)) != location::outside) return true;
+        if (outside(bv[j], a_window)) continue;
+        if (locate(a, a_vertices(), a_origin, b_vertex(j)) != location::outside) return true;
     }
-    bool b_posed = false;
     for (std::size_t r = 0; r < a.ring_count(); ++r) {
-        box ring;
-        for (std::size_t i = a.ring_begin(r); i < a.ring_end(r); ++i) ring.add(a.vertex(i));
-        if (!b_window.contains(ring)) continue;
-        if (!b_posed) {
-            for (std::size_t j = 0; j < b.size(); ++j) b_vertex(j);
-            b_posed = true;
-        }
-        const point<NT> b_origin = t.apply<NT>(b.centroid());
-        if (locate(b, posed, b_origin, a_vertex(a.ring_begin(r))) != location::outside) return true;
+        const std::size_t i = a.ring_begin(r);
+        if (outside(a.vertex(i), b_window)) continue;
+        if (locate(b, b_vertices(), t.apply<NT>(b.centroid()), a_vertex(i)) != location::outside) return true;
     }
-    return false;
+
+    // No ring inside the other polygon: the regions meet iff the boundaries
+    // do. Candidate edges: those whose box meets the other polygon's box.
+    std::vector<edge_box> a_edges, b_edges;
+    edges_meeting(a, a.vertices(), b_window, e, a_edges);
+    edges_meeting(b, bv, a_window, e, b_edges);
+    return overlapping_pairs(a_edges, b_edges, [&](std::uint32_t i, std::uint32_t j) {
+        const std::size_t i2 = a.next(i), j2 = b.next(j);
+        if (!segments_may_meet(a.vertex(i), a.vertex(i2), bv[j], bv[j2], e)) return false;
+        return segments_intersect(a_vertex(i), a_vertex(i2), b_vertex(j), b_vertex(j2));
+    });
 }
 
 }  // namespace influence2d

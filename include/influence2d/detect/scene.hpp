@@ -103,11 +103,13 @@ struct static_scene {
     const influence_areas<NT>& areas() const { return areas_.get([this] { return influence_areas<NT>(covering); }); }
     /// A's edge tree in A's frame (built on first use, O(n log n); thread-safe).
     const edge_tree& tree() const { return tree_.get([this] { return edge_tree(shape); }); }
-    /// Bytes of the heap blocks held by the shape and the edge tree (when
-    /// built).
+    /// Bytes of the heap blocks held by the parts built so far (for an exact
+    /// NT, the numbers' own limbs are not counted).
     std::size_t heap_bytes() const {
-        const edge_tree* t = tree_.if_built();
-        return shape.heap_bytes() + (t ? t->heap_bytes() : 0);
+        std::size_t bytes = shape.heap_bytes() + covering.heap_bytes();
+        if (const edge_tree* t = tree_.if_built()) bytes += t->heap_bytes();
+        if (const influence_areas<NT>* i = areas_.if_built()) bytes += i->heap_bytes();
+        return bytes;
     }
 
 private:

@@ -96,11 +96,23 @@ public:
         buckets_ = 16;
         while (buckets_ < 2 * n && buckets_ < (std::size_t{1} << 20)) buckets_ *= 2;
         const double widen = number_traits<NT>::filter_slack + atan2_widening;
-        std::vector<std::vector<std::uint32_t>> lists(buckets_);
+        // Two passes, no list per bucket: each cone's run of buckets (first,
+        // count), then the buckets' sizes, their offsets, and the cones put in
+        // place (in edge order within a bucket).
+        struct run {
+            std::uint32_t cone, first, count;
+        };
+        std::vector<run> runs;
+        runs.reserve(n);
+        offsets_.assign(buckets_ + 1, 0);
         const point<double> o = to_double_point(cov.origin());
+        const long buckets = static_cast<long>(buckets_);
         for (std::size_t i = 0; i < n; ++i) {
             const int s = cov.sigma(i);
-            if (s == 0) continue;
+            if (s == 0) {
+                degenerate_.push_back(static_cast<std::uint32_t>(i));
+                continue;
+            }
             const point<double> a = to_double_point(cov.start(i)), b = to_double_point(cov.end(i));
             // The cone turns counter-clockwise from `from` to `to`, by less than pi.
             const point<double>& from = s > 0 ? a : b;
@@ -119,20 +131,25 @@ public:
             const double k = static_cast<double>(buckets_) / two_pi;
             const long first = static_cast<long>(std::floor((lo + 3.141592653589793) * k));
             const long last = static_cast<long>(std::floor((hi + 3.141592653589793) * k));
-            for (long b_index = first; b_index <= last && b_index < first + static_cast<long>(buckets_); ++b_index) {
-                const long wrapped = ((b_index % static_cast<long>(buckets_)) + static_cast<long>(buckets_)) %
-                                     static_cast<long>(buckets_);
-                lists[static_cast<std::size_t>(wrapped)].push_back(static_cast<std::uint32_t>(i));
-            }
+            const long count = std::min(last - first + 1, buckets);
+            const long wrapped = ((first % buckets) + buckets) % buckets;
+            runs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(wrapped),
+                            static_cast<std::uint32_t>(std::max(count, 0L))});
+            for (long c = 0; c < count; ++c) ++offsets_[static_cast<std::size_t>((wrapped + c) % buckets) + 1];
             all_.push_back(static_cast<std::uint32_t>(i));
         }
-        for (std::size_t i = 0; i < n; ++i)
-            if (cov.sigma(i) == 0) degenerate_.push_back(static_cast<std::uint32_t>(i));
-        offsets_.assign(buckets_ + 1, 0);
-        for (std::size_t b = 0; b < buckets_; ++b) offsets_[b + 1] = offsets_[b] + static_cast<std::uint32_t>(lists[b].size());
-        cones_.reserve(offsets_.back());
-        for (auto& l : lists) cones_.insert(cones_.end(), l.begin(), l.end());
+        for (std::size_t b = 0; b < buckets_; ++b) offsets_[b + 1] += offsets_[b];
+        cones_.resize(offsets_.back());
+        std::vector<std::uint32_t> next(offsets_.begin(), offsets_.end() - 1);
+        for (const run& r : runs)
+            for (std::uint32_t c = 0; c < r.count; ++c) cones_[next[(r.first + c) % buckets_]++] = r.cone;
         origin_scale_ = std::fabs(o.x) + std::fabs(o.y);
+    }
+
+    /// Bytes of the heap blocks held (capacities).
+    std::size_t heap_bytes() const {
+        return (offsets_.capacity() + cones_.capacity() + all_.capacity() + degenerate_.capacity()) *
+               sizeof(std::uint32_t);
     }
 
     /// Calls visit(i) for every edge i whose influence area contains P, in
