@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
-/// Many queries at once on all cores: many poses of one pair, or many pairs.
+/// Many queries at once on all cores: many poses of one pair, or many pairs
+/// (docs/method.md, "Preparation and sharing").
 
 #include <algorithm>
 #include <cstddef>
