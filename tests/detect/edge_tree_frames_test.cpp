@@ -93,3 +93,21 @@ TEST_CASE("edge tree frames: a large A and a small B answer as the reference", "
         }
     }
 }
+
+TEST_CASE("edge tree frames: a small A and a large B answer as the reference", "[detect][tree]") {
+    // B's edges outnumber A's: frames that jump traverse the trees in B's
+    // frame, A placed there by the inverse pose.
+    const int frames = test_effort::scaled(40);
+    const std::vector<std::pair<std::string, std::string>> scenes = {
+        {"contour_8", "contour_1024"}, {"convex_8", "convex_512"}, {"hole_16", "hole_1024"},
+        {"starred_8", "starred_256"},  {"irregular_64", "irregular_1024"}};
+    std::uint64_t seed = 141;
+    for (const auto& [an, bn] : scenes) {
+        const polygon a = family_polygon(an), b = family_polygon(bn);
+        const std::vector<pose> poses = frames_near(a, b, seed++, frames);
+        for (double d : {0.0, 0.5}) {
+            check_frames<double>(a, b, poses, d, an + " x " + bn);
+            check_frames<exact_rational>(a, b, poses, d, an + " x " + bn);
+        }
+    }
+}

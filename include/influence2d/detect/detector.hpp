@@ -321,7 +321,9 @@ private:
     /// A's edge tree (in A's frame) and B's (in B's frame, its circles posed
     /// by the frame's pose) traversed together (edge_tree::query_pairs):
     /// below a leaf of B each of its edges, posed in double only then, finds
-    /// the static edges near it, and each such pair gets the tests of step 4,
+    /// the static edges near it (or, for a B of more edges than A, the other
+    /// way round in B's frame: A's circles and edges placed there by the
+    /// inverse pose), and each such pair gets the tests of step 4,
     /// stopping at the first meeting pair without witnesses; then step 5
     /// with B's box taken from its posed bounding circle.
     frame_result pairs_through_trees(const frame& f) {
@@ -332,15 +334,38 @@ private:
         // factor (pose_scale_widening) and the rounding of the posed centre
         // (the frame margin).
         const double circle_grow = distance() + 2 * f.margin + b_.radius() * pose_scale_widening;
-        const auto ends = [&](std::uint32_t j) {
-            return std::pair<point<double>, point<double>>(b_.approximate_now(j), b_.approximate_now(next_b(j)));
+        const auto test = [&](std::uint32_t e, std::uint32_t j) {
+            tally(&detector_statistics::candidate_edges);
+            return test_pair(e, j, b_.approximate_now(j), b_.approximate_now(next_b(j)), f.margin) && !witnessing();
         };
-        const bool met = a_tree().query_pairs(
-            b_tree(), f.t, circle_grow, distance() + f.margin, distance() + 2 * f.margin, ends,
-            [&](std::uint32_t e, std::uint32_t j) {
-                tally(&detector_statistics::candidate_edges);
-                return test_pair(e, j, b_.approximate(j), b_.approximate(next_b(j)), f.margin) && !witnessing();
-            });
+        const double grow = distance() + f.margin, line_grow = distance() + 2 * f.margin;
+        bool met;
+        if (b_.size() <= a_->shape.size()) {
+            // B's circles posed into A's frame; B's edges query A's subtrees.
+            const auto place = [&](const point<double>& q) { return f.t.template apply<double>(q); };
+            const auto ends = [&](std::uint32_t j) {
+                return std::pair<point<double>, point<double>>(b_.approximate_now(j), b_.approximate_now(next_b(j)));
+            };
+            met = a_tree().query_pairs(b_tree(), place, circle_grow, grow, line_grow, ends, test);
+        } else {
+            // The larger B in its own frame: A's circles and edges placed
+            // there by the inverse pose, evaluated in double (rounding of the
+            // order of the frame margin's, and the pose's scale factor,
+            // below pose_scale_widening: both inside the grows); A's edges
+            // query B's subtrees.
+            const double c = f.t.c, s = f.t.s, tx = f.t.tx, ty = f.t.ty;
+            const auto place = [=](const point<double>& q) {
+                const double x = q.x - tx, y = q.y - ty;
+                return point<double>{c * x + s * y, c * y - s * x};
+            };
+            const polygon& as = a_->shape;
+            const auto ends = [&](std::uint32_t e) {
+                return std::pair<point<double>, point<double>>(place(as.vertex(e)), place(as.vertex(as.next(e))));
+            };
+            const double a_circle_grow = distance() + 2 * f.margin + a_->radius * pose_scale_widening;
+            met = b_tree().query_pairs(a_tree(), place, a_circle_grow, grow, line_grow, ends,
+                                       [&](std::uint32_t j, std::uint32_t e) { return test(e, j); });
+        }
         if (met) return {true, {}};
         if constexpr (with_witness) {
             const detail::pair_collector& pairs = witness_state::value;

@@ -14,7 +14,6 @@
 #include "influence2d/core/box.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
-#include "influence2d/core/pose.hpp"
 #include "influence2d/predicates/filters.hpp"
 
 namespace influence2d {
@@ -76,9 +75,10 @@ public:
 
     /// Calls visit(e, f) for each edge e of this tree (in its own frame) and
     /// edge f of `moving` (a tree of another polygon in that polygon's own
-    /// frame, posed into this frame by t) that may come within the distance
+    /// frame, placed into this frame by place(point) -> point<double>, a
+    /// rigid motion evaluated in double) that may come within the distance
     /// the grows stand for. Pairs of nodes are pruned by the moving node's
-    /// bounding circle, its centre posed in double by t, kept farther than
+    /// bounding circle, its centre placed in double, kept farther than
     /// its radius + `circle_grow` from the static node's box; below a moving
     /// leaf each of its edges, its ends posed by ends(f) (a pair of points in
     /// this frame), queries the static subtree as query() does with `grow`
@@ -92,9 +92,9 @@ public:
     ///       if dist(posed centre of m, box of s) > radius of m + circle_grow: prune
     ///       m a leaf: each edge of m queries s's subtree with its posed ends
     ///       else split the node with the larger circle (m when s is a leaf)
-    template <class Ends, class Visit>
-    bool query_pairs(const edge_tree& moving, const rotation_pose& t, double circle_grow, double grow,
-                     double line_grow, Ends&& ends, Visit&& visit) const {
+    template <class Place, class Ends, class Visit>
+    bool query_pairs(const edge_tree& moving, Place&& place, double circle_grow, double grow, double line_grow,
+                     Ends&& ends, Visit&& visit) const {
         if (nodes_.empty() || moving.nodes_.empty()) return false;
         struct pair_of {
             std::uint32_t s, m;
@@ -108,7 +108,7 @@ public:
             const pair_of p = stack[--top];
             const node& s = nodes_[p.s];
             const node& m = moving.nodes_[p.m];
-            const point<double> c = t.apply<double>(m.center);
+            const point<double> c = place(m.center);
             const double dx = std::max({s.bounds.min_x - c.x, 0.0, c.x - s.bounds.max_x});
             const double dy = std::max({s.bounds.min_y - c.y, 0.0, c.y - s.bounds.max_y});
             // (NaN: the comparison fails and the pair stays.)
