@@ -168,11 +168,11 @@ TEST_CASE("features: without coherence every frame takes the edge trees", "[dete
     CHECK(s.frames == poses.size());
     CHECK(s.circle_rejections < s.frames / 2);
     CHECK(s.candidate_rebuilds == 0);
-    CHECK(s.pair_tree_frames == s.frames - s.circle_rejections);
+    CHECK(s.jump_frames == s.frames - s.circle_rejections);
     // With coherence only the first two frames (no steps seen yet) jump, and
     // candidates gathered serve many frames each.
     const detector_statistics& c = coherent.statistics();
-    CHECK(c.pair_tree_frames <= 2);
+    CHECK(c.jump_frames <= 2);
     CHECK(c.candidate_rebuilds > 0);
     CHECK(c.candidate_rebuilds < (c.frames - c.circle_rejections) / 4);
 }

@@ -33,7 +33,7 @@ struct detector_statistics {
     std::size_t segment_tests = 0;      ///< exact segment-pair tests
     std::size_t containment_tests = 0;  ///< frames that ran the inclusion tests
     std::size_t tree_frames = 0;        ///< frames whose pairs came from A's edge tree
-    std::size_t pair_tree_frames = 0;   ///< frames whose pairs came from both trees (incoherent frames)
+    std::size_t jump_frames = 0;        ///< frames with no coherence to use (both edge trees, or every pair)
 };
 
 namespace detail {
@@ -186,7 +186,8 @@ public:
     ///   f <- the frame: B's centroid p posed in double, the rounding margin
     ///   if A's and B's bounding circles are apart:            disjoint
     ///   if p jumped (no coherence to use):  pairs from A's and B's edge trees
-    ///       traversed together, then containment
+    ///       traversed together (every pair's boxes, for two small polygons),
+    ///       then containment
     ///   refresh the cached candidates if p left their skin
     ///   if circle_test_pays() and B's edges keep off A's circle:
     ///       no boundary pair:                                  containment of A in B
@@ -200,7 +201,7 @@ public:
             tally(&detector_statistics::circle_rejections);
             return {};
         }
-        if (!coherent_step(f)) return pairs_through_trees(f);
+        if (!coherent_step(f)) return every_pair_pays() ? every_pair(f) : pairs_through_trees(f);
         refresh_candidates(f);
         if (circle_test_pays() && edges_clear_of(f.t, a_->shape.centroid(), a_->radius + distance() + 2 * f.margin, f.margin))
             return clear_of_a(f);
@@ -293,6 +294,10 @@ private:
         return false;
     }
 
+    /// For a jump, testing the boxes of every edge pair costs less than
+    /// descending both trees when there are few pairs (every_pair_limit).
+    bool every_pair_pays() const { return a_->shape.size() * b_.size() <= every_pair_limit; }
+
     /// The strategies' size heuristics. The circle test of B's edges against
     /// A's circle pays when B has no more chunks than cached candidates (+1):
     /// it then costs about what one pass over the candidates would.
@@ -327,7 +332,7 @@ private:
     /// stopping at the first meeting pair without witnesses; then step 5
     /// with B's box taken from its posed bounding circle.
     frame_result pairs_through_trees(const frame& f) {
-        tally(&detector_statistics::pair_tree_frames);
+        tally(&detector_statistics::jump_frames);
         if constexpr (with_witness)
             if (options_.witness) witness_state::value.clear();
         // The posed circles hold B's posed edges up to the pose's scale
@@ -381,6 +386,33 @@ private:
         const bool finite = std::isfinite(bb.min_x) && std::isfinite(bb.min_y) && std::isfinite(bb.max_x) &&
                             std::isfinite(bb.max_y);
         return {contains_within(bb, finite, f.n, f.margin, true, [&](std::size_t j) { return b_.approximate_now(j); }), {}};
+    }
+
+    /// Steps 3 and 4 for a jump of two small polygons: B posed in double,
+    /// every pair whose boxes (grown by d and the margin) meet gets the tests
+    /// of step 4, stopping at the first meeting pair without witnesses; then
+    /// step 5.
+    frame_result every_pair(const frame& f) {
+        tally(&detector_statistics::jump_frames);
+        place_approximate(f.t);
+        if constexpr (with_witness)
+            if (options_.witness) witness_state::value.clear();
+        const polygon& as = a_->shape;
+        const double grow = distance() + f.margin;
+        for (std::uint32_t e = 0; e < as.size(); ++e) {
+            const point<double>&a = as.vertex(e), &b = as.vertex(as.next(e));
+            const double min_x = std::min(a.x, b.x) - grow, max_x = std::max(a.x, b.x) + grow;
+            const double min_y = std::min(a.y, b.y) - grow, max_y = std::max(a.y, b.y) + grow;
+            for (std::size_t j = 0; j < b_.size(); ++j) {
+                const point<double>&u = b_.approximate(j), &v = b_.approximate(next_b(j));
+                if (std::max(u.x, v.x) < min_x || std::min(u.x, v.x) > max_x || std::max(u.y, v.y) < min_y ||
+                    std::min(u.y, v.y) > max_y)
+                    continue;
+                tally(&detector_statistics::candidate_edges);
+                if (test_pair(e, j, u, v, f.margin) && !witnessing()) return {true, {}};
+            }
+        }
+        return finish(f.n, f.margin);
     }
 
     /// Steps 3 and 4 through A's edge tree: each moving edge, posed in double,
@@ -727,6 +759,11 @@ private:
     /// A frame takes the tree when B's edges times this are fewer than the
     /// cached static edges: a tree query costs about that many box tests.
     static constexpr std::size_t tree_cost = 4;
+    /// A jump tests every edge pair's boxes when A's edges times B's are at
+    /// most this many: a box test costs a few comparisons, a tree descent a
+    /// posed circle and a box distance per node pair plus a segment query
+    /// per moving edge.
+    static constexpr std::size_t every_pair_limit = 64;
 
     /// The static edges within reach (+ skin) of where they were gathered:
     /// kept between frames with features::coherence, else anew each frame.
