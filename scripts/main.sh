@@ -4,7 +4,8 @@
 # case (irregular contour polygons) on the circular and the linear trajectory,
 # in double and in exact arithmetic, with the sound and the paper-literal
 # detectors, and prints a summary table; then a short precision study of the
-# method's decisions per number type, and a quick time study against the peers.
+# method's decisions per number type, and a quick time study against the peers
+# (the paper's trajectories, random poses near contact, one-shot queries).
 # Outputs go to build/main-job/.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -70,7 +71,7 @@ echo "precision study (short run: every decision of the method in every number t
 sed -n '/^## What this means/,/^## /p' "$out/study/study.md" | sed '$d'
 echo "tables and plots: $out/study/study.md, $out/study/*.svg"
 echo
-echo "time study (quick grid: sizes 8 and 1024, every polygon type, both trajectories; every method on the same frames):"
+echo "time study (quick grid: sizes 8 and 1024, every polygon type; the two trajectories, random poses and one-shot queries; every method on the same poses):"
 "$tool" bench --quick --out "$out/bench" >"$out/bench.log"
 sed -n '/^## Methods/,/^## Targets/p' "$out/bench/bench.md" | sed '$d'
 sed -n '/^## Targets/,/^## Speed-up/p' "$out/bench/bench.md" | sed '$d'

@@ -6,7 +6,9 @@
 //   Peer p(A, B);          // A static, B moving; what can be prepared once is
 //   bool hit = p.collide(pose);   // A and B posed by `pose` intersect
 //
-// Each is given its best shot on the frames of verification/time_study.hpp:
+// Two forms per library. The frame form (`*_peer`) is given its best shot on
+// many poses of one pair (verification/time_study.hpp's trajectories and
+// random poses):
 //   boost_geometry  bg::intersects(A, B) on bg::model::polygon (closed semantics:
 //                   touching counts); B's rings are refilled in place each frame.
 //   geos            A prepared once (GEOSPrepare_r); each frame builds B from a
@@ -19,6 +21,19 @@
 //   box2d           b2TestOverlap of two b2PolygonShape (GJK in float) with the
 //                   polygon skin set to zero; only convex polygons of at most
 //                   b2_maxPolygonVertices (8) vertices, one ring each.
+// The one-shot form (`*_one_shot`) is what a user writes for a single query,
+// nothing kept from one pose to the next but the input itself, and no
+// validation of it:
+//   boost_geometry  A kept as a bg polygon; B posed into a bg polygon built
+//                   fresh; bg::intersects.
+//   geos            both geometries built from their coordinates (B posed),
+//                   GEOSIntersects_r (not prepared), both destroyed.
+//   cgal            the frame form already is one (A kept as a polygon with
+//                   holes, B posed fresh, do_intersect): cgal_peer serves both.
+//   box2d           both b2PolygonShape built (Set: the hull and the normals),
+//                   b2TestOverlap.
+// A library that was not found when this was built is a missing_peer: listed by
+// the time study, never run.
 // Every peer but cgal poses B in double: x' = c x - s y + tx, y' = s x + c y + ty
 // with c = cos(theta), s = sin(theta), the library's formula.
 
@@ -73,19 +88,46 @@ inline point<double> posed(const rotation_pose& r, const point<double>& q) {
 
 }  // namespace peer_detail
 
-/// Boost.Geometry's intersects (closed semantics).
+namespace peer_detail {
+
+using bg_point = boost::geometry::model::d2::point_xy<double>;
+using bg_polygon = boost::geometry::model::polygon<bg_point, false, true>;  // counter-clockwise, closed
+
+/// The rings posed by r as a Boost.Geometry polygon, each ring closed.
+inline bg_polygon bg_posed(const std::vector<std::vector<point<double>>>& rings, const rotation_pose& r) {
+    bg_polygon out;
+    out.inners().resize(rings.size() - 1);
+    for (std::size_t k = 0; k < rings.size(); ++k) {
+        auto& ring = k == 0 ? out.outer() : out.inners()[k - 1];
+        ring.reserve(rings[k].size() + 1);
+        for (const auto& q : rings[k]) {
+            const point<double> v = posed(r, q);
+            ring.push_back(bg_point(v.x, v.y));
+        }
+        ring.push_back(ring.front());
+    }
+    return out;
+}
+
+}  // namespace peer_detail
+
+/// Boost.Geometry's intersects (closed semantics), frame form.
 class boost_geometry_peer {
 public:
-    using point_type = boost::geometry::model::d2::point_xy<double>;
-    using polygon_type = boost::geometry::model::polygon<point_type, false, true>;  // counter-clockwise, closed
-
     static const char* name() { return "boost_geometry"; }
 
+    /// Whether both polygons are valid for Boost.Geometry (checked once per
+    /// cell by the time study, outside every timing).
+    static bool applies(const polygon& A, const polygon& B) {
+        const rotation_pose identity{pose{}};
+        return boost::geometry::is_valid(peer_detail::bg_posed(peer_detail::rings_of(A), identity)) &&
+               boost::geometry::is_valid(peer_detail::bg_posed(peer_detail::rings_of(B), identity));
+    }
+
     boost_geometry_peer(const polygon& A, const polygon& B) : b_rings_(peer_detail::rings_of(B)) {
-        const auto a = peer_detail::rings_of(A);
-        a_ = make(a);
-        b_ = make(b_rings_);
-        if (!boost::geometry::is_valid(a_)) throw std::invalid_argument("boost_geometry_peer: A is not a valid polygon");
+        const rotation_pose identity{pose{}};
+        a_ = peer_detail::bg_posed(peer_detail::rings_of(A), identity);
+        b_ = peer_detail::bg_posed(b_rings_, identity);
     }
 
     bool collide(const pose& p) {
@@ -100,98 +142,161 @@ private:
     static void fill(Ring& ring, const std::vector<point<double>>& from, const rotation_pose& r) {
         for (std::size_t i = 0; i < from.size(); ++i) {
             const point<double> q = peer_detail::posed(r, from[i]);
-            ring[i] = point_type(q.x, q.y);
+            ring[i] = peer_detail::bg_point(q.x, q.y);
         }
         ring[from.size()] = ring[0];
     }
 
-    static polygon_type make(const std::vector<std::vector<point<double>>>& rings) {
-        polygon_type out;
-        for (std::size_t k = 0; k < rings.size(); ++k) {
-            auto& ring = k == 0 ? out.outer() : (out.inners().emplace_back(), out.inners().back());
-            for (const auto& q : rings[k]) ring.push_back(point_type(q.x, q.y));
-            ring.push_back(ring.front());
-        }
-        return out;
+    std::vector<std::vector<point<double>>> b_rings_;
+    peer_detail::bg_polygon a_, b_;
+};
+
+/// Boost.Geometry's intersects, one-shot form: B posed into a polygon built
+/// fresh for the query.
+class boost_geometry_one_shot {
+public:
+    static bool applies(const polygon& A, const polygon& B) { return boost_geometry_peer::applies(A, B); }
+
+    boost_geometry_one_shot(const polygon& A, const polygon& B)
+        : a_(peer_detail::bg_posed(peer_detail::rings_of(A), rotation_pose(pose{}))),
+          b_rings_(peer_detail::rings_of(B)) {}
+
+    bool collide(const pose& p) const {
+        return boost::geometry::intersects(a_, peer_detail::bg_posed(b_rings_, rotation_pose(p)));
     }
 
+private:
+    peer_detail::bg_polygon a_;
     std::vector<std::vector<point<double>>> b_rings_;
-    polygon_type a_, b_;
+};
+
+/// Stands for a peer whose library was not found when this was built: the
+/// time study lists it and never runs it.
+struct missing_peer {
+    static bool applies(const polygon&, const polygon&) { return false; }
+    missing_peer(const polygon&, const polygon&) {
+        throw std::logic_error("missing_peer: the library was not found when this was built");
+    }
+    bool collide(const pose&) const { return false; }
 };
 
 #if INFLUENCE2D_HAVE_GEOS
-/// GEOS through its reentrant C API, the static polygon prepared.
-class geos_peer {
+namespace peer_detail {
+
+/// A GEOS context (reentrant C API) with its error message and a coordinate
+/// buffer: builds polygons from rings, posed.
+class geos_builder {
 public:
-    static const char* name() { return "geos"; }
-
-    geos_peer(const polygon& A, const polygon& B) : b_rings_(peer_detail::rings_of(B)) {
-        ctx_ = GEOS_init_r();
-        if (!ctx_) throw std::runtime_error("geos_peer: GEOS_init_r failed");
-        GEOSContext_setErrorMessageHandler_r(ctx_, &on_error, &error_);
-        a_ = make(peer_detail::rings_of(A), rotation_pose(pose{}));
-        prepared_ = GEOSPrepare_r(ctx_, a_);
-        if (!prepared_) throw std::runtime_error("geos_peer: GEOSPrepare_r failed: " + error_);
-        std::size_t n = 0;
-        for (const auto& r : b_rings_) n = std::max(n, r.size() + 1);
-        buffer_.resize(2 * n);
+    geos_builder() {
+        ctx = GEOS_init_r();
+        if (!ctx) throw std::runtime_error("geos: GEOS_init_r failed");
+        GEOSContext_setErrorMessageHandler_r(ctx, &on_error, &error);
     }
-    geos_peer(const geos_peer&) = delete;
-    geos_peer& operator=(const geos_peer&) = delete;
-    ~geos_peer() {
-        if (prepared_) GEOSPreparedGeom_destroy_r(ctx_, prepared_);
-        if (a_) GEOSGeom_destroy_r(ctx_, a_);
-        GEOS_finish_r(ctx_);
+    geos_builder(const geos_builder&) = delete;
+    geos_builder& operator=(const geos_builder&) = delete;
+    ~geos_builder() { GEOS_finish_r(ctx); }
+
+    /// A new polygon of the rings posed by r (the caller destroys it).
+    GEOSGeometry* make(const std::vector<std::vector<point<double>>>& rings, const rotation_pose& r) {
+        GEOSGeometry* shell = ring(rings[0], r);
+        holes_.clear();
+        for (std::size_t k = 1; k < rings.size(); ++k) holes_.push_back(ring(rings[k], r));
+        GEOSGeometry* g = GEOSGeom_createPolygon_r(ctx, shell, holes_.data(), static_cast<unsigned>(holes_.size()));
+        if (!g) throw std::runtime_error("geos: cannot build a polygon: " + error);
+        return g;
     }
 
-    bool collide(const pose& p) {
-        GEOSGeometry* b = make(b_rings_, rotation_pose(p));
-        const char answer = GEOSPreparedIntersects_r(ctx_, prepared_, b);
-        GEOSGeom_destroy_r(ctx_, b);
-        if (answer == 2) throw std::runtime_error("geos_peer: GEOSPreparedIntersects_r failed: " + error_);
-        return answer == 1;
+    /// The answer of a GEOS predicate (0, 1; 2 on failure).
+    bool answer(char a, const char* what) const {
+        if (a == 2) throw std::runtime_error(std::string("geos: ") + what + " failed: " + error);
+        return a == 1;
     }
+
+    GEOSContextHandle_t ctx = nullptr;
+    std::string error;
 
 private:
     static void on_error(const char* message, void* user) { *static_cast<std::string*>(user) = message; }
 
     GEOSGeometry* ring(const std::vector<point<double>>& from, const rotation_pose& r) {
+        buffer_.resize(2 * (from.size() + 1));
         for (std::size_t i = 0; i < from.size(); ++i) {
-            const point<double> q = peer_detail::posed(r, from[i]);
+            const point<double> q = posed(r, from[i]);
             buffer_[2 * i] = q.x;
             buffer_[2 * i + 1] = q.y;
         }
         buffer_[2 * from.size()] = buffer_[0];
         buffer_[2 * from.size() + 1] = buffer_[1];
         GEOSCoordSequence* seq =
-            GEOSCoordSeq_copyFromBuffer_r(ctx_, buffer_.data(), static_cast<unsigned>(from.size() + 1), 0, 0);
-        if (!seq) throw std::runtime_error("geos_peer: cannot build a coordinate sequence: " + error_);
-        GEOSGeometry* g = GEOSGeom_createLinearRing_r(ctx_, seq);
-        if (!g) throw std::runtime_error("geos_peer: cannot build a ring: " + error_);
+            GEOSCoordSeq_copyFromBuffer_r(ctx, buffer_.data(), static_cast<unsigned>(from.size() + 1), 0, 0);
+        if (!seq) throw std::runtime_error("geos: cannot build a coordinate sequence: " + error);
+        GEOSGeometry* g = GEOSGeom_createLinearRing_r(ctx, seq);
+        if (!g) throw std::runtime_error("geos: cannot build a ring: " + error);
         return g;
     }
 
-    GEOSGeometry* make(const std::vector<std::vector<point<double>>>& rings, const rotation_pose& r) {
-        if (buffer_.size() < 2 * (rings[0].size() + 1)) {
-            std::size_t n = 0;
-            for (const auto& g : rings) n = std::max(n, g.size() + 1);
-            buffer_.resize(2 * n);
-        }
-        GEOSGeometry* shell = ring(rings[0], r);
-        std::vector<GEOSGeometry*> holes;
-        for (std::size_t k = 1; k < rings.size(); ++k) holes.push_back(ring(rings[k], r));
-        GEOSGeometry* g = GEOSGeom_createPolygon_r(ctx_, shell, holes.data(), static_cast<unsigned>(holes.size()));
-        if (!g) throw std::runtime_error("geos_peer: cannot build a polygon: " + error_);
-        return g;
-    }
-
-    GEOSContextHandle_t ctx_ = nullptr;
-    std::string error_;
-    std::vector<std::vector<point<double>>> b_rings_;
     std::vector<double> buffer_;
+    std::vector<GEOSGeometry*> holes_;
+};
+
+}  // namespace peer_detail
+
+/// GEOS, frame form: the static polygon prepared once.
+class geos_peer {
+public:
+    static const char* name() { return "geos"; }
+    static bool applies(const polygon&, const polygon&) { return true; }
+
+    geos_peer(const polygon& A, const polygon& B) : b_rings_(peer_detail::rings_of(B)) {
+        a_ = g_.make(peer_detail::rings_of(A), rotation_pose(pose{}));
+        prepared_ = GEOSPrepare_r(g_.ctx, a_);
+        if (!prepared_) throw std::runtime_error("geos_peer: GEOSPrepare_r failed: " + g_.error);
+    }
+    geos_peer(const geos_peer&) = delete;
+    geos_peer& operator=(const geos_peer&) = delete;
+    ~geos_peer() {
+        if (prepared_) GEOSPreparedGeom_destroy_r(g_.ctx, prepared_);
+        if (a_) GEOSGeom_destroy_r(g_.ctx, a_);
+    }
+
+    bool collide(const pose& p) {
+        GEOSGeometry* b = g_.make(b_rings_, rotation_pose(p));
+        const char answer = GEOSPreparedIntersects_r(g_.ctx, prepared_, b);
+        GEOSGeom_destroy_r(g_.ctx, b);
+        return g_.answer(answer, "GEOSPreparedIntersects_r");
+    }
+
+private:
+    peer_detail::geos_builder g_;
+    std::vector<std::vector<point<double>>> b_rings_;
     GEOSGeometry* a_ = nullptr;
     const GEOSPreparedGeometry* prepared_ = nullptr;
 };
+
+/// GEOS, one-shot form: both geometries built for the query, GEOSIntersects_r.
+class geos_one_shot {
+public:
+    static bool applies(const polygon&, const polygon&) { return true; }
+
+    geos_one_shot(const polygon& A, const polygon& B)
+        : a_rings_(peer_detail::rings_of(A)), b_rings_(peer_detail::rings_of(B)) {}
+
+    bool collide(const pose& p) {
+        GEOSGeometry* a = g_.make(a_rings_, rotation_pose(pose{}));
+        GEOSGeometry* b = g_.make(b_rings_, rotation_pose(p));
+        const char answer = GEOSIntersects_r(g_.ctx, a, b);
+        GEOSGeom_destroy_r(g_.ctx, b);
+        GEOSGeom_destroy_r(g_.ctx, a);
+        return g_.answer(answer, "GEOSIntersects_r");
+    }
+
+private:
+    peer_detail::geos_builder g_;
+    std::vector<std::vector<point<double>>> a_rings_, b_rings_;
+};
+#else
+using geos_peer = missing_peer;
+using geos_one_shot = missing_peer;
 #endif  // INFLUENCE2D_HAVE_GEOS
 
 /// CGAL's Boolean-set do_intersect over the exact kernel (regularised: touching
@@ -203,6 +308,7 @@ public:
     using polygon_with_holes_2 = CGAL::Polygon_with_holes_2<kernel>;
 
     static const char* name() { return "cgal"; }
+    static bool applies(const polygon&, const polygon&) { return true; }
 
     cgal_peer(const polygon& A, const polygon& B) : b_rings_(peer_detail::rings_of(B)) {
         const auto a = peer_detail::rings_of(A);
@@ -236,7 +342,8 @@ private:
 };
 
 #if INFLUENCE2D_HAVE_BOX2D
-/// Box2D's convex polygon overlap test (b2TestOverlap, GJK in float).
+/// Box2D's convex polygon overlap test (b2TestOverlap, GJK in float), frame
+/// form: both shapes built once.
 class box2d_peer {
 public:
     static const char* name() { return "box2d"; }
@@ -247,15 +354,36 @@ public:
     box2d_peer(const polygon& A, const polygon& B) {
         if (!applies(A, B))
             throw std::invalid_argument("box2d_peer: Box2D takes convex polygons of at most 8 vertices");
-        a_ = shape(A);
-        b_ = shape(B);
+        a_ = shape(vertices(A));
+        b_ = shape(vertices(B));
     }
 
-    bool collide(const pose& p) {
+    bool collide(const pose& p) const { return overlap(a_, b_, p); }
+
+    /// The vertices of a one-ring polygon in float.
+    static std::vector<b2Vec2> vertices(const polygon& P) {
+        std::vector<b2Vec2> v;
+        for (std::size_t i = 0; i < P.size(); ++i)
+            v.emplace_back(static_cast<float>(P.vertex(i).x), static_cast<float>(P.vertex(i).y));
+        return v;
+    }
+
+    /// The shape of those vertices, without skin.
+    static b2PolygonShape shape(const std::vector<b2Vec2>& v) {
+        b2PolygonShape s;
+        s.Set(v.data(), static_cast<int32>(v.size()));
+        if (s.m_count != static_cast<int32>(v.size()))  // welded vertices or a changed hull
+            throw std::invalid_argument("box2d_peer: b2PolygonShape::Set changed the polygon");
+        s.m_radius = 0;  // no skin: the polygon itself
+        return s;
+    }
+
+    /// Whether a (unmoved) and b posed by p overlap.
+    static bool overlap(const b2PolygonShape& a, const b2PolygonShape& b, const pose& p) {
         b2Transform a_at, b_at;
         a_at.SetIdentity();
         b_at.Set(b2Vec2(static_cast<float>(p.tx), static_cast<float>(p.ty)), static_cast<float>(p.theta));
-        return b2TestOverlap(&a_, 0, &b_, 0, a_at, b_at);
+        return b2TestOverlap(&a, 0, &b, 0, a_at, b_at);
     }
 
 private:
@@ -268,20 +396,27 @@ private:
         return true;
     }
 
-    static b2PolygonShape shape(const polygon& P) {
-        std::vector<b2Vec2> v;
-        for (std::size_t i = 0; i < P.size(); ++i)
-            v.emplace_back(static_cast<float>(P.vertex(i).x), static_cast<float>(P.vertex(i).y));
-        b2PolygonShape s;
-        s.Set(v.data(), static_cast<int32>(v.size()));
-        if (s.m_count != static_cast<int32>(v.size()))  // welded vertices or a changed hull
-            throw std::invalid_argument("box2d_peer: b2PolygonShape::Set changed the polygon");
-        s.m_radius = 0;  // no skin: the polygon itself
-        return s;
-    }
-
     b2PolygonShape a_, b_;
 };
+
+/// Box2D, one-shot form: both shapes built for the query, b2TestOverlap.
+class box2d_one_shot {
+public:
+    static bool applies(const polygon& A, const polygon& B) { return box2d_peer::applies(A, B); }
+
+    box2d_one_shot(const polygon& A, const polygon& B)
+        : a_(box2d_peer::vertices(A)), b_(box2d_peer::vertices(B)) {}
+
+    bool collide(const pose& p) const {
+        return box2d_peer::overlap(box2d_peer::shape(a_), box2d_peer::shape(b_), p);
+    }
+
+private:
+    std::vector<b2Vec2> a_, b_;
+};
+#else
+using box2d_peer = missing_peer;
+using box2d_one_shot = missing_peer;
 #endif  // INFLUENCE2D_HAVE_BOX2D
 
 }  // namespace influence2d::verification
