@@ -19,11 +19,13 @@ rm -rf "$out"
 mkdir -p "$out"
 
 # run NAME ARGS...: one collide run; prints one table row from its summary.
+# One thread, so that the time per frame is one detector's, the same for
+# every run of the table.
 run() {
     local name=$1
     shift
     local log="$out/$name.log"
-    "$tool" collide "$@" --out "$out/$name.csv" >"$log"
+    "$tool" collide "$@" --threads 1 --out "$out/$name.csv" >"$log"
     local frames collisions first per_frame
     frames=$(awk -F': *' '/^frames:/ {print $2}' "$log")
     collisions=$(awk -F': *' '/^collisions:/ {print $2}' "$log")
