@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "influence2d/core/assert.hpp"
 #include "influence2d/covering/inclusion.hpp"
 #include "influence2d/detect/containment.hpp"
 #include "influence2d/detect/features.hpp"
@@ -560,6 +561,7 @@ private:
             if (cache_.empty()) c.center_inside = a_->areas().locate(b_.centroid()) == location::inside;
             c.valid = options_.temporal_coherence;
         }
+        INFLUENCE2D_ASSERT(cache_.size() <= s.size(), "more cached candidates than static edges");
     }
 
     /// The end of a frame whose pairs were all tested: the pairs found, if
@@ -709,6 +711,7 @@ private:
     bool test_pair(std::uint32_t e, std::size_t j, const point<double>& u, const point<double>& v,
                    double frame_margin) {
         const polygon& as = a_->shape;
+        INFLUENCE2D_ASSERT(e < as.size() && j < b_.size(), "an edge pair beyond the polygons' edges");
         const std::size_t k = next_b(j);
         if (distance() == 0 && !segments_may_meet(as.vertex(e), as.vertex(as.next(e)), u, v, frame_margin))
             return false;
