@@ -21,8 +21,8 @@
 
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <cstdint>
-#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -32,113 +32,44 @@
 #include "influence2d/detect/detector.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "support/families.hpp"
+#include "support/poses.hpp"
+#include "support/random.hpp"
 
 namespace {
 
 using namespace influence2d;
 
-constexpr std::array<const char*, 5> family_names = {"convex", "starred", "irregular", "contour", "hole"};
-constexpr std::array<int, 4> family_sizes = {8, 16, 32, 64};
+constexpr std::array<std::size_t, 4> family_sizes = {8, 16, 32, 64};
 
 struct shape {
     std::string name;
-    polygon poly;
+    const polygon* poly;
 };
 
-const shape& family(std::size_t f, std::size_t s) {
-    static const std::vector<shape> all = [] {
-        std::vector<shape> v;
-        for (const char* name : family_names)
-            for (int n : family_sizes) {
-                const std::string id = std::string(name) + "_" + std::to_string(n);
-                v.push_back({id, read_wkt_file(std::string(INFLUENCE2D_DATA_DIR) + "/families/" + id + ".wkt")});
-            }
-        return v;
-    }();
-    return all[f * family_sizes.size() + s];
+shape family(std::size_t f, std::size_t s) {
+    const verification::family which = verification::all_families[f];
+    return {verification::family_name(which) + "_" + std::to_string(family_sizes[s]),
+            &test_families::load(which, family_sizes[s])};
 }
 
 struct family_pair {
-    const shape* a;
-    const shape* b;
+    shape a;
+    shape b;
     std::uint64_t seed;
 };
 
 std::vector<family_pair> family_pairs() {
     std::vector<family_pair> out;
+    constexpr std::size_t families = std::size(verification::all_families);
     std::uint64_t k = 0;
-    for (std::size_t fa = 0; fa < family_names.size(); ++fa)
-        for (std::size_t fb = 0; fb < family_names.size(); ++fb, ++k)
+    for (std::size_t fa = 0; fa < families; ++fa)
+        for (std::size_t fb = 0; fb < families; ++fb, ++k)
             for (std::size_t r = 0; r < 2; ++r) {
                 const std::size_t combo = (2 * k + r + 5) % 16;
-                out.push_back({&family(fa, combo % 4), &family(fb, (combo / 4 + fb) % 4),
+                out.push_back({family(fa, combo % 4), family(fb, (combo / 4 + fb) % 4),
                                0xce271f1edULL + 104729 * (2 * k + r)});
             }
-    return out;
-}
-
-struct rng {
-    std::mt19937_64 gen;
-    explicit rng(std::uint64_t seed) : gen(seed) {}
-    double unit() { return std::ldexp(static_cast<double>(gen() >> 11), -53); }
-    std::size_t index(std::size_t n) { return static_cast<std::size_t>(gen() % n); }
-};
-
-double max_distance(const polygon& p, const point<double>& c) {
-    double r = 0;
-    for (const auto& v : p.vertices()) r = std::max(r, std::hypot(v.x - c.x, v.y - c.y));
-    return r;
-}
-
-std::vector<pose> generic_frames(const polygon& A, const polygon& B, rng& r, int count) {
-    std::vector<pose> out;
-    const double pi = std::acos(-1.0);
-    const point<double> ca = A.centroid(), cb = B.centroid();
-    const double reach = max_distance(A, ca) + max_distance(B, cb) + 4;
-    for (int k = 0; k < count; ++k) {
-        const double dist = reach * (0.6 + 0.4 * r.unit());
-        const double phi = 2 * pi * r.unit();
-        const double theta = 2 * pi * r.unit() - pi;
-        const double c = std::cos(theta), s = std::sin(theta);
-        out.push_back({ca.x + dist * std::cos(phi) - (c * cb.x - s * cb.y),
-                       ca.y + dist * std::sin(phi) - (s * cb.x + c * cb.y), theta});
-    }
-    return out;
-}
-
-/// Touching poses, each followed by its two one-ulp neighbours.
-std::vector<pose> touching_frames(const polygon& A, const polygon& B, rng& r, int count) {
-    std::vector<pose> out;
-    for (int k = 0; k < count; ++k) {
-        const std::size_t i = r.index(A.size());
-        const point<double> v0 = A.vertex(i), v1 = A.vertex(A.next(i));
-        point<double> a, n;
-        if (r.index(2) == 0) {
-            a = v0;
-            std::size_t prev = i;
-            while (A.next(prev) != i) prev = A.next(prev);
-            const point<double> u = A.vertex(prev);
-            n = {(v1.y - v0.y) + (v0.y - u.y), -(v1.x - v0.x) - (v0.x - u.x)};
-        } else {
-            a = {(v0.x + v1.x) / 2, (v0.y + v1.y) / 2};
-            n = {v1.y - v0.y, -(v1.x - v0.x)};
-        }
-        std::size_t j = 0;
-        double best = 0;
-        for (std::size_t m = 0; m < B.size(); ++m) {
-            const double dot = B.vertex(m).x * n.x + B.vertex(m).y * n.y;
-            if (m == 0 || dot < best) {
-                best = dot;
-                j = m;
-            }
-        }
-        const point<double> q = B.vertex(j);
-        const pose touch{a.x - q.x, a.y - q.y, 0};
-        out.push_back(touch);
-        const double inf = std::numeric_limits<double>::infinity();
-        out.push_back({std::nextafter(touch.tx, k % 2 ? inf : -inf), touch.ty, 0});
-        out.push_back({touch.tx, std::nextafter(touch.ty, k % 2 ? -inf : inf), 0});
-    }
     return out;
 }
 
@@ -177,7 +108,7 @@ void check_frames(const family_pair& fp, const std::vector<pose>& frames, double
         if (++reported > 3) continue;
         std::ostringstream o;
         o.precision(17);
-        o << "A = " << fp.a->name << ", B = " << fp.b->name << ", d = " << d << ", frame " << k << ", pose tx = " << p.tx
+        o << "A = " << fp.a.name << ", B = " << fp.b.name << ", d = " << d << ", frame " << k << ", pose tx = " << p.tx
           << ", ty = " << p.ty << ", theta = " << p.theta;
         INFO(o.str());
         INFO("detector<exact>:                " << pairs_text(want));
@@ -188,23 +119,23 @@ void check_frames(const family_pair& fp, const std::vector<pose>& frames, double
     }
 }
 
-tally run_all(double d, int generic_count, int touching_count) {
+tally run_all(double d, std::size_t generic_count, std::size_t touching_count) {
     tally t;
     for (const family_pair& fp : family_pairs()) {
-        const polygon& A = fp.a->poly;
-        const polygon& B = fp.b->poly;
+        const polygon& A = *fp.a.poly;
+        const polygon& B = *fp.b.poly;
         detector_options wit;
         wit.distance = d;
         wit.witness = true;
         detector_options plain;
         plain.distance = d;
         detector<exact_rational> exact(A, B, wit);
-        rng r(fp.seed);
+        test_random::rng r(fp.seed);
 
         {
             certified_detector<detector> cert(A, B, wit), cert_plain(A, B, plain);
             certified_detector<brute_force_detector> cert_brute(A, B, wit);
-            const std::vector<pose> frames = generic_frames(A, B, r, generic_count);
+            const std::vector<pose> frames = test_poses::near_contact(A, B, generic_count, 0.6, 4, r.gen());
             check_frames(fp, frames, d, exact, cert, cert_brute, cert_plain, t);
             t.generic_frames += frames.size();
             t.generic_fallbacks += cert.exact_frames() + cert_brute.exact_frames() + cert_plain.exact_frames();
@@ -212,7 +143,7 @@ tally run_all(double d, int generic_count, int touching_count) {
         {
             certified_detector<detector> cert(A, B, wit), cert_plain(A, B, plain);
             certified_detector<brute_force_detector> cert_brute(A, B, wit);
-            const std::vector<pose> frames = touching_frames(A, B, r, touching_count);
+            const std::vector<pose> frames = test_poses::touching(A, B, r, touching_count);
             check_frames(fp, frames, d, exact, cert, cert_brute, cert_plain, t);
             t.touching_frames += frames.size();
             t.touching_fallbacks += cert.exact_frames();

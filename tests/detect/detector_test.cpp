@@ -2,7 +2,6 @@
 #include <catch2/catch.hpp>
 
 #include <limits>
-#include <random>
 #include <string>
 
 #include "influence2d/detect/brute_force.hpp"
@@ -11,6 +10,7 @@
 #include "influence2d/detect/paper_detector.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "support/random.hpp"
 #include "support/shapes.hpp"
 #include "verification/cgal_reference.hpp"
 
@@ -157,14 +157,14 @@ TEMPLATE_TEST_CASE("detector: temporal coherence over a sequence equals the refe
         o.distance = d;
         detector<NT> sound(a, b, o);
         brute_force_detector<NT> brute(a, b, o);
-        std::mt19937_64 rng(11);
+        test_random::rng rng(11);
         // A random walk through and around the C, small steps and jumps.
         double x = -1, y = 3, th = 0;
         int collisions = 0;
         for (int k = 0; k < 3000; ++k) {
             const double step = (k % 97 == 0) ? 3.0 : 0.05;
-            x = std::clamp(x + step * (static_cast<double>(rng() % 2001) / 1000 - 1), -2.0, 8.0);
-            y = std::clamp(y + step * (static_cast<double>(rng() % 2001) / 1000 - 1), -2.0, 8.0);
+            x = std::clamp(x + step * (static_cast<double>(rng.index(2001)) / 1000 - 1), -2.0, 8.0);
+            y = std::clamp(y + step * (static_cast<double>(rng.index(2001)) / 1000 - 1), -2.0, 8.0);
             th += 0.01;
             const pose p{x, y, th};
             const auto s = sound.collide(p);

@@ -19,35 +19,15 @@
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/predicates/orientation.hpp"
+#include "support/families.hpp"
+#include "support/poses.hpp"
 
 namespace {
 
 using namespace influence2d;
 using tr = number_traits<interval>;
 
-polygon family(const std::string& id) {
-    return read_wkt_file(std::string(INFLUENCE2D_DATA_DIR) + "/families/" + id + ".wkt");
-}
-
 bool same(const frame_result& x, const frame_result& y) { return x.collides == y.collides && x.pairs == y.pairs; }
-
-/// B's centroid moving from 1.2 (R_A + r_B) away from A's centroid to it, B
-/// turning as it goes: apart, then near contact, then overlapping.
-std::vector<pose> approach(const polygon& A, const polygon& B, std::size_t frames) {
-    const point<double> ca = A.centroid(), cb = B.centroid();
-    double ra = 0, rb = 0;
-    for (const auto& v : A.vertices()) ra = std::max(ra, std::hypot(v.x - ca.x, v.y - ca.y));
-    for (const auto& v : B.vertices()) rb = std::max(rb, std::hypot(v.x - cb.x, v.y - cb.y));
-    std::vector<pose> out;
-    for (std::size_t k = 0; k < frames; ++k) {
-        const double f = static_cast<double>(k) / static_cast<double>(frames);
-        const double dist = 1.2 * (ra + rb) * (1 - f), phi = 0.7 + 0.5 * f, theta = 0.1 + 3 * f;
-        const double c = std::cos(theta), s = std::sin(theta);
-        out.push_back({ca.x + dist * std::cos(phi) - (c * cb.x - s * cb.y),
-                       ca.y + dist * std::sin(phi) - (s * cb.x + c * cb.y), theta});
-    }
-    return out;
-}
 
 }  // namespace
 
@@ -92,7 +72,8 @@ TEST_CASE("interval_detector equals the exact detector", "[detect][interval]") {
     std::size_t frames = 0, collisions = 0, generic_fallbacks = 0, touching_fallbacks = 0, touching = 0;
     for (const scene& s : {scene{"contour_32", "starred_16"}, scene{"hole_16", "irregular_32"},
                            scene{"convex_64", "contour_8"}, scene{"starred_8", "hole_64"}}) {
-        const polygon A = family(s.a), B = family(s.b);
+        const polygon& A = test_families::load(s.a);
+        const polygon& B = test_families::load(s.b);
         for (const double d : {0.0, 0.5}) {
             detector_options wit;
             wit.witness = true;
@@ -105,7 +86,7 @@ TEST_CASE("interval_detector equals the exact detector", "[detect][interval]") {
             // circles to the centre, turning; touching: theta = 0 with a vertex
             // of B on a vertex of A (exact: coordinates on a 2^-20 grid), and
             // the same with tx one ulp larger.
-            std::vector<pose> poses = approach(A, B, 120);
+            std::vector<pose> poses = test_poses::approach(A, B, 120, {0.7, 0.5, 0.1, 3});
             const std::size_t generic_count = poses.size();
             for (std::size_t i = 0; i < A.size(); i += 3) {
                 const point<double> q = B.vertex((7 * i) % B.size()), v = A.vertex(i);

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <random>
 #include <vector>
 
 #include "influence2d/influence/edge_grid.hpp"
@@ -15,6 +14,7 @@
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/predicates/segments.hpp"
 #include "support/effort.hpp"
+#include "support/random.hpp"
 #include "support/shapes.hpp"
 
 using namespace influence2d;
@@ -22,12 +22,11 @@ using namespace influence2d;
 namespace {
 
 /// A star-shaped ring of n vertices at random radii in [0.3, 1] x scale around (cx, cy).
-polygon random_star(std::mt19937_64& rng, std::size_t n, double scale, double cx, double cy) {
-    std::uniform_real_distribution<double> radius(0.3, 1.0);
+polygon random_star(test_random::rng& rng, std::size_t n, double scale, double cx, double cy) {
     std::vector<point<double>> v;
     for (std::size_t k = 0; k < n; ++k) {
         const double phi = 2 * std::acos(-1.0) * static_cast<double>(k) / static_cast<double>(n);
-        const double r = radius(rng) * scale;
+        const double r = rng.uniform(0.3, 1.0) * scale;
         v.push_back({cx + r * std::cos(phi), cy + r * std::sin(phi)});
     }
     return polygon({test_shapes::ring(v)});
@@ -59,8 +58,9 @@ std::vector<std::uint32_t> visited(const edge_tree& tree, const point<double>& u
 }  // namespace
 
 TEST_CASE("edge tree: every edge within the reach of a segment is visited, once", "[tree]") {
-    std::mt19937_64 rng(11);
-    std::uniform_real_distribution<double> unit(-1.5, 1.5), share(0, 1);
+    test_random::rng rng(11);
+    const auto unit = [&] { return rng.uniform(-1.5, 1.5); };
+    const auto share = [&] { return rng.unit(); };
     const int shapes = 12;  // not scaled by the test effort: the counts below need them all
     std::size_t near_total = 0, visited_total = 0;
     for (int s = 0; s < shapes; ++s) {
@@ -69,12 +69,12 @@ TEST_CASE("edge tree: every edge within the reach of a segment is visited, once"
         const edge_tree tree(p);
         const double span = s % 4 == 3 ? 8 : 1;
         for (int k = 0; k < 300; ++k) {
-            point<double> u{0.25 + span * unit(rng), -0.5 + span * unit(rng)};
+            point<double> u{0.25 + span * unit(), -0.5 + span * unit()};
             // Long, short and degenerate segments.
-            const double len = k % 10 == 0 ? 0 : span * std::pow(share(rng), 3);
-            const double phi = 7 * share(rng);
+            const double len = k % 10 == 0 ? 0 : span * std::pow(share(), 3);
+            const double phi = 7 * share();
             const point<double> v{u.x + len * std::cos(phi), u.y + len * std::sin(phi)};
-            const double g = k % 3 == 0 ? 0 : span * 0.05 * share(rng);
+            const double g = k % 3 == 0 ? 0 : span * 0.05 * share();
             const std::vector<std::uint32_t> got = visited(tree, u, v, g);
             CHECK(std::adjacent_find(got.begin(), got.end()) == got.end());  // each edge at most once
             for (std::size_t e = 0; e < p.size(); ++e) {
@@ -120,19 +120,19 @@ TEST_CASE("edge tree: a box beyond a line is so exactly", "[tree]") {
     // Nearly degenerate cases: lines through or grazing a box's corner, long
     // lines at scales from 1e-200 to 1e200; whenever the test says beyond,
     // each corner is farther than g from the line, on one side, exactly.
-    std::mt19937_64 rng(23);
-    std::uniform_real_distribution<double> unit(-1, 1);
+    test_random::rng rng(23);
+    const auto unit = [&] { return rng.signed_unit(); };
     int beyond = 0, not_beyond = 0;
     const int cases = test_effort::scaled(20000);
     for (int k = 0; k < cases; ++k) {
-        const double scale = std::ldexp(1.0, static_cast<int>(rng() % 1300) - 650);
+        const double scale = std::ldexp(1.0, static_cast<int>(rng.index(1300)) - 650);
         box b;
-        b.add({unit(rng) * scale, unit(rng) * scale});
-        b.add({unit(rng) * scale, unit(rng) * scale});
-        point<double> u{unit(rng) * scale, unit(rng) * scale};
-        point<double> v{unit(rng) * scale, unit(rng) * scale};
-        if (k % 3 == 0) v = {b.max_x + (b.max_x - u.x) * std::ldexp(1.0, -50) * unit(rng), b.min_y};  // grazing
-        const double g = k % 2 == 0 ? 0 : std::fabs(unit(rng)) * scale * 1e-3;
+        b.add({unit() * scale, unit() * scale});
+        b.add({unit() * scale, unit() * scale});
+        point<double> u{unit() * scale, unit() * scale};
+        point<double> v{unit() * scale, unit() * scale};
+        if (k % 3 == 0) v = {b.max_x + (b.max_x - u.x) * std::ldexp(1.0, -50) * unit(), b.min_y};  // grazing
+        const double g = k % 2 == 0 ? 0 : std::fabs(unit()) * scale * 1e-3;
         if (box_may_be_near_line(b, u, v, g)) {
             ++not_beyond;
             continue;

@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
 #include <catch2/catch.hpp>
 
-#include <random>
-
 #include "influence2d/influence/edge_grid.hpp"
 #include "influence2d/influence/extended_area.hpp"
+#include "support/random.hpp"
 #include "support/shapes.hpp"
 
 using namespace influence2d;
@@ -23,8 +22,8 @@ TEMPLATE_TEST_CASE("extended areas: capsule and band", "[extended]", INFLUENCE2D
 }
 
 TEST_CASE("extended areas: the band contains the capsule", "[extended]") {
-    std::mt19937_64 rng(3);
-    auto u = [&] { return static_cast<double>(rng() >> 11) * 0x1p-53 * 20 - 10; };
+    test_random::rng rng(3);
+    auto u = [&] { return rng.uniform(-10, 10); };
     for (int k = 0; k < 20000; ++k) {
         const point<double> a{u(), u()}, b{u(), u()}, p{u(), u()};
         const double n = std::fabs(u()) / 2;
@@ -36,9 +35,10 @@ TEST_CASE("edge grid: every edge within the reach is listed", "[grid]") {
     const polygon c = test_shapes::c_shape();
     const double reach = 0.7;
     const edge_grid grid(c, reach, 1e-9);
-    std::mt19937_64 rng(5);
+    test_random::rng rng(5);
+    const auto coordinate = [&] { return static_cast<double>(rng.index(1001)) / 100 - 2; };
     for (int k = 0; k < 5000; ++k) {
-        const point<double> p{static_cast<double>(rng() % 1001) / 100 - 2, static_cast<double>(rng() % 1001) / 100 - 2};
+        const point<double> p{coordinate(), coordinate()};
         const auto listed = grid.query(p);
         for (std::size_t e = 0; e < c.size(); ++e) {
             if (segment_distance(p, c.vertex(e), c.vertex(c.next(e))) > reach) continue;

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 #include <catch2/catch.hpp>
 
-#include <random>
 #include <set>
 
 #include "influence2d/influence/influence_areas.hpp"
+#include "support/random.hpp"
 #include "support/shapes.hpp"
 
 using namespace influence2d;
@@ -48,10 +48,10 @@ TEMPLATE_TEST_CASE("influence areas: the bucket lookup equals a scan of all cone
     for (const polygon& p : {test_shapes::c_shape(), test_shapes::square_with_hole()}) {
         const triangle_covering<NT> cov(p, p.centroid());
         const influence_areas<NT> areas(cov);
-        std::mt19937_64 rng(7);
+        test_random::rng rng(7);
         for (int k = 0; k < 2000; ++k) {
-            const double x = static_cast<double>(rng() % 4001) / 200 - 6;
-            const double y = static_cast<double>(rng() % 4001) / 200 - 6;
+            const double x = static_cast<double>(rng.index(4001)) / 200 - 6;
+            const double y = static_cast<double>(rng.index(4001)) / 200 - 6;
             const point<NT> q{NT(x), NT(y)};
             INFO("point " << x << ", " << y);
             CHECK(by_index(areas, q) == by_scan(cov, q));

@@ -14,7 +14,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -23,6 +22,7 @@
 #include "influence2d/number/certified.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/predicates/orientation.hpp"
+#include "support/random.hpp"
 
 namespace {
 
@@ -89,13 +89,7 @@ struct tally {
     }
 };
 
-struct rng {
-    std::mt19937_64 gen;
-    explicit rng(std::uint64_t seed) : gen(seed) {}
-    double unit() { return std::ldexp(static_cast<double>(gen() >> 11), -53); }
-    std::size_t index(std::size_t n) { return static_cast<std::size_t>(gen() % n); }
-    double signed_unit() { return 2 * unit() - 1; }
-};
+using test_random::rng;
 
 /// Binary exponents of the magnitudes drawn: about 1e-300, 1e-150, 1e-20, 1,
 /// 1e20, 1e150, 1e300.

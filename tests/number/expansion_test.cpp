@@ -3,12 +3,11 @@
 
 #include <cmath>
 #include <limits>
-
-#include <random>
 #include <vector>
 
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/number/expansion.hpp"
+#include "support/random.hpp"
 
 using influence2d::expansion::accumulator;
 
@@ -74,21 +73,21 @@ TEST_CASE("expansion: orientation of points at 1e200 and at subnormal scale", "[
 }
 
 TEST_CASE("expansion: signs of random sums of products equal those of exact rationals", "[expansion]") {
-    std::mt19937_64 rng(17);
+    test_random::rng rng(17);
     const auto any_double = [&] {
         // Random sign, mantissa and exponent over the whole finite range.
-        const double m = static_cast<double>(rng() >> 11) * 0x1p-53;
-        const int e = static_cast<int>(rng() % 2098) - 1074;
-        return (rng() & 1 ? -1 : 1) * std::ldexp(m, e);
+        const double m = rng.unit();
+        const int e = static_cast<int>(rng.index(2098)) - 1074;
+        return (rng.index(2) == 1 ? -1 : 1) * std::ldexp(m, e);
     };
     for (int trial = 0; trial < 3000; ++trial) {
         accumulator acc;
         influence2d::exact_rational sum(0);
-        const int terms = 1 + static_cast<int>(rng() % 8);
+        const int terms = 1 + static_cast<int>(rng.index(8));
         std::vector<std::pair<double, double>> products;
         for (int k = 0; k < terms; ++k) {
             double a = any_double(), b = any_double();
-            if (k > 0 && rng() % 3 == 0) {  // cancel an earlier term exactly, or nearly
+            if (k > 0 && rng.index(3) == 0) {  // cancel an earlier term exactly, or nearly
                 a = -products[0].first;
                 b = products[0].second;
             }

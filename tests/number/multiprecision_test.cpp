@@ -10,19 +10,16 @@
 #include <vector>
 
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/influence/bounds.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/number/multiprecision.hpp"
 #include "influence2d/predicates/orientation.hpp"
+#include "support/families.hpp"
+#include "support/poses.hpp"
 
 namespace {
 
 using namespace influence2d;
-
-polygon family(const std::string& id) {
-    return read_wkt_file(std::string(INFLUENCE2D_DATA_DIR) + "/families/" + id + ".wkt");
-}
 
 template <class NT>
 void check_traits(const char* name) {
@@ -49,20 +46,15 @@ void check_detector() {
     std::size_t frames = 0, collisions = 0;
     for (const char* pair : {"contour_32 starred_16", "hole_16 irregular_32", "convex_64 contour_8"}) {
         const std::string p(pair);
-        const polygon A = family(p.substr(0, p.find(' '))), B = family(p.substr(p.find(' ') + 1));
+        const polygon& A = test_families::load(p.substr(0, p.find(' ')));
+        const polygon& B = test_families::load(p.substr(p.find(' ') + 1));
         detector_options wit;
         wit.witness = true;
         detector<exact_rational> exact(A, B, wit);
         detector<NT> quad_det(A, B, wit);
         // B's centroid moving from beyond the bounding circles to A's
         // centroid, turning: apart, near contact, overlapping.
-        const point<double> ca = A.centroid(), cb = B.centroid();
-        const double reach = 1.2 * (bounding_radius(A, ca) + bounding_radius(B, cb));
-        for (std::size_t k = 0; k < 150; ++k) {
-            const double f = static_cast<double>(k) / 150, theta = 0.2 + 2.5 * f, dist = reach * (1 - f);
-            const double c = std::cos(theta), s = std::sin(theta);
-            const pose q{ca.x + dist * std::cos(2.1 - f) - (c * cb.x - s * cb.y),
-                         ca.y + dist * std::sin(2.1 - f) - (s * cb.x + c * cb.y), theta};
+        for (const pose& q : test_poses::approach(A, B, 150, {2.1, -1, 0.2, 2.5})) {
             const frame_result want = exact.collide(q), got = quad_det.collide(q);
             INFO(pair << ": tx = " << q.tx << ", ty = " << q.ty << ", theta = " << q.theta);
             CHECK(got.collides == want.collides);

@@ -17,6 +17,7 @@
 
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "support/random.hpp"
 
 namespace test_scenes {
 
@@ -26,19 +27,8 @@ using influence2d::pose;
 using influence2d::ring_input;
 using influence2d::ring_role;
 
-/// The tests' random source: 53-bit uniform doubles, indices, coin flips.
-struct rng {
-    std::mt19937_64 gen;
-    explicit rng(std::uint64_t seed) : gen(seed) {}
-    /// Uniform in [0, 1).
-    double unit() { return std::ldexp(static_cast<double>(gen() >> 11), -53); }
-    /// Uniform in [lo, hi).
-    double uniform(double lo, double hi) { return lo + (hi - lo) * unit(); }
-    /// Uniform in {0, ..., n - 1}.
-    std::size_t index(std::size_t n) { return static_cast<std::size_t>(gen() % n); }
-    /// True with probability p.
-    bool chance(double p) { return unit() < p; }
-};
+/// The tests' random source (support/random.hpp).
+using test_random::rng;
 
 /// The grid every generated coordinate lies on.
 inline constexpr double grid = 0x1p-10;

@@ -148,7 +148,7 @@ TEST_CASE("study: every reproducible case in data/regressions is answered exactl
     SUCCEED(cases << " reproducible cases replayed");
 }
 
-TEST_CASE("study: --decisions selects the kinds; large keeps every pose only for per-frame decisions",
+TEST_CASE("study: --decisions selects the kinds, and large keeps every pose only for per-frame decisions",
           "[verification][study][cli]") {
     const temp_dir dir;
     const auto rows = [&](const std::string& decisions) {
