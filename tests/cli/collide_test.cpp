@@ -140,7 +140,7 @@ TEST_CASE("cli collide: the paper's algorithm runs", "[cli]") {
     }
 }
 
-TEST_CASE("cli collide: certified counts its exact fallbacks; the paper's algorithm refuses it", "[cli]") {
+TEST_CASE("cli collide: certified counts its exact fallbacks, and the paper's algorithm refuses it", "[cli]") {
     const temp_dir dir;
     const auto a = dir.file("A.wkt", unit_square);
     const auto poses = dir.file("poses.csv", three_poses);

@@ -385,7 +385,7 @@ TEST_CASE("render: default frames are spread over the trajectory and include the
     CHECK(all_text(all, "title").find("first collision: frame " + first) != std::string::npos);
 }
 
-TEST_CASE("render: layers can be left out; the band has no round ends", "[render]") {
+TEST_CASE("render: layers can be left out, and the band has no round ends", "[render]") {
     const squares s;
     const auto svg = s.dir / "layers.svg";
     auto r = s.render(svg, "--frames 4 --no-cones --no-triangles --no-extended --width 400");

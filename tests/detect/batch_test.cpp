@@ -127,7 +127,7 @@ TEST_CASE("batch: many pairs, one query each, as the serial loop", "[batch]") {
     }
 }
 
-TEST_CASE("batch: errors reach the caller; empty and tiny batches", "[batch]") {
+TEST_CASE("batch: errors reach the caller, and empty and tiny batches work", "[batch]") {
     const polygon a({ring_input{{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, ring_role::outer}});
     const polygon b({ring_input{{{0, 0}, {1, 0}, {0, 1}}, ring_role::outer}});
     const auto make = [&] { return detector<double>(a, b); };
