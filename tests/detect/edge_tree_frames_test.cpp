@@ -76,14 +76,9 @@ void check_frames(const polygon& a, const polygon& b, const std::vector<pose>& p
         CHECK((s.tree_frames + s.jump_frames) * 2 >= poses.size());
 }
 
-}  // namespace
-
-TEST_CASE("edge tree frames: a large A and a small B answer as the reference", "[detect][tree]") {
-    const int frames = test_effort::scaled(40);
-    const std::vector<std::pair<std::string, std::string>> scenes = {
-        {"contour_1024", "contour_8"}, {"convex_512", "convex_8"},   {"hole_1024", "hole_16"},
-        {"starred_256", "starred_8"},  {"irregular_1024", "irregular_8"}};
-    std::uint64_t seed = 41;
+/// Every scene (static, moving family file names) on `frames` poses near
+/// contact, at d = 0 and 0.5, in double and exact, against brute force.
+void check_scenes(const std::vector<std::pair<std::string, std::string>>& scenes, int frames, std::uint64_t seed) {
     for (const auto& [an, bn] : scenes) {
         const polygon a = family_polygon(an), b = family_polygon(bn);
         const std::vector<pose> poses = frames_near(a, b, seed++, frames);
@@ -92,38 +87,32 @@ TEST_CASE("edge tree frames: a large A and a small B answer as the reference", "
             check_frames<exact_rational>(a, b, poses, d, an + " x " + bn);
         }
     }
+}
+
+}  // namespace
+
+TEST_CASE("edge tree frames: a large A and a small B answer as the reference", "[detect][tree]") {
+    check_scenes({{"contour_1024", "contour_8"},
+                  {"convex_512", "convex_8"},
+                  {"hole_1024", "hole_16"},
+                  {"starred_256", "starred_8"},
+                  {"irregular_1024", "irregular_8"}},
+                 test_effort::scaled(40), 41);
 }
 
 TEST_CASE("edge tree frames: a small A and a large B answer as the reference", "[detect][tree]") {
     // B's edges outnumber A's: frames that jump traverse the trees in B's
     // frame, A placed there by the inverse pose.
-    const int frames = test_effort::scaled(40);
-    const std::vector<std::pair<std::string, std::string>> scenes = {
-        {"contour_8", "contour_1024"}, {"convex_8", "convex_512"}, {"hole_16", "hole_1024"},
-        {"starred_8", "starred_256"},  {"irregular_64", "irregular_1024"}};
-    std::uint64_t seed = 141;
-    for (const auto& [an, bn] : scenes) {
-        const polygon a = family_polygon(an), b = family_polygon(bn);
-        const std::vector<pose> poses = frames_near(a, b, seed++, frames);
-        for (double d : {0.0, 0.5}) {
-            check_frames<double>(a, b, poses, d, an + " x " + bn);
-            check_frames<exact_rational>(a, b, poses, d, an + " x " + bn);
-        }
-    }
+    check_scenes({{"contour_8", "contour_1024"},
+                  {"convex_8", "convex_512"},
+                  {"hole_16", "hole_1024"},
+                  {"starred_8", "starred_256"},
+                  {"irregular_64", "irregular_1024"}},
+                 test_effort::scaled(40), 141);
 }
 
 TEST_CASE("edge tree frames: two small polygons test every pair's boxes, as the reference", "[detect][tree]") {
-    const int frames = test_effort::scaled(60);
-    const std::vector<std::pair<std::string, std::string>> scenes = {
-        {"convex_8", "convex_8"}, {"starred_8", "starred_8"}, {"contour_8", "irregular_8"}, {"irregular_8", "convex_8"}};
-    std::uint64_t seed = 241;
-    for (const auto& [an, bn] : scenes) {
-        const polygon a = family_polygon(an), b = family_polygon(bn);
-        const std::vector<pose> poses = frames_near(a, b, seed++, frames);
-        for (double d : {0.0, 0.5}) {
-            check_frames<double>(a, b, poses, d, an + " x " + bn);
-            check_frames<exact_rational>(a, b, poses, d, an + " x " + bn);
-        }
-    }
+    check_scenes({{"convex_8", "convex_8"}, {"starred_8", "starred_8"}, {"contour_8", "irregular_8"},
+                  {"irregular_8", "convex_8"}},
+                 test_effort::scaled(60), 241);
 }
-
