@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
@@ -185,10 +186,12 @@ bool intersects(const polygon& a, const polygon& b, const pose& q) {
         if (outside(bv[j], a_window)) continue;
         if (locate(a, a_vertices(), a_origin, b_vertex(j)) != location::outside) return true;
     }
+    std::optional<point<NT>> b_origin;  // B's posed centroid, once a ring of A asks
     for (std::size_t r = 0; r < a.ring_count(); ++r) {
         const std::size_t i = a.ring_begin(r);
         if (outside(a.vertex(i), b_window)) continue;
-        if (locate(b, b_vertices(), t.apply<NT>(b.centroid()), a_vertex(i)) != location::outside) return true;
+        if (!b_origin) b_origin = t.apply<NT>(b.centroid());
+        if (locate(b, b_vertices(), *b_origin, a_vertex(i)) != location::outside) return true;
     }
 
     // No ring inside the other polygon: the regions meet iff the boundaries
