@@ -210,6 +210,98 @@ std::string workloads_paragraph(const time_study_options& o) {
     return s + "\n\n";
 }
 
+/// The double detector's counters on a cell (nullptr when it did not run there).
+const work_row* work_of(const time_study_result& r, const time_cell& c) {
+    for (const work_row& w : r.work)
+        if (cell_name(w.cell) == cell_name(c)) return &w;
+    return nullptr;
+}
+
+/// A counter per frame.
+double per_frame(std::size_t count, const work_row& w) {
+    return static_cast<double>(count) / static_cast<double>(std::max<std::size_t>(w.frames, 1));
+}
+
+/// The speed-up the time study aims at on every cell of a frame workload.
+constexpr double peer_target = 10;
+
+/// Where a double frame's time goes, from its detector's counters: per frame
+/// workload, the cells below the target with their work; for the random
+/// workload, the grid of that work.
+std::string frame_work_section(const time_study_result& r, const cells_t& cells, const time_study_options& o) {
+    if (r.work.empty()) return "";
+    std::string s =
+        "\n## What a double frame does\n\nCounters of a `detector<double>` run over every pose of the cell "
+        "(untimed; bench_work.csv has them all). Per workload, the cells where double is below " +
+        fixed(peer_target, 0) +
+        "x the fastest peer, and what a frame did there on average: edge pairs handed to the pair tests by the trees or the box test, exact segment-pair tests (after "
+        "the double filter), containment "
+        "tests (a vertex of each ring located in the other polygon), frames answered by the bounding circles "
+        "alone, frames with no coherence to use (both edge trees traversed).\n\n"
+        "| workload | cells below " + fixed(peer_target, 0) + "x | median speed-up there | candidate pairs per frame | segment tests per frame | "
+        "containment tests per frame | circle rejections | jump frames | double ns per pose (median) | "
+        "fastest peer ns per pose (median) |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const std::string& j : o.trajectories) {
+        if (is_one_shot(j)) continue;
+        std::size_t below = 0, all = 0;
+        std::vector<double> speedup, pairs, tests, located, circles, jumps, ns, peer_ns;
+        for (const auto& [c, rows] : cells) {
+            const work_row* w = c.trajectory == j ? work_of(r, c) : nullptr;
+            const double x = w ? peer_speedup(rows) : 0;
+            if (!(x > 0)) continue;
+            ++all;
+            if (x >= peer_target) continue;
+            ++below;
+            speedup.push_back(x);
+            pairs.push_back(per_frame(w->statistics.candidate_edges, *w));
+            tests.push_back(per_frame(w->statistics.segment_tests, *w));
+            located.push_back(per_frame(w->statistics.containment_tests, *w));
+            circles.push_back(per_frame(w->statistics.circle_rejections, *w));
+            jumps.push_back(per_frame(w->statistics.jump_frames, *w));
+            ns.push_back(rows.at("double")->ns_per_frame());
+            peer_ns.push_back(fastest_peer(rows)->ns_per_frame());
+        }
+        if (all == 0) continue;
+        s += "| " + j + " | " + std::to_string(below) + " of " + std::to_string(all) + " | " +
+             (below ? fixed(median_of(speedup), 1) + "x" : "-") + " | " + (below ? fixed(median_of(pairs), 1) : "-") +
+             " | " + (below ? fixed(median_of(tests), 1) : "-") +
+             " | " + (below ? fixed(median_of(located), 2) : "-") + " | " +
+             (below ? fixed(100 * median_of(circles), 0) + "%" : "-") + " | " +
+             (below ? fixed(100 * median_of(jumps), 0) + "%" : "-") + " | " + (below ? fixed(median_of(ns), 0) : "-") +
+             " | " + (below ? fixed(median_of(peer_ns), 0) : "-") + " |\n";
+    }
+    if (has(o.trajectories, "random")) {
+        s += "\nPer random cell: candidate pairs per frame / segment tests per frame / containment tests per frame / share of frames the "
+             "bounding circles answered.\n";
+        s += grid_tables(cells, o, "random", [&](const cell_rows& rows) {
+            const work_row* w = work_of(r, rows.begin()->second->cell);
+            if (!w) return std::string();
+            return fixed(per_frame(w->statistics.candidate_edges, *w), 1) + " / " +
+                   fixed(per_frame(w->statistics.segment_tests, *w), 1) + " / " +
+                   fixed(per_frame(w->statistics.containment_tests, *w), 2) + " / " +
+                   fixed(100 * per_frame(w->statistics.circle_rejections, *w), 0) + "%";
+        });
+    }
+    return s;
+}
+
+/// The double detector's counters per cell, as CSV.
+std::string work_csv(const time_study_result& r) {
+    std::string s =
+        "type,trajectory,static,moving,frames,circle_rejections,jump_frames,tree_frames,candidate_rebuilds,"
+        "candidate_edges,disc_rejections,segment_tests,containment_tests\n";
+    for (const work_row& w : r.work) {
+        const detector_statistics& t = w.statistics;
+        s += w.cell.type + "," + w.cell.trajectory + "," + std::to_string(w.cell.static_size) + "," +
+             std::to_string(w.cell.moving_size) + "," + std::to_string(w.frames) + "," +
+             std::to_string(t.circle_rejections) + "," + std::to_string(t.jump_frames) + "," +
+             std::to_string(t.tree_frames) + "," + std::to_string(t.candidate_rebuilds) + "," +
+             std::to_string(t.candidate_edges) + "," + std::to_string(t.disc_rejections) + "," +
+             std::to_string(t.segment_tests) + "," + std::to_string(t.containment_tests) + "\n";
+    }
+    return s;
+}
+
 std::string bench_md(const time_study_result& r, const time_study_options& o, const std::string& command) {
     const cells_t cells = by_cell(r);
     std::string s = "# Time study\n\n";
@@ -321,6 +413,8 @@ std::string bench_md(const time_study_result& r, const time_study_options& o, co
                 return x > 0 ? fixed(x, 2) : std::string();
             });
     }
+
+    s += frame_work_section(r, cells, o);
 
     // One-shot against each peer.
     if (has(o.trajectories, "one-shot") && has(o.methods, "double")) {
@@ -529,6 +623,7 @@ void run_bench_command(bench_cli_options o, Given given, const std::string& comm
     }
     const time_study_result r = run_time_study(so);
     write_atomically(dir / "bench.csv", bench_csv(r));
+    if (!r.work.empty()) write_atomically(dir / "bench_work.csv", work_csv(r));
     const std::string md = bench_md(r, so, command);
     write_atomically(dir / "bench.md", md);
     write_heat_maps(r, so, dir);

@@ -23,7 +23,8 @@
 //                   long run); untimed
 //       preparation: each method built for A and B in turns, at least 3 times
 //                    (an odd number) until `preparation_seconds`; the median
-//                    build counts (the detector's constructor, GEOS's prepared
+//                    build counts (the detector's constructor with
+//                    build_structures(), GEOS's prepared
 //                    geometry, ...; a one-shot form keeps only its input;
 //                    GEOS builds the index of a prepared geometry on its first
 //                    query, so that part of its preparation falls in the
@@ -106,6 +107,17 @@ inline bool is_one_shot(const std::string& trajectory) { return trajectory == "o
 /// No form of the method for this kind of workload.
 struct no_form {};
 
+/// An influence2d detector D built with every structure its frames use
+/// (D::build_structures()), so that its preparation is counted as such and
+/// not in its first frames, as a real-time loop would build it. The peers'
+/// indexes built by a first query are kept out of the timed frames alike
+/// (stride_for asks the probe poses untimed first).
+template <class D>
+class fully_built : public D {
+public:
+    fully_built(const polygon& a, const polygon& b) : D(a, b) { D::build_structures(); }
+};
+
 /// influence2d's one-shot query in NT: intersects<NT>(A, B, pose).
 template <class NT>
 class one_shot_query {
@@ -168,12 +180,12 @@ inline bool any_pair(const polygon&, const polygon&) { return true; }
 /// adding an entry here.
 inline const auto& method_table() {
     static const auto table = std::make_tuple(
-        method_entry<detector<double>, one_shot_query<double>>{
+        method_entry<fully_built<detector<double>>, one_shot_query<double>>{
             {"double", true, true, "", true, any_pair, "detector<double>", "intersects<double>"}},
-        method_entry<certified_detector<detector>, certified_one_shot_query>{
+        method_entry<fully_built<certified_detector<detector>>, certified_one_shot_query>{
             {"certified", true, true, "", true, any_pair, "certified_detector<detector> (the reference)",
              "certified_intersects"}},
-        method_entry<detector<exact_rational>, one_shot_query<exact_rational>>{
+        method_entry<fully_built<detector<exact_rational>>, one_shot_query<exact_rational>>{
             {"exact", true, true, "", false, any_pair, "detector<exact_rational>", "intersects<exact_rational>"}},
         method_entry<no_form, detector_per_query>{
             {"double-detector", true, true, "", true, any_pair, "", "detector<double> built, then one collide"}},
@@ -321,9 +333,19 @@ struct time_study_options {
     std::function<void(const time_study_progress&)> progress;
 };
 
+/// What influence2d's double detector did on a cell of a frame workload
+/// (untimed, a detector of its own over every pose): the counters that say
+/// where a frame's time goes.
+struct work_row {
+    time_cell cell;
+    std::size_t frames = 0;
+    detector_statistics statistics;
+};
+
 struct time_study_result {
     std::vector<time_row> rows;
     std::vector<memory_row> memory;
+    std::vector<work_row> work;  ///< per cell of a frame workload that runs double
     double seconds = 0;
 };
 
@@ -571,6 +593,11 @@ inline time_study_result run_time_study(const time_study_options& o) {
         // timed: the certified method's row is a run of its own, like every
         // other method's, after this pass has brought the poses into cache).
         with_method(reference_method, reference_workload, a, b, [&](auto& d) { (void)run_frames(d, poses, 1, reference); });
+        if (!is_one_shot(c.trajectory) && std::find(methods.begin(), methods.end(), "double") != methods.end()) {
+            detector<double> d(a, b);
+            for (const pose& p : poses) (void)d.collide(p);
+            r.work.push_back({c, poses.size(), d.statistics()});
+        }
         const auto preparation = time_preparation(o, c.trajectory, methods, a, b);
         const std::map<std::string, timed_passes> repeated = time_repeated(o, c.trajectory, methods, a, b, poses);
         for (const std::string& m : methods) {

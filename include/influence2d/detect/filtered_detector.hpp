@@ -8,6 +8,8 @@
 
 #include <cstddef>
 #include <optional>
+#include <type_traits>
+#include <utility>
 
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
@@ -46,6 +48,12 @@ struct fallback<First, Rest...> {
         }
     }
 };
+
+/// Whether D has build_structures().
+template <class D, class = void>
+struct has_build_structures : std::false_type {};
+template <class D>
+struct has_build_structures<D, std::void_t<decltype(std::declval<D&>().build_structures())>> : std::true_type {};
 
 }  // namespace detail
 
@@ -92,6 +100,27 @@ public:
         };
         if (!fast_) return exactly();
         return detail::fallback<Uncertain...>::run([&] { return fast_->collide(p); }, exactly);
+    }
+
+    /// Builds now what the frames would build on first use, when D has such
+    /// structures (detector::build_structures; a no-op for D without): the
+    /// fast detector's, or the exact one's when building the fast one's asks
+    /// a sign it cannot settle (every frame is then answered exactly, as when
+    /// the fast detector cannot be built).
+    void build_structures() {
+        if constexpr (detail::has_build_structures<D<FastNT>>::value) {
+            if (!fast_) return exact().build_structures();
+            detail::fallback<Uncertain...>::run(
+                [&] {
+                    fast_->build_structures();
+                    return 0;
+                },
+                [&] {
+                    fast_.reset();
+                    exact().build_structures();
+                    return 0;
+                });
+        }
     }
 
     /// Frames answered in exact arithmetic so far.
