@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// The sign decisions of a sweep (docs/sweep.md): when a point moving along a
+/// line reaches a closed segment, as a fraction of two ring expressions, and
+/// the comparisons of such times. Ring operations and signs taken by
+/// number_traits only: exact when NT's ring operations are; a filtered NT
+/// (certified) gives the exact answer or throws uncertain_sign.
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+#include "influence2d/core/point.hpp"
+#include "influence2d/number/traits.hpp"
+
+namespace influence2d {
+
+/// A time t = num / den with den > 0, both NT ring expressions of the input.
+template <class NT>
+struct time_fraction {
+    NT num{};  ///< numerator
+    NT den{};  ///< denominator, positive
+};
+
+/// The cross product u x (w - p) of a direction u and the offset of w from p:
+/// twice the signed area of (p, p + u, w), without forming p + u.
+template <class NT>
+NT cross_from(const point<NT>& u, const point<NT>& p, const point<NT>& w) {
+    return u.x * (w.y - p.y) - u.y * (w.x - p.x);
+}
+
+/// The sign of t - u for two times with positive denominators:
+/// sign(t.num u.den - u.num t.den) (cross-multiplication).
+template <class NT>
+int compare_times(const time_fraction<NT>& t, const time_fraction<NT>& u) {
+    return compare_values<NT>(t.num * u.den, u.num * t.den);
+}
+
+/// Whether t >= 0, and when `bounded` also t <= 1 (num <= den).
+template <class NT>
+bool time_in_range(const time_fraction<NT>& t, bool bounded) {
+    using tr = number_traits<NT>;
+    return tr::sign(t.num) >= 0 && (!bounded || compare_values(t.num, t.den) <= 0);
+}
+
+/// Whether the line through p with direction d meets the closed segment
+/// [a, b]: a and b are not strictly on one side of it (the signs of
+/// d x (a - p) and d x (b - p) are not both +1 nor both -1). For a point
+/// moving as p + t d, whether the place where it reaches the segment's line
+/// lies on the segment.
+template <class NT>
+bool motion_line_meets_segment(const point<NT>& p, const point<NT>& d, const point<NT>& a, const point<NT>& b) {
+    using tr = number_traits<NT>;
+    return tr::sign(cross_from(d, p, a)) * tr::sign(cross_from(d, p, b)) <= 0;
+}
+
+/// The time at which p moving as p + t d passes the point x of its own line
+/// (the caller knows d x (x - p) = 0, and d != 0): t = d.(x - p) / d.d.
+template <class NT>
+time_fraction<NT> passing_time(const point<NT>& p, const point<NT>& d, const point<NT>& x) {
+    return {d.x * (x.x - p.x) + d.y * (x.y - p.y), d.x * d.x + d.y * d.y};
+}
+
+/// The times at which a point p moving as p + t d (d != 0) starts or stops
+/// lying on the closed segment [a, b], restricted to t >= 0 (and t <= 1 when
+/// `bounded`): written to out[0..count), count returned (0, 1 or 2).
+///
+///   alpha <- d x (a - p), beta <- d x (b - p)   (sides of a and b against
+///                                                p's line of motion)
+///   if their signs are both +1 or both -1:       none
+///   if not both 0 (the segment crosses the line at one point, on it):
+///       t = (b - a) x (a - p) / (alpha - beta)   (alpha - beta = (b - a) x d,
+///                                                 not 0), sign made positive
+///   else (the segment lies on the line, or is a point of it):
+///       the times p passes a and b: it lies on the segment between them
+///   keep the times in range
+///
+/// The point lies on the segment exactly at these times or, in the
+/// collinear case, during the closed interval between the two. Ring
+/// operations only.
+template <class NT>
+int contact_times(const point<NT>& p, const point<NT>& d, const point<NT>& a, const point<NT>& b, bool bounded,
+                  time_fraction<NT> out[2]) {
+    using tr = number_traits<NT>;
+    const NT alpha = cross_from(d, p, a), beta = cross_from(d, p, b);
+    const int sa = tr::sign(alpha), sb = tr::sign(beta);
+    if (sa * sb > 0) return 0;
+    int count = 0;
+    const auto keep = [&](time_fraction<NT>&& t) {
+        if (time_in_range(t, bounded)) out[count++] = std::move(t);
+    };
+    if (sa != 0 || sb != 0) {
+        const point<NT> e{b.x - a.x, b.y - a.y};
+        NT num = cross_from(e, p, a), den = alpha - beta;
+        if (sa < sb) {  // den = alpha - beta < 0: both signs turned
+            num = -num;
+            den = -den;
+        }
+        keep({std::move(num), std::move(den)});
+    } else {
+        keep(passing_time(p, d, a));
+        keep(passing_time(p, d, b));
+    }
+    return count;
+}
+
+/// Of two neighbouring doubles, the one whose last significand bit is 0.
+inline double even_of(double x, double y) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &x, sizeof bits);
+    return (bits & 1) == 0 ? x : y;
+}
+
+/// The time t = num / den rounded to the nearest double (ties to the even
+/// one), for 0 <= t below double's largest value. Starts from the quotient
+/// of the doubles nearest num and den (or, when that overflows, from a
+/// bisection over the doubles), then moves by single steps while t lies
+/// beyond the midpoint with a neighbour, each midpoint compared exactly by
+/// ring operations (2 num against (x + y) den, x + y computed in NT). Exact
+/// when NT's ring operations are; a filtered NT throws uncertain_sign when
+/// a comparison (always, at an exact tie) is not certain.
+template <class NT>
+double nearest_double(const time_fraction<NT>& t) {
+    using tr = number_traits<NT>;
+    const double inf = std::numeric_limits<double>::infinity();
+    double x = tr::to_double(t.num) / tr::to_double(t.den);
+    if (!(x >= 0 && x < inf)) {
+        // The doubles nearest num and den overflowed (or underflowed): the
+        // largest double x <= t by bisection on the ordered bit patterns of
+        // the non-negative doubles.
+        std::uint64_t lo = 0, hi = 0x7fefffffffffffffULL;
+        const auto as_double = [](std::uint64_t bits) {
+            double v = 0;
+            std::memcpy(&v, &bits, sizeof v);
+            return v;
+        };
+        while (lo < hi) {
+            const std::uint64_t mid = lo + (hi - lo + 1) / 2;
+            if (compare_values<NT>(t.num, tr::from_double(as_double(mid)) * t.den) >= 0)
+                lo = mid;
+            else
+                hi = mid - 1;
+        }
+        x = as_double(lo);
+    }
+    const NT twice = t.num + t.num;
+    // sign of t - (x + y) / 2
+    const auto beyond_mid = [&](double x0, double y0) {
+        return compare_values<NT>(twice, (tr::from_double(x0) + tr::from_double(y0)) * t.den);
+    };
+    for (;;) {
+        const double up = std::nextafter(x, inf);
+        const int s = beyond_mid(x, up);
+        if (s > 0) {
+            x = up;
+            continue;
+        }
+        if (s == 0) return even_of(x, up);
+        break;
+    }
+    for (;;) {
+        const double down = std::nextafter(x, -inf);
+        const int s = beyond_mid(down, x);
+        if (s < 0) {
+            x = down;
+            continue;
+        }
+        if (s == 0) return even_of(down, x);
+        return x;
+    }
+}
+
+}  // namespace influence2d

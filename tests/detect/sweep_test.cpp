@@ -1,0 +1,449 @@
+// SPDX-License-Identifier: BSL-1.0
+// First contact along a motion and the exit distance (detect/sweep.hpp)
+// against an independent exact reference (support/exact_regions.hpp: every
+// vertex-edge contact time solved as a segment intersection on CGAL's
+// Cartesian kernel over exact rationals, and the regions' meeting decided
+// there at rational times): the cases that matter (tunneling, touching at
+// the start, grazing, sliding, parallel edges, holes, multipolygons, the
+// roles swapped) and random translations of the families and of random
+// multipolygons.
+
+#include <catch2/catch.hpp>
+
+#include "support/effort.hpp"
+#include "support/exact_regions.hpp"
+#include "support/families.hpp"
+#include "support/poses.hpp"
+#include "support/random_scenes.hpp"
+
+#include <cmath>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "influence2d/detect/sweep.hpp"
+#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/number/cgal.hpp"
+
+namespace {
+
+using namespace influence2d;
+using test_exact::FT;
+using test_exact::placed_shape;
+using test_exact::vector_2;
+
+/// p with its rings given again in their stored order and orientation, so
+/// that its input numbering is its stored numbering (the reference then
+/// reads features off the stored vertices).
+polygon renumbered(const polygon& p) {
+    std::vector<ring_input> rings;
+    for (std::size_t r = 0; r < p.ring_count(); ++r) {
+        ring_input in;
+        in.role = p.role(r);
+        for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i) in.vertices.push_back(p.vertex(i));
+        rings.push_back(std::move(in));
+    }
+    return polygon(rings);
+}
+
+polygon ring(std::vector<point<double>> v) { return polygon({ring_input{std::move(v), ring_role::outer}}); }
+
+polygon square(double x0, double y0, double x1, double y1) { return ring({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}); }
+
+std::string describe(const polygon& a, const polygon& b, const pose& from, const pose& to) {
+    std::ostringstream s;
+    s.precision(17);
+    s << "static " << a.size() << " vertices, moving " << b.size() << ", from " << from.tx << ',' << from.ty << ','
+      << from.theta << " to " << to.tx << ',' << to.ty << ',' << to.theta;
+    return s.str();
+}
+
+/// The exact scene of a translation: A, B at the start, the displacement.
+struct exact_scene {
+    placed_shape a, b0;
+    vector_2 d;
+    exact_scene(const polygon& pa, const polygon& pb, const pose& from, const pose& to)
+        : a(test_exact::place(pa, 0, 0, 0)),
+          b0(test_exact::place(pb, from)),
+          d(FT(to.tx) - FT(from.tx), FT(to.ty) - FT(from.ty)) {}
+    /// B at time t.
+    placed_shape b_at(const FT& t) const { return test_exact::moved(b0, d * t); }
+};
+
+/// Whether the reported features touch at time t (stored numbering is input
+/// numbering for the polygons of these tests).
+bool features_touch(const exact_scene& s, const FT& t, const feature& fa, const feature& fb) {
+    const placed_shape b = s.b_at(t);
+    if (fa.kind == feature_kind::edge && fb.kind == feature_kind::vertex) return test_exact::on_edge(s.a, fa.index, b.v[fb.index]);
+    if (fa.kind == feature_kind::vertex && fb.kind == feature_kind::edge) return test_exact::on_edge(b, fb.index, s.a.v[fa.index]);
+    if (fa.kind == feature_kind::edge && fb.kind == feature_kind::edge) return test_exact::edges_meet(s.a, fa.index, b, fb.index);
+    if (fa.kind == feature_kind::interior && fb.kind == feature_kind::vertex) return test_exact::in_region(s.a, b.v[fb.index]);
+    if (fa.kind == feature_kind::vertex && fb.kind == feature_kind::interior) return test_exact::in_region(b, s.a.v[fa.index]);
+    return false;
+}
+
+/// Counts, so that a run is seen not to be vacuous.
+struct tally {
+    std::size_t motions = 0, at_start = 0, later = 0, none = 0;
+    double worst_double = 0;  ///< the largest |time in double - exact time| seen
+};
+
+/// The largest error allowed to first_contact<double>'s time on these scenes
+/// (coordinates up to about 100, motions up to about 400): each event time
+/// is a quotient of two determinants of rounded posed coordinates, within a
+/// few 1e-14 relative of the exact one except where a determinant nearly
+/// cancels (a motion nearly parallel to the edge); 1e-9 leaves room for
+/// those, and the test records the worst error seen.
+constexpr double double_time_error = 1e-9;
+
+/// Every mode of first_contact on a translation against the reference:
+/// exact_rational exactly (the time; the regions meet then and not at a few
+/// times before; the features touch then), certified the nearest double of
+/// the exact time and the same features, double the same contact within
+/// double_time_error (near-misses in double excepted: counted).
+void check_translation(const polygon& a, const polygon& b, const pose& from, const pose& to, tally& t) {
+    INFO(describe(a, b, from, to));
+    const exact_scene s(a, b, from, to);
+    const std::optional<FT> expected = test_exact::first_contact(s.a, s.b0, s.d);
+    const contact_result<exact_rational> ex = first_contact<exact_rational>(a, b, from, to);
+    ++t.motions;
+    REQUIRE(ex.contact == expected.has_value());
+    const contact_result<double> ce = certified_first_contact(a, b, from, to);
+    CHECK(ce.contact == ex.contact);
+    const contact_result<double> db = first_contact<double>(a, b, from, to);
+    if (!expected) {
+        ++t.none;
+        CHECK_FALSE(db.contact);
+        return;
+    }
+    CHECK(ex.time == *expected);
+    (ex.time == 0 ? t.at_start : t.later) += 1;
+    CHECK(test_exact::regions_meet(s.a, s.b_at(ex.time)));
+    CHECK(features_touch(s, ex.time, ex.static_feature, ex.moving_feature));
+    if (ex.time > 0)
+        for (const FT& before : std::vector<FT>{FT(0), ex.time / 2, ex.time * FT(1023) / FT(1024), ex.time * (FT(1) - FT(std::ldexp(1.0, -40)))})
+            CHECK_FALSE(test_exact::regions_meet(s.a, s.b_at(before)));
+    if (ce.contact) {
+        CHECK(ce.time == test_exact::nearest_double(ex.time));
+        CHECK(ce.static_feature.kind == ex.static_feature.kind);
+        CHECK(ce.static_feature.index == ex.static_feature.index);
+        CHECK(ce.moving_feature.kind == ex.moving_feature.kind);
+        CHECK(ce.moving_feature.index == ex.moving_feature.index);
+    }
+    CHECK(db.contact);
+    if (db.contact) {
+        const double err = std::fabs(db.time - CGAL::to_double(ex.time));
+        t.worst_double = std::max(t.worst_double, err);
+        CHECK(err <= double_time_error);
+    }
+}
+
+/// A translation of B from beyond A's reach through a random point near A
+/// (at the same random angle): the start a random pose near contact, the
+/// end across A.
+std::pair<pose, pose> random_translation(const polygon& a, const polygon& b, test_scenes::rng& g, double reach) {
+    const double theta = g.chance(0.3) ? 0 : g.uniform(-3.2, 3.2);
+    const point<double> ca = a.centroid(), cb = b.centroid();
+    const double phi = g.uniform(0, 6.283185307179586), rho = reach * g.uniform(0.3, 1.3);
+    const point<double> start{ca.x + rho * std::cos(phi), ca.y + rho * std::sin(phi)};
+    const double psi = phi + 3.141592653589793 + g.uniform(-1.5, 1.5), len = reach * g.uniform(0.1, 2.5);
+    const point<double> end{start.x + len * std::cos(psi), start.y + len * std::sin(psi)};
+    return {test_scenes::aimed(cb, start, theta), test_scenes::aimed(cb, end, theta)};
+}
+
+}  // namespace
+
+TEST_CASE("sweep: the tunneling square is caught", "[sweep]") {
+    // A 2 x 2 square jumps from x = -10 to x = +10 across a wall 0.1 wide:
+    // neither pose meets the wall, the motion does at t = 9 / 20.
+    const polygon wall = square(0, -5, 0.1, 5), box = square(-1, -1, 1, 1);
+    const pose from{-10, 0, 0}, to{10, 0, 0};
+    CHECK_FALSE(certified_intersects(wall, box, from));
+    CHECK_FALSE(certified_intersects(wall, box, to));
+    tally t;
+    check_translation(wall, box, from, to, t);
+    const contact_result<exact_rational> r = first_contact<exact_rational>(wall, box, from, to);
+    CHECK(r.time == exact_rational(9) / exact_rational(20));
+    CHECK(certified_first_contact(wall, box, from, to).time == 0.45);
+    // Turned by pi / 4 the corner comes first.
+    const pose turned_from{-10, 0.25, 0.7853981633974483}, turned_to{10, 0.25, 0.7853981633974483};
+    check_translation(wall, box, turned_from, turned_to, t);
+    CHECK(t.later == 2);
+}
+
+TEST_CASE("sweep: touching at the start, sliding, grazing and parallel edges", "[sweep]") {
+    tally t;
+    const polygon a = square(0, 0, 4, 4);
+    const polygon tri = ring({{0, 0}, {1, 2}, {-1, 2}});  // its vertex 0 at the bottom
+    SECTION("touching at the start") {
+        const pose from{4, 1, -1.5707963267948966}, to{8, 1, -1.5707963267948966};  // vertex 0 on A's right edge
+        check_translation(a, tri, from, to, t);
+        const contact_result<exact_rational> r = first_contact<exact_rational>(a, tri, from, to);
+        CHECK(r.time == 0);
+        CHECK(r.moving_feature.kind == feature_kind::vertex);
+        CHECK(r.moving_feature.index == 0);
+        CHECK(r.static_feature.kind == feature_kind::edge);
+        CHECK(r.static_feature.index == 1);
+        // Overlapping at the start: a vertex inside, the interior.
+        const contact_result<double> in = certified_first_contact(a, square(0, 0, 1, 1), {1, 1, 0}, {9, 9, 0});
+        CHECK(in.contact);
+        CHECK(in.time == 0);
+        CHECK(in.static_feature.kind == feature_kind::interior);
+    }
+    SECTION("a vertex sliding along an edge's line into its end") {
+        // Vertex 0 moves along y = 4 from x = -3 to x = 2: it reaches A's
+        // corner (0, 4) at t = 3 / 5 and then slides along the top edge.
+        check_translation(a, tri, {-3, 4, 0}, {2, 4, 0}, t);
+        CHECK(first_contact<exact_rational>(a, tri, {-3, 4, 0}, {2, 4, 0}).time == exact_rational(3) / exact_rational(5));
+        // Collinear edges end to end: B's top edge on y = 0 slides into A's bottom edge's end.
+        const polygon under = square(0, -1, 1, 0);
+        check_translation(a, under, {7, 0, 0}, {-1, 0, 0}, t);
+        CHECK(first_contact<exact_rational>(a, under, {7, 0, 0}, {-1, 0, 0}).time == exact_rational(3) / exact_rational(8));
+    }
+    SECTION("grazing: a vertex passing exactly through a vertex") {
+        // B's tip moves along y = x - 1, which meets A = [0, 1]^2 only at its
+        // corner (1, 0); B's body stays below the line. They touch at t = 1/2
+        // only.
+        const polygon unit = square(0, 0, 1, 1);
+        const polygon spike = ring({{0, 0}, {-2.125, -2.375}, {-1.875, -2.125}});
+        const pose from{-1, -2, 0}, to{3, 2, 0};
+        check_translation(unit, spike, from, to, t);
+        const contact_result<exact_rational> r = first_contact<exact_rational>(unit, spike, from, to);
+        CHECK(r.time == exact_rational(1) / exact_rational(2));
+        const exact_scene s(unit, spike, from, to);
+        CHECK_FALSE(test_exact::regions_meet(s.a, s.b_at(FT(1) / FT(2) + FT(std::ldexp(1.0, -30)))));
+        CHECK_FALSE(test_exact::regions_meet(s.a, s.b_at(FT(1))));
+        // The same along the edge's line, touching over an interval.
+        const polygon blade = ring({{0, 0}, {-2, -2}, {-1.875, -2.125}});
+        check_translation(unit, blade, from, to, t);
+    }
+    SECTION("parallel edges meeting") {
+        // B's left edge reaches A's right edge: B's vertices on A's edge and
+        // A's corner on B's edge at the same time; ties name B's vertex.
+        const polygon b = square(0, 0, 2, 2);
+        check_translation(a, b, {9, 3, 0}, {1, 3, 0}, t);
+        const contact_result<exact_rational> r = first_contact<exact_rational>(a, b, {9, 3, 0}, {1, 3, 0});
+        CHECK(r.time == exact_rational(5) / exact_rational(8));
+        CHECK(r.static_feature.kind == feature_kind::edge);
+        CHECK(r.moving_feature.kind == feature_kind::vertex);
+        check_translation(a, b, {9, 1, 0}, {1, 1, 0}, t);
+        check_translation(a, b, {9, 4, 0}, {1, 4, 0}, t);  // corner to corner
+    }
+    CHECK(t.motions > 0);
+}
+
+TEST_CASE("sweep: holes let B through, multipolygons are found part by part", "[sweep]") {
+    tally t;
+    const polygon holed({ring_input{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, ring_role::outer},
+                         ring_input{{{2, 2}, {8, 2}, {8, 8}, {2, 8}}, ring_role::hole}});
+    const polygon small = square(0, 0, 1, 1);
+    // Within the hole, no contact; out of it, the hole's edge.
+    check_translation(holed, small, {2.5, 2.5, 0}, {6.5, 6.5, 0}, t);
+    check_translation(holed, small, {2.5, 2.5, 0}, {2.5, 6.5, 0}, t);
+    CHECK_FALSE(first_contact<exact_rational>(holed, small, {2.5, 2.5, 0}, {6.5, 6.5, 0}).contact);
+    check_translation(holed, small, {2.5, 2.5, 0}, {12, 2.5, 0}, t);
+    // A passes through B's hole: B, the holed one, moves over A.
+    check_translation(small, holed, {-4.5, -4.5, 0}, {-3, -5, 0}, t);
+    CHECK_FALSE(certified_first_contact(small, holed, {-4.5, -4.5, 0}, {-3, -5, 0}).contact);
+    // A multipolygon: the second part is the first hit.
+    const polygon two({ring_input{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, ring_role::outer},
+                       ring_input{{{5, 0}, {6, 0}, {6, 1}, {5, 1}}, ring_role::outer}});
+    check_translation(two, small, {5, 4, 0}, {5, -4, 0}, t);
+    CHECK(first_contact<exact_rational>(two, small, {5, 4, 0}, {5, -4, 0}).time == exact_rational(3) / exact_rational(8));
+    CHECK(t.none == 3);
+}
+
+TEST_CASE("sweep: input numbering of features on rings stored reversed", "[sweep]") {
+    // A given clockwise: input edge 2 runs (4, 4) -> (4, 0), its right side.
+    const polygon a = ring({{0, 0}, {0, 4}, {4, 4}, {4, 0}});
+    // B clockwise too: its input vertex 2 is (-1, 0), the one that leads.
+    const polygon b = ring({{0, 1}, {0, -1}, {-1, 0}});
+    const contact_result<exact_rational> r = first_contact<exact_rational>(a, b, {9, 2, 0}, {1, 2, 0});
+    REQUIRE(r.contact);
+    CHECK(r.time == exact_rational(4) / exact_rational(8));
+    CHECK(r.static_feature.kind == feature_kind::edge);
+    CHECK(r.static_feature.index == 2);
+    CHECK(r.moving_feature.kind == feature_kind::vertex);
+    CHECK(r.moving_feature.index == 2);
+    // A's corner (4, 4), its input vertex 2, reaches B's input edge 1
+    // ((0, -1) -> (-1, 0)) at t = 1 / 2.
+    const contact_result<double> c = certified_first_contact(a, b, {5.5, 4.5, 0}, {3.5, 4.5, 0});
+    REQUIRE(c.contact);
+    CHECK(c.time == 0.5);
+    CHECK(c.static_feature.kind == feature_kind::vertex);
+    CHECK(c.static_feature.index == 2);
+    CHECK(c.moving_feature.kind == feature_kind::edge);
+    CHECK(c.moving_feature.index == 1);
+}
+
+TEST_CASE("sweep: random translations of the families against the reference", "[sweep][reference]") {
+    using test_families::family;
+    tally t;
+    const int motions = test_effort::scaled(16);
+    test_scenes::rng g(0x5eedULL);
+    for (family f : verification::all_families)
+        for (std::size_t n : {8u, 64u, 256u})
+            for (std::size_t m : {8u, 64u}) {
+                const polygon a = renumbered(test_families::load(f, n));
+                const polygon b = renumbered(test_families::load(f, m));
+                const double reach = test_poses::reach(a, b);
+                for (int k = 0; k < motions; ++k) {
+                    const auto [from, to] = random_translation(a, b, g, reach);
+                    check_translation(a, b, from, to, t);
+                }
+            }
+    INFO("worst error of the double time: " << t.worst_double);
+    WARN("random translations of the families: " << t.motions << " motions, " << t.at_start << " meeting at the start, "
+         << t.later << " later, " << t.none << " never; worst error of the double time " << t.worst_double);
+    CHECK(t.at_start > t.motions / 10);
+    CHECK(t.later > t.motions / 5);
+    CHECK(t.none > t.motions / 20);
+}
+
+TEST_CASE("sweep: random multipolygons and swallowing polygons, both roles", "[sweep][reference]") {
+    tally t;
+    const int scenes = test_effort::scaled(16);
+    for (int k = 0; k < scenes; ++k) {
+        test_scenes::rng g(0x5e1ULL + static_cast<std::uint64_t>(k));
+        test_scenes::multi ma = test_scenes::random_multi(g, 30, 8), mb = test_scenes::random_swallower(g);
+        if (k % 2 == 1) std::swap(ma, mb);
+        const polygon a = renumbered(ma.to_polygon()), b = renumbered(mb.to_polygon());
+        for (int f = 0; f < 6; ++f) {
+            const test_scenes::part& pa = ma.parts[g.index(ma.parts.size())];
+            const test_scenes::part& pb = mb.parts[g.index(mb.parts.size())];
+            const double theta = g.chance(0.5) ? 0 : g.uniform(-3.2, 3.2);
+            const double phi = g.uniform(0, 6.283185307179586), far = 1.5 * (pa.radius + pb.radius) * g.uniform(0.2, 1.5);
+            const point<double> start{pa.center.x + far * std::cos(phi), pa.center.y + far * std::sin(phi)};
+            const point<double> end{pa.center.x - far * std::cos(phi + g.uniform(-0.5, 0.5)),
+                                    pa.center.y - far * std::sin(phi + g.uniform(-0.5, 0.5))};
+            check_translation(a, b, test_scenes::aimed(pb.center, start, theta), test_scenes::aimed(pb.center, end, theta), t);
+        }
+    }
+    CHECK(t.later > t.motions / 5);
+    CHECK(t.at_start > 0);
+}
+
+TEST_CASE("sweep: the roles swapped give the same first contact", "[sweep][reference]") {
+    // B against A moving by d is A against B (placed at the start) moving by
+    // -d: the same exact time. Coordinates on the grid keep B's placing and
+    // -d exact in double.
+    const int scenes = test_effort::scaled(12);
+    std::size_t contacts = 0;
+    for (int k = 0; k < scenes; ++k) {
+        test_scenes::rng g(0x5a9ULL + static_cast<std::uint64_t>(k));
+        const test_scenes::multi ma = test_scenes::random_multi(g, 20, 6), mb = test_scenes::random_multi(g, 8, 4);
+        const polygon a = renumbered(ma.to_polygon()), b = renumbered(mb.to_polygon());
+        for (int f = 0; f < 4; ++f) {
+            const pose from = test_scenes::aimed({0, 0}, {g.uniform(-40, 40), g.uniform(-40, 40)}, 0);
+            const pose to = test_scenes::aimed({0, 0}, {g.uniform(-40, 40), g.uniform(-40, 40)}, 0);
+            std::vector<ring_input> placed = mb.rings();
+            for (ring_input& r : placed)
+                for (point<double>& v : r.vertices) v = {v.x + from.tx, v.y + from.ty};
+            const polygon b_placed = renumbered(polygon(placed));
+            const pose back{from.tx - to.tx, from.ty - to.ty, 0};
+            INFO(describe(a, b, from, to));
+            const contact_result<exact_rational> r = first_contact<exact_rational>(a, b, from, to);
+            const contact_result<exact_rational> s = first_contact<exact_rational>(b_placed, a, {0, 0, 0}, back);
+            REQUIRE(r.contact == s.contact);
+            if (!r.contact) continue;
+            ++contacts;
+            CHECK(r.time == s.time);
+            // The swapped answer's features touch in the swapped scene.
+            const exact_scene swapped(b_placed, a, {0, 0, 0}, back);
+            CHECK(features_touch(swapped, s.time, s.static_feature, s.moving_feature));
+            const contact_result<double> c = certified_first_contact(b_placed, a, {0, 0, 0}, back);
+            CHECK(c.time == test_exact::nearest_double(r.time));
+        }
+    }
+    CHECK(contacts > 0);
+}
+
+TEST_CASE("sweep: bad input is refused", "[sweep]") {
+    const polygon a = square(0, 0, 4, 4);
+    const double nan = std::nan("");
+    CHECK_THROWS_AS(first_contact<double>(a, polygon{}, {}, {1, 0, 0}), invalid_input);
+    CHECK_THROWS_AS(first_contact<double>(polygon{}, a, {}, {1, 0, 0}), invalid_input);
+    CHECK_THROWS_AS(first_contact<double>(a, a, {nan, 0, 0}, {1, 0, 0}), invalid_input);
+    CHECK_THROWS_AS(first_contact<exact_rational>(a, a, {0, 0, 0}, {1, HUGE_VAL, 0}), invalid_input);
+    CHECK_THROWS_AS(certified_first_contact(a, a, {0, 0, 0}, {0, 0, nan}), invalid_input);
+    CHECK_THROWS_AS(exit_distance<double>(a, a, {0, 0, 0}, nan, 1), invalid_input);
+    CHECK_THROWS_AS(exit_distance<double>(a, a, {0, 0, 0}, 0, 0), invalid_input);
+    CHECK_THROWS_AS(exit_distance<exact_rational>(a, a, {0, 0, 0}, 1, -HUGE_VAL), invalid_input);
+    CHECK_THROWS_AS(exit_distance<double>(a, polygon{}, {0, 0, 0}, 1, 0), invalid_input);
+    // A motion that does not move: the start decides.
+    CHECK_FALSE(first_contact<exact_rational>(a, a, {5, 0, 0}, {5, 0, 0}).contact);
+    CHECK(certified_first_contact(a, a, {4, 0, 0}, {4, 0, 0}).contact);
+}
+
+namespace {
+
+/// exit_distance in exact rationals against the reference: the regions meet
+/// at s and at fractions of it, and not just beyond it; certified and double
+/// runs agree (double within double_time_error relative).
+void check_exit(const polygon& a, const polygon& b, const pose& q, double dx, double dy, std::size_t& deep) {
+    std::ostringstream what;
+    what.precision(17);
+    what << "pose " << q.tx << ',' << q.ty << ',' << q.theta << " direction " << dx << ',' << dy;
+    INFO(what.str());
+    const placed_shape pa = test_exact::place(a, 0, 0, 0), pb = test_exact::place(b, q);
+    const vector_2 d{FT(dx), FT(dy)};
+    const exact_rational s = exit_distance<exact_rational>(a, b, q, dx, dy);
+    const bool meet = test_exact::regions_meet(pa, pb);
+    if (!meet) {
+        CHECK(s == 0);
+        return;
+    }
+    CHECK(s >= 0);
+    for (const FT& k : std::vector<FT>{FT(1), FT(1) / FT(3), FT(3) / FT(4)}) CHECK(test_exact::regions_meet(pa, test_exact::moved(pb, d * (s * k))));
+    CHECK_FALSE(test_exact::regions_meet(pa, test_exact::moved(pb, d * (s + FT(std::ldexp(1.0, -40))))));
+    if (s > 0) ++deep;
+    const double sd = exit_distance<double>(a, b, q, dx, dy);
+    CHECK(std::fabs(sd - CGAL::to_double(s)) <= double_time_error * (1 + CGAL::to_double(s)));
+}
+
+}  // namespace
+
+TEST_CASE("exit distance: through, out of the solid into a hole, touching, apart", "[sweep][exit]") {
+    const polygon a = square(0, 0, 4, 4);
+    const polygon tri = ring({{0, 0}, {1, 0}, {0, 1}});
+    CHECK(exit_distance<exact_rational>(a, tri, {3.5, 1, 0}, 1, 0) == exact_rational(1) / exact_rational(2));
+    CHECK(exit_distance<exact_rational>(a, tri, {3.5, 1, 0}, -1, 0) == exact_rational(9) / exact_rational(2));
+    CHECK(exit_distance<exact_rational>(a, tri, {3.5, 1, 0}, -2, 0) == exact_rational(9) / exact_rational(4));
+    const polygon unit = square(0, 0, 1, 1);
+    CHECK(exit_distance<exact_rational>(a, unit, {4, 0, 0}, 1, 0) == 0);   // touching, moving away
+    CHECK(exit_distance<exact_rational>(a, unit, {4, 0, 0}, -1, 0) == 5);  // touching, moving through
+    CHECK(exit_distance<exact_rational>(a, unit, {4, 0, 0}, 0, 1) == 4);   // sliding along A's side
+    CHECK(exit_distance<double>(a, unit, {6, 0, 0}, -1, 0) == 0);           // apart
+    // From A's solid band into its hole: the interval ends there, although
+    // B meets A again at the hole's far side.
+    const polygon holed({ring_input{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, ring_role::outer},
+                         ring_input{{{2, 2}, {8, 2}, {8, 8}, {2, 8}}, ring_role::hole}});
+    CHECK(exit_distance<exact_rational>(holed, unit, {0.5, 4.5, 0}, 1, 0) == exact_rational(3) / exact_rational(2));
+    std::size_t deep = 0;
+    check_exit(holed, unit, {0.5, 4.5, 0}, 1, 0.25, deep);
+    check_exit(a, tri, {3.5, 1, 0.5}, -1, 0.125, deep);
+    check_exit(holed, tri, {1, 1, -2}, 0.25, 1, deep);
+    CHECK(deep == 3);
+}
+
+TEST_CASE("exit distance: random overlaps of multipolygons against the reference", "[sweep][exit][reference]") {
+    const int scenes = test_effort::scaled(12);
+    std::size_t deep = 0;
+    for (int k = 0; k < scenes; ++k) {
+        test_scenes::rng g(0xe817ULL + static_cast<std::uint64_t>(k));
+        test_scenes::multi ma = test_scenes::random_multi(g, 20, 6), mb = test_scenes::random_swallower(g);
+        if (k % 2 == 1) std::swap(ma, mb);
+        const polygon a = ma.to_polygon(), b = mb.to_polygon();
+        for (int f = 0; f < 5; ++f) {
+            const test_scenes::part& pa = ma.parts[g.index(ma.parts.size())];
+            const test_scenes::part& pb = mb.parts[g.index(mb.parts.size())];
+            const double reach = pa.radius * g.uniform(0, 1.2) + pb.radius * g.uniform(0, 0.8);
+            const double angle = g.uniform(0, 6.283185307179586), theta = g.chance(0.5) ? 0 : g.uniform(-3.2, 3.2);
+            const point<double> target{pa.center.x + reach * std::cos(angle), pa.center.y + reach * std::sin(angle)};
+            const double heading = g.uniform(0, 6.283185307179586);
+            check_exit(a, b, test_scenes::aimed(pb.center, target, theta), std::cos(heading), std::sin(heading), deep);
+        }
+    }
+    CHECK(deep > static_cast<std::size_t>(scenes));
+}
