@@ -139,6 +139,23 @@ public:
 
     /// The number of nodes (0 for an empty tree).
     std::size_t node_count() const { return nodes_.size(); }
+
+    /// One node of the tree, read-only, for traversals of one's own (the
+    /// separation query's branch and bound, detect/separation.hpp).
+    struct node {
+        box bounds;            ///< holds the boxes of the node's edges
+        point<double> center;  ///< the centre of bounds
+        double radius = 0;     ///< bounds every point of bounds from center
+        std::uint32_t first = 0;  ///< leaf: first position in the tree order; inner: left child (right is first + 1)
+        std::uint32_t count = 0;  ///< leaf: number of edges; inner: 0
+    };
+    /// Node k (0 is the root; requires k < node_count()).
+    const node& node_at(std::uint32_t k) const { return nodes_[k]; }
+    /// The edge at `position` in the tree order (a leaf holds the positions
+    /// first to first + count - 1).
+    std::uint32_t edge_at(std::uint32_t position) const { return order_[position]; }
+    /// The box of the edge at `position` in the tree order.
+    const box& edge_box_at(std::uint32_t position) const { return boxes_[position]; }
     /// Bytes of the heap blocks held.
     std::size_t heap_bytes() const {
         return nodes_.capacity() * sizeof(node) + boxes_.capacity() * sizeof(box) +
@@ -150,13 +167,6 @@ private:
     /// Median splits over at most 2^32 edges in leaves of up to 4: at most 31
     /// levels below the root; 32 with room.
     static constexpr std::size_t max_depth = 32;
-    struct node {
-        box bounds;
-        point<double> center;  ///< the centre of bounds
-        double radius = 0;     ///< bounds every point of bounds from center
-        std::uint32_t first = 0;  ///< leaf: first position in order_; inner: left child (right is first + 1)
-        std::uint32_t count = 0;  ///< leaf: number of edges; inner: 0
-    };
 
     static bool meets(const box& a, const box& b) {
         return a.min_x <= b.max_x && b.min_x <= a.max_x && a.min_y <= b.max_y && b.min_y <= a.max_y;

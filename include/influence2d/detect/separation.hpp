@@ -1,0 +1,664 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// The separation distance between A and B posed by q: the distance between
+/// the closed regions, the closest features and points, or a witness of
+/// their meeting (docs/separation.md). Needs CGAL for certified_separation
+/// (number/cgal.hpp); the other queries run in any field NT.
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "influence2d/core/assert.hpp"
+#include "influence2d/core/box.hpp"
+#include "influence2d/core/invalid_input.hpp"
+#include "influence2d/core/point.hpp"
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/core/pose.hpp"
+#include "influence2d/covering/inclusion.hpp"
+#include "influence2d/detect/feature.hpp"
+#include "influence2d/detect/filtered_detector.hpp"
+#include "influence2d/detect/scene.hpp"
+#include "influence2d/influence/bounds.hpp"
+#include "influence2d/influence/edge_tree.hpp"
+#include "influence2d/number/certified.hpp"
+#include "influence2d/number/cgal.hpp"
+#include "influence2d/predicates/distance.hpp"
+
+namespace influence2d {
+
+/// The separation of A and B posed by a pose: the distance between their
+/// closed regions and where it is attained, or a witness that they meet.
+template <class NT>
+struct separation_result {
+    /// The squared distance between the closed regions; 0 when they meet.
+    /// Exact in an exact NT.
+    NT squared_distance{};
+    /// A's feature: the vertex, edge (by input number) or, for B inside A
+    /// without boundary contact, A's interior.
+    feature static_feature{};
+    /// B's feature, as static_feature.
+    feature moving_feature{};
+    /// The closest point of A (on static_feature), in A's frame.
+    point<NT> static_point;
+    /// The closest point of posed B (on moving_feature), in A's frame; equal
+    /// to static_point when the regions meet.
+    point<NT> moving_point;
+    /// Whether the regions meet (squared_distance is 0).
+    bool meet() const { return number_traits<NT>::sign(squared_distance) == 0; }
+};
+
+namespace separation_detail {
+
+/// An edge pair that may realise the distance, with a lower bound of its
+/// distance (phase 1). Stored edge numbers.
+struct candidate {
+    double lower = 0;
+    std::uint32_t static_edge = 0, moving_edge = 0;
+};
+
+/// The order in which phase 2 evaluates candidates: lower bound, then A's
+/// edge, then B's.
+inline bool evaluated_before(const candidate& l, const candidate& r) {
+    if (l.lower != r.lower) return l.lower < r.lower;
+    if (l.static_edge != r.static_edge) return l.static_edge < r.static_edge;
+    return l.moving_edge < r.moving_edge;
+}
+
+/// The input number of the polygon's stored vertex i: a ring stored reversed
+/// (polygon's constructor reorients it) numbers its vertices backwards.
+inline std::size_t input_vertex(const polygon& shape, std::size_t i) {
+    std::size_t lo = 0, hi = shape.ring_count();  // the ring of i: the last r with ring_begin(r) <= i
+    while (hi - lo > 1) {
+        const std::size_t mid = lo + (hi - lo) / 2;
+        (shape.ring_begin(mid) <= i ? lo : hi) = mid;
+    }
+    const std::size_t begin = shape.ring_begin(lo), n = shape.ring_end(lo) - begin;
+    return shape.source_edge(begin) == begin ? i : begin + (n - 1 - (i - begin));
+}
+
+/// B's vertices posed in T (double for the filters, NT for the decisions),
+/// each on first use within a frame.
+template <class T>
+class posed_vertices {
+public:
+    /// Nothing posed yet; place() starts a frame.
+    explicit posed_vertices(const polygon& shape) : shape_(&shape), at_(shape.size()), stamp_(shape.size(), 0) {}
+
+    /// A new frame posed by t: every earlier value is stale.
+    void place(const rotation_pose& t) {
+        pose_ = t;
+        ++frame_;
+    }
+    /// Vertex j posed.
+    const point<T>& operator[](std::size_t j) {
+        if (stamp_[j] != frame_) {
+            at_[j] = pose_.apply<T>(shape_->vertex(j));
+            stamp_[j] = frame_;
+        }
+        return at_[j];
+    }
+    /// Every vertex posed.
+    const std::vector<point<T>>& all() {
+        for (std::size_t j = 0; j < at_.size(); ++j) (*this)[j];
+        return at_;
+    }
+
+private:
+    const polygon* shape_;
+    rotation_pose pose_{::influence2d::pose{}};
+    std::uint64_t frame_ = 0;
+    std::vector<point<T>> at_;
+    std::vector<std::uint64_t> stamp_;
+};
+
+/// What phase 1 keeps between calls (its stack and candidates), so that a
+/// query object allocates once.
+struct search_space {
+    struct entry {
+        std::uint32_t s, m;  ///< A's node, B's node
+        double lower;        ///< a lower bound of the distance between their edges
+    };
+    std::vector<entry> stack;
+    std::vector<candidate> candidates;
+};
+
+/// The trees, polygons and pose of one query, in double.
+struct search_input {
+    const polygon& a;
+    const edge_tree& a_tree;
+    const polygon& b;
+    const edge_tree& b_tree;
+    const rotation_pose& t;  ///< B's pose
+    double delta;            ///< posing_error of B's points
+};
+
+/// The upper bound of one pair's distance (segment_distance_range), or
+/// infinity for no pair: the coherence seed.
+template <class Approx>
+double pair_upper(const search_input& in, Approx& approx, std::optional<std::pair<std::uint32_t, std::uint32_t>> pair) {
+    if (!pair || pair->first >= in.a.size() || pair->second >= in.b.size()) return HUGE_VAL;
+    const std::size_t e = pair->first, f = pair->second;
+    return segment_distance_range(in.a.vertex(e), in.a.vertex(in.a.next(e)), approx[f], approx[in.b.next(f)], in.delta)
+        .upper;
+}
+
+/// Phase 1: the branch and bound over A's edge tree (A's frame) and B's
+/// (its nodes' circles posed by the pose in double), in double with proven
+/// bounds. Returns U, an upper bound of the distance between the
+/// boundaries, and leaves in space.candidates every edge pair whose lower
+/// bound is at most U, in the order evaluated_before: among them every pair
+/// at the least distance. `upper` is a known upper bound (a seed) or
+/// infinity.
+///
+///   stack <- (A's root, B's root, lower bound)
+///   while stack: (s, m, L) <- pop
+///       L > U: prune (U may have dropped since the push)
+///       both leaves: for each edge pair whose boxes are within U:
+///           [lo, hi] <- segment_distance_range; U <- min(U, hi)
+///           lo <= U: candidate
+///       else split the node of larger radius (the inner one): each child
+///       pair's lower bound is node_gap_lower (A's box, B's posed circle);
+///       push those <= U, the farther first (the nearer is searched first)
+///   keep the candidates with lower bound <= U, sorted
+template <class Approx>
+double search_pairs(const search_input& in, Approx& approx, double upper, search_space& space) {
+    space.stack.clear();
+    space.candidates.clear();
+    const edge_tree &ta = in.a_tree, &tb = in.b_tree;
+    if (ta.node_count() == 0 || tb.node_count() == 0) return upper;
+    const double spread = posing_spread * in.delta * (1 + bound_rounding);
+    const auto posed = [&](const edge_tree::node& m) { return in.t.apply<double>(m.center); };
+    space.stack.push_back({0, 0, node_gap_lower(ta.node_at(0).bounds, posed(tb.node_at(0)), tb.node_at(0).radius, in.delta)});
+    while (!space.stack.empty()) {
+        const search_space::entry p = space.stack.back();
+        space.stack.pop_back();
+        if (p.lower > upper) continue;
+        const edge_tree::node &s = ta.node_at(p.s), &m = tb.node_at(p.m);
+        if (s.count != 0 && m.count != 0) {
+            for (std::uint32_t j = m.first; j < m.first + m.count; ++j) {
+                const std::uint32_t f = tb.edge_at(j);
+                const point<double>&u = approx[f], &v = approx[in.b.next(f)];
+                box fb;
+                fb.add(u);
+                fb.add(v);
+                if (box_gap_lower(s.bounds, fb) - spread > upper) continue;
+                for (std::uint32_t i = s.first; i < s.first + s.count; ++i) {
+                    if (box_gap_lower(ta.edge_box_at(i), fb) - spread > upper) continue;
+                    const std::uint32_t e = ta.edge_at(i);
+                    const distance_range r =
+                        segment_distance_range(in.a.vertex(e), in.a.vertex(in.a.next(e)), u, v, in.delta);
+                    upper = std::min(upper, r.upper);
+                    if (r.lower <= upper) space.candidates.push_back({r.lower, e, f});
+                }
+            }
+            continue;
+        }
+        search_space::entry near, far;
+        if (s.count != 0 || (m.count == 0 && m.radius >= s.radius)) {
+            const edge_tree::node &m0 = tb.node_at(m.first), &m1 = tb.node_at(m.first + 1);
+            near = {p.s, m.first, node_gap_lower(s.bounds, posed(m0), m0.radius, in.delta)};
+            far = {p.s, m.first + 1, node_gap_lower(s.bounds, posed(m1), m1.radius, in.delta)};
+        } else {
+            const point<double> c = posed(m);
+            near = {s.first, p.m, node_gap_lower(ta.node_at(s.first).bounds, c, m.radius, in.delta)};
+            far = {s.first + 1, p.m, node_gap_lower(ta.node_at(s.first + 1).bounds, c, m.radius, in.delta)};
+        }
+        if (far.lower < near.lower) std::swap(near, far);
+        if (far.lower <= upper) space.stack.push_back(far);
+        if (near.lower <= upper) space.stack.push_back(near);
+    }
+    auto& cs = space.candidates;
+    cs.erase(std::remove_if(cs.begin(), cs.end(), [upper](const candidate& c) { return !(c.lower <= upper); }), cs.end());
+    std::sort(cs.begin(), cs.end(), evaluated_before);
+    return upper;
+}
+
+/// The relative widening of number_traits::to_double of an exact squared
+/// distance in phase 2's stopping rule: to_double is "a near double" (for
+/// CGAL's rationals within an ulp); 2^-40 takes it as within 2^-40 of the
+/// value. The absolute floor 2^-1000 covers a value whose double underflows.
+inline constexpr double to_double_widening = 0x1p-40;
+
+/// An upper bound, in double, of the square root of the squared distance x
+/// (for phase 2's stopping rule).
+template <class NT>
+double upper_distance(const NT& x) {
+    const double d = number_traits<NT>::to_double(x);
+    return upper_sqrt(static_cast<long double>(d) * (1 + to_double_widening) + 0x1p-1000L);
+}
+
+/// The pair phase 2 chose, with its closest points.
+template <class NT>
+struct chosen_pair {
+    segment_pair_closest<NT> closest;
+    std::uint32_t static_edge = 0, moving_edge = 0;
+    bool found = false;
+};
+
+/// Phase 2: the candidates evaluated in NT (closest_between_segments) in
+/// the order evaluated_before, until the next lower bound exceeds the best
+/// distance found (upper_distance); the least squared distance wins, and
+/// among equal ones the least (A's edge, B's edge). Every pair at the least
+/// distance has a lower bound at most that distance, so all of them are
+/// evaluated and the choice does not depend on how phase 1 found them. A
+/// pair at distance 0 ends the loop: every pair at distance 0 has lower bound
+/// 0 and so comes, in edge order, before any other. a_vertex(i) and
+/// b_vertex(j) give A's vertex and B's posed vertex in NT; `evaluated`
+/// counts the pairs evaluated.
+template <class NT, class AVertex, class BVertex>
+chosen_pair<NT> closest_candidate(const std::vector<candidate>& cs, const polygon& a, const polygon& b,
+                                  AVertex&& a_vertex, BVertex&& b_vertex, std::size_t& evaluated) {
+    chosen_pair<NT> best;
+    double reach = HUGE_VAL;
+    for (const candidate& c : cs) {
+        if (best.found && c.lower > reach) break;
+        ++evaluated;
+        const std::uint32_t e = c.static_edge, f = c.moving_edge;
+        segment_pair_closest<NT> d =
+            closest_between_segments<NT>(a_vertex(e), a_vertex(a.next(e)), b_vertex(f), b_vertex(b.next(f)));
+        const int order = best.found ? compare_values(d.squared, best.closest.squared) : -1;
+        if (order < 0 || (order == 0 && (e < best.static_edge || (e == best.static_edge && f < best.moving_edge)))) {
+            best.closest = std::move(d);
+            best.static_edge = e;
+            best.moving_edge = f;
+            best.found = true;
+            reach = upper_distance(best.closest.squared);
+        }
+        if (number_traits<NT>::sign(best.closest.squared) == 0) break;
+    }
+    return best;
+}
+
+/// A ring's first vertex lying in the other polygon's closed region: B's
+/// (moving) or A's.
+struct inside_vertex {
+    bool moving = true;
+    std::size_t vertex = 0;  ///< stored number
+};
+
+/// Phase 3, for boundaries known apart: the first vertex of every ring of B,
+/// then of A, located in the other polygon (b_in_a(j), a_in_b(i) give the
+/// location); the first not outside. A vertex outside the other's window (its
+/// box, grown by the rounding of the double positions) is outside without a
+/// locate. Why one vertex per ring decides: detect/containment.hpp.
+template <class BApprox, class BInA, class AInB>
+std::optional<inside_vertex> ring_vertex_inside(const polygon& a, const polygon& b, const box& a_window,
+                                                const box& b_window, BApprox& b_approx, BInA&& b_in_a, AInB&& a_in_b) {
+    for (std::size_t r = 0; r < b.ring_count(); ++r) {
+        const std::size_t j = b.ring_begin(r);
+        const point<double>& v = b_approx[j];
+        if (std::isfinite(v.x + v.y) && !a_window.contains(v)) continue;
+        if (b_in_a(j) != location::outside) return inside_vertex{true, j};
+    }
+    for (std::size_t r = 0; r < a.ring_count(); ++r) {
+        const std::size_t i = a.ring_begin(r);
+        if (!b_window.contains(a.vertex(i))) continue;
+        if (a_in_b(i) != location::outside) return inside_vertex{false, i};
+    }
+    return std::nullopt;
+}
+
+/// The box holding posed B: its tree's root circle, its centre posed in
+/// double, grown by the pose's scale and the posing error. Everything when the
+/// centre is not finite.
+inline box posed_window(const search_input& in) {
+    const point<double> c = in.t.apply<double>(in.b_tree.root_center());
+    const double r = in.b_tree.root_radius() * (1 + node_gap_rounding) + posing_spread * in.delta * (1 + bound_rounding);
+    if (!std::isfinite(c.x + c.y + r)) return box{-HUGE_VAL, -HUGE_VAL, HUGE_VAL, HUGE_VAL};
+    return box{c.x - r, c.y - r, c.x + r, c.y + r};
+}
+
+/// A's window for B's vertices posed in double: A's box grown by their
+/// posing error.
+inline box static_window(const search_input& in) {
+    return in.a.bounds().inflated(posing_spread * in.delta * (1 + bound_rounding));
+}
+
+/// The feature of the point at `part` of the stored edge e.
+inline feature edge_feature(const polygon& shape, std::size_t e, segment_part part) {
+    switch (part) {
+    case segment_part::start:
+        return {feature_kind::vertex, input_vertex(shape, e)};
+    case segment_part::end:
+        return {feature_kind::vertex, input_vertex(shape, shape.next(e))};
+    default:
+        return {feature_kind::edge, shape.source_edge(e)};
+    }
+}
+
+/// The result of the chosen pair.
+template <class NT>
+separation_result<NT> pair_result(const polygon& a, const polygon& b, const chosen_pair<NT>& p) {
+    separation_result<NT> r;
+    r.squared_distance = p.closest.squared;
+    r.static_feature = edge_feature(a, p.static_edge, p.closest.first_part);
+    r.moving_feature = edge_feature(b, p.moving_edge, p.closest.second_part);
+    r.static_point = p.closest.on_first;
+    r.moving_point = p.closest.on_second;
+    return r;
+}
+
+/// The result of a ring's vertex inside the other region, at `at`.
+template <class NT>
+separation_result<NT> inside_result(const polygon& a, const polygon& b, const inside_vertex& v, const point<NT>& at) {
+    separation_result<NT> r;
+    r.squared_distance = number_traits<NT>::from_double(0);
+    const feature interior{feature_kind::interior, 0};
+    if (v.moving) {
+        r.static_feature = interior;
+        r.moving_feature = {feature_kind::vertex, input_vertex(b, v.vertex)};
+    } else {
+        r.static_feature = {feature_kind::vertex, input_vertex(a, v.vertex)};
+        r.moving_feature = interior;
+    }
+    r.static_point = at;
+    r.moving_point = at;
+    return r;
+}
+
+/// A point of doubles in NT.
+template <class NT>
+point<NT> in(const point<double>& p) {
+    return {number_traits<NT>::from_double(p.x), number_traits<NT>::from_double(p.y)};
+}
+
+/// What one query in NT keeps between frames: B posed in double and in NT,
+/// phase 1's space, the last frame's closest pair.
+template <class NT>
+struct workspace {
+    explicit workspace(const polygon& b) : approx(b), exact(b) {}
+    posed_vertices<double> approx;
+    posed_vertices<NT> exact;  ///< (unused when NT is double: approx serves)
+    search_space space;
+    std::optional<std::pair<std::uint32_t, std::uint32_t>> last;  ///< the last frame's chosen pair
+    std::size_t evaluated = 0;  ///< pairs evaluated in NT by the last query
+};
+
+/// A's side of a query in NT: its vertices in NT (one, or all for a
+/// locate), its locator for B's points. Prepared (a static_scene: its
+/// covering's vertices and its cone index) or from the polygon alone
+/// (vertices converted on demand, Feito's test over all of them).
+template <class NT>
+class static_side {
+public:
+    /// From the prepared scene.
+    explicit static_side(const static_scene<NT>& a) : shape_(a.shape), scene_(&a) {}
+    /// From the polygon alone.
+    explicit static_side(const polygon& a) : shape_(a) {}
+
+    /// Vertex i in NT.
+    point<NT> vertex(std::size_t i) const {
+        if (scene_) return scene_->covering.start(i);
+        return in<NT>(shape_.vertex(i));
+    }
+    /// Where p lies in A's closed region (exact when NT is).
+    location locate_point(const point<NT>& p) {
+        if (scene_) return scene_->areas().locate(p);
+        if constexpr (std::is_same_v<NT, double>) {
+            return locate(shape_, shape_.vertices(), shape_.centroid(), p);
+        } else {
+            if (all_.empty())
+                for (std::size_t i = 0; i < shape_.size(); ++i) all_.push_back(vertex(i));
+            return locate(shape_, all_, in<NT>(shape_.centroid()), p);
+        }
+    }
+
+private:
+    const polygon& shape_;
+    const static_scene<NT>* scene_ = nullptr;
+    std::vector<point<NT>> all_;
+};
+
+/// The query in NT on A (its side and tree) and B (its tree, scale), for
+/// the pose t: phase 1, phase 2, and phase 3 when the boundaries are apart.
+///
+///   U <- the last frame's pair re-evaluated at this pose (or infinity)
+///   phase 1: candidates <- search_pairs (double, proven bounds)
+///   phase 2: the least candidate in NT (closest_candidate)
+///   distance 0: the regions meet at that pair's common point
+///   phase 3: a ring's vertex inside the other region: they meet there
+///   else: the distance is the pair's
+template <class NT>
+separation_result<NT> separate(static_side<NT>& side, const search_input& in, workspace<NT>& w) {
+    constexpr bool in_double = std::is_same_v<NT, double>;
+    w.approx.place(in.t);
+    if constexpr (!in_double) w.exact.place(in.t);
+    const auto b_vertex = [&](std::size_t j) -> const point<NT>& {
+        if constexpr (in_double) {
+            return w.approx[j];
+        } else {
+            return w.exact[j];
+        }
+    };
+    const auto a_vertex = [&](std::size_t i) { return side.vertex(i); };
+    search_pairs(in, w.approx, pair_upper(in, w.approx, w.last), w.space);
+    w.evaluated = 0;
+    const chosen_pair<NT> best = closest_candidate<NT>(w.space.candidates, in.a, in.b, a_vertex, b_vertex, w.evaluated);
+    INFLUENCE2D_ASSERT(best.found, "phase 1 left no candidate");
+    w.last = std::make_pair(best.static_edge, best.moving_edge);
+    if (number_traits<NT>::sign(best.closest.squared) == 0) return pair_result(in.a, in.b, best);
+    std::optional<point<NT>> b_origin;
+    const auto inside = ring_vertex_inside(
+        in.a, in.b, static_window(in), posed_window(in), w.approx,
+        [&](std::size_t j) { return side.locate_point(b_vertex(j)); },
+        [&](std::size_t i) {
+            if (!b_origin) b_origin = in.t.apply<NT>(in.b.centroid());
+            if constexpr (in_double) {
+                return locate(in.b, w.approx.all(), *b_origin, a_vertex(i));
+            } else {
+                return locate(in.b, w.exact.all(), *b_origin, a_vertex(i));
+            }
+        });
+    if (inside) return inside_result<NT>(in.a, in.b, *inside, inside->moving ? b_vertex(inside->vertex) : a_vertex(inside->vertex));
+    return pair_result(in.a, in.b, best);
+}
+
+}  // namespace separation_detail
+
+/// The separation of A and of B posed by q, from prepared polygons (their
+/// lazily built edge trees, and A's cone index when a point of B must be
+/// located): the squared distance between the closed regions, the closest
+/// features and points, or, when the regions meet, a witness (below). Exact
+/// in an exact field NT (exact_rational): the squared distance, the features
+/// and the points are the true ones; in a floating NT (float, double, long
+/// double, quad) they are rounded: the distance is within
+/// 2^-40 (|A| + |B| + |tx| + |ty|) of the exact one for double (|P| the
+/// largest absolute coordinate of P; docs/separation.md derives it).
+///
+/// The features realise the distance: static_point lies on static_feature,
+/// moving_point on posed B's moving_feature, and their squared distance is
+/// squared_distance. When several feature pairs do, the one of the least
+/// stored (A's edge, B's edge) pair is reported, so every query in an exact
+/// NT (this one, the one on polygons, separation_query, certified_separation)
+/// names the same features. When the regions meet: a vertex or edge of each
+/// sharing a point when the boundaries meet (a vertex of one on the other,
+/// or two edges crossing at a rational point); otherwise one contains a ring
+/// of the other, and the witness is that ring's first vertex (its feature
+/// vertex) and the other's interior (feature_kind::interior), both points
+/// that vertex. Throws invalid_input for a pose with a NaN or infinite
+/// component.
+///
+/// Cost: the branch and bound visits the node pairs that may hold the
+/// closest edges (about log n log m near a single closest pair) and
+/// evaluates in NT the few pairs its bounds cannot separate; a pose without
+/// boundary contact within the polygons' boxes adds the location of one
+/// vertex per ring (docs/separation.md).
+template <class NT>
+separation_result<NT> separation(const static_scene<NT>& a, const moving_scene<NT>& b, const pose& q) {
+    const rotation_pose t(q);
+    separation_detail::workspace<NT> w(b.shape);
+    separation_detail::static_side<NT> side(a);
+    const separation_detail::search_input in{a.shape, a.tree(), b.shape, b.tree(), t,
+                                             posing_error(b.scale, q.tx, q.ty)};
+    return separation_detail::separate(side, in, w);
+}
+
+/// The separation of A and of B posed by q (as the overload on prepared
+/// polygons), from the polygons alone: it builds both edge trees (O(n log n
+/// + m log m)) and locates points by Feito's test over the polygon's edges.
+/// Throws invalid_input for an empty polygon, one beyond NT's range, or a
+/// pose with a NaN or infinite component.
+template <class NT>
+separation_result<NT> separation(const polygon& a, const polygon& b, const pose& q) {
+    accepted_polygon<NT>(a, "static");
+    accepted_polygon<NT>(b, "moving");
+    const rotation_pose t(q);
+    const edge_tree ta(a), tb(b);
+    separation_detail::workspace<NT> w(b);
+    separation_detail::static_side<NT> side(a);
+    const double scale = coordinate_scale(b);
+    const separation_detail::search_input in{a, ta, b, tb, t, posing_error(scale, q.tx, q.ty)};
+    return separation_detail::separate(side, in, w);
+}
+
+/// Many poses of one pair: the prepared polygons are kept (and may be shared
+/// with detectors and other queries, in any number of threads), and each
+/// query starts its search from the last one's closest edge pair, evaluated
+/// at the new pose: for poses close to each other it bounds the search at
+/// once. One object per thread (it keeps the frame's state). Answers as
+/// separation() on the prepared polygons, exactly so in an exact NT.
+template <class NT>
+class separation_query {
+public:
+    /// Prepares A and B (prepare_static, prepare_moving). Throws
+    /// invalid_input for an empty polygon or one beyond NT's range.
+    separation_query(const polygon& static_polygon, const polygon& moving_polygon)
+        : separation_query(prepare_static<NT>(static_polygon), prepare_moving<NT>(moving_polygon)) {}
+
+    /// On prepared polygons, shared. Throws invalid_input for a null pointer.
+    separation_query(std::shared_ptr<const static_scene<NT>> static_polygon,
+                     std::shared_ptr<const moving_scene<NT>> moving_polygon)
+        : a_(checked(std::move(static_polygon), "static")),
+          b_(checked(std::move(moving_polygon), "moving")),
+          w_(b_->shape),
+          side_(*a_) {}
+
+    /// The separation at pose q (separation()). Throws invalid_input for a
+    /// pose with a NaN or infinite component.
+    separation_result<NT> operator()(const pose& q) {
+        const rotation_pose t(q);
+        const separation_detail::search_input in{a_->shape, a_->tree(), b_->shape, b_->tree(), t,
+                                                 posing_error(b_->scale, q.tx, q.ty)};
+        return separation_detail::separate(side_, in, w_);
+    }
+
+    /// The number of edge pairs the last query evaluated in NT.
+    std::size_t evaluated_pairs() const { return w_.evaluated; }
+
+private:
+    template <class Scene>
+    static std::shared_ptr<const Scene> checked(std::shared_ptr<const Scene> s, const char* which) {
+        if (!s) throw invalid_input(std::string("separation_query: no prepared ") + which + " polygon (a null pointer)");
+        return s;
+    }
+
+    std::shared_ptr<const static_scene<NT>> a_;
+    std::shared_ptr<const moving_scene<NT>> b_;
+    separation_detail::workspace<NT> w_;
+    separation_detail::static_side<NT> side_;
+};
+
+/// The distance as a double from a squared distance. In an exact NT the
+/// squared distance is first rounded to the nearest double (scaled_nearest:
+/// relative error at most 2^-53, whatever its magnitude), whose root is then
+/// rounded once: the first rounding moves the root by a relative 2^-54 at
+/// most, below half a unit in the last place of the root, and the second by
+/// at most half a unit, so the result is within one unit in the last place
+/// of the true root (one of the two doubles around it). In another NT, the
+/// square root of number_traits::to_double.
+template <class NT>
+double distance_of(const NT& squared_distance) {
+    using tr = number_traits<NT>;
+    if constexpr (tr::category == number_category::exact) {
+        if (tr::sign(squared_distance) <= 0) return 0;
+        const scaled_double r = scaled_nearest(squared_distance);
+        return std::ldexp(std::sqrt(r.mantissa), r.exponent / 2);
+    } else {
+        return std::sqrt(tr::to_double(squared_distance));
+    }
+}
+
+/// The separation of certified_separation: the exact answer's features, its
+/// points and its distance rounded to double.
+struct certified_separation_result {
+    double distance = 0;          ///< within one unit in the last place of the exact distance (distance_of)
+    double squared_distance = 0;  ///< the exact squared distance rounded to the nearest double
+    feature static_feature{};     ///< as separation_result, exactly
+    feature moving_feature{};     ///< as separation_result, exactly
+    point<double> static_point;   ///< the exact closest point of A, each coordinate rounded to the nearest double
+    point<double> moving_point;   ///< the exact closest point of posed B, rounded likewise
+    bool meet = false;            ///< whether the regions meet (exact)
+    std::size_t exact_pairs = 0;  ///< edge pairs evaluated in exact rationals
+};
+
+/// The exact separation (separation<exact_rational>: the same features and
+/// points, rounded to double) at about double's cost: the search runs in
+/// double with proven bounds (phase 1), and only the candidate pairs those
+/// bounds cannot separate from the least are evaluated in exact rationals
+/// (usually the one or few pairs at the least distance); a ring's vertex is
+/// located in `certified` and again in exact rationals only when a sign is
+/// in doubt. Throws invalid_input for an empty polygon or a pose with a NaN
+/// or infinite component.
+inline certified_separation_result certified_separation(const polygon& a, const polygon& b, const pose& q) {
+    using namespace separation_detail;
+    accepted_polygon<exact_rational>(a, "static");
+    accepted_polygon<exact_rational>(b, "moving");
+    const rotation_pose t(q);
+    const edge_tree ta(a), tb(b);
+    const search_input in{a, ta, b, tb, t, posing_error(coordinate_scale(b), q.tx, q.ty)};
+    workspace<exact_rational> w(b);
+    w.approx.place(t);
+    w.exact.place(t);
+    search_pairs(in, w.approx, HUGE_VAL, w.space);
+    const auto a_vertex = [&](std::size_t i) { return separation_detail::in<exact_rational>(a.vertex(i)); };
+    const auto b_vertex = [&](std::size_t j) -> const point<exact_rational>& { return w.exact[j]; };
+    const chosen_pair<exact_rational> best =
+        closest_candidate<exact_rational>(w.space.candidates, a, b, a_vertex, b_vertex, w.evaluated);
+    separation_result<exact_rational> exact;
+    if (CGAL::sign(best.closest.squared) == 0) {
+        exact = pair_result(a, b, best);
+    } else {
+        // Phase 3 in certified, again in exact rationals when a sign is in doubt.
+        const auto located = [&](auto number) {
+            using NT = decltype(number);
+            static_side<NT> side(a);
+            posed_vertices<NT> posed(b);
+            posed.place(t);
+            std::optional<point<NT>> b_origin;
+            return ring_vertex_inside(
+                a, b, static_window(in), posed_window(in), w.approx,
+                [&](std::size_t j) { return side.locate_point(posed[j]); },
+                [&](std::size_t i) {
+                    if (!b_origin) b_origin = t.apply<NT>(b.centroid());
+                    return locate(b, posed.all(), *b_origin, side.vertex(i));
+                });
+        };
+        const std::optional<inside_vertex> inside =
+            detail::fallback<>::run([&] { return located(certified{}); }, [&] { return located(exact_rational{}); });
+        exact = inside ? inside_result<exact_rational>(a, b, *inside, inside->moving ? w.exact[inside->vertex]
+                                                                                     : a_vertex(inside->vertex))
+                       : pair_result(a, b, best);
+    }
+    certified_separation_result r;
+    r.squared_distance = nearest_double(exact.squared_distance);
+    r.distance = distance_of(exact.squared_distance);
+    r.static_feature = exact.static_feature;
+    r.moving_feature = exact.moving_feature;
+    r.static_point = {nearest_double(exact.static_point.x), nearest_double(exact.static_point.y)};
+    r.moving_point = {nearest_double(exact.moving_point.x), nearest_double(exact.moving_point.y)};
+    r.meet = exact.meet();
+    r.exact_pairs = w.evaluated;
+    return r;
+}
+
+}  // namespace influence2d

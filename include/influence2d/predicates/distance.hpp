@@ -1,0 +1,413 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// Distances between points and closed segments: the exact squared distances
+/// and closest points in a field NT (the decisions: every sign through
+/// number_traits, directly or through orientation() and compare_values()),
+/// the rounding of an exact value to the nearest double, and the bounds in
+/// double that the separation query's search prunes with (filters, each
+/// constant with its derivation). docs/separation.md says how they combine.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <utility>
+
+#include "influence2d/core/box.hpp"
+#include "influence2d/core/point.hpp"
+#include "influence2d/number/traits.hpp"
+#include "influence2d/predicates/filters.hpp"
+#include "influence2d/predicates/orientation.hpp"
+#include "influence2d/predicates/segments.hpp"
+
+namespace influence2d {
+
+// ---------------------------------------------------------------------------
+// Exact values (decisions)
+// ---------------------------------------------------------------------------
+
+/// Where on a segment [a, b] a point lies: at a, at b, or strictly between.
+enum class segment_part : std::uint8_t {
+    start,    ///< the segment's first end a (also the point of a zero-length segment)
+    end,      ///< its second end b
+    interior  ///< strictly between a and b
+};
+
+/// The point of a closed segment nearest to a given point, and their squared
+/// distance.
+template <class NT>
+struct segment_point {
+    NT squared{};             ///< the squared distance
+    point<NT> at;             ///< the nearest point of the segment
+    segment_part part = segment_part::start;  ///< where `at` lies on the segment
+};
+
+/// The point of the closed segment [a, b] nearest to p, with t = (b - a).(p - a)
+/// and L = |b - a|^2: a when t <= 0 or L = 0 (a zero-length segment is the
+/// point a), b when t >= L, else a + (t / L)(b - a), at squared distance
+/// ((b - a) x (p - a))^2 / L. Three signs taken by number_traits; one
+/// division. Exact in an exact field NT (exact_rational): the squared distance
+/// and the point are the true ones; rounded in a floating NT.
+template <class NT>
+segment_point<NT> closest_on_segment(const point<NT>& p, const point<NT>& a, const point<NT>& b) {
+    using tr = number_traits<NT>;
+    const NT abx = b.x - a.x, aby = b.y - a.y;
+    const NT apx = p.x - a.x, apy = p.y - a.y;
+    const NT t = abx * apx + aby * apy;
+    const NT length2 = abx * abx + aby * aby;
+    if (tr::sign(length2) == 0 || tr::sign(t) <= 0) return {NT(apx * apx + apy * apy), a, segment_part::start};
+    if (compare_values(t, length2) >= 0) {
+        const NT bpx = p.x - b.x, bpy = p.y - b.y;
+        return {NT(bpx * bpx + bpy * bpy), b, segment_part::end};
+    }
+    const NT cross = abx * apy - aby * apx;
+    const NT f = t / length2;
+    return {NT(cross * cross / length2), point<NT>{NT(a.x + f * abx), NT(a.y + f * aby)}, segment_part::interior};
+}
+
+/// The squared distance from p to the closed segment [a, b] (closest_on_segment).
+template <class NT>
+NT point_segment_squared_distance(const point<NT>& p, const point<NT>& a, const point<NT>& b) {
+    return closest_on_segment(p, a, b).squared;
+}
+
+/// Where a point lies on [a, b], given that it lies on it: start when it is
+/// a, end when it is b (and not a), else interior. Exact when NT is.
+template <class NT>
+segment_part part_of(const point<NT>& x, const point<NT>& a, const point<NT>& b) {
+    if (same_point(x, a)) return segment_part::start;
+    if (same_point(x, b)) return segment_part::end;
+    return segment_part::interior;
+}
+
+/// The closest points of two closed segments and their squared distance.
+template <class NT>
+struct segment_pair_closest {
+    NT squared{};        ///< the squared distance; 0 when the segments meet
+    point<NT> on_first;  ///< the point of the first segment (the common point when they meet)
+    point<NT> on_second; ///< the point of the second segment (equal to on_first when they meet)
+    segment_part first_part = segment_part::start;   ///< where on_first lies on the first segment
+    segment_part second_part = segment_part::start;  ///< where on_second lies on the second segment
+};
+
+/// A closest pair of points of the closed segments [a, b] and [u, v]
+/// (zero-length segments allowed), in a field NT.
+///
+/// When they meet (segments_intersect), the squared distance is 0 and the
+/// point is a common one: for collinear segments the first of a, b, u, v that
+/// lies on the other segment; when u (or v) lies on the line of [a, b], u
+/// (or v); when a (or b) lies on the line of [u, v], a (or b); otherwise the
+/// crossing u + (c_u / (c_u - c_v))(v - u) with c_u = (b - a) x (u - a) and
+/// c_v = (b - a) x (v - a), of opposite signs. A common point is a vertex of
+/// one of the segments or their crossing: rational in the coordinates.
+///
+/// When they do not meet, the distance is attained at an end of one of them:
+/// the least of closest_on_segment(a; u, v), (b; u, v), (u; a, b), (v; a, b),
+/// the first of these on a tie. Exact (the distance, the points and their
+/// parts) in an exact field NT.
+template <class NT>
+segment_pair_closest<NT> closest_between_segments(const point<NT>& a, const point<NT>& b, const point<NT>& u,
+                                                  const point<NT>& v) {
+    const int ou = orientation(a, b, u), ov = orientation(a, b, v);
+    if (segments_intersect(ou, ov, a, b, u, v)) {
+        point<NT> x;
+        if (ou == 0 && ov == 0) {
+            // Collinear (or a == b): one of the four ends lies on the other segment.
+            x = on_segment(a, u, v) ? a : on_segment(b, u, v) ? b : on_segment(u, a, b) ? u : v;
+        } else if (ou == 0 || ov == 0) {
+            x = ou == 0 ? u : v;  // the one point of [u, v] on the line of [a, b]
+        } else {
+            const int oa = orientation(u, v, a), ob = orientation(u, v, b);
+            if (oa == 0 || ob == 0) {
+                x = oa == 0 ? a : b;
+            } else {
+                const NT abx = b.x - a.x, aby = b.y - a.y;
+                const NT cu = abx * (u.y - a.y) - aby * (u.x - a.x);
+                const NT cv = abx * (v.y - a.y) - aby * (v.x - a.x);
+                const NT f = cu / (cu - cv);
+                x = point<NT>{NT(u.x + f * (v.x - u.x)), NT(u.y + f * (v.y - u.y))};
+            }
+        }
+        return {number_traits<NT>::from_double(0), x, x, part_of(x, a, b), part_of(x, u, v)};
+    }
+    segment_pair_closest<NT> best;
+    const segment_point<NT> from_a = closest_on_segment(a, u, v);
+    best = {from_a.squared, a, from_a.at, segment_part::start, from_a.part};
+    const segment_point<NT> from_b = closest_on_segment(b, u, v);
+    if (compare_values(from_b.squared, best.squared) < 0)
+        best = {from_b.squared, b, from_b.at, part_of(b, a, b), from_b.part};
+    const segment_point<NT> from_u = closest_on_segment(u, a, b);
+    if (compare_values(from_u.squared, best.squared) < 0)
+        best = {from_u.squared, from_u.at, u, from_u.part, segment_part::start};
+    const segment_point<NT> from_v = closest_on_segment(v, a, b);
+    if (compare_values(from_v.squared, best.squared) < 0)
+        best = {from_v.squared, from_v.at, v, from_v.part, part_of(v, u, v)};
+    return best;
+}
+
+/// The squared distance between the closed segments [a, b] and [u, v]
+/// (closest_between_segments): 0 when they meet.
+template <class NT>
+NT segment_squared_distance(const point<NT>& a, const point<NT>& b, const point<NT>& u, const point<NT>& v) {
+    return closest_between_segments(a, b, u, v).squared;
+}
+
+// ---------------------------------------------------------------------------
+// Rounding an exact value to double
+// ---------------------------------------------------------------------------
+
+/// A double and a power of two: the value y * 2^exponent.
+struct scaled_double {
+    double mantissa = 0;  ///< y, a double of magnitude in [2^-900, 2^900] (or 0)
+    int exponent = 0;     ///< an even power of two (a multiple of 600)
+};
+
+/// For x >= 0 in an exact NT: x = y 2^k, k a multiple of 600 (even), with y
+/// the double nearest to x 2^-k (ties to even), y in [2^-900, 2^900] or 0.
+/// Scaling by powers of two is exact in NT, so the only rounding is the
+/// nearest one of a value in double's normal range, whatever the magnitude of
+/// x (a squared distance of doubles lies between 2^-2148 and 2^2050).
+/// number_traits::to_double must give a double within a few units in the last
+/// place of the value (CGAL's rationals do); the neighbours are then compared
+/// exactly (compare_values of 2x against the sum of two adjacent doubles, no
+/// division).
+template <class NT>
+scaled_double scaled_nearest(const NT& x) {
+    using tr = number_traits<NT>;
+    if (tr::sign(x) == 0) return {};
+    NT y = x;
+    int k = 0;
+    const NT up = tr::from_double(0x1p600), down = tr::from_double(0x1p-600);
+    for (int step = 0; step < 8 && !(tr::to_double(y) >= 0x1p-900); ++step) {
+        y = NT(y * up);
+        k -= 600;
+    }
+    for (int step = 0; step < 8 && !(tr::to_double(y) <= 0x1p900); ++step) {
+        y = NT(y * down);
+        k += 600;
+    }
+    const NT twice = y + y;
+    const auto odd = [](double d) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &d, sizeof bits);
+        return (bits & 1) != 0;
+    };
+    double d = tr::to_double(y);
+    for (int step = 0; step < 64; ++step) {
+        const double above = std::nextafter(d, HUGE_VAL), below = std::nextafter(d, 0.0);
+        const int c_up = compare_values<NT>(twice, NT(tr::from_double(d) + tr::from_double(above)));
+        if (c_up > 0 || (c_up == 0 && odd(d))) {
+            d = above;
+            continue;
+        }
+        const int c_down = compare_values<NT>(twice, NT(tr::from_double(below) + tr::from_double(d)));
+        if (c_down < 0 || (c_down == 0 && odd(d))) {
+            d = below;
+            continue;
+        }
+        break;
+    }
+    return {d, k};
+}
+
+/// The double nearest to x in an exact NT (ties to even; in double's
+/// subnormal range, within one unit of the last place), its sign included:
+/// scaled_nearest of |x|, scaled back. Beyond double's range, infinity.
+template <class NT>
+double nearest_double(const NT& x) {
+    using tr = number_traits<NT>;
+    const int s = tr::sign(x);
+    const scaled_double r = scaled_nearest<NT>(s < 0 ? NT(tr::from_double(0) - x) : x);
+    return std::ldexp(s < 0 ? -r.mantissa : r.mantissa, r.exponent);
+}
+
+// ---------------------------------------------------------------------------
+// Bounds in double (filters)
+// ---------------------------------------------------------------------------
+
+/// The relative bound of posing_error. A coordinate posed in double,
+/// x = fl(fl(fl(c qx) - fl(s qy)) + tx), |c|, |s| <= 1, errs from
+/// c qx - s qy + tx (the exact pose with the same doubles c and s) by at most
+/// u |c qx| + u |s qy| (the products), u (1 + u)(|c qx| + |s qy|) (the
+/// difference) and u (1 + u)^2 (|c qx| + |s qy| + |tx|) (the sum), u = 2^-53:
+/// below 3.01 u (|qx| + |qy|) + 1.01 u |tx| <= 6.02 u scale + 1.01 u |tx| for
+/// |qx|, |qy| <= scale. 2^-50 = 8u times (scale + |tx| + |ty|) covers it and
+/// the two roundings of that sum (a fused multiply-add rounds once: less).
+inline constexpr double pose_rounding = 0x1p-50;
+/// What underflow may add to posing_error: each of the two products may lose
+/// 2^-1075 when subnormal (sums of subnormals are exact).
+inline constexpr double pose_underflow = 0x1p-1072;
+
+/// A bound, per coordinate, of the distance between a point of B (a vertex,
+/// or any point of its box: a node centre of its edge tree) posed in double by
+/// rotation_pose::apply<double> and the same point posed exactly, for B's
+/// largest absolute coordinate `moving_scale` and the translation (tx, ty).
+/// See pose_rounding.
+inline double posing_error(double moving_scale, double tx, double ty) {
+    return pose_rounding * (moving_scale + std::fabs(tx) + std::fabs(ty)) + pose_underflow;
+}
+
+/// A posed point within e of its exact place on each coordinate is within
+/// e sqrt 2 of it; 1.5 > sqrt 2 covers that and the rounding of 1.5 e.
+inline constexpr double posing_spread = 1.5;
+
+/// The relative bound of point_segment_estimate, on |ap|_1 + |ab|_1 (u =
+/// 2^-53). With the differences ab = b - a, ap = p - a rounded once each
+/// (relative u), t~ the computed (clamped) fraction and r = ap - t~ ab (exact
+/// differences), q = a + t~ (b - a) is a point of the segment:
+///   - the value: r~ = fl(ap~ - fl(t~ ab~)) errs from r by at most
+///     u |ap| + 2.01 u |ab| + u |r~| per coordinate (t~ <= 1), and
+///     filter_length adds 2.01 u |r~|; with |r|_1 <= |ap|_1 + |ab|_1, the value
+///     is within E1 = 4.03 u |ap|_1 + 5.04 u |ab|_1 of |p - q|;
+///   - the fraction: the dot product and |ab|^2 carry relative errors below
+///     4.01 u, so t~ (before clamping) errs from t0 = ab.ap / |ab|^2 by at
+///     most 5.01 u |ap| / |ab| + 12.01 u |t0| / 2 for |t0| <= 2 (beyond 2 both
+///     clamp to the same end); clamping is 1-Lipschitz, so
+///     |q - q*| <= Delta = 5.01 u |ap| + 12.01 u |ab| for the nearest point q*;
+///   - the distance D = |p - q*| <= |p - q| <= D + Delta.
+/// In all |value - D| <= E1 + Delta < 18 u (|ap|_1 + |ab|_1) < 2^-48 (...).
+/// 2^-47 doubles that for the rounding of the bound itself. Underflow: the
+/// differences are first brought to magnitudes within [2^-200, 2^200] (an
+/// exact scaling by a power of two when they are not), where a lost
+/// subnormal bit is below 2^-470 of the largest difference, far inside the
+/// room left; an edge shorter than degenerate_edge_share of the largest
+/// difference is taken as its end a, adding its length |ab|_1 to the bound.
+inline constexpr double point_segment_rounding = 0x1p-47;
+/// See point_segment_rounding: below this share of the largest difference,
+/// |ab|^2 might underflow; the edge is taken as the point a.
+inline constexpr double degenerate_edge_share = 0x1p-100;
+
+/// A value in double with a bound of its distance to the exact one.
+struct estimate {
+    double value = 0;  ///< the value computed in double
+    double error = 0;  ///< bounds |value - exact| (infinity: nothing known)
+};
+
+/// The distance from p to the closed segment [a, b], every point an exact
+/// double, computed in double, with a proven bound of its error (see
+/// point_segment_rounding). A difference that overflows gives value 0 and an
+/// infinite error.
+inline estimate point_segment_estimate(const point<double>& p, const point<double>& a, const point<double>& b) {
+    double abx = b.x - a.x, aby = b.y - a.y, apx = p.x - a.x, apy = p.y - a.y;
+    // (Not finite, or so large that their sum overflows: nothing known.)
+    if (!std::isfinite(abx + aby + apx + apy)) return {0, HUGE_VAL};
+    const double big = std::max({std::fabs(abx), std::fabs(aby), std::fabs(apx), std::fabs(apy)});
+    if (big == 0) return {0, 0};  // (a difference of doubles is 0 only when they are equal)
+    int e = 0;
+    if (!(big >= 0x1p-200 && big <= 0x1p200)) {
+        e = std::ilogb(big);
+        abx = std::ldexp(abx, -e), aby = std::ldexp(aby, -e), apx = std::ldexp(apx, -e), apy = std::ldexp(apy, -e);
+    }
+    const double ab1 = std::fabs(abx) + std::fabs(aby), ap1 = std::fabs(apx) + std::fabs(apy);
+    double t = 0, extra = 0;
+    if (ab1 < degenerate_edge_share * std::max(ab1, ap1)) {
+        extra = ab1;
+    } else {
+        t = (abx * apx + aby * apy) / (abx * abx + aby * aby);
+        t = std::min(1.0, std::max(0.0, t));
+    }
+    const double d = filter_length(apx - t * abx, apy - t * aby);
+    const double error = point_segment_rounding * (ab1 + ap1) + extra;
+    if (e == 0) return {d, error};
+    return {std::ldexp(d, e), std::ldexp(error, e)};
+}
+
+/// The relative widening of the sums and differences that turn estimates into
+/// the bounds of segment_distance_range and node_gap_lower: each of them
+/// rounds a few times (relative u = 2^-53 each); 2^-50 = 8u covers them.
+inline constexpr double bound_rounding = 0x1p-50;
+
+/// A lower and an upper bound of a distance.
+struct distance_range {
+    double lower = 0;         ///< at most the distance
+    double upper = HUGE_VAL;  ///< at least the distance
+};
+
+/// Bounds of the distance between the closed segment [a, b] (exact doubles)
+/// and a segment whose exact ends lie within `delta` per coordinate of u and
+/// v (B's edge, posed in double; delta from posing_error).
+///
+/// Write D for the distance to the exact segment and D~ for the distance
+/// between [a, b] and [u, v] as doubles. Moving each end by at most
+/// delta sqrt 2 moves every point of a segment by at most that (a convex
+/// combination), so |D - D~| <= delta sqrt 2 < posing_spread delta. D~ is at
+/// most each of the four end-to-segment distances m_k (point_segment_estimate,
+/// within error E_k), and equal to their least when the segments do not meet:
+///   - upper: min_k m_k + max_k E_k + 1.5 delta; and when [u, v] certainly
+///     crosses [a, b] (certain_side on both lines, exact signs of the double
+///     points), D~ = 0 and the upper bound is 1.5 delta;
+///   - lower: when the double segments certainly do not meet
+///     (segments_may_meet with no margin is false), min_k m_k - max_k E_k -
+///     1.5 delta; otherwise the gap between their boxes (a distance is at least
+///     its projection on an axis) less 1.5 delta; never below 0.
+/// Every bound is widened by bound_rounding for its own rounding.
+inline distance_range segment_distance_range(const point<double>& a, const point<double>& b, const point<double>& u,
+                                             const point<double>& v, double delta) {
+    // (A posed end beyond double's range: nothing known.)
+    if (!std::isfinite(u.x + u.y + v.x + v.y)) return {};
+    const double spread = posing_spread * delta * (1 + bound_rounding);
+    // Certain crossing of the double segments: D~ = 0.
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const int su = certain_side(a, dx, dy, u, 0), sv = certain_side(a, dx, dy, v, 0);
+    if (su != 0 && sv == -su) {
+        const double ex = v.x - u.x, ey = v.y - u.y;
+        const int sa = certain_side(u, ex, ey, a, 0), sb = certain_side(u, ex, ey, b, 0);
+        if (sa != 0 && sb == -sa) return {0, spread};
+    }
+    const estimate ms[4] = {point_segment_estimate(a, u, v), point_segment_estimate(b, u, v),
+                            point_segment_estimate(u, a, b), point_segment_estimate(v, a, b)};
+    double least = ms[0].value, error = ms[0].error;
+    for (const estimate& m : ms) {
+        least = std::min(least, m.value);
+        error = std::max(error, m.error);
+    }
+    distance_range r;
+    r.upper = (least + error) * (1 + bound_rounding) + spread;
+    double lower;
+    if (!segments_may_meet(a, b, u, v, 0)) {
+        lower = least * (1 - bound_rounding) - error * (1 + bound_rounding);
+    } else {
+        const double gx = std::max({0.0, std::min(u.x, v.x) - std::max(a.x, b.x), std::min(a.x, b.x) - std::max(u.x, v.x)});
+        const double gy = std::max({0.0, std::min(u.y, v.y) - std::max(a.y, b.y), std::min(a.y, b.y) - std::max(u.y, v.y)});
+        lower = std::max(gx, gy) * (1 - bound_rounding);
+    }
+    lower -= spread;
+    // (NaN: nothing known.)
+    r.lower = lower > 0 ? lower : 0;
+    if (!(r.upper >= 0)) r.upper = HUGE_VAL;
+    return r;
+}
+
+/// The relative bound of node_gap_lower on g + r (u = 2^-53): the gap g~
+/// from the posed centre to the box is within 3.2 u g of its true value (a
+/// rounded difference per axis, then filter_length); the radius grows by the
+/// pose's scale sqrt(c^2 + s^2) < 1 + 2^-52; the three roundings of
+/// g - r - bound add 3 u (g + r) at most. In all below 6.3 u (g + r):
+/// 2^-49 = 16 u covers it.
+inline constexpr double node_gap_rounding = 0x1p-49;
+
+/// A lower bound of the distance between the box `bounds` (exact) and every
+/// point within `radius` of a centre whose exact posed place lies within
+/// `delta` per coordinate of `center` (a node of B's edge tree, its centre
+/// posed in double): the distance from center to the box, less the radius,
+/// less posing_spread delta, less node_gap_rounding (g + r). May be negative;
+/// -infinity when the centre is not finite.
+inline double node_gap_lower(const box& bounds, const point<double>& center, double radius, double delta) {
+    if (!std::isfinite(center.x + center.y)) return -HUGE_VAL;
+    const double gx = std::max({bounds.min_x - center.x, 0.0, center.x - bounds.max_x});
+    const double gy = std::max({bounds.min_y - center.y, 0.0, center.y - bounds.max_y});
+    const double g = filter_length(gx, gy);
+    return g - radius - (node_gap_rounding * (g + radius) + posing_spread * delta * (1 + bound_rounding));
+}
+
+/// The distance between two boxes (0 when they meet), rounded down: a lower
+/// bound of the distance between any point of one and any of the other.
+inline double box_gap_lower(const box& p, const box& q) {
+    const double gx = std::max({0.0, q.min_x - p.max_x, p.min_x - q.max_x});
+    const double gy = std::max({0.0, q.min_y - p.max_y, p.min_y - q.max_y});
+    return std::max(gx, gy) * (1 - bound_rounding);
+}
+
+}  // namespace influence2d
