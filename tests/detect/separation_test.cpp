@@ -247,6 +247,7 @@ const cell family_cells[] = {
     {verification::family::with_hole, 16, verification::family::irregular, 64},
     {verification::family::contour, 64, verification::family::with_hole, 32},
     {verification::family::starred, 256, verification::family::convex, 8},
+    {verification::family::with_hole, 1024, verification::family::irregular, 8},
 };
 
 }  // namespace
@@ -382,11 +383,11 @@ TEST_CASE("separation: the families under random, touching, grazing, sliding and
     for (const cell& k : family_cells) {
         const polygon& a = test_families::load(k.fa, k.n);
         const polygon& b = test_families::load(k.fb, k.m);
-        const std::size_t frames = static_cast<std::size_t>(test_effort::scaled(12));
+        const std::size_t frames = static_cast<std::size_t>(test_effort::scaled(30));
         for (double inner : {0.4, 0.9})
             for (const pose& q : test_poses::near_contact(a, b, frames, inner, 0, k.n * 7 + k.m)) check_frame(a, b, q, t);
         // Touching (exact on the families' grid) and one ulp away: grazes.
-        for (const pose& q : test_poses::touching(a, b, g, static_cast<std::size_t>(test_effort::scaled(3))))
+        for (const pose& q : test_poses::touching(a, b, g, static_cast<std::size_t>(test_effort::scaled(6))))
             check_frame(a, b, q, t);
         // Far: beyond both bounding circles.
         for (const pose& q : random_poses(a, b, 2, 2.5 * test_poses::reach(a, b), 4 * test_poses::reach(a, b), k.m))
@@ -418,7 +419,7 @@ TEST_CASE("separation: random multipolygons with parts inside the other, and rin
           "[separation][reference]") {
     using test_scenes::rng;
     tally t;
-    const int scenes = test_effort::scaled(10);
+    const int scenes = test_effort::scaled(30);
     for (int k = 0; k < scenes; ++k) {
         rng g(0x5e9b + static_cast<std::uint64_t>(k));
         test_scenes::multi ma = test_scenes::random_multi(g, 30, 8), mb = test_scenes::random_swallower(g);
@@ -466,7 +467,7 @@ TEST_CASE("separation: far from 1 in scale, the exact modes stay exact", "[separ
         };
         const polygon a = scaled(a0), b = scaled(b0);
         test_random::rng g(static_cast<std::uint64_t>(e + 1000));
-        std::vector<pose> poses = test_poses::near_contact(a0, b0, static_cast<std::size_t>(test_effort::scaled(10)), 0.9, 0, 17);
+        std::vector<pose> poses = test_poses::near_contact(a0, b0, static_cast<std::size_t>(test_effort::scaled(20)), 0.9, 0, 17);
         for (const pose& q : test_poses::touching(a0, b0, g, 2)) poses.push_back(q);
         for (pose q : poses) {
             q.tx = std::ldexp(q.tx, e);
@@ -488,9 +489,9 @@ TEST_CASE("separation: prepared polygons and separation_query answer as the one-
     separation_query<ER> query(A, B);
     separation_query<double> fast(a, b);
     // An approach (apart, near contact, overlapping) and random jumps.
-    std::vector<pose> poses = test_poses::approach(a, b, static_cast<std::size_t>(test_effort::scaled(40)),
+    std::vector<pose> poses = test_poses::approach(a, b, static_cast<std::size_t>(test_effort::scaled(60)),
                                                    test_poses::approach_path{0.3, 0.5, 0.1, 1.0});
-    for (const pose& q : test_poses::near_contact(a, b, static_cast<std::size_t>(test_effort::scaled(20)), 0.4, 0, 3))
+    for (const pose& q : test_poses::near_contact(a, b, static_cast<std::size_t>(test_effort::scaled(40)), 0.4, 0, 3))
         poses.push_back(q);
     std::size_t meet = 0;
     for (const pose& q : poses) {
@@ -516,7 +517,7 @@ TEST_CASE("separation: prepared polygons and separation_query answer as the one-
 
 TEST_CASE("separation: swapped roles and translated scenes give the same exact distance", "[separation]") {
     using test_scenes::rng;
-    for (int k = 0; k < test_effort::scaled(8); ++k) {
+    for (int k = 0; k < test_effort::scaled(20); ++k) {
         rng g(0x5e9c + static_cast<std::uint64_t>(k));
         const polygon a = test_scenes::random_multi(g, 12, 5).to_polygon();
         const polygon b = test_scenes::random_multi(g, 6, 3).to_polygon();

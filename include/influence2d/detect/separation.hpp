@@ -87,7 +87,9 @@ inline std::size_t input_vertex(const polygon& shape, std::size_t i) {
 }
 
 /// B's vertices posed in T (double for the filters, NT for the decisions),
-/// each on first use within a frame.
+/// each on first use within a frame. In a T other than double a vertex is
+/// made only when asked (an exact number costs allocations), and the whole
+/// array only when all() asks for it.
 template <class T>
 class posed_vertices {
 public:
@@ -105,20 +107,36 @@ public:
             at_[j] = pose_.apply<T>(shape_->vertex(j));
             stamp_[j] = frame_;
         }
-        return at_[j];
+        if constexpr (std::is_same_v<T, double>) {
+            return at_[j];
+        } else {
+            return *at_[j];
+        }
     }
     /// Every vertex posed.
     const std::vector<point<T>>& all() {
-        for (std::size_t j = 0; j < at_.size(); ++j) (*this)[j];
-        return at_;
+        if constexpr (std::is_same_v<T, double>) {
+            for (std::size_t j = 0; j < at_.size(); ++j) (*this)[j];
+            return at_;
+        } else {
+            if (all_frame_ != frame_) {
+                all_.clear();
+                all_.reserve(at_.size());
+                for (std::size_t j = 0; j < at_.size(); ++j) all_.push_back((*this)[j]);
+                all_frame_ = frame_;
+            }
+            return all_;
+        }
     }
 
 private:
+    using slot = std::conditional_t<std::is_same_v<T, double>, point<T>, std::optional<point<T>>>;
     const polygon* shape_;
     rotation_pose pose_{::influence2d::pose{}};
-    std::uint64_t frame_ = 0;
-    std::vector<point<T>> at_;
+    std::uint64_t frame_ = 0, all_frame_ = 0;
+    std::vector<slot> at_;
     std::vector<std::uint64_t> stamp_;
+    std::vector<point<T>> all_;
 };
 
 /// What phase 1 keeps between calls (its stack and candidates), so that a
@@ -195,6 +213,8 @@ double search_pairs(const search_input& in, Approx& approx, double upper, search
                 for (std::uint32_t i = s.first; i < s.first + s.count; ++i) {
                     if (box_gap_lower(ta.edge_box_at(i), fb) - spread > upper) continue;
                     const std::uint32_t e = ta.edge_at(i);
+                    // Separated by a line with more than 2 U to spare: farther than U.
+                    if (!segments_may_meet(in.a.vertex(e), in.a.vertex(in.a.next(e)), u, v, upper)) continue;
                     const distance_range r =
                         segment_distance_range(in.a.vertex(e), in.a.vertex(in.a.next(e)), u, v, in.delta);
                     upper = std::min(upper, r.upper);
@@ -245,27 +265,24 @@ struct chosen_pair {
     bool found = false;
 };
 
-/// Phase 2: the candidates evaluated in NT (closest_between_segments) in
-/// the order evaluated_before, until the next lower bound exceeds the best
-/// distance found (upper_distance); the least squared distance wins, and
-/// among equal ones the least (A's edge, B's edge). Every pair at the least
-/// distance has a lower bound at most that distance, so all of them are
-/// evaluated and the choice does not depend on how phase 1 found them. A
-/// pair at distance 0 ends the loop: every pair at distance 0 has lower bound
-/// 0 and so comes, in edge order, before any other. a_vertex(i) and
-/// b_vertex(j) give A's vertex and B's posed vertex in NT; `evaluated`
-/// counts the pairs evaluated.
-template <class NT, class AVertex, class BVertex>
-chosen_pair<NT> closest_candidate(const std::vector<candidate>& cs, const polygon& a, const polygon& b,
-                                  AVertex&& a_vertex, BVertex&& b_vertex, std::size_t& evaluated) {
+/// Phase 2: the candidates evaluated in NT (evaluate(e, f), the pair's
+/// closest_between_segments) in the order evaluated_before, until the next
+/// lower bound exceeds the best distance found (upper_distance); the least
+/// squared distance wins, and among equal ones the least (A's edge, B's
+/// edge). Every pair at the least distance has a lower bound at most that
+/// distance, so all of them are evaluated and the choice does not depend on
+/// how phase 1 found them. A pair at distance 0 ends the loop: every pair at
+/// distance 0 has lower bound 0 and so comes, in edge order, before any
+/// other. `evaluated` counts the pairs evaluated.
+template <class NT, class Evaluate>
+chosen_pair<NT> closest_candidate(const std::vector<candidate>& cs, Evaluate&& evaluate, std::size_t& evaluated) {
     chosen_pair<NT> best;
     double reach = HUGE_VAL;
     for (const candidate& c : cs) {
         if (best.found && c.lower > reach) break;
         ++evaluated;
         const std::uint32_t e = c.static_edge, f = c.moving_edge;
-        segment_pair_closest<NT> d =
-            closest_between_segments<NT>(a_vertex(e), a_vertex(a.next(e)), b_vertex(f), b_vertex(b.next(f)));
+        segment_pair_closest<NT> d = evaluate(e, f);
         const int order = best.found ? compare_values(d.squared, best.closest.squared) : -1;
         if (order < 0 || (order == 0 && (e < best.static_edge || (e == best.static_edge && f < best.moving_edge)))) {
             best.closest = std::move(d);
@@ -277,6 +294,23 @@ chosen_pair<NT> closest_candidate(const std::vector<candidate>& cs, const polygo
         if (number_traits<NT>::sign(best.closest.squared) == 0) break;
     }
     return best;
+}
+
+/// The closest points of A's edge e and B's edge f in NT, a_vertex(i) and
+/// b_vertex(j) giving A's vertex and B's posed vertex in NT: in a floating
+/// NT directly; in another, with the choice among the candidates made in
+/// double where the bounds settle it (the filtered
+/// closest_between_segments, on B's vertices posed in double by `approx`).
+template <class NT, class Approx, class AVertex, class BVertex>
+segment_pair_closest<NT> pair_closest(const search_input& in, Approx& approx, AVertex& a_vertex, BVertex& b_vertex,
+                                      std::uint32_t e, std::uint32_t f) {
+    const std::size_t e2 = in.a.next(e), f2 = in.b.next(f);
+    if constexpr (number_traits<NT>::category == number_category::floating) {
+        return closest_between_segments<NT>(a_vertex(e), a_vertex(e2), b_vertex(f), b_vertex(f2));
+    } else {
+        return closest_between_segments<NT>(in.a.vertex(e), in.a.vertex(e2), approx[f], approx[f2], in.delta,
+                                            a_vertex(e), a_vertex(e2), b_vertex(f), b_vertex(f2));
+    }
 }
 
 /// A ring's first vertex lying in the other polygon's closed region: B's
@@ -443,7 +477,9 @@ separation_result<NT> separate(static_side<NT>& side, const search_input& in, wo
     const auto a_vertex = [&](std::size_t i) { return side.vertex(i); };
     search_pairs(in, w.approx, pair_upper(in, w.approx, w.last), w.space);
     w.evaluated = 0;
-    const chosen_pair<NT> best = closest_candidate<NT>(w.space.candidates, in.a, in.b, a_vertex, b_vertex, w.evaluated);
+    const chosen_pair<NT> best = closest_candidate<NT>(
+        w.space.candidates, [&](std::uint32_t e, std::uint32_t f) { return pair_closest<NT>(in, w.approx, a_vertex, b_vertex, e, f); },
+        w.evaluated);
     INFLUENCE2D_ASSERT(best.found, "phase 1 left no candidate");
     w.last = std::make_pair(best.static_edge, best.moving_edge);
     if (number_traits<NT>::sign(best.closest.squared) == 0) return pair_result(in.a, in.b, best);
@@ -622,8 +658,10 @@ inline certified_separation_result certified_separation(const polygon& a, const 
     search_pairs(in, w.approx, HUGE_VAL, w.space);
     const auto a_vertex = [&](std::size_t i) { return separation_detail::in<exact_rational>(a.vertex(i)); };
     const auto b_vertex = [&](std::size_t j) -> const point<exact_rational>& { return w.exact[j]; };
-    const chosen_pair<exact_rational> best =
-        closest_candidate<exact_rational>(w.space.candidates, a, b, a_vertex, b_vertex, w.evaluated);
+    const chosen_pair<exact_rational> best = closest_candidate<exact_rational>(
+        w.space.candidates,
+        [&](std::uint32_t e, std::uint32_t f) { return pair_closest<exact_rational>(in, w.approx, a_vertex, b_vertex, e, f); },
+        w.evaluated);
     separation_result<exact_rational> exact;
     if (CGAL::sign(best.closest.squared) == 0) {
         exact = pair_result(a, b, best);

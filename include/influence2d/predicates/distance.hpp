@@ -92,6 +92,59 @@ struct segment_pair_closest {
     segment_part second_part = segment_part::start;  ///< where on_second lies on the second segment
 };
 
+namespace detail {
+
+/// The common point of [a, b] and [u, v], which meet (ou, ov: the
+/// orientations of u and v against [a, b]); see closest_between_segments.
+template <class NT>
+segment_pair_closest<NT> meeting_point(const point<NT>& a, const point<NT>& b, const point<NT>& u,
+                                       const point<NT>& v, int ou, int ov) {
+    point<NT> x;
+    if (ou == 0 && ov == 0) {
+        // Collinear (or a == b): one of the four ends lies on the other segment.
+        x = on_segment(a, u, v) ? a : on_segment(b, u, v) ? b : on_segment(u, a, b) ? u : v;
+    } else if (ou == 0 || ov == 0) {
+        x = ou == 0 ? u : v;  // the one point of [u, v] on the line of [a, b]
+    } else {
+        const int oa = orientation(u, v, a), ob = orientation(u, v, b);
+        if (oa == 0 || ob == 0) {
+            x = oa == 0 ? a : b;
+        } else {
+            const NT abx = b.x - a.x, aby = b.y - a.y;
+            const NT cu = abx * (u.y - a.y) - aby * (u.x - a.x);
+            const NT cv = abx * (v.y - a.y) - aby * (v.x - a.x);
+            const NT f = cu / (cu - cv);
+            x = point<NT>{NT(u.x + f * (v.x - u.x)), NT(u.y + f * (v.y - u.y))};
+        }
+    }
+    return {number_traits<NT>::from_double(0), x, x, part_of(x, a, b), part_of(x, u, v)};
+}
+
+/// For [a, b] and [u, v] that do not meet: the least of the end-to-segment
+/// candidates k (0: a to [u, v], 1: b to [u, v], 2: u to [a, b], 3: v to
+/// [a, b]) for which may_be_least(k), the first of them on a tie. A
+/// candidate left out must not be the least nor tie with it.
+template <class NT, class MayBeLeast>
+segment_pair_closest<NT> least_end_distance(const point<NT>& a, const point<NT>& b, const point<NT>& u,
+                                            const point<NT>& v, MayBeLeast&& may_be_least) {
+    segment_pair_closest<NT> best;
+    bool found = false;
+    for (int k = 0; k < 4; ++k) {
+        if (!may_be_least(k)) continue;
+        const point<NT>& p = k == 0 ? a : k == 1 ? b : k == 2 ? u : v;
+        segment_point<NT> c = k < 2 ? closest_on_segment(p, u, v) : closest_on_segment(p, a, b);
+        if (found && compare_values(c.squared, best.squared) >= 0) continue;
+        found = true;
+        if (k < 2)
+            best = {std::move(c.squared), p, std::move(c.at), k == 0 ? segment_part::start : part_of(b, a, b), c.part};
+        else
+            best = {std::move(c.squared), std::move(c.at), p, c.part, k == 2 ? segment_part::start : part_of(v, u, v)};
+    }
+    return best;
+}
+
+}  // namespace detail
+
 /// A closest pair of points of the closed segments [a, b] and [u, v]
 /// (zero-length segments allowed), in a field NT.
 ///
@@ -111,40 +164,8 @@ template <class NT>
 segment_pair_closest<NT> closest_between_segments(const point<NT>& a, const point<NT>& b, const point<NT>& u,
                                                   const point<NT>& v) {
     const int ou = orientation(a, b, u), ov = orientation(a, b, v);
-    if (segments_intersect(ou, ov, a, b, u, v)) {
-        point<NT> x;
-        if (ou == 0 && ov == 0) {
-            // Collinear (or a == b): one of the four ends lies on the other segment.
-            x = on_segment(a, u, v) ? a : on_segment(b, u, v) ? b : on_segment(u, a, b) ? u : v;
-        } else if (ou == 0 || ov == 0) {
-            x = ou == 0 ? u : v;  // the one point of [u, v] on the line of [a, b]
-        } else {
-            const int oa = orientation(u, v, a), ob = orientation(u, v, b);
-            if (oa == 0 || ob == 0) {
-                x = oa == 0 ? a : b;
-            } else {
-                const NT abx = b.x - a.x, aby = b.y - a.y;
-                const NT cu = abx * (u.y - a.y) - aby * (u.x - a.x);
-                const NT cv = abx * (v.y - a.y) - aby * (v.x - a.x);
-                const NT f = cu / (cu - cv);
-                x = point<NT>{NT(u.x + f * (v.x - u.x)), NT(u.y + f * (v.y - u.y))};
-            }
-        }
-        return {number_traits<NT>::from_double(0), x, x, part_of(x, a, b), part_of(x, u, v)};
-    }
-    segment_pair_closest<NT> best;
-    const segment_point<NT> from_a = closest_on_segment(a, u, v);
-    best = {from_a.squared, a, from_a.at, segment_part::start, from_a.part};
-    const segment_point<NT> from_b = closest_on_segment(b, u, v);
-    if (compare_values(from_b.squared, best.squared) < 0)
-        best = {from_b.squared, b, from_b.at, part_of(b, a, b), from_b.part};
-    const segment_point<NT> from_u = closest_on_segment(u, a, b);
-    if (compare_values(from_u.squared, best.squared) < 0)
-        best = {from_u.squared, from_u.at, u, from_u.part, segment_part::start};
-    const segment_point<NT> from_v = closest_on_segment(v, a, b);
-    if (compare_values(from_v.squared, best.squared) < 0)
-        best = {from_v.squared, from_v.at, v, from_v.part, part_of(v, u, v)};
-    return best;
+    if (segments_intersect(ou, ov, a, b, u, v)) return detail::meeting_point(a, b, u, v, ou, ov);
+    return detail::least_end_distance(a, b, u, v, [](int) { return true; });
 }
 
 /// The squared distance between the closed segments [a, b] and [u, v]
@@ -169,10 +190,11 @@ struct scaled_double {
 /// Scaling by powers of two is exact in NT, so the only rounding is the
 /// nearest one of a value in double's normal range, whatever the magnitude of
 /// x (a squared distance of doubles lies between 2^-2148 and 2^2050).
-/// number_traits::to_double must give a double within a few units in the last
-/// place of the value (CGAL's rationals do); the neighbours are then compared
-/// exactly (compare_values of 2x against the sum of two adjacent doubles, no
-/// division).
+/// number_traits::to_double must give a double d within a few units in the
+/// last place of the value (CGAL's rationals do: within one); the nearest is
+/// then found by exact signs: the offset x 2^-k - d against half the gap to
+/// the neighbour on its side (a power of two), one subtraction and one
+/// comparison a step, no division.
 template <class NT>
 scaled_double scaled_nearest(const NT& x) {
     using tr = number_traits<NT>;
@@ -188,7 +210,6 @@ scaled_double scaled_nearest(const NT& x) {
         y = NT(y * down);
         k += 600;
     }
-    const NT twice = y + y;
     const auto odd = [](double d) {
         std::uint64_t bits;
         std::memcpy(&bits, &d, sizeof bits);
@@ -196,18 +217,14 @@ scaled_double scaled_nearest(const NT& x) {
     };
     double d = tr::to_double(y);
     for (int step = 0; step < 64; ++step) {
-        const double above = std::nextafter(d, HUGE_VAL), below = std::nextafter(d, 0.0);
-        const int c_up = compare_values<NT>(twice, NT(tr::from_double(d) + tr::from_double(above)));
-        if (c_up > 0 || (c_up == 0 && odd(d))) {
-            d = above;
-            continue;
-        }
-        const int c_down = compare_values<NT>(twice, NT(tr::from_double(below) + tr::from_double(d)));
-        if (c_down < 0 || (c_down == 0 && odd(d))) {
-            d = below;
-            continue;
-        }
-        break;
+        const NT offset = y - tr::from_double(d);
+        const int side = tr::sign(offset);
+        if (side == 0) break;
+        const double neighbour = std::nextafter(d, side > 0 ? HUGE_VAL : 0.0);
+        const double half = (neighbour - d) / 2;  // exact: a power of two
+        const int beyond = compare_values<NT>(offset, tr::from_double(half)) * side;
+        if (beyond < 0 || (beyond == 0 && !odd(d))) break;
+        d = neighbour;
     }
     return {d, k};
 }
@@ -378,6 +395,32 @@ inline distance_range segment_distance_range(const point<double>& a, const point
     r.lower = lower > 0 ? lower : 0;
     if (!(r.upper >= 0)) r.upper = HUGE_VAL;
     return r;
+}
+
+/// closest_between_segments of A, B (exact doubles a, b in NT) and U, V (in
+/// NT, within `delta` per coordinate of the doubles u, v: B's edge posed
+/// exactly and in double), with the same answer at less cost in an exact NT:
+/// when segments_may_meet(a, b, u, v, delta) is false the exact segments do
+/// not meet, and an end-to-segment candidate whose lower bound (its
+/// point_segment_estimate on the doubles, less its error and posing_spread
+/// delta) exceeds another's upper bound is neither the least nor tied with
+/// it, so it is not evaluated in NT. Otherwise, closest_between_segments.
+template <class NT>
+segment_pair_closest<NT> closest_between_segments(const point<double>& a, const point<double>& b,
+                                                  const point<double>& u, const point<double>& v, double delta,
+                                                  const point<NT>& A, const point<NT>& B, const point<NT>& U,
+                                                  const point<NT>& V) {
+    if (segments_may_meet(a, b, u, v, delta)) return closest_between_segments(A, B, U, V);
+    const estimate ms[4] = {point_segment_estimate(a, u, v), point_segment_estimate(b, u, v),
+                            point_segment_estimate(u, a, b), point_segment_estimate(v, a, b)};
+    const double spread = posing_spread * delta * (1 + bound_rounding);
+    double cut = HUGE_VAL;
+    for (const estimate& m : ms) cut = std::min(cut, (m.value + m.error) * (1 + bound_rounding) + spread);
+    return detail::least_end_distance(A, B, U, V, [&](int k) {
+        const estimate& m = ms[k];
+        // (NaN or an infinite error: evaluated.)
+        return !(m.value * (1 - bound_rounding) - m.error * (1 + bound_rounding) - spread > cut);
+    });
 }
 
 /// The relative bound of node_gap_lower on g + r (u = 2^-53): the gap g~
