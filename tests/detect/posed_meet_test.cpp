@@ -55,7 +55,7 @@ std::vector<point<exact_rational>> placed_exactly(const polygon& shape, const po
 TEST_CASE("both moving: pure translations equal the relative one-pose scene", "[posed_meet][reference]") {
     // With both poses translations on the grid, B's pose in A's frame is
     // the exact difference, and the one-pose reference answers the scene.
-    const int scenes = test_effort::scaled(20);
+    const int scenes = test_effort::scaled(40);
     std::size_t meet = 0, frames = 0;
     for (int k = 0; k < scenes; ++k) {
         test_scenes::rng g(0xb07ULL + static_cast<std::uint64_t>(k));
@@ -81,7 +81,7 @@ TEST_CASE("both moving: pure translations equal the relative one-pose scene", "[
 
 TEST_CASE("both moving: random poses against both polygons placed exactly", "[posed_meet][reference]") {
     using test_families::family;
-    const int poses = test_effort::scaled(16);
+    const int poses = test_effort::scaled(48);
     std::size_t meet = 0, frames = 0, double_agrees = 0;
     test_scenes::rng g(0x2b0ULL);
     const auto check = [&](const polygon& a, const polygon& b, const pose& pa, const pose& pb) {
@@ -96,7 +96,7 @@ TEST_CASE("both moving: random poses against both polygons placed exactly", "[po
         meet += expected;
     };
     for (family f : verification::all_families)
-        for (std::size_t n : {8u, 64u}) {
+        for (std::size_t n : {8u, 64u, 256u}) {
             const polygon& a = test_families::load(f, n);
             const polygon& b = test_families::load(f, 8);
             const double reach = 50 + 50;  // every family vertex lies within 50 of the origin
@@ -106,7 +106,7 @@ TEST_CASE("both moving: random poses against both polygons placed exactly", "[po
                 check(a, b, pa, random_pose(g, {pa.tx + rho * std::cos(phi), pa.ty + rho * std::sin(phi)}, 0, true));
             }
         }
-    for (int k = 0; k < test_effort::scaled(12); ++k) {
+    for (int k = 0; k < test_effort::scaled(30); ++k) {
         const test_scenes::multi ma = test_scenes::random_multi(g, 20, 8), mb = test_scenes::random_swallower(g);
         const polygon a = ma.to_polygon(), b = mb.to_polygon();
         for (int f = 0; f < 6; ++f) {

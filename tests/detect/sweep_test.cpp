@@ -17,6 +17,8 @@
 #include "support/random_scenes.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <initializer_list>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -152,6 +154,28 @@ std::pair<pose, pose> random_translation(const polygon& a, const polygon& b, tes
     return {test_scenes::aimed(cb, start, theta), test_scenes::aimed(cb, end, theta)};
 }
 
+/// Calls check(a, b, from, to) for `motions` random translations
+/// (random_translation) of every family's A of n vertices against its B of
+/// m, for n in `as` and m in `bs` (renumbered), B turned over the motion by
+/// up to `turn` radians either way.
+template <class Check>
+void family_motions(std::initializer_list<std::size_t> as, std::initializer_list<std::size_t> bs, int motions,
+                    std::uint64_t seed, double turn, Check&& check) {
+    test_scenes::rng g(seed);
+    for (test_families::family f : verification::all_families)
+        for (std::size_t n : as)
+            for (std::size_t m : bs) {
+                const polygon a = renumbered(test_families::load(f, n));
+                const polygon b = renumbered(test_families::load(f, m));
+                const double reach = test_poses::reach(a, b);
+                for (int k = 0; k < motions; ++k) {
+                    auto [from, to] = random_translation(a, b, g, reach);
+                    if (turn > 0) to.theta = from.theta + g.uniform(-turn, turn);
+                    check(a, b, from, to);
+                }
+            }
+}
+
 }  // namespace
 
 TEST_CASE("sweep: the tunneling square is caught", "[sweep]") {
@@ -278,21 +302,11 @@ TEST_CASE("sweep: input numbering of features on rings stored reversed", "[sweep
 }
 
 TEST_CASE("sweep: random translations of the families against the reference", "[sweep][reference]") {
-    using test_families::family;
     tally t;
-    const int motions = test_effort::scaled(16);
-    test_scenes::rng g(0x5eedULL);
-    for (family f : verification::all_families)
-        for (std::size_t n : {8u, 64u, 256u})
-            for (std::size_t m : {8u, 64u}) {
-                const polygon a = renumbered(test_families::load(f, n));
-                const polygon b = renumbered(test_families::load(f, m));
-                const double reach = test_poses::reach(a, b);
-                for (int k = 0; k < motions; ++k) {
-                    const auto [from, to] = random_translation(a, b, g, reach);
-                    check_translation(a, b, from, to, t);
-                }
-            }
+    family_motions({8, 64, 256}, {8, 64}, test_effort::scaled(16), 0x5eedULL, 0,
+                   [&](const polygon& a, const polygon& b, const pose& from, const pose& to) {
+                       check_translation(a, b, from, to, t);
+                   });
     INFO("worst error of the double time: " << t.worst_double);
     WARN("random translations of the families: " << t.motions << " motions, " << t.at_start << " meeting at the start, "
          << t.later << " later, " << t.none << " never; worst error of the double time " << t.worst_double);
@@ -446,4 +460,98 @@ TEST_CASE("exit distance: random overlaps of multipolygons against the reference
         }
     }
     CHECK(deep > static_cast<std::size_t>(scenes));
+}
+
+namespace {
+
+/// Counts of the turning motions.
+struct turning_tally {
+    std::size_t motions = 0, sampled = 0, reported = 0;
+};
+
+/// A motion that turns, against dense sampling with the exact one-shot
+/// query at motion_pose(t): every sampled contact is reported, no later
+/// than the first sampled one and with no sampled contact before it; at the
+/// reported time the exact distance is within the tolerance; certified
+/// takes the same steps as exact_rational (the same time and features);
+/// double reports a contact whenever a sample meets.
+void check_turning(const polygon& a, const polygon& b, const pose& from, const pose& to, turning_tally& t) {
+    INFO(describe(a, b, from, to));
+    const sweep_options options;
+    const contact_result<exact_rational> ex = first_contact<exact_rational>(a, b, from, to, options);
+    const contact_result<double> ce = certified_first_contact(a, b, from, to, options);
+    const contact_result<double> db = first_contact<double>(a, b, from, to, options);
+    ++t.motions;
+    const int samples = 200;
+    std::optional<double> first_sample;
+    for (int k = 0; k <= samples && !first_sample; ++k) {
+        const double tk = static_cast<double>(k) / samples;
+        if (certified_intersects(a, b, motion_pose(from, to, tk))) first_sample = tk;
+    }
+    CHECK(ce.contact == ex.contact);
+    if (first_sample) {
+        ++t.sampled;
+        REQUIRE(ex.contact);
+        CHECK(CGAL::to_double(ex.time) <= *first_sample);
+        CHECK(db.contact);
+    }
+    if (!ex.contact) return;
+    ++t.reported;
+    const double time = CGAL::to_double(ex.time);
+    CHECK(ex.time == exact_rational(time));
+    for (int k = 0; k <= samples && static_cast<double>(k) / samples < time; ++k)
+        CHECK_FALSE(certified_intersects(a, b, motion_pose(from, to, static_cast<double>(k) / samples)));
+    CHECK(certified_separation(a, b, motion_pose(from, to, time)).distance <= options.tolerance * (1 + 1e-12));
+    CHECK(ce.time == time);
+    CHECK(ce.static_feature.kind == ex.static_feature.kind);
+    CHECK(ce.static_feature.index == ex.static_feature.index);
+    CHECK(ce.moving_feature.kind == ex.moving_feature.kind);
+    CHECK(ce.moving_feature.index == ex.moving_feature.index);
+}
+
+}  // namespace
+
+TEST_CASE("sweep: a spinning bar past a thin wall is caught", "[sweep][turning]") {
+    // A bar of length 8 about B's origin, 3.5 from the wall, turned from
+    // nearly upright through flat to nearly upright again: it sweeps across
+    // the wall although neither end pose meets it.
+    const polygon wall = square(0, -5, 0.1, 5), bar = square(-4, -0.05, 4, 0.05);
+    const pose from{-3.5, 0, 1.5}, to{-3.5, 0, 4.6};
+    CHECK_FALSE(certified_intersects(wall, bar, from));
+    CHECK_FALSE(certified_intersects(wall, bar, to));
+    turning_tally t;
+    check_turning(wall, bar, from, to, t);
+    CHECK(t.reported == 1);
+    CHECK(t.sampled == 1);
+    // Holding still while turning inside a hole large enough: no contact.
+    const polygon holed({ring_input{{{-10, -10}, {10, -10}, {10, 10}, {-10, 10}}, ring_role::outer},
+                         ring_input{{{-5, -5}, {5, -5}, {5, 5}, {-5, 5}}, ring_role::hole}});
+    CHECK_FALSE(first_contact<exact_rational>(holed, bar, {0, 0, 0}, {0, 0, 6.2}).contact);
+    CHECK_FALSE(certified_first_contact(holed, bar, {0, 0, 0}, {0.5, 0, -6.2}).contact);
+    // Meeting at the start: time 0.
+    const contact_result<double> start = certified_first_contact(wall, bar, {0, 0, 0}, {0, 0, 1});
+    CHECK(start.contact);
+    CHECK(start.time == 0);
+}
+
+TEST_CASE("sweep: motions that turn against dense sampling with the exact query", "[sweep][turning][reference]") {
+    turning_tally t;
+    family_motions({8, 64}, {8}, test_effort::scaled(10), 0x7e55ULL, 3,
+                   [&](const polygon& a, const polygon& b, const pose& from, const pose& to) {
+                       check_turning(a, b, from, to, t);
+                   });
+    test_scenes::rng g(0x7e56ULL);
+    for (int k = 0; k < test_effort::scaled(12); ++k) {
+        const test_scenes::multi ma = test_scenes::random_multi(g, 20, 6), mb = test_scenes::random_swallower(g);
+        const polygon a = ma.to_polygon(), b = mb.to_polygon();
+        for (int f = 0; f < 3; ++f) {
+            auto [from, to] = random_translation(a, b, g, test_poses::reach(a, b));
+            to.theta = from.theta + g.uniform(-2, 2);
+            check_turning(a, b, from, to, t);
+        }
+    }
+    WARN("motions that turn: " << t.motions << " motions, " << t.sampled << " with a sampled contact, " << t.reported
+                               << " reported");
+    CHECK(t.sampled > t.motions / 4);
+    CHECK(t.reported < t.motions);
 }

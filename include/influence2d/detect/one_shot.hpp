@@ -135,17 +135,17 @@ public:
     /// Whether every double coordinate is finite.
     bool finite() const { return finite_; }
 
-    /// Vertex j in NT.
+    /// Vertex j in NT. The reference stays valid until the first call of
+    /// all() (which gathers the vertices made so far into one vector).
     const point<NT>& operator[](std::size_t j) {
         if constexpr (std::is_same_v<NT, double>) {
             return how_ == how::given ? (*given_)[j] : (*approx_)[j];
         } else {
             if (how_ == how::given) return (*given_)[j];
-            if (!have_[j]) {
-                nt_[j] = make(j);
-                have_[j] = 1;
-            }
-            return nt_[j];
+            if (!all_.empty()) return all_[j];
+            std::optional<point<NT>>& v = made_[j];
+            if (!v) v = make(j);
+            return *v;
         }
     }
 
@@ -155,8 +155,13 @@ public:
             return how_ == how::given ? *given_ : *approx_;
         } else {
             if (how_ == how::given) return *given_;
-            for (std::size_t j = 0; j < shape_.size(); ++j) (*this)[j];
-            return nt_;
+            if (all_.empty()) {
+                all_.reserve(shape_.size());
+                for (std::size_t j = 0; j < shape_.size(); ++j)
+                    all_.push_back(made_[j] ? std::move(*made_[j]) : make(j));
+                made_.clear();
+            }
+            return all_;
         }
     }
 
@@ -179,11 +184,10 @@ public:
 private:
     enum class how : std::uint8_t { own, posed, given };
 
+    // (A vertex in NT is made on first use: an exact NT allocates for each
+    // value, so none is made, not even a default one, before it is asked.)
     void make_room() {
-        if constexpr (!std::is_same_v<NT, double>) {
-            nt_.resize(shape_.size());
-            have_.assign(shape_.size(), 0);
-        }
+        if constexpr (!std::is_same_v<NT, double>) made_.resize(shape_.size());
     }
     point<NT> make(std::size_t j) const {
         using tr = number_traits<NT>;
@@ -199,8 +203,8 @@ private:
     std::vector<point<double>> approx_own_;
     box bounds_;
     bool finite_ = true;
-    std::vector<point<NT>> nt_;
-    std::vector<char> have_;
+    std::vector<std::optional<point<NT>>> made_;  // the vertices made so far, until all()
+    std::vector<point<NT>> all_;                  // every vertex, once all() asked
 };
 
 /// What showed that two placed polygons meet.

@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -24,6 +25,7 @@
 #include "influence2d/detect/one_shot.hpp"
 #include "influence2d/detect/posed_meet.hpp"
 #include "influence2d/detect/scene.hpp"
+#include "influence2d/detect/separation.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/predicates/contact_time.hpp"
 #include "influence2d/predicates/orientation.hpp"
@@ -59,6 +61,14 @@ struct sweep_options {
     double tolerance = 1e-9;
 };
 
+/// The pose of B at time t of the motion from `from` to `to`, as
+/// first_contact computes it for a motion that turns: each component
+/// from + t (to - from), in double.
+inline pose motion_pose(const pose& from, const pose& to, double t) {
+    return {from.tx + t * (to.tx - from.tx), from.ty + t * (to.ty - from.ty),
+            from.theta + t * (to.theta - from.theta)};
+}
+
 namespace sweep_detail {
 
 using one_shot_detail::meeting;
@@ -82,16 +92,7 @@ inline bool site_before(const contact_site& l, const contact_site& r) {
     return l.edge < r.edge;
 }
 
-/// The input number of the polygon's stored vertex i: a ring stored reversed
-/// numbers its vertices backwards (its stored vertex i is the end of input
-/// edge source_edge(i)).
-inline std::size_t input_vertex(const polygon& shape, std::size_t i) {
-    std::size_t r = 0;
-    while (shape.ring_end(r) <= i) ++r;
-    const std::size_t begin = shape.ring_begin(r), n = shape.ring_end(r) - begin;
-    const bool reversed = shape.source_edge(begin) != begin;
-    return reversed ? begin + (shape.source_edge(i) - begin + 1) % n : i;
-}
+using separation_detail::input_vertex;
 
 /// The site's features in input numbering: (A's, B's).
 inline std::pair<feature, feature> site_features(const polygon& a, const polygon& b, const contact_site& s) {
@@ -175,6 +176,73 @@ void candidate_sites(const polygon& a, const polygon& b, const std::vector<point
     });
 }
 
+/// A lower bound, in double, of the first t >= 0 at which B's box `bb`
+/// (within e of its place in NT) moved by t `sweep` meets A's box `ab`:
+/// the latest of the axes' entry times, with 4e of room and shrunk by
+/// 2^-40 relative (the quotients' roundings are below 2^-50 relative);
+/// infinity when an axis that does not move keeps the boxes apart.
+inline double box_entry(const box& ab, const box& bb, point<double> sweep, double e) {
+    double t = 0;
+    const auto axis = [&](double a_min, double a_max, double b_min, double b_max, double d) {
+        if (b_max + 4 * e >= a_min && b_min - 4 * e <= a_max) return;  // overlapping already
+        if (d == 0) t = std::numeric_limits<double>::infinity();
+        else if (b_max < a_min) t = std::max(t, d > 0 ? (a_min - b_max - 4 * e) / d : std::numeric_limits<double>::infinity());
+        else t = std::max(t, d < 0 ? (a_max - b_min + 4 * e) / d : std::numeric_limits<double>::infinity());
+    };
+    axis(ab.min_x, ab.max_x, bb.min_x, bb.max_x, sweep.x);
+    axis(ab.min_y, ab.max_y, bb.min_y, bb.max_y, sweep.y);
+    return t * (1 - 0x1p-40);
+}
+
+/// The first window of a translation's search, as a fraction of the
+/// motion after B's box first meets A's: 1/64, doubled while no event is
+/// found (at most seven windows).
+inline constexpr double first_window = 1.0 / 64;
+
+/// Calls visit(site) for the candidate sites (candidate_sites) of growing
+/// windows of time [0, w], stopping once the earliest event is known:
+///
+///   enter <- when B's box first meets A's (box_entry); beyond 1: none
+///   w <- enter + first_window
+///   loop:
+///       visit the sites of B swept over [0, w]
+///       (every event at a time <= w is among them)
+///       u <- best_upper(): a double above the least event found, if any
+///       if u <= w or w = 1:  done
+///       if there is a u:     w <- min(u, 1), visited once more: done
+///       else                 w <- enter + 2 (w - enter), at most 1
+///
+/// The earliest event found in a window that reaches it is the first
+/// contact; events found beyond a window are true events too, and bound
+/// the last window.
+template <class Visit, class Upper>
+void windowed_sites(const polygon& a, const polygon& b, const std::vector<point<double>>& b_start,
+                    const box& b_start_box, point<double> sweep, double e, Visit&& visit, Upper&& best_upper) {
+    const double enter = box_entry(a.bounds(), b_start_box, sweep, e);
+    if (!(enter <= 1)) return;
+    double w = std::min(1.0, enter + first_window);
+    for (bool last = false;;) {
+        candidate_sites(a, b, b_start, b_start_box, {w * sweep.x, w * sweep.y}, e, visit);
+        if (last || w >= 1) return;
+        if (const std::optional<double> u = best_upper()) {
+            if (*u <= w) return;
+            w = std::min(1.0, *u);
+            last = true;
+        } else {
+            w = std::min(1.0, enter + 2 * (w - enter));
+        }
+    }
+}
+
+/// A double above the time num / den (exact or floating NT): the quotient of
+/// their nearest doubles (within 2^-50 relative) widened by 2^-40.
+template <class NT>
+double time_above(const time_fraction<NT>& t) {
+    using tr = number_traits<NT>;
+    const double q = tr::to_double(t.num) / tr::to_double(t.den);
+    return std::isfinite(q) ? q * (1 + 0x1p-40) + 0x1p-1000 : std::numeric_limits<double>::infinity();
+}
+
 /// A translation in NT: A where it stands, B posed at the start, the
 /// displacement d (and -d, A's motion relative to B).
 template <class NT>
@@ -195,13 +263,23 @@ struct translation_frame {
 
     /// The site's earliest contact time in [0, 1], if any.
     std::optional<time_fraction<NT>> earliest(const contact_site& s) {
-        time_fraction<NT> t[2];
-        const int k = times(s, true, t);
-        if (k == 0) return std::nullopt;
-        if (k == 2 && compare_times(t[1], t[0]) < 0) return t[1];
-        return t[0];
+        if (s.moving_vertex) return earliest_contact_time(b[s.vertex], d, a[s.edge], a[a.shape().next(s.edge)]);
+        return earliest_contact_time(a[s.vertex], minus_d, b[s.edge], b[b.shape().next(s.edge)]);
     }
 };
+
+/// The earliest contact time of one site in [0, 1] in NT, posing only the
+/// site's three vertices (B's by `start`; `d` the displacement in NT): the
+/// filtered search's exact evaluation of a site, without the whole frame.
+template <class NT>
+std::optional<time_fraction<NT>> site_time(const polygon& a, const polygon& b, const rotation_pose& start,
+                                           const point<NT>& d, const contact_site& s) {
+    using tr = number_traits<NT>;
+    const auto in_a = [&](std::size_t i) { return point<NT>{tr::from_double(a.vertex(i).x), tr::from_double(a.vertex(i).y)}; };
+    const auto in_b = [&](std::size_t j) { return start.apply<NT>(b.vertex(j)); };
+    if (s.moving_vertex) return earliest_contact_time(in_b(s.vertex), d, in_a(s.edge), in_a(a.next(s.edge)));
+    return earliest_contact_time(in_a(s.vertex), point<NT>{-d.x, -d.y}, in_b(s.edge), in_b(b.next(s.edge)));
+}
 
 /// The validated parts of a motion: its start and end as rotation poses
 /// (invalid_input for a NaN or infinite component of either).
@@ -260,16 +338,21 @@ std::optional<earliest_event<NT>> earliest_translation_event(const polygon& a, c
                                                              const pose& to, const rotation_pose& start) {
     translation_frame<NT> f(a, b, start, displacement<NT>(from, to));
     std::optional<earliest_event<NT>> best;
-    candidate_sites(a, b, f.b.approx(), f.b.bounds(), {to.tx - from.tx, to.ty - from.ty},
-                    translation_margin<NT>(a, b, from, to), [&](const contact_site& s) {
-                        std::optional<time_fraction<NT>> t = f.earliest(s);
-                        if (!t) return;
-                        if (best) {
-                            const int c = compare_times(*t, best->time);
-                            if (c > 0 || (c == 0 && !site_before(s, best->site))) return;
-                        }
-                        best = earliest_event<NT>{s, std::move(*t)};
-                    });
+    windowed_sites(
+        a, b, f.b.approx(), f.b.bounds(), {to.tx - from.tx, to.ty - from.ty}, translation_margin<NT>(a, b, from, to),
+        [&](const contact_site& s) {
+            std::optional<time_fraction<NT>> t = f.earliest(s);
+            if (!t) return;
+            if (best) {
+                const int c = compare_times(*t, best->time);
+                if (c > 0 || (c == 0 && !site_before(s, best->site))) return;
+            }
+            best = earliest_event<NT>{s, std::move(*t)};
+        },
+        [&]() -> std::optional<double> {
+            if (!best) return std::nullopt;
+            return time_above(best->time);
+        });
     return best;
 }
 
@@ -282,6 +365,16 @@ struct filtered_event {
     std::optional<time_fraction<exact_rational>> exact;  ///< the exact time, once asked
     double rounded = 0;                                  ///< the exact time's nearest double, with exact
     double below = 0, above = 0;                         ///< below <= exact time <= above, with exact
+
+    /// A double above the time: from the exact time's neighbours, else from
+    /// the certified time's bounds (num at most its value plus its error,
+    /// den at least its value minus its error), widened by 2^-40.
+    double time_above() const {
+        if (exact) return above;
+        const double num = fast->num.value() + fast->num.error(), den = fast->den.value() - fast->den.error();
+        const double q = num / den;
+        return den > 0 && std::isfinite(q) ? q * (1 + 0x1p-40) + 0x1p-1000 : std::numeric_limits<double>::infinity();
+    }
 
     /// Sets the exact time, its nearest double and the doubles next to it.
     void set_exact(time_fraction<exact_rational> t) {
@@ -332,29 +425,35 @@ inline std::optional<filtered_event> earliest_translation_event_filtered(const p
                                                                         const pose& from, const pose& to,
                                                                         const rotation_pose& start) {
     translation_frame<certified> fast(a, b, start, displacement<certified>(from, to));
-    std::optional<translation_frame<exact_rational>> exact_frame;
+    std::optional<point<exact_rational>> exact_d;
     const auto exact_time = [&](const contact_site& s) {
-        if (!exact_frame) exact_frame.emplace(a, b, start, displacement<exact_rational>(from, to));
-        return exact_frame->earliest(s);
+        if (!exact_d) exact_d = displacement<exact_rational>(from, to);
+        return site_time(a, b, start, *exact_d, s);
     };
     std::optional<filtered_event> best;
-    candidate_sites(a, b, fast.b.approx(), fast.b.bounds(), {to.tx - from.tx, to.ty - from.ty},
-                    translation_margin<certified>(a, b, from, to), [&](const contact_site& s) {
-                        filtered_event c{s, std::nullopt, std::nullopt};
-                        try {
-                            c.fast = fast.earliest(s);
-                            if (!c.fast) return;
-                        } catch (const uncertain_sign&) {
-                            std::optional<time_fraction<exact_rational>> t = exact_time(s);
-                            if (!t) return;
-                            c.set_exact(std::move(*t));
-                        }
-                        if (best) {
-                            const int o = order(c, *best, exact_time);
-                            if (o > 0 || (o == 0 && !site_before(s, best->site))) return;
-                        }
-                        best = std::move(c);
-                    });
+    windowed_sites(
+        a, b, fast.b.approx(), fast.b.bounds(), {to.tx - from.tx, to.ty - from.ty},
+        translation_margin<certified>(a, b, from, to),
+        [&](const contact_site& s) {
+            filtered_event c{s, std::nullopt, std::nullopt};
+            try {
+                c.fast = fast.earliest(s);
+                if (!c.fast) return;
+            } catch (const uncertain_sign&) {
+                std::optional<time_fraction<exact_rational>> t = exact_time(s);
+                if (!t) return;
+                c.set_exact(std::move(*t));
+            }
+            if (best) {
+                const int o = order(c, *best, exact_time);
+                if (o > 0 || (o == 0 && !site_before(s, best->site))) return;
+            }
+            best = std::move(c);
+        },
+        [&]() -> std::optional<double> {
+            if (!best) return std::nullopt;
+            return best->time_above();
+        });
     return best;
 }
 
@@ -402,18 +501,140 @@ bool meet_between(translation_frame<NT>& f, const time_fraction<NT>& s0, const t
     return regions_meet(as, av, bs, bv, big);
 }
 
-/// The first contact of a motion that turns (docs/sweep.md, "Motions that
-/// turn"): not answered yet; throws invalid_input.
+/// The relative bound of the rounding of a motion's pose at time t in
+/// double (motion_pose), against the exact motion: the angle
+/// theta0 + t (theta1 - theta0) takes three roundings (the difference, the
+/// product, the sum), each below 2^-53 times |theta0| + |theta1| (t <= 1),
+/// and its cosine and sine are within 2^-52 (std::cos and std::sin are
+/// within an ulp), which moves a point of B at distance r from its origin
+/// by less than (2^-51 (|theta0| + |theta1|) + 2^-51) r; the translation's
+/// three roundings move it by less than 2^-51 (|T0| + |T1|) per
+/// coordinate. 2^-48 times r (|theta0| + |theta1| + 1) + |T0|_1 + |T1|_1
+/// covers both with a factor of four.
+inline constexpr double motion_rounding = 0x1p-48;
+
+/// The relative widening of the speed bound |T1 - T0| + |theta1 - theta0| r:
+/// the differences and std::hypot round by an ulp or two each (relative
+/// 2^-52), r is already an upper bound (bounding_radius); 2^-48 covers the
+/// few roundings of the sum with room.
+inline constexpr double speed_widening = 0x1p-48;
+
+/// The relative shrinking that turns a distance within one unit in the last
+/// place of the true one (distance_of in an exact NT, certified_separation)
+/// into a lower bound of it: 2^-50 > 2^-52, with room for the rounding of
+/// the product itself.
+inline constexpr double distance_shrinking = 0x1p-50;
+
+/// The bound of the error of separation<NT>'s distance against the exact
+/// distance at the same pose, given the scene's size `scale` (the largest
+/// coordinates of A and of B plus the translations): 0 for an exact NT (its
+/// distance is exact before distance_of rounds it); for double the bound
+/// separation.hpp states, 2^-40 scale; for another floating NT its filters'
+/// slack, four times filter_slack times scale (1e-9 for long double and
+/// quad, far above their rounding; 1e-4 for float).
 template <class NT>
-contact_result<NT> turning_first_contact(const polygon&, const polygon&, const pose&, const pose&,
-                                         const sweep_options&) {
-    throw invalid_input("first_contact: motions that turn (from.theta != to.theta) are not answered yet");
+double separation_error(double scale) {
+    using tr = number_traits<NT>;
+    if constexpr (tr::category != number_category::floating) return 0;
+    if constexpr (std::is_same_v<NT, double>) return 0x1p-40 * scale;
+    return tr::filter_slack * 4 * scale;
 }
 
-/// As turning_first_contact, certified.
+/// The distance at one time of a turning motion, with the features that
+/// realise it (separation's).
+struct probe_result {
+    double distance = 0;  ///< within one ulp of the separation's distance
+    feature static_feature{};
+    feature moving_feature{};
+};
+
+/// The earliest time of conservative advancement along the motion from
+/// `from` to `to` (docs/sweep.md, "Motions that turn"): probe(p) gives
+/// the distance between A and B posed by p (within one unit in the last
+/// place of a value within `error` of the exact distance at p) and its
+/// features.
+///
+///   r <- B's vertices' largest distance from its origin (an upper bound)
+///   v <- (|T1 - T0| + |theta1 - theta0| r) widened: no point of B is faster
+///   delta <- the rounding of the pose at t against the exact motion
+///   resolution <- 4 (delta + v 2^-52) + 2 error; tol <- max(tolerance, resolution)
+///   t <- 0
+///   loop:
+///       L <- probe(motion_pose(t)) shrunk by an ulp, minus error and delta
+///           (a lower bound of the exact motion's distance at t)
+///       if L <= tol:  contact at t
+///       if t = 1:     none
+///       t <- min(1, t + (L - resolution / 2) / v, rounded down)
+///
+/// Until the returned t the distance stays above resolution / 2 > 0: no
+/// step passes a contact. Each step advances by at least 2^-51.
+template <class Probe>
+std::optional<std::pair<double, probe_result>> advance(const polygon& b, const pose& from, const pose& to,
+                                                       double tolerance, double error, Probe&& probe) {
+    const double r = bounding_radius(b, {0, 0});
+    const double turn = std::fabs(to.theta - from.theta);
+    const double v = (std::hypot(to.tx - from.tx, to.ty - from.ty) + turn * r) * (1 + speed_widening);
+    const double delta =
+        motion_rounding * (r * (std::fabs(from.theta) + std::fabs(to.theta) + 1) + std::fabs(from.tx) +
+                           std::fabs(from.ty) + std::fabs(to.tx) + std::fabs(to.ty));
+    const double resolution = 4 * (delta + v * 0x1p-52) + 2 * error;
+    const double tol = std::max(tolerance, resolution);
+    double t = 0;
+    for (;;) {
+        probe_result at = probe(motion_pose(from, to, t));
+        const double lower = at.distance * (1 - distance_shrinking) - error - delta;
+        if (lower <= tol) return std::make_pair(t, at);
+        if (t == 1) return std::nullopt;
+        const double step = (lower - resolution / 2) / v * (1 - distance_shrinking);
+        t = std::min(1.0, t + step);
+    }
+}
+
+/// The scene's size for separation_error: the polygons' largest
+/// coordinates and both translations of the motion.
+inline double motion_scale(const polygon& a, const polygon& b, const pose& from, const pose& to) {
+    return coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) + std::fabs(from.ty) + std::fabs(to.tx) +
+           std::fabs(to.ty);
+}
+
+/// The first contact of a motion that turns, in NT: conservative
+/// advancement on separation_query<NT> (both polygons prepared once, each
+/// search started from the last closest pair).
+template <class NT>
+contact_result<NT> turning_first_contact(const polygon& a, const polygon& b, const pose& from, const pose& to,
+                                         const sweep_options& options) {
+    separation_query<NT> query(a, b);
+    const auto found = advance(b, from, to, options.tolerance, separation_error<NT>(motion_scale(a, b, from, to)),
+                               [&](const pose& p) {
+                                   const separation_result<NT> s = query(p);
+                                   return probe_result{distance_of<NT>(s.squared_distance), s.static_feature,
+                                                       s.moving_feature};
+                               });
+    contact_result<NT> r;
+    if (!found) return r;
+    r.contact = true;
+    r.time = number_traits<NT>::from_double(found->first);
+    r.static_feature = found->second.static_feature;
+    r.moving_feature = found->second.moving_feature;
+    return r;
+}
+
+/// As turning_first_contact, on certified_separation (the exact distance
+/// within one ulp and the exact features, at about double's cost): the
+/// same steps as in exact rationals.
 inline contact_result<double> certified_turning_first_contact(const polygon& a, const polygon& b, const pose& from,
                                                               const pose& to, const sweep_options& options) {
-    return turning_first_contact<double>(a, b, from, to, options);
+    const auto found = advance(b, from, to, options.tolerance, 0, [&](const pose& p) {
+        const certified_separation_result s = certified_separation(a, b, p);
+        return probe_result{s.distance, s.static_feature, s.moving_feature};
+    });
+    contact_result<double> r;
+    if (!found) return r;
+    r.contact = true;
+    r.time = found->first;
+    r.static_feature = found->second.static_feature;
+    r.moving_feature = found->second.moving_feature;
+    return r;
 }
 
 }  // namespace sweep_detail
@@ -471,8 +692,8 @@ contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose&
 /// features (those of first_contact<exact_rational>). The meeting at the
 /// start is decided in `certified` with the one-shot query's exact
 /// fallback; each event is computed and compared in `certified`, and again
-/// in exact rationals only when its signs are not certain; the rounding of
-/// the earliest time likewise.
+/// in exact rationals only when its signs are not certain; the earliest
+/// time is rounded from its exact value (one site evaluated exactly).
 inline contact_result<double> certified_first_contact(const polygon& a, const polygon& b, const pose& from,
                                                       const pose& to, const sweep_options& options = {}) {
     using namespace sweep_detail;
@@ -491,16 +712,10 @@ inline contact_result<double> certified_first_contact(const polygon& a, const po
     if (!best) return r;
     r.contact = true;
     std::tie(r.static_feature, r.moving_feature) = site_features(a, b, best->site);
-    r.time = detail::fallback<>::run(
-        [&]() -> double {
-            if (best->exact) return best->rounded;
-            return nearest_double(*best->fast);
-        },
-        [&] {
-            best->set_exact(*translation_frame<exact_rational>(a, b, m.start, displacement<exact_rational>(from, to))
-                                 .earliest(best->site));
-            return best->rounded;
-        });
+    // Rounding to the nearest double asks for the time's sign against the
+    // midpoints between doubles, finer than certified's bound: exactly.
+    if (!best->exact) best->set_exact(*site_time(a, b, m.start, displacement<exact_rational>(from, to), best->site));
+    r.time = best->rounded;
     return r;
 }
 

@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <optional>
+#include <utility>
 
 #include "influence2d/core/point.hpp"
 #include "influence2d/number/traits.hpp"
@@ -104,6 +106,18 @@ int contact_times(const point<NT>& p, const point<NT>& d, const point<NT>& a, co
         keep(passing_time(p, d, b));
     }
     return count;
+}
+
+/// The earliest time t in [0, 1] at which p moving as p + t d (d != 0)
+/// lies on the closed segment [a, b], if any: the least of contact_times.
+template <class NT>
+std::optional<time_fraction<NT>> earliest_contact_time(const point<NT>& p, const point<NT>& d, const point<NT>& a,
+                                                       const point<NT>& b) {
+    time_fraction<NT> t[2];
+    const int k = contact_times(p, d, a, b, true, t);
+    if (k == 0) return std::nullopt;
+    if (k == 2 && compare_times(t[1], t[0]) < 0) return std::move(t[1]);
+    return std::move(t[0]);
 }
 
 /// Of two neighbouring doubles, the one whose last significand bit is 0.
