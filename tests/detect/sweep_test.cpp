@@ -27,6 +27,7 @@
 #include "influence2d/detect/sweep.hpp"
 #include "influence2d/detect/trajectory.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "influence2d/predicates/contact_time.hpp"
 
 namespace {
 
@@ -554,4 +555,62 @@ TEST_CASE("sweep: motions that turn against dense sampling with the exact query"
                                << " reported");
     CHECK(t.sampled > t.motions / 4);
     CHECK(t.reported < t.motions);
+}
+
+TEST_CASE("contact times: the sign decisions of the sweep", "[sweep][predicates]") {
+    using ER = exact_rational;
+    using P = point<ER>;
+    time_fraction<ER> out[2];
+    const auto value = [](const time_fraction<ER>& t) { return ER(t.num / t.den); };
+    // Crossing: p = (0, 0) moving by (4, 0) reaches x = 1 at t = 1/4.
+    REQUIRE(contact_times<ER>(P{0, 0}, P{4, 0}, P{1, -1}, P{1, 1}, true, out) == 1);
+    CHECK(value(out[0]) == ER(1) / ER(4));
+    CHECK(out[0].den > 0);
+    // The same segment given the other way round: the same time, den > 0.
+    REQUIRE(contact_times<ER>(P{0, 0}, P{4, 0}, P{1, 1}, P{1, -1}, true, out) == 1);
+    CHECK(value(out[0]) == ER(1) / ER(4));
+    CHECK(out[0].den > 0);
+    // Through an end, and missing the segment by a hair.
+    CHECK(contact_times<ER>(P{0, 0}, P{4, 0}, P{1, 0}, P{1, 1}, true, out) == 1);
+    CHECK(contact_times<ER>(P{0, 0}, P{4, 0}, P{1, ER(1) / ER(1 << 30)}, P{1, 1}, true, out) == 0);
+    // Beyond t = 1: only unbounded; behind p (t < 0): never.
+    CHECK(contact_times<ER>(P{0, 0}, P{4, 0}, P{5, -1}, P{5, 1}, true, out) == 0);
+    REQUIRE(contact_times<ER>(P{0, 0}, P{4, 0}, P{5, -1}, P{5, 1}, false, out) == 1);
+    CHECK(value(out[0]) == ER(5) / ER(4));
+    CHECK(contact_times<ER>(P{0, 0}, P{4, 0}, P{-1, -1}, P{-1, 1}, false, out) == 0);
+    // Collinear: the times p passes both ends; a segment behind p only ends.
+    REQUIRE(contact_times<ER>(P{0, 0}, P{4, 0}, P{3, 0}, P{1, 0}, true, out) == 2);
+    CHECK(value(out[0]) == ER(3) / ER(4));
+    CHECK(value(out[1]) == ER(1) / ER(4));
+    CHECK(value(*earliest_contact_time<ER>(P{0, 0}, P{4, 0}, P{3, 0}, P{1, 0})) == ER(1) / ER(4));
+    CHECK(contact_times<ER>(P{0, 0}, P{4, 0}, P{-1, 0}, P{2, 0}, true, out) == 1);
+    // Parallel off the line: none. A point (a == b) on the line: once.
+    CHECK(contact_times<ER>(P{0, 0}, P{4, 0}, P{1, 1}, P{3, 1}, false, out) == 0);
+    REQUIRE(contact_times<ER>(P{0, 0}, P{4, 0}, P{2, 0}, P{2, 0}, true, out) == 2);
+    CHECK(value(out[0]) == ER(1) / ER(2));
+    CHECK(compare_times(out[0], out[1]) == 0);
+    CHECK(compare_times(time_fraction<ER>{1, 3}, time_fraction<ER>{2, 5}) < 0);
+    CHECK_FALSE(time_in_range(time_fraction<ER>{4, 3}, true));
+    CHECK(time_in_range(time_fraction<ER>{4, 3}, false));
+    CHECK_FALSE(time_in_range(time_fraction<ER>{-1, 3}, false));
+}
+
+TEST_CASE("contact times: the nearest double of a fraction", "[sweep][predicates]") {
+    using ER = exact_rational;
+    test_scenes::rng g(0x9ea7ULL);
+    for (int k = 0; k < 2000; ++k) {
+        const ER num = ER(g.uniform(0, 1)) * ER(g.uniform(0, 1e6)) + ER(g.uniform(0, 1e-9));
+        const ER den = ER(g.uniform(1e-3, 1)) * ER(g.uniform(1, 1e6));
+        CHECK(nearest_double(time_fraction<ER>{num, den}) == test_exact::nearest_double(ER(num / den)));
+    }
+    // Ties go to the even neighbour: 1 + 2^-53 lies midway between 1 and 1 + 2^-52.
+    const ER tie = ER(1) + ER(std::ldexp(1.0, -53)), three_ties = ER(1) + ER(3) * ER(std::ldexp(1.0, -53));
+    CHECK(nearest_double(time_fraction<ER>{tie, ER(1)}) == 1.0);
+    CHECK(nearest_double(time_fraction<ER>{three_ties * 7, ER(7)}) == 1 + std::ldexp(1.0, -51));
+    // A numerator and denominator beyond double's range.
+    const ER huge = ER(std::ldexp(1.0, 1000)) * ER(std::ldexp(1.0, 500));
+    CHECK(nearest_double(time_fraction<ER>{huge * 3, huge * 7}) == 3.0 / 7);
+    CHECK(nearest_double(time_fraction<ER>{huge, ER(std::ldexp(1.0, 600))}) == std::ldexp(1.0, 900));
+    CHECK(nearest_double(time_fraction<ER>{ER(0), ER(5)}) == 0);
+    CHECK(nearest_double(time_fraction<double>{1, 3}) == 1.0 / 3);
 }

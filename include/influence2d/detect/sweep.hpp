@@ -549,41 +549,54 @@ struct probe_result {
 };
 
 /// The earliest time of conservative advancement along the motion from
-/// `from` to `to` (docs/sweep.md, "Motions that turn"): probe(p) gives
-/// the distance between A and B posed by p (within one unit in the last
-/// place of a value within `error` of the exact distance at p) and its
-/// features.
+/// `from` to `to` (docs/sweep.md, "Motions that turn"). A probe gives the
+/// distance between A and B posed by a pose (within one unit in the last
+/// place of a value within its error of the exact distance there) and its
+/// features: `coarse` (error `coarse_error`) takes the steps; when it would
+/// stop and `refine` is set, `fine` (error `fine_error`) is asked at the
+/// same time and takes the remaining steps, so that the stop is decided
+/// within the fine error.
 ///
 ///   r <- B's vertices' largest distance from its origin (an upper bound)
 ///   v <- (|T1 - T0| + |theta1 - theta0| r) widened: no point of B is faster
 ///   delta <- the rounding of the pose at t against the exact motion
-///   resolution <- 4 (delta + v 2^-52) + 2 error; tol <- max(tolerance, resolution)
+///   resolution <- 4 (delta + v 2^-52) + 2 fine error; tol <- max(tolerance, resolution)
 ///   t <- 0
 ///   loop:
-///       L <- probe(motion_pose(t)) shrunk by an ulp, minus error and delta
+///       L <- probe(motion_pose(t)) shrunk by an ulp, minus its error and delta
 ///           (a lower bound of the exact motion's distance at t)
-///       if L <= tol:  contact at t
+///       if L <= tol:  if coarse and refining: switch to fine, again at t
+///                     else contact at t
 ///       if t = 1:     none
 ///       t <- min(1, t + (L - resolution / 2) / v, rounded down)
 ///
 /// Until the returned t the distance stays above resolution / 2 > 0: no
 /// step passes a contact. Each step advances by at least 2^-51.
-template <class Probe>
+template <class Coarse, class Fine>
 std::optional<std::pair<double, probe_result>> advance(const polygon& b, const pose& from, const pose& to,
-                                                       double tolerance, double error, Probe&& probe) {
+                                                       double tolerance, double coarse_error, Coarse&& coarse,
+                                                       bool refine, double fine_error, Fine&& fine) {
     const double r = bounding_radius(b, {0, 0});
     const double turn = std::fabs(to.theta - from.theta);
     const double v = (std::hypot(to.tx - from.tx, to.ty - from.ty) + turn * r) * (1 + speed_widening);
     const double delta =
         motion_rounding * (r * (std::fabs(from.theta) + std::fabs(to.theta) + 1) + std::fabs(from.tx) +
                            std::fabs(from.ty) + std::fabs(to.tx) + std::fabs(to.ty));
-    const double resolution = 4 * (delta + v * 0x1p-52) + 2 * error;
+    const double resolution = 4 * (delta + v * 0x1p-52) + 2 * (refine ? fine_error : coarse_error);
     const double tol = std::max(tolerance, resolution);
+    bool fine_stage = false;
     double t = 0;
     for (;;) {
-        probe_result at = probe(motion_pose(from, to, t));
-        const double lower = at.distance * (1 - distance_shrinking) - error - delta;
-        if (lower <= tol) return std::make_pair(t, at);
+        const pose p = motion_pose(from, to, t);
+        probe_result at = fine_stage ? fine(p) : coarse(p);
+        const double lower = at.distance * (1 - distance_shrinking) - (fine_stage ? fine_error : coarse_error) - delta;
+        if (lower <= tol) {
+            if (refine && !fine_stage) {
+                fine_stage = true;
+                continue;
+            }
+            return std::make_pair(t, at);
+        }
         if (t == 1) return std::nullopt;
         const double step = (lower - resolution / 2) / v * (1 - distance_shrinking);
         t = std::min(1.0, t + step);
@@ -597,19 +610,17 @@ inline double motion_scale(const polygon& a, const polygon& b, const pose& from,
            std::fabs(to.ty);
 }
 
-/// The first contact of a motion that turns, in NT: conservative
-/// advancement on separation_query<NT> (both polygons prepared once, each
-/// search started from the last closest pair).
+/// A probe on a separation query in NT: its distance (distance_of) and
+/// features.
 template <class NT>
-contact_result<NT> turning_first_contact(const polygon& a, const polygon& b, const pose& from, const pose& to,
-                                         const sweep_options& options) {
-    separation_query<NT> query(a, b);
-    const auto found = advance(b, from, to, options.tolerance, separation_error<NT>(motion_scale(a, b, from, to)),
-                               [&](const pose& p) {
-                                   const separation_result<NT> s = query(p);
-                                   return probe_result{distance_of<NT>(s.squared_distance), s.static_feature,
-                                                       s.moving_feature};
-                               });
+probe_result probe_of(separation_query<NT>& query, const pose& p) {
+    const separation_result<NT> s = query(p);
+    return {distance_of<NT>(s.squared_distance), s.static_feature, s.moving_feature};
+}
+
+/// The result of a turning motion from advance's answer.
+template <class NT>
+contact_result<NT> turning_result(const std::optional<std::pair<double, probe_result>>& found) {
     contact_result<NT> r;
     if (!found) return r;
     r.contact = true;
@@ -619,22 +630,45 @@ contact_result<NT> turning_first_contact(const polygon& a, const polygon& b, con
     return r;
 }
 
-/// As turning_first_contact, on certified_separation (the exact distance
-/// within one ulp and the exact features, at about double's cost): the
-/// same steps as in exact rationals.
+/// The first contact of a motion that turns, in NT: conservative
+/// advancement on separation queries (both polygons prepared once, each
+/// search started from the last closest pair). A floating NT steps on its
+/// own query. An exact NT steps on the query in double (with its error
+/// bound) and, once that would stop, on its own exact query: the stop is
+/// decided on exact distances.
+template <class NT>
+contact_result<NT> turning_first_contact(const polygon& a, const polygon& b, const pose& from, const pose& to,
+                                         const sweep_options& options) {
+    const double scale = motion_scale(a, b, from, to);
+    if constexpr (number_traits<NT>::category == number_category::floating) {
+        separation_query<NT> query(a, b);
+        const auto probe = [&](const pose& p) { return probe_of(query, p); };
+        return turning_result<NT>(
+            advance(b, from, to, options.tolerance, separation_error<NT>(scale), probe, false, 0, probe));
+    } else {
+        separation_query<double> coarse(a, b);
+        std::optional<separation_query<NT>> fine;
+        return turning_result<NT>(advance(
+            b, from, to, options.tolerance, separation_error<double>(scale),
+            [&](const pose& p) { return probe_of(coarse, p); }, true, 0, [&](const pose& p) {
+                if (!fine) fine.emplace(a, b);
+                return probe_of(*fine, p);
+            }));
+    }
+}
+
+/// As turning_first_contact in exact rationals, the fine probe being
+/// certified_separation (the exact distance within one ulp and the exact
+/// features, at about double's cost): the same steps, so the same answer.
 inline contact_result<double> certified_turning_first_contact(const polygon& a, const polygon& b, const pose& from,
                                                               const pose& to, const sweep_options& options) {
-    const auto found = advance(b, from, to, options.tolerance, 0, [&](const pose& p) {
-        const certified_separation_result s = certified_separation(a, b, p);
-        return probe_result{s.distance, s.static_feature, s.moving_feature};
-    });
-    contact_result<double> r;
-    if (!found) return r;
-    r.contact = true;
-    r.time = found->first;
-    r.static_feature = found->second.static_feature;
-    r.moving_feature = found->second.moving_feature;
-    return r;
+    separation_query<double> coarse(a, b);
+    return turning_result<double>(advance(
+        b, from, to, options.tolerance, separation_error<double>(motion_scale(a, b, from, to)),
+        [&](const pose& p) { return probe_of(coarse, p); }, true, 0, [&](const pose& p) {
+            const certified_separation_result s = certified_separation(a, b, p);
+            return probe_result{s.distance, s.static_feature, s.moving_feature};
+        }));
 }
 
 }  // namespace sweep_detail

@@ -47,15 +47,32 @@ bool time_in_range(const time_fraction<NT>& t, bool bounded) {
     return tr::sign(t.num) >= 0 && (!bounded || compare_values(t.num, t.den) <= 0);
 }
 
-/// Whether the line through p with direction d meets the closed segment
-/// [a, b]: a and b are not strictly on one side of it (the signs of
-/// d x (a - p) and d x (b - p) are not both +1 nor both -1). For a point
-/// moving as p + t d, whether the place where it reaches the segment's line
-/// lies on the segment.
+/// The sides of a segment's ends against a line of motion: alpha =
+/// d x (a - p) and beta = d x (b - p) for the line through p with
+/// direction d, with their signs.
 template <class NT>
-bool motion_line_meets_segment(const point<NT>& p, const point<NT>& d, const point<NT>& a, const point<NT>& b) {
+struct segment_sides {
+    NT alpha, beta;  ///< d x (a - p), d x (b - p)
+    int sa, sb;      ///< their signs
+
+    /// Whether the line meets the closed segment [a, b]: a and b not
+    /// strictly on one side of it (the signs not both +1 nor both -1). For
+    /// a point moving as p + t d, whether the place where it reaches the
+    /// segment's line lies on the segment.
+    bool meet() const { return sa * sb <= 0; }
+    /// Whether the segment lies on the line (both ends on it; a point of it
+    /// for a == b).
+    bool on_line() const { return sa == 0 && sb == 0; }
+};
+
+/// The sides of a and b against the line through p with direction d.
+template <class NT>
+segment_sides<NT> sides_of(const point<NT>& p, const point<NT>& d, const point<NT>& a, const point<NT>& b) {
     using tr = number_traits<NT>;
-    return tr::sign(cross_from(d, p, a)) * tr::sign(cross_from(d, p, b)) <= 0;
+    segment_sides<NT> s{cross_from(d, p, a), cross_from(d, p, b), 0, 0};
+    s.sa = tr::sign(s.alpha);
+    s.sb = tr::sign(s.beta);
+    return s;
 }
 
 /// The time at which p moving as p + t d passes the point x of its own line
@@ -85,18 +102,16 @@ time_fraction<NT> passing_time(const point<NT>& p, const point<NT>& d, const poi
 template <class NT>
 int contact_times(const point<NT>& p, const point<NT>& d, const point<NT>& a, const point<NT>& b, bool bounded,
                   time_fraction<NT> out[2]) {
-    using tr = number_traits<NT>;
-    const NT alpha = cross_from(d, p, a), beta = cross_from(d, p, b);
-    const int sa = tr::sign(alpha), sb = tr::sign(beta);
-    if (sa * sb > 0) return 0;
+    const segment_sides<NT> sides = sides_of(p, d, a, b);
+    if (!sides.meet()) return 0;
     int count = 0;
     const auto keep = [&](time_fraction<NT>&& t) {
         if (time_in_range(t, bounded)) out[count++] = std::move(t);
     };
-    if (sa != 0 || sb != 0) {
+    if (!sides.on_line()) {
         const point<NT> e{b.x - a.x, b.y - a.y};
-        NT num = cross_from(e, p, a), den = alpha - beta;
-        if (sa < sb) {  // den = alpha - beta < 0: both signs turned
+        NT num = cross_from(e, p, a), den = sides.alpha - sides.beta;
+        if (sides.sa < sides.sb) {  // den = alpha - beta < 0: both signs turned
             num = -num;
             den = -den;
         }
@@ -134,12 +149,14 @@ inline double even_of(double x, double y) {
 /// beyond the midpoint with a neighbour, each midpoint compared exactly by
 /// ring operations (2 num against (x + y) den, x + y computed in NT). Exact
 /// when NT's ring operations are; a filtered NT throws uncertain_sign when
-/// a comparison (always, at an exact tie) is not certain.
+/// a comparison (always, at an exact tie) is not certain. In a floating NT,
+/// the quotient of num and den converted to double.
 template <class NT>
 double nearest_double(const time_fraction<NT>& t) {
     using tr = number_traits<NT>;
     const double inf = std::numeric_limits<double>::infinity();
     double x = tr::to_double(t.num) / tr::to_double(t.den);
+    if constexpr (tr::category == number_category::floating) return x;  // its rounding is NT's
     if (!(x >= 0 && x < inf)) {
         // The doubles nearest num and den overflowed (or underflowed): the
         // largest double x <= t by bisection on the ordered bit patterns of
