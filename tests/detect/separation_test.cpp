@@ -363,6 +363,44 @@ TEST_CASE("separation: small cases by hand", "[separation]") {
     }
 }
 
+TEST_CASE("separation: closest points of two segments on a small grid, degenerate ones included",
+          "[separation][reference]") {
+    // Ends on a 5 x 5 grid: many collinear, touching, overlapping and
+    // zero-length segments. The plain and the filtered evaluation against
+    // CGAL: the squared distance, each point on its segment at its part, the
+    // points' squared distance; both evaluations give the same answer.
+    test_random::rng g(0x5e9d);
+    const auto grid_point = [&] { return point<double>{static_cast<double>(g.index(5)), static_cast<double>(g.index(5))}; };
+    const auto exact = [](const point<double>& p) { return point<ER>{ER(p.x), ER(p.y)}; };
+    const auto on_part = [](const P& x, const P& a, const P& b, segment_part part) {
+        if (part == segment_part::start) return x == a;
+        if (part == segment_part::end) return x == b && !(a == b);
+        return x != a && x != b && S(a, b).has_on(x);
+    };
+    std::size_t meet = 0;
+    for (int k = 0; k < 4000; ++k) {
+        const point<double> a = grid_point(), b = grid_point(), u = grid_point(), v = grid_point();
+        INFO(a.x << ',' << a.y << ' ' << b.x << ',' << b.y << " / " << u.x << ',' << u.y << ' ' << v.x << ',' << v.y);
+        const P pa(a.x, a.y), pb(b.x, b.y), pu(u.x, u.y), pv(v.x, v.y);
+        const FT expected = pa == pb ? (pu == pv ? CGAL::squared_distance(pa, pu) : CGAL::squared_distance(pa, S(pu, pv)))
+                                     : (pu == pv ? CGAL::squared_distance(pu, S(pa, pb)) : CGAL::squared_distance(S(pa, pb), S(pu, pv)));
+        const segment_pair_closest<ER> plain = closest_between_segments(exact(a), exact(b), exact(u), exact(v));
+        const segment_pair_closest<ER> filtered =
+            closest_between_segments(a, b, u, v, 0.0, exact(a), exact(b), exact(u), exact(v));
+        for (const segment_pair_closest<ER>* r : {&plain, &filtered}) {
+            CHECK(r->squared == expected);
+            CHECK(on_part(to_p(r->on_first), pa, pb, r->first_part));
+            CHECK(on_part(to_p(r->on_second), pu, pv, r->second_part));
+            CHECK(CGAL::squared_distance(to_p(r->on_first), to_p(r->on_second)) == r->squared);
+        }
+        CHECK(filtered.on_first == plain.on_first);
+        CHECK(filtered.on_second == plain.on_second);
+        meet += CGAL::is_zero(expected);
+    }
+    CHECK(meet > 400);
+    CHECK(meet < 3600);
+}
+
 TEST_CASE("separation: the catalogue against the exact reference", "[separation][reference]") {
     tally t;
     for (const test_catalogue::test_case& c : test_catalogue::cases()) {

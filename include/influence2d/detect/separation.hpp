@@ -3,8 +3,9 @@
 /// \file
 /// The separation distance between A and B posed by q: the distance between
 /// the closed regions, the closest features and points, or a witness of
-/// their meeting (docs/separation.md). Needs CGAL for certified_separation
-/// (number/cgal.hpp); the other queries run in any field NT.
+/// their meeting (docs/separation.md). The queries run in any field NT;
+/// the header includes number/cgal.hpp (CGAL and GMP) for
+/// certified_separation, whose exact evaluations are in exact_rational.
 
 #include <algorithm>
 #include <cmath>
@@ -181,7 +182,8 @@ double pair_upper(const search_input& in, Approx& approx, std::optional<std::pai
 ///   stack <- (A's root, B's root, lower bound)
 ///   while stack: (s, m, L) <- pop
 ///       L > U: prune (U may have dropped since the push)
-///       both leaves: for each edge pair whose boxes are within U:
+///       both leaves: for each edge pair whose boxes are within U and
+///       that no line separates with 2 U to spare (segments_may_meet):
 ///           [lo, hi] <- segment_distance_range; U <- min(U, hi)
 ///           lo <= U: candidate
 ///       else split the node of larger radius (the inner one): each child

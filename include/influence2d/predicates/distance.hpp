@@ -94,6 +94,18 @@ struct segment_pair_closest {
 
 namespace detail {
 
+/// The point where [u, v] crosses the line of [a, b], for u and v strictly
+/// on either side of it: u + (c_u / (c_u - c_v))(v - u), c_u = (b - a) x
+/// (u - a), c_v = (b - a) x (v - a).
+template <class NT>
+point<NT> crossing(const point<NT>& a, const point<NT>& b, const point<NT>& u, const point<NT>& v) {
+    const NT abx = b.x - a.x, aby = b.y - a.y;
+    const NT cu = abx * (u.y - a.y) - aby * (u.x - a.x);
+    const NT cv = abx * (v.y - a.y) - aby * (v.x - a.x);
+    const NT f = cu / (cu - cv);
+    return {NT(u.x + f * (v.x - u.x)), NT(u.y + f * (v.y - u.y))};
+}
+
 /// The common point of [a, b] and [u, v], which meet (ou, ov: the
 /// orientations of u and v against [a, b]); see closest_between_segments.
 template <class NT>
@@ -107,15 +119,7 @@ segment_pair_closest<NT> meeting_point(const point<NT>& a, const point<NT>& b, c
         x = ou == 0 ? u : v;  // the one point of [u, v] on the line of [a, b]
     } else {
         const int oa = orientation(u, v, a), ob = orientation(u, v, b);
-        if (oa == 0 || ob == 0) {
-            x = oa == 0 ? a : b;
-        } else {
-            const NT abx = b.x - a.x, aby = b.y - a.y;
-            const NT cu = abx * (u.y - a.y) - aby * (u.x - a.x);
-            const NT cv = abx * (v.y - a.y) - aby * (v.x - a.x);
-            const NT f = cu / (cu - cv);
-            x = point<NT>{NT(u.x + f * (v.x - u.x)), NT(u.y + f * (v.y - u.y))};
-        }
+        x = oa == 0 ? a : ob == 0 ? b : crossing(a, b, u, v);
     }
     return {number_traits<NT>::from_double(0), x, x, part_of(x, a, b), part_of(x, u, v)};
 }
@@ -201,21 +205,22 @@ scaled_double scaled_nearest(const NT& x) {
     if (tr::sign(x) == 0) return {};
     NT y = x;
     int k = 0;
-    const NT up = tr::from_double(0x1p600), down = tr::from_double(0x1p-600);
-    for (int step = 0; step < 8 && !(tr::to_double(y) >= 0x1p-900); ++step) {
-        y = NT(y * up);
+    double d = tr::to_double(y);
+    for (int step = 0; step < 8 && !(d >= 0x1p-900); ++step) {
+        y = NT(y * tr::from_double(0x1p600));
         k -= 600;
+        d = tr::to_double(y);
     }
-    for (int step = 0; step < 8 && !(tr::to_double(y) <= 0x1p900); ++step) {
-        y = NT(y * down);
+    for (int step = 0; step < 8 && !(d <= 0x1p900); ++step) {
+        y = NT(y * tr::from_double(0x1p-600));
         k += 600;
+        d = tr::to_double(y);
     }
-    const auto odd = [](double d) {
+    const auto odd = [](double value) {
         std::uint64_t bits;
-        std::memcpy(&bits, &d, sizeof bits);
+        std::memcpy(&bits, &value, sizeof bits);
         return (bits & 1) != 0;
     };
-    double d = tr::to_double(y);
     for (int step = 0; step < 64; ++step) {
         const NT offset = y - tr::from_double(d);
         const int side = tr::sign(offset);
@@ -397,10 +402,41 @@ inline distance_range segment_distance_range(const point<double>& a, const point
     return r;
 }
 
+/// Whether [a, b] (exact doubles) and the exact segment [U, V], whose ends
+/// lie within `delta` per coordinate of the doubles u and v, certainly cross
+/// at one point strictly inside both:
+///   - U and V lie strictly on either side of the line through a and b: u
+///     and v do, farther from it than 2 delta > delta sqrt 2 (certain_side
+///     with slack 2 delta |b - a|_1 >= 2 delta |b - a|);
+///   - a and b lie strictly on either side of the line through U and V: for
+///     p = a or b, (V - U) x (p - U) differs from (v - u) x (p - u) by at
+///     most |e_v - e_u| |p - u| + |v - u| |e_u| + |e_v - e_u| |e_u| <=
+///     2 sqrt 2 delta |p - u| + sqrt 2 delta |v - u| + 4 delta^2 (|e| <=
+///     delta sqrt 2 for each end's error e), below the slack
+///     delta (3 |p - u|_1 + 2 |v - u|_1) + 4 delta^2, widened by
+///     bound_rounding for its own rounding.
+/// False whenever the bounds cannot tell.
+inline bool segments_must_cross(const point<double>& a, const point<double>& b, const point<double>& u,
+                                const point<double>& v, double delta) {
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double line_slack = 2 * delta * (std::fabs(dx) + std::fabs(dy)) * (1 + bound_rounding);
+    const int su = certain_side(a, dx, dy, u, line_slack);
+    if (su == 0 || certain_side(a, dx, dy, v, line_slack) != -su) return false;
+    const double ex = v.x - u.x, ey = v.y - u.y, e1 = std::fabs(ex) + std::fabs(ey);
+    const auto slack = [&](const point<double>& p) {
+        return (delta * (3 * (std::fabs(p.x - u.x) + std::fabs(p.y - u.y)) + 2 * e1) + 4 * delta * delta) *
+               (1 + bound_rounding);
+    };
+    const int sa = certain_side(u, ex, ey, a, slack(a));
+    return sa != 0 && certain_side(u, ex, ey, b, slack(b)) == -sa;
+}
+
 /// closest_between_segments of A, B (exact doubles a, b in NT) and U, V (in
 /// NT, within `delta` per coordinate of the doubles u, v: B's edge posed
 /// exactly and in double), with the same answer at less cost in an exact NT:
-/// when segments_may_meet(a, b, u, v, delta) is false the exact segments do
+/// segments that certainly cross (segments_must_cross) meet at their
+/// crossing, strictly inside both, with no sign evaluated in NT; when
+/// segments_may_meet(a, b, u, v, delta) is false the exact segments do
 /// not meet, and an end-to-segment candidate whose lower bound (its
 /// point_segment_estimate on the doubles, less its error and posing_spread
 /// delta) exceeds another's upper bound is neither the least nor tied with
@@ -410,6 +446,10 @@ segment_pair_closest<NT> closest_between_segments(const point<double>& a, const 
                                                   const point<double>& u, const point<double>& v, double delta,
                                                   const point<NT>& A, const point<NT>& B, const point<NT>& U,
                                                   const point<NT>& V) {
+    if (segments_must_cross(a, b, u, v, delta)) {
+        const point<NT> x = detail::crossing(A, B, U, V);
+        return {number_traits<NT>::from_double(0), x, x, segment_part::interior, segment_part::interior};
+    }
     if (segments_may_meet(a, b, u, v, delta)) return closest_between_segments(A, B, U, V);
     const estimate ms[4] = {point_segment_estimate(a, u, v), point_segment_estimate(b, u, v),
                             point_segment_estimate(u, a, b), point_segment_estimate(v, a, b)};
