@@ -2,6 +2,7 @@
 // `influence2d collide`: runs a detector over a sequence of poses of the moving
 // polygon and reports the frames that collide.
 
+#include <chrono>
 #include <cstddef>
 #include <iomanip>
 #include <iostream>
@@ -13,7 +14,9 @@
 
 #include "commands.hpp"
 #include "files.hpp"
+#include "motion_queries.hpp"
 #include "number_types.hpp"
+#include "report.hpp"
 #include "scene_input.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
@@ -31,26 +34,57 @@ struct collide_options {
     std::string shape = "capsule";
     double distance = 0.0;
     bool witness = false;
+    bool separation = false;  ///< add the separation at every pose
+    bool continuous = false;  ///< a frame collides when the motion into it meets A
     unsigned threads = 0;  ///< 0: every hardware thread
     std::string out;
     /// The old spelling of --trajectory-frames, still taken with a warning.
     std::size_t deprecated_frames = 0;
 };
 
+/// What a frame adds to FRAMES.csv beyond collides and the edges: the
+/// continuous contact time (--continuous), the separation and the closest
+/// features (--separation, the features with --witness).
+struct frame_extras {
+    const std::vector<contact_row>* contacts = nullptr;       ///< motion k - 1 into frame k
+    const std::vector<separation_row>* separations = nullptr;  ///< per frame
+    bool closest = false;
+
+    std::vector<std::string> columns() const {
+        std::vector<std::string> c;
+        if (contacts) c.emplace_back("contact_t");
+        if (separations) c.emplace_back("separation");
+        if (separations && closest) c.emplace_back("closest");
+        return c;
+    }
+    std::string values(std::size_t f) const {
+        std::string v;
+        bool first = true;
+        const auto put = [&](const std::string& x) {
+            if (!first) v += ',';
+            v += x;
+            first = false;
+        };
+        if (contacts) put(f > 0 && (*contacts)[f - 1].contact ? general((*contacts)[f - 1].t, 17) : std::string());
+        if (separations) {
+            const separation_row& r = (*separations)[f];
+            put(general(r.distance, 17));
+            if (closest) put(feature_text(r.static_feature) + ":" + feature_text(r.moving_feature));
+        }
+        return v;
+    }
+};
+
 /// The frames as CSV, to `out` through `out.tmp` renamed into place (a
 /// failure leaves neither a partial nor a changed file), or to standard output
 /// for '-'.
-void write_frames(const std::string& out, const std::vector<frame_result>& frames, bool witness) {
+void write_frames(const std::string& out, const std::vector<frame_result>& frames, bool witness,
+                  const frame_extras& extras) {
     std::ostringstream text;
-    write_frames_csv(text, frames, witness);
+    write_frames_csv(text, frames, witness, extras.columns(), [&](std::size_t f) { return extras.values(f); });
     write_output(out, text.str());
 }
 
-std::string format_fixed(double x, int digits) {
-    std::ostringstream s;
-    s << std::fixed << std::setprecision(digits) << x;
-    return s.str();
-}
 
 void run_collide(collide_options o) {
     if (o.deprecated_frames != 0) {
@@ -66,6 +100,12 @@ void run_collide(collide_options o) {
                                     "its influence mask from frame to frame, which a frame "
                                     "answered again in exact arithmetic cannot hand back; use "
                                     "--algorithm sound or brute-force, or another number type");
+    if (o.continuous && o.distance != 0)
+        throw std::invalid_argument("--continuous asks whether the polygons meet between poses: it takes "
+                                    "--distance 0 only (got " + general(o.distance, 17) + ")");
+    if ((o.continuous || o.separation) && o.algorithm == "paper")
+        throw std::invalid_argument(std::string(o.continuous ? "--continuous" : "--separation") +
+                                    " is answered by the sound queries only, not --algorithm paper");
     // Read every input and check the output path first; report all problems at once.
     const scene_input in = read_scene(o.scene, o.out);
     detector_options options;
@@ -76,7 +116,29 @@ void run_collide(collide_options o) {
     // The paper's detector carries its influence mask from frame to frame:
     // its answers depend on the frames before, so it runs on one thread.
     const unsigned threads = o.algorithm == "paper" ? 1 : batch_threads(o.threads);
-    const frames_run r = type.run({in.a, in.b, in.poses, options, o.algorithm, threads});
+    frames_run r = type.run({in.a, in.b, in.poses, options, o.algorithm, threads});
+
+    // Continuous: frame k > 0 also collides when the motion from pose k - 1
+    // meets A at some time between the poses.
+    std::vector<contact_row> contacts;
+    std::size_t between = 0;
+    double contact_seconds = 0, separation_seconds = 0;
+    if (o.continuous) {
+        const auto start = std::chrono::steady_clock::now();
+        contacts = type.contacts(in.a, in.b, in.poses);
+        contact_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        for (std::size_t k = 0; k < contacts.size(); ++k)
+            if (contacts[k].contact && !r.frames[k + 1].collides) {
+                r.frames[k + 1].collides = true;
+                ++between;
+            }
+    }
+    std::vector<separation_row> separations;
+    if (o.separation) {
+        const auto start = std::chrono::steady_clock::now();
+        separations = type.separations(in.a, in.b, in.poses);
+        separation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
 
     std::size_t collisions = 0, first = 0;
     bool any = false;
@@ -87,7 +149,9 @@ void run_collide(collide_options o) {
         ++collisions;
     }
 
-    if (!o.out.empty()) write_frames(o.out, r.frames, o.witness);
+    if (!o.out.empty())
+        write_frames(o.out, r.frames, o.witness,
+                     {o.continuous ? &contacts : nullptr, o.separation ? &separations : nullptr, o.witness});
 
     // With the frames on standard output, the summary goes to standard error.
     std::ostream& summary = is_standard_stream(o.out) ? std::cerr : std::cout;
@@ -101,9 +165,25 @@ void run_collide(collide_options o) {
             << "time per frame:  "
             << (r.frames.empty()
                     ? std::string("n/a")
-                    : format_fixed(r.seconds * 1e6 / static_cast<double>(r.frames.size()), 3) +
+                    : fixed(r.seconds * 1e6 / static_cast<double>(r.frames.size()), 3) +
                           " us")
-            << "   (total " << format_fixed(total_ms, total_ms >= 1 ? 1 : 3) << " ms)\n";
+            << "   (total " << fixed(total_ms, total_ms >= 1 ? 1 : 3) << " ms)\n";
+    if (o.continuous)
+        summary << "between poses:   " << between
+                << " frames whose motion meets the static polygon only between the poses\n"
+                << "time per motion: "
+                << (contacts.empty() ? std::string("n/a")
+                                     : fixed(contact_seconds * 1e6 / static_cast<double>(contacts.size()), 3) + " us")
+                << "\n";
+    if (o.separation && !separations.empty()) {
+        std::size_t nearest = 0;
+        for (std::size_t k = 1; k < separations.size(); ++k)
+            if (separations[k].distance < separations[nearest].distance) nearest = k;
+        summary << "least separation: " << general(separations[nearest].distance, 17) << " (frame " << nearest
+                << ")\n"
+                << "time per separation: "
+                << fixed(separation_seconds * 1e6 / static_cast<double>(separations.size()), 3) << " us\n";
+    }
     if (r.exact_frames) summary << "exact fallbacks: " << *r.exact_frames << " frames\n";
     if (!o.out.empty()) summary << "frames written:  " << shown_name(o.out, true) << "\n";
 }
@@ -147,6 +227,17 @@ void register_collide(CLI::App& app) {
     sub->add_flag("--witness", o->witness,
                   "Also report, per frame, the pairs (static edge : moving edge) within the "
                   "distance, edges numbered in input order from 0, rings one after another");
+    sub->add_flag("--separation", o->separation,
+                  "Also compute the distance between the closed regions at every pose (0 when they "
+                  "meet): the column separation of FRAMES.csv and, with --witness, the column closest "
+                  "(static feature : moving feature, as v<vertex> or e<edge> in input numbering, or "
+                  "interior); the summary gives the least separation. Exact (to the nearest double "
+                  "within one unit in the last place) in the exact, certified and interval types");
+    sub->add_flag("--continuous", o->continuous,
+                  "Treat consecutive poses as motions (translation and angle linear in time): frame k "
+                  "also collides when the polygons meet at some time between pose k - 1 and pose k "
+                  "(tunneling caught); FRAMES.csv gets the column contact_t, the earliest contact time "
+                  "in that motion. With --distance 0 only");
     sub->add_option("--threads", o->threads,
                     "Threads answering the frames: each runs its own detector over a contiguous "
                     "run of the poses (the answers are those of one detector over all of them); "
@@ -157,7 +248,7 @@ void register_collide(CLI::App& app) {
         ->check(CLI::Range(0u, 4096u))
         ->type_name("N");
     sub->add_option("--out", o->out,
-                    "Write one CSV line per frame (frame,collides[,edges]) to this file; it is "
+                    "Write one CSV line per frame (frame,collides[,edges][,contact_t][,separation[,closest]]) to this file; it is "
                     "replaced only when the whole run succeeds. '-': standard output, and the "
                     "summary goes to standard error")
         ->type_name("FRAMES.csv");

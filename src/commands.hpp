@@ -20,6 +20,8 @@ void register_bench(CLI::App& app);
 void register_audit(CLI::App& app);
 /// `influence2d render`: a scene drawn as SVG.
 void register_render(CLI::App& app);
+/// `influence2d sweep`: the first contact along each motion between poses.
+void register_sweep(CLI::App& app);
 
 /// Thrown by a command to end the tool with `code` after its output is done.
 struct exit_status {

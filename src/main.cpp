@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
     influence2d::cli::register_bench(app);
     influence2d::cli::register_audit(app);
     influence2d::cli::register_render(app);
+    influence2d::cli::register_sweep(app);
 
     try {
         app.parse(argc, argv);

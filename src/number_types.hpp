@@ -28,6 +28,7 @@
 #include "influence2d/detect/result.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/number/multiprecision.hpp"
+#include "motion_queries.hpp"
 
 namespace influence2d::cli {
 
@@ -122,18 +123,30 @@ struct number_type {
     bool exact_fallback;
     /// Runs the detector of an algorithm in this type over the poses.
     frames_run (*run)(const detector_job&);
+    /// The separation at every pose (`collide --separation`).
+    std::vector<separation_row> (*separations)(const polygon&, const polygon&, const std::vector<pose>&);
+    /// The first contact of the motion between each two consecutive poses
+    /// (`sweep`, `collide --continuous`).
+    std::vector<contact_row> (*contacts)(const polygon&, const polygon&, const std::vector<pose>&);
 };
 
 /// Every number type, in the order the help lists them.
 inline const number_type number_types[] = {
     // clang-format off
-    {"float", "IEEE single precision, refusing coordinates beyond float's range", false, false, &number_type_detail::run_in<float>},
-    {"double", "IEEE double precision", false, false, &number_type_detail::run_in<double>},
-    {"long-double", "the platform's long double (64-bit significand on x86)", false, false, &number_type_detail::run_in<long double>},
-    {"quad", "113-bit software floating point (Boost cpp_bin_float_quad)", false, false, &number_type_detail::run_in<quad>},
-    {"exact", "CGAL's exact rationals, slower", true, false, &number_type_detail::run_in<exact_rational>},
-    {"certified", "double with a running error bound, a frame whose signs it cannot certify answered again in exact rationals (counted as 'exact fallbacks')", true, true, &number_type_detail::run_filtered<certified_detector>},
-    {"interval", "the same with CGAL's interval arithmetic", true, true, &number_type_detail::run_filtered<interval_detector>},
+    {"float", "IEEE single precision, refusing coordinates beyond float's range", false, false, &number_type_detail::run_in<float>,
+     &query_detail::separations_in<float>, &query_detail::contacts_in<float>},
+    {"double", "IEEE double precision", false, false, &number_type_detail::run_in<double>,
+     &query_detail::separations_in<double>, &query_detail::contacts_in<double>},
+    {"long-double", "the platform's long double (64-bit significand on x86)", false, false, &number_type_detail::run_in<long double>,
+     &query_detail::separations_in<long double>, &query_detail::contacts_in<long double>},
+    {"quad", "113-bit software floating point (Boost cpp_bin_float_quad)", false, false, &number_type_detail::run_in<quad>,
+     &query_detail::separations_in<quad>, &query_detail::contacts_in<quad>},
+    {"exact", "CGAL's exact rationals, slower", true, false, &number_type_detail::run_in<exact_rational>,
+     &query_detail::separations_in<exact_rational>, &query_detail::contacts_in<exact_rational>},
+    {"certified", "double with a running error bound, a frame whose signs it cannot certify answered again in exact rationals (counted as 'exact fallbacks')", true, true, &number_type_detail::run_filtered<certified_detector>,
+     &query_detail::certified_separations, &query_detail::certified_contacts},
+    {"interval", "the same with CGAL's interval arithmetic (separation and sweep: as certified)", true, true, &number_type_detail::run_filtered<interval_detector>,
+     &query_detail::certified_separations, &query_detail::certified_contacts},
     // clang-format on
 };
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "influence2d/detect/trajectory.hpp"
+#include "influence2d/io/csv.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "support/process.hpp"
 
@@ -22,9 +23,7 @@ const std::string data_dir = INFLUENCE2D_DATA_DIR;
 
 std::string poses_csv(const std::vector<pose>& poses) {
     std::ostringstream s;
-    s.precision(17);
-    s << "tx,ty,theta\n";
-    for (const pose& p : poses) s << p.tx << ',' << p.ty << ',' << p.theta << '\n';
+    write_poses_csv(s, poses);
     return s.str();
 }
 

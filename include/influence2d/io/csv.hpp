@@ -209,11 +209,15 @@ inline void write_poses_csv(const std::string& path, const std::vector<pose>& po
 /// Writes one line per frame, after a header: `frame,collides` (frames from
 /// 0, collides 0 or 1), or with `witness` `frame,collides,edges` where edges
 /// lists the involved pairs as `static:moving` input edge numbers separated
-/// by ';' (empty when there is none). Stream errors are left in the stream's
-/// state.
-inline void write_frames_csv(std::ostream& out, const std::vector<frame_result>& results,
-                             bool witness) {
-    out << (witness ? "frame,collides,edges\n" : "frame,collides\n");
+/// by ';' (empty when there is none). Then the columns named in
+/// `extra_columns`, frame f's values being `extra(f)` (already joined by
+/// commas, no leading comma). Stream errors are left in the stream's state.
+template <class Extra>
+void write_frames_csv(std::ostream& out, const std::vector<frame_result>& results, bool witness,
+                      const std::vector<std::string>& extra_columns, Extra&& extra) {
+    out << (witness ? "frame,collides,edges" : "frame,collides");
+    for (const std::string& c : extra_columns) out << ',' << c;
+    out << '\n';
     std::string row;
     for (std::size_t f = 0; f < results.size(); ++f) {
         row.clear();
@@ -230,9 +234,18 @@ inline void write_frames_csv(std::ostream& out, const std::vector<frame_result>&
                 row += std::to_string(pr.moving_edge);
             }
         }
+        if (!extra_columns.empty()) {
+            row += ',';
+            row += extra(f);
+        }
         row += '\n';
         out << row;
     }
+}
+
+/// write_frames_csv without extra columns.
+inline void write_frames_csv(std::ostream& out, const std::vector<frame_result>& results, bool witness) {
+    write_frames_csv(out, results, witness, {}, [](std::size_t) { return std::string(); });
 }
 
 }  // namespace influence2d

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// The queries beyond yes or no that the tool runs per number type: the
+// separation at every pose (`collide --separation`) and the first contact of
+// every motion between consecutive poses (`sweep`, `collide --continuous`).
+// number_types.hpp's table points each type at its instantiation here.
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/core/pose.hpp"
+#include "influence2d/detect/feature.hpp"
+#include "influence2d/detect/separation.hpp"
+#include "influence2d/detect/sweep.hpp"
+#include "influence2d/number/traits.hpp"
+#include "influence2d/predicates/contact_time.hpp"
+
+namespace influence2d::cli {
+
+/// One pose's separation as the tool reports it.
+struct separation_row {
+    double distance = 0;  ///< between the closed regions, 0 when they meet
+    feature static_feature{feature_kind::vertex, 0};
+    feature moving_feature{feature_kind::vertex, 0};
+};
+
+/// One motion's first contact as the tool reports it.
+struct contact_row {
+    bool contact = false;
+    double t = 0;  ///< the earliest contact time (meaningful with contact)
+    feature static_feature{feature_kind::vertex, 0};
+    feature moving_feature{feature_kind::vertex, 0};
+};
+
+/// A feature as the tool writes it: v<number> for a vertex, e<number> for an
+/// edge (input numbering, rings one after another), "interior" for the region.
+inline std::string feature_text(const feature& f) {
+    switch (f.kind) {
+        case feature_kind::vertex: return "v" + std::to_string(f.index);
+        case feature_kind::edge: return "e" + std::to_string(f.index);
+        case feature_kind::interior: break;
+    }
+    return "interior";
+}
+
+namespace query_detail {
+
+/// A time of NT as the nearest double (exactly rounded for an exact NT).
+template <class NT>
+double time_as_double(const NT& t) {
+    return nearest_double(time_fraction<NT>{t, NT(1)});
+}
+
+/// The separation at every pose, in NT, one query object over the poses.
+template <class NT>
+std::vector<separation_row> separations_in(const polygon& a, const polygon& b, const std::vector<pose>& poses) {
+    separation_query<NT> query(a, b);
+    std::vector<separation_row> rows;
+    rows.reserve(poses.size());
+    for (const pose& p : poses) {
+        const separation_result<NT> r = query(p);
+        rows.push_back({distance_of<NT>(r.squared_distance), r.static_feature, r.moving_feature});
+    }
+    return rows;
+}
+
+/// The separation at every pose, certified: exact features, the distance
+/// within one unit in the last place.
+inline std::vector<separation_row> certified_separations(const polygon& a, const polygon& b,
+                                                         const std::vector<pose>& poses) {
+    std::vector<separation_row> rows;
+    rows.reserve(poses.size());
+    for (const pose& p : poses) {
+        const certified_separation_result r = certified_separation(a, b, p);
+        rows.push_back({r.distance, r.static_feature, r.moving_feature});
+    }
+    return rows;
+}
+
+/// The first contact of each motion from poses[k] to poses[k + 1], in NT.
+template <class NT>
+std::vector<contact_row> contacts_in(const polygon& a, const polygon& b, const std::vector<pose>& poses) {
+    std::vector<contact_row> rows;
+    for (std::size_t k = 0; k + 1 < poses.size(); ++k) {
+        const contact_result<NT> r = first_contact<NT>(a, b, poses[k], poses[k + 1]);
+        rows.push_back({r.contact, r.contact ? time_as_double(r.time) : 0.0, r.static_feature, r.moving_feature});
+    }
+    return rows;
+}
+
+/// The first contact of each motion, certified.
+inline std::vector<contact_row> certified_contacts(const polygon& a, const polygon& b, const std::vector<pose>& poses) {
+    std::vector<contact_row> rows;
+    for (std::size_t k = 0; k + 1 < poses.size(); ++k) {
+        const contact_result<double> r = certified_first_contact(a, b, poses[k], poses[k + 1]);
+        rows.push_back({r.contact, r.contact ? r.time : 0.0, r.static_feature, r.moving_feature});
+    }
+    return rows;
+}
+
+}  // namespace query_detail
+
+}  // namespace influence2d::cli

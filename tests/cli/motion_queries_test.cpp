@@ -1,0 +1,164 @@
+// SPDX-License-Identifier: BSL-1.0
+// The tool's queries beyond yes or no: `collide --continuous` (a square
+// jumping across a thin wall between two poses is caught), `collide
+// --separation` (the column equals the library's certified separation,
+// written to 17 digits), `sweep` (CONTACTS.csv, the same contact in every
+// number type) and their refusals (exit 2, a message naming the place, no
+// output file).
+
+#include <catch2/catch.hpp>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "influence2d/detect/separation.hpp"
+#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/io/csv.hpp"
+#include "influence2d/io/wkt.hpp"
+#include "support/process.hpp"
+
+using namespace influence2d;
+using namespace test_process;
+
+namespace {
+
+const std::string data_dir = INFLUENCE2D_DATA_DIR;
+
+const char* wall_wkt = "POLYGON((-0.05 -5, 0.05 -5, 0.05 5, -0.05 5, -0.05 -5))";
+const char* square_wkt = "POLYGON((-1 -1, 1 -1, 1 1, -1 1, -1 -1))";
+/// The square jumps from x = -3 to x = 3 across the wall (13/40 of the way
+/// its right side reaches the wall's left side), then moves and turns clear.
+const char* jump_csv = "tx,ty,theta\n-3,0,0\n3,0,0\n3,8,0.5\n";
+
+std::string poses_csv(const std::vector<pose>& poses) {
+    std::ostringstream s;
+    write_poses_csv(s, poses);
+    return s.str();
+}
+
+std::string seventeen(double x) {
+    std::ostringstream s;
+    s.precision(17);
+    s << x;
+    return s.str();
+}
+
+}  // namespace
+
+TEST_CASE("cli: collide --continuous catches a square jumping across a wall", "[cli][sweep]") {
+    const temp_dir dir;
+    const auto wall = dir.file("wall.wkt", wall_wkt), square = dir.file("square.wkt", square_wkt);
+    const auto poses = dir.file("poses.csv", jump_csv);
+    const std::string common = "collide --static " + quote(wall.string()) + " --moving " + quote(square.string()) +
+                               " --poses " + quote(poses.string()) + " --threads 1";
+    for (const char* type : {"double", "long-double", "exact", "certified", "interval"}) {
+        INFO(type);
+        const run_result sampled = run_cli(dir, common + " --number-type " + type);
+        REQUIRE(sampled.exit_code == 0);
+        CHECK(sampled.out.find("collisions:      0\n") != std::string::npos);
+        const run_result swept =
+            run_cli(dir, common + " --number-type " + type + " --continuous --out " + quote((dir / "f.csv").string()));
+        REQUIRE(swept.exit_code == 0);
+        CHECK(swept.out.find("collisions:      1\n") != std::string::npos);
+        CHECK(swept.out.find("first collision: frame 1\n") != std::string::npos);
+        CHECK(swept.out.find("between poses:   1 frames") != std::string::npos);
+        CHECK(slurp(dir / "f.csv") == "frame,collides,contact_t\n0,0,\n1,1," + seventeen(13.0 / 40) + "\n2,0,\n");
+    }
+}
+
+TEST_CASE("cli: sweep writes the first contact of every motion", "[cli][sweep]") {
+    const temp_dir dir;
+    const auto wall = dir.file("wall.wkt", wall_wkt), square = dir.file("square.wkt", square_wkt);
+    const auto poses = dir.file("poses.csv", jump_csv);
+    const std::string common =
+        "sweep --static " + quote(wall.string()) + " --moving " + quote(square.string()) + " --poses " + quote(poses.string());
+    for (const char* type : {"double", "exact", "certified", "interval", "quad"}) {
+        INFO(type);
+        const run_result r = run_cli(dir, common + " --number-type " + type + " --out " + quote((dir / "c.csv").string()));
+        REQUIRE(r.exit_code == 0);
+        CHECK(r.out.find("motions:         2\ncontacts:        1\nfirst contact:   motion 0 at t = " +
+                         seventeen(13.0 / 40)) != std::string::npos);
+        // The square's right side reaches the wall's left edge (e3) with both
+        // its ends at once; the lower one (v1) is reported.
+        CHECK(slurp(dir / "c.csv") == "motion,contact,t,static_feature,moving_feature\n0,1," + seventeen(13.0 / 40) +
+                                          ",e3,v1\n1,0,,,\n");
+    }
+    const run_result to_stdout = run_cli(dir, common + " --out -");
+    REQUIRE(to_stdout.exit_code == 0);
+    CHECK(to_stdout.out.rfind("motion,contact,t,static_feature,moving_feature\n", 0) == 0);
+    CHECK(to_stdout.err.find("contacts:        1") != std::string::npos);
+}
+
+TEST_CASE("cli: sweep and collide --continuous refuse what they cannot answer", "[cli][sweep][input]") {
+    const temp_dir dir;
+    const auto wall = dir.file("wall.wkt", wall_wkt), square = dir.file("square.wkt", square_wkt);
+    const std::string scene = "--static " + quote(wall.string()) + " --moving " + quote(square.string());
+    const fs::path out = dir / "c.csv";
+    const auto one = dir.file("one.csv", "tx,ty,theta\n1,2,0\n");
+    const auto nan = dir.file("nan.csv", "tx,ty,theta\n1,2,0\n3,nan,0\n");
+    const auto unclosed = dir.file("unclosed.wkt", "POLYGON((0 0, 1 0, 1 1");
+    struct refusal {
+        std::string args, message;
+    };
+    const std::vector<refusal> refusals = {
+        {"sweep " + scene + " --poses " + quote(one.string()), "one.csv: 1 pose: a motion needs two"},
+        {"sweep " + scene + " --poses " + quote(nan.string()), "nan.csv: line 3, column ty"},
+        {"sweep --static " + quote(unclosed.string()) + " --moving " + quote(square.string()) + " --poses " +
+             quote(nan.string()),
+         "unclosed.wkt"},
+        {"collide " + scene + " --poses " + quote(nan.string()) + " --continuous --distance 0.5",
+         "--continuous asks whether the polygons meet between poses"},
+        {"collide " + scene + " --trajectory linear --continuous --algorithm paper", "not --algorithm paper"},
+        {"collide " + scene + " --trajectory linear --separation --algorithm paper", "not --algorithm paper"},
+    };
+    for (const refusal& r : refusals) {
+        INFO(r.args);
+        const run_result run = run_cli(dir, r.args + " --out " + quote(out.string()));
+        CHECK(run.exit_code == 2);
+        CHECK(run.err.find(r.message) != std::string::npos);
+        CHECK(!fs::exists(out));
+    }
+}
+
+TEST_CASE("cli: collide --separation writes the certified separation of every pose", "[cli][separation]") {
+    const temp_dir dir;
+    const std::string a = data_dir + "/families/hole_64.wkt", b = data_dir + "/families/irregular_16.wkt";
+    const polygon pa = read_wkt_file(a), pb = read_wkt_file(b);
+    const std::vector<pose> poses = random_poses(pa, pb, 60, 30, 110, 5);
+    const auto poses_file = dir.file("poses.csv", poses_csv(poses));
+    // The poses as the tool reads them back (17 digits: the same doubles).
+    for (const char* type : {"certified", "exact", "double"}) {
+        INFO(type);
+        const run_result r = run_cli(dir, "collide --static " + quote(a) + " --moving " + quote(b) + " --poses " +
+                                              quote(poses_file.string()) + " --separation --witness --number-type " +
+                                              type + " --out " + quote((dir / "f.csv").string()));
+        REQUIRE(r.exit_code == 0);
+        CHECK(r.out.find("least separation: ") != std::string::npos);
+        const std::vector<std::string> lines = lines_of(slurp(dir / "f.csv"));
+        REQUIRE(lines.size() == poses.size() + 1);
+        CHECK(lines[0] == "frame,collides,edges,separation,closest");
+        std::size_t apart = 0;
+        for (std::size_t k = 0; k < poses.size(); ++k) {
+            const certified_separation_result s = certified_separation(pa, pb, poses[k]);
+            std::istringstream row(lines[k + 1]);
+            std::string frame, collides, edges, separation, closest;
+            std::getline(row, frame, ',');
+            std::getline(row, collides, ',');
+            std::getline(row, edges, ',');
+            std::getline(row, separation, ',');
+            std::getline(row, closest, ',');
+            INFO("frame " << k << ": " << lines[k + 1]);
+            CHECK(collides == (s.meet ? "1" : "0"));
+            if (std::string(type) == "double") {
+                CHECK(std::stod(separation) == Approx(s.distance).margin(1e-12));
+            } else {
+                CHECK(separation == seventeen(s.distance));
+                if (!s.meet) CHECK(closest.find(':') != std::string::npos);
+            }
+            apart += s.meet ? 0 : 1;
+        }
+        CHECK(apart > 5);
+        CHECK(apart < poses.size());
+    }
+}
