@@ -148,7 +148,8 @@ struct search_space {
         double lower;        ///< a lower bound of the distance between their edges
     };
     std::vector<entry> stack;
-    std::vector<candidate> candidates;
+    std::vector<candidate> candidates;  ///< phase 1's candidates, or
+    std::optional<std::pair<std::uint32_t, std::uint32_t>> crossing;  ///< the first pair that certainly crosses
 };
 
 /// The trees, polygons and pose of one query, in double.
@@ -176,14 +177,20 @@ double pair_upper(const search_input& in, Approx& approx, std::optional<std::pai
 /// bounds. Returns U, an upper bound of the distance between the
 /// boundaries, and leaves in space.candidates every edge pair whose lower
 /// bound is at most U, in the order evaluated_before: among them every pair
-/// at the least distance. `upper` is a known upper bound (a seed) or
-/// infinity.
+/// at the least distance. Stops at the first edge pair that certainly
+/// crosses (segments_must_cross), left in space.crossing, returning 0: the
+/// boundaries meet there. `upper` is a known upper bound (a seed) or
+/// infinity. The order of the search depends on the pose alone, not on
+/// `upper` (which only prunes node pairs and edge pairs farther than it, and
+/// a crossing pair is never farther): the crossing found is the same
+/// whatever the seed.
 ///
 ///   stack <- (A's root, B's root, lower bound)
 ///   while stack: (s, m, L) <- pop
 ///       L > U: prune (U may have dropped since the push)
 ///       both leaves: for each edge pair whose boxes are within U and
 ///       that no line separates with 2 U to spare (segments_may_meet):
+///           certainly crossing: that pair; stop
 ///           [lo, hi] <- segment_distance_range; U <- min(U, hi)
 ///           lo <= U: candidate
 ///       else split the node of larger radius (the inner one): each child
@@ -194,6 +201,7 @@ template <class Approx>
 double search_pairs(const search_input& in, Approx& approx, double upper, search_space& space) {
     space.stack.clear();
     space.candidates.clear();
+    space.crossing.reset();
     const edge_tree &ta = in.a_tree, &tb = in.b_tree;
     if (ta.node_count() == 0 || tb.node_count() == 0) return upper;
     const double spread = posing_spread * in.delta * (1 + bound_rounding);
@@ -215,10 +223,14 @@ double search_pairs(const search_input& in, Approx& approx, double upper, search
                 for (std::uint32_t i = s.first; i < s.first + s.count; ++i) {
                     if (box_gap_lower(ta.edge_box_at(i), fb) - spread > upper) continue;
                     const std::uint32_t e = ta.edge_at(i);
+                    const point<double>&a0 = in.a.vertex(e), &a1 = in.a.vertex(in.a.next(e));
                     // Separated by a line with more than 2 U to spare: farther than U.
-                    if (!segments_may_meet(in.a.vertex(e), in.a.vertex(in.a.next(e)), u, v, upper)) continue;
-                    const distance_range r =
-                        segment_distance_range(in.a.vertex(e), in.a.vertex(in.a.next(e)), u, v, in.delta);
+                    if (!segments_may_meet(a0, a1, u, v, upper)) continue;
+                    if (segments_must_cross(a0, a1, u, v, in.delta)) {
+                        space.crossing = std::make_pair(e, f);
+                        return 0;
+                    }
+                    const distance_range r = segment_distance_range(a0, a1, u, v, in.delta);
                     upper = std::min(upper, r.upper);
                     if (r.lower <= upper) space.candidates.push_back({r.lower, e, f});
                 }
@@ -267,8 +279,10 @@ struct chosen_pair {
     bool found = false;
 };
 
-/// Phase 2: the candidates evaluated in NT (evaluate(e, f), the pair's
-/// closest_between_segments) in the order evaluated_before, until the next
+/// Phase 2: the pair that certainly crosses, if phase 1 found one (its
+/// distance is 0). Otherwise the candidates evaluated in NT (evaluate(e,
+/// f), the pair's closest_between_segments) in the order evaluated_before,
+/// until the next
 /// lower bound exceeds the best distance found (upper_distance); the least
 /// squared distance wins, and among equal ones the least (A's edge, B's
 /// edge). Every pair at the least distance has a lower bound at most that
@@ -277,8 +291,17 @@ struct chosen_pair {
 /// distance 0 has lower bound 0 and so comes, in edge order, before any
 /// other. `evaluated` counts the pairs evaluated.
 template <class NT, class Evaluate>
-chosen_pair<NT> closest_candidate(const std::vector<candidate>& cs, Evaluate&& evaluate, std::size_t& evaluated) {
+chosen_pair<NT> closest_candidate(const search_space& space, Evaluate&& evaluate, std::size_t& evaluated) {
     chosen_pair<NT> best;
+    if (space.crossing) {
+        ++evaluated;
+        best.static_edge = space.crossing->first;
+        best.moving_edge = space.crossing->second;
+        best.closest = evaluate(best.static_edge, best.moving_edge);
+        best.found = true;
+        return best;
+    }
+    const std::vector<candidate>& cs = space.candidates;
     double reach = HUGE_VAL;
     for (const candidate& c : cs) {
         if (best.found && c.lower > reach) break;
@@ -480,7 +503,7 @@ separation_result<NT> separate(static_side<NT>& side, const search_input& in, wo
     search_pairs(in, w.approx, pair_upper(in, w.approx, w.last), w.space);
     w.evaluated = 0;
     const chosen_pair<NT> best = closest_candidate<NT>(
-        w.space.candidates, [&](std::uint32_t e, std::uint32_t f) { return pair_closest<NT>(in, w.approx, a_vertex, b_vertex, e, f); },
+        w.space, [&](std::uint32_t e, std::uint32_t f) { return pair_closest<NT>(in, w.approx, a_vertex, b_vertex, e, f); },
         w.evaluated);
     INFLUENCE2D_ASSERT(best.found, "phase 1 left no candidate");
     w.last = std::make_pair(best.static_edge, best.moving_edge);
@@ -516,9 +539,11 @@ separation_result<NT> separate(static_side<NT>& side, const search_input& in, wo
 /// The features realise the distance: static_point lies on static_feature,
 /// moving_point on posed B's moving_feature, and their squared distance is
 /// squared_distance. When several feature pairs do, the one of the least
-/// stored (A's edge, B's edge) pair is reported, so every query in an exact
-/// NT (this one, the one on polygons, separation_query, certified_separation)
-/// names the same features. When the regions meet: a vertex or edge of each
+/// stored (A's edge, B's edge) pair is reported; when some edge pairs
+/// certainly cross (their bounds in double prove it), the first of them the
+/// search meets, in an order that depends on the pose alone. So every query
+/// in an exact NT (this one, the one on polygons, separation_query,
+/// certified_separation) names the same features. When the regions meet: a vertex or edge of each
 /// sharing a point when the boundaries meet (a vertex of one on the other,
 /// or two edges crossing at a rational point); otherwise one contains a ring
 /// of the other, and the witness is that ring's first vertex (its feature
@@ -661,7 +686,7 @@ inline certified_separation_result certified_separation(const polygon& a, const 
     const auto a_vertex = [&](std::size_t i) { return separation_detail::in<exact_rational>(a.vertex(i)); };
     const auto b_vertex = [&](std::size_t j) -> const point<exact_rational>& { return w.exact[j]; };
     const chosen_pair<exact_rational> best = closest_candidate<exact_rational>(
-        w.space.candidates,
+        w.space,
         [&](std::uint32_t e, std::uint32_t f) { return pair_closest<exact_rational>(in, w.approx, a_vertex, b_vertex, e, f); },
         w.evaluated);
     separation_result<exact_rational> exact;
