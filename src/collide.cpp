@@ -36,6 +36,7 @@ struct collide_options {
     bool witness = false;
     bool separation = false;  ///< add the separation at every pose
     bool continuous = false;  ///< a frame collides when the motion into it meets A
+    std::string static_poses;  ///< the static polygon's poses too, one per frame (empty: A unmoved)
     unsigned threads = 0;  ///< 0: every hardware thread
     std::string out;
     /// The old spelling of --trajectory-frames, still taken with a warning.
@@ -107,7 +108,27 @@ void run_collide(collide_options o) {
         throw std::invalid_argument(std::string(o.continuous ? "--continuous" : "--separation") +
                                     " is answered by the sound queries only, not --algorithm paper");
     // Read every input and check the output path first; report all problems at once.
-    const scene_input in = read_scene(o.scene, o.out);
+    check_one_standard_input({{"--static", o.scene.static_path},
+                              {"--moving", o.scene.moving_path},
+                              {"--poses", o.scene.poses_path},
+                              {"--static-poses", o.static_poses}});
+    scene_input in = read_scene(o.scene, o.out);
+    std::vector<pose> static_poses;
+    if (!o.static_poses.empty()) {
+        static_poses = is_standard_stream(o.static_poses) ? read_poses_csv(std::cin, shown_name(o.static_poses))
+                                                          : read_poses_csv(o.static_poses);
+        if (static_poses.size() != in.poses.size())
+            throw invalid_input(shown_name(o.static_poses) + ": " + std::to_string(static_poses.size()) +
+                                " poses of the static polygon for " + std::to_string(in.poses.size()) +
+                                " of the moving one: give one per frame");
+        if (type.meets_both && (o.witness || o.distance != 0 || o.separation || o.continuous || o.algorithm != "sound"))
+            throw std::invalid_argument("--static-poses in --number-type " + o.number_type +
+                                        " poses both polygons exactly and answers yes or no only: without "
+                                        "--witness, --distance, --separation, --continuous and --algorithm");
+        // A rounded type runs its detector on B's pose relative to A, composed in double.
+        if (!type.meets_both)
+            for (std::size_t k = 0; k < in.poses.size(); ++k) in.poses[k] = relative_pose(static_poses[k], in.poses[k]);
+    }
     detector_options options;
     options.distance = o.distance;
     options.witness = o.witness;
@@ -116,7 +137,17 @@ void run_collide(collide_options o) {
     // The paper's detector carries its influence mask from frame to frame:
     // its answers depend on the frames before, so it runs on one thread.
     const unsigned threads = o.algorithm == "paper" ? 1 : batch_threads(o.threads);
-    frames_run r = type.run({in.a, in.b, in.poses, options, o.algorithm, threads});
+    frames_run r;
+    if (!static_poses.empty() && type.meets_both) {
+        // Both posed exactly, frame by frame.
+        const auto start = std::chrono::steady_clock::now();
+        r.frames.resize(in.poses.size());
+        for (std::size_t k = 0; k < in.poses.size(); ++k)
+            r.frames[k].collides = type.meets_both(in.a, static_poses[k], in.b, in.poses[k]);
+        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    } else {
+        r = type.run({in.a, in.b, in.poses, options, o.algorithm, threads});
+    }
 
     // Continuous: frame k > 0 also collides when the motion from pose k - 1
     // meets A at some time between the poses.
@@ -238,6 +269,12 @@ void register_collide(CLI::App& app) {
                   "also collides when the polygons meet at some time between pose k - 1 and pose k "
                   "(tunneling caught); FRAMES.csv gets the column contact_t, the earliest contact time "
                   "in that motion. With --distance 0 only");
+    sub->add_option("--static-poses", o->static_poses,
+                    "Poses of the static polygon too, one per frame (the format of POSES.csv): frame k "
+                    "asks A posed by its k-th pose against B posed by its own. The exact, certified and "
+                    "interval types pose both exactly in the world and answer yes or no; the rounded "
+                    "types run their detector on B's pose relative to A composed in double")
+        ->type_name("A_POSES.csv");
     sub->add_option("--threads", o->threads,
                     "Threads answering the frames: each runs its own detector over a contiguous "
                     "run of the poses (the answers are those of one detector over all of them); "

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // The queries beyond yes or no that the tool runs per number type: the
-// separation at every pose (`collide --separation`) and the first contact of
-// every motion between consecutive poses (`sweep`, `collide --continuous`).
+// separation at every pose (`collide --separation`), the first contact of
+// every motion between consecutive poses (`sweep`, `collide --continuous`),
+// and, for the exact types, whether both polygons posed in the world meet
+// (`collide --static-poses`).
 // number_types.hpp's table points each type at its instantiation here.
 
 #include <cstddef>
@@ -12,6 +14,7 @@
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/detect/feature.hpp"
+#include "influence2d/detect/posed_meet.hpp"
 #include "influence2d/detect/separation.hpp"
 #include "influence2d/detect/sweep.hpp"
 #include "influence2d/number/traits.hpp"
@@ -98,6 +101,17 @@ inline std::vector<contact_row> certified_contacts(const polygon& a, const polyg
         rows.push_back({r.contact, r.contact ? r.time : 0.0, r.static_feature, r.moving_feature});
     }
     return rows;
+}
+
+/// Whether A posed by pose_a and B posed by pose_b meet, both posed exactly
+/// in exact rationals (no rounded relative pose).
+inline bool exact_meets_both(const polygon& a, const pose& pose_a, const polygon& b, const pose& pose_b) {
+    return intersects<exact_rational>(a, pose_a, b, pose_b);
+}
+
+/// The same answer through the certified type, exact rationals for a pose in doubt.
+inline bool certified_meets_both(const polygon& a, const pose& pose_a, const polygon& b, const pose& pose_b) {
+    return certified_intersects(a, pose_a, b, pose_b);
 }
 
 }  // namespace query_detail

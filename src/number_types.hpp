@@ -128,25 +128,30 @@ struct number_type {
     /// The first contact of the motion between each two consecutive poses
     /// (`sweep`, `collide --continuous`).
     std::vector<contact_row> (*contacts)(const polygon&, const polygon&, const std::vector<pose>&);
+    /// Whether A and B, each posed in the world, meet, both posed exactly
+    /// (`collide --static-poses`); nullptr for a rounded type, which runs
+    /// its detector on B's pose relative to A composed in double.
+    bool (*meets_both)(const polygon&, const pose&, const polygon&, const pose&);
 };
 
 /// Every number type, in the order the help lists them.
 inline const number_type number_types[] = {
     // clang-format off
     {"float", "IEEE single precision, refusing coordinates beyond float's range", false, false, &number_type_detail::run_in<float>,
-     &query_detail::separations_in<float>, &query_detail::contacts_in<float>},
+     &query_detail::separations_in<float>, &query_detail::contacts_in<float>, nullptr},
     {"double", "IEEE double precision", false, false, &number_type_detail::run_in<double>,
-     &query_detail::separations_in<double>, &query_detail::contacts_in<double>},
+     &query_detail::separations_in<double>, &query_detail::contacts_in<double>, nullptr},
     {"long-double", "the platform's long double (64-bit significand on x86)", false, false, &number_type_detail::run_in<long double>,
-     &query_detail::separations_in<long double>, &query_detail::contacts_in<long double>},
+     &query_detail::separations_in<long double>, &query_detail::contacts_in<long double>, nullptr},
     {"quad", "113-bit software floating point (Boost cpp_bin_float_quad)", false, false, &number_type_detail::run_in<quad>,
-     &query_detail::separations_in<quad>, &query_detail::contacts_in<quad>},
+     &query_detail::separations_in<quad>, &query_detail::contacts_in<quad>, nullptr},
     {"exact", "CGAL's exact rationals, slower", true, false, &number_type_detail::run_in<exact_rational>,
-     &query_detail::separations_in<exact_rational>, &query_detail::contacts_in<exact_rational>},
+     &query_detail::separations_in<exact_rational>, &query_detail::contacts_in<exact_rational>,
+     &query_detail::exact_meets_both},
     {"certified", "double with a running error bound, a frame whose signs it cannot certify answered again in exact rationals (counted as 'exact fallbacks')", true, true, &number_type_detail::run_filtered<certified_detector>,
-     &query_detail::certified_separations, &query_detail::certified_contacts},
+     &query_detail::certified_separations, &query_detail::certified_contacts, &query_detail::certified_meets_both},
     {"interval", "the same with CGAL's interval arithmetic (separation and sweep: as certified)", true, true, &number_type_detail::run_filtered<interval_detector>,
-     &query_detail::certified_separations, &query_detail::certified_contacts},
+     &query_detail::certified_separations, &query_detail::certified_contacts, &query_detail::certified_meets_both},
     // clang-format on
 };
 

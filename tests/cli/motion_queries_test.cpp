@@ -3,11 +3,13 @@
 // jumping across a thin wall between two poses is caught), `collide
 // --separation` (the column equals the library's certified separation,
 // written to 17 digits), `sweep` (CONTACTS.csv, the same contact in every
-// number type) and their refusals (exit 2, a message naming the place, no
-// output file).
+// number type), `collide --static-poses` (both polygons moving: the frames
+// of the relative poses) and their refusals (exit 2, a message naming the
+// place, no output file).
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -161,4 +163,58 @@ TEST_CASE("cli: collide --separation writes the certified separation of every po
         CHECK(apart > 5);
         CHECK(apart < poses.size());
     }
+}
+
+TEST_CASE("cli: collide --static-poses moves both polygons", "[cli][static-poses]") {
+    const temp_dir dir;
+    const std::string a = data_dir + "/families/contour_64.wkt", b = data_dir + "/families/starred_32.wkt";
+    const polygon pa = read_wkt_file(a), pb = read_wkt_file(b);
+    // Both polygons translated (and B turned): the relative pose is B's
+    // translation minus A's, exact in double for these grid values.
+    const std::vector<pose> relative = random_poses(pa, pb, 80, 20, 110, 9);
+    std::vector<pose> a_poses, b_poses;
+    for (std::size_t k = 0; k < relative.size(); ++k) {
+        const double sx = std::ldexp(std::round(std::ldexp(static_cast<double>(k) * 3.5 - 100, 10)), -10);
+        const double rx = std::ldexp(std::round(std::ldexp(relative[k].tx, 20)), -20);
+        const double ry = std::ldexp(std::round(std::ldexp(relative[k].ty, 20)), -20);
+        a_poses.push_back({sx, -sx, 0});
+        b_poses.push_back({sx + rx, -sx + ry, relative[k].theta});
+        REQUIRE(b_poses.back().tx - sx == rx);
+        REQUIRE(b_poses.back().ty + sx == ry);
+    }
+    const auto a_file = dir.file("a_poses.csv", poses_csv(a_poses));
+    const auto b_file = dir.file("b_poses.csv", poses_csv(b_poses));
+    std::vector<pose> rel;
+    for (const pose& p : b_poses) rel.push_back({p.tx - a_poses[rel.size()].tx, p.ty - a_poses[rel.size()].ty, p.theta});
+    const auto rel_file = dir.file("rel.csv", poses_csv(rel));
+    const std::string scene = "collide --static " + quote(a) + " --moving " + quote(b) + " --threads 1";
+    const run_result reference =
+        run_cli(dir, scene + " --poses " + quote(rel_file.string()) + " --number-type certified --out " +
+                         quote((dir / "rel_frames.csv").string()));
+    REQUIRE(reference.exit_code == 0);
+    const std::string expected = slurp(dir / "rel_frames.csv");
+    CHECK(expected.find(",1\n") != std::string::npos);
+    CHECK(expected.find(",0\n") != std::string::npos);
+    for (const char* type : {"exact", "certified", "interval", "double"}) {
+        INFO(type);
+        const run_result both = run_cli(dir, scene + " --poses " + quote(b_file.string()) + " --static-poses " +
+                                                 quote(a_file.string()) + " --number-type " + type + " --out " +
+                                                 quote((dir / "both.csv").string()));
+        REQUIRE(both.exit_code == 0);
+        CHECK(slurp(dir / "both.csv") == expected);
+    }
+    // One pose too few, and an exact type asked for witnesses: refused.
+    std::vector<pose> fewer(a_poses.begin(), a_poses.end() - 1);
+    const auto fewer_file = dir.file("fewer.csv", poses_csv(fewer));
+    const fs::path out = dir / "refused.csv";
+    const run_result short_run = run_cli(dir, scene + " --poses " + quote(b_file.string()) + " --static-poses " +
+                                                  quote(fewer_file.string()) + " --out " + quote(out.string()));
+    CHECK(short_run.exit_code == 2);
+    CHECK(short_run.err.find("fewer.csv: 79 poses of the static polygon for 80") != std::string::npos);
+    const run_result witness = run_cli(dir, scene + " --poses " + quote(b_file.string()) + " --static-poses " +
+                                                quote(a_file.string()) + " --number-type exact --witness --out " +
+                                                quote(out.string()));
+    CHECK(witness.exit_code == 2);
+    CHECK(witness.err.find("answers yes or no only") != std::string::npos);
+    CHECK(!fs::exists(out));
 }
