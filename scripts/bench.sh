@@ -37,13 +37,17 @@ per_frame = {}   # (scene, type) -> ns per frame
 per_call = {}    # (predicate, type) -> ns per call
 fallbacks = {}   # (scene, type) -> exact frames per pass
 per_feature = {} # (scene, type, build) -> (ns per frame, state bytes)
+per_query = {}   # (query, cell, method) -> (ns per query, max relative difference, contacts)
 scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
 for b in data["benchmarks"]:
     if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
         continue
     kind, what, nt, *build = b.get("run_name", b["name"]).split("/")
     ns = b["cpu_time"] * scale[b.get("time_unit", "ns")]
-    if kind == "detector":
+    if kind in ("separation", "first_contact", "first_contact_turning"):
+        # kind/method/cell: one query per iteration
+        per_query[(kind, nt, what)] = (ns, b.get("max_relative_difference"), b.get("contacts"))
+    elif kind == "detector":
         per_frame[(what, nt)] = ns / b["frames"]
         fallbacks[(what, nt)] = b.get("exact_frames", 0)
     elif kind == "features":
@@ -81,6 +85,25 @@ if per_feature:
         row = " ".join(f"{'-' if v is None else fmt(v[0]) + ' (' + str(int(v[1])) + ')':>18}" for v in cells)
         r = ratio(cells[2][0], cells[1][0]) if cells[1] and cells[2] else "-"
         print(f"{s:<20} {t:<7} {row} {r:>21}")
+if per_query:
+    print()
+    print("queries, ns per query (separation: GEOS's largest relative difference from ours in brackets;")
+    print("first contact: the share of motions with contact in brackets):")
+    for q in ("separation", "first_contact", "first_contact_turning"):
+        methods = sorted({m for k, _, m in per_query if k == q}, key=lambda m: (m not in ("double", "certified"), m))
+        if not methods:
+            continue
+        print(f"{q:<22} " + " ".join(f"{m:>24}" for m in methods))
+        for c in sorted({c for k, c, _ in per_query if k == q}):
+            row = []
+            for m in methods:
+                v = per_query.get((q, c, m))
+                if v is None:
+                    row.append(f"{'-':>24}")
+                    continue
+                extra = v[1] if q == "separation" else v[2]
+                row.append(f"{fmt(v[0]) + ('' if extra is None else f' ({extra:.2g})'):>24}")
+            print(f"{c:<22} " + " ".join(row))
 if per_call:
     preds = sorted({p for p, _ in per_call})
     types = sorted({t for _, t in per_call}, key=lambda t: per_call.get(("orientation", t), 0))

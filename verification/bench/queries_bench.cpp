@@ -1,0 +1,226 @@
+// SPDX-License-Identifier: BSL-1.0
+// (d) The queries beyond yes or no, against the peers that offer them, on the
+// same inputs:
+//   separation/<method>/<cell>   the distance between the closed regions at
+//       random poses near contact (the time study's random workload: B's
+//       centroid uniform in the annulus 0.4 to 1.1 times R_A + R_B, any
+//       angle); influence2d's separation_query<double> (one object over the
+//       poses), certified_separation, GEOS's GEOSDistance_r (A built once, B
+//       built posed for each query) and GEOSPreparedDistance_r (A prepared
+//       once);
+//   first_contact/<method>/<cell>   the first contact along a motion from
+//       one random pose to another random pose of the annulus: translations
+//       (the angle kept) for influence2d's first_contact<double> and
+//       certified_first_contact; on convex 8-gons also Box2D's
+//       b2TimeOfImpact (conservative advancement in float, reporting a time
+//       where the shapes are within its target separation, a few
+//       thousandths, not the contact itself) on the same translations and
+//       on motions that turn, with influence2d's first_contact<double> on
+//       those too.
+// One iteration is one query; the queries cycle through 1,024 poses or
+// motions. Counters: max_relative_difference (separation: the largest
+// |d - d_GEOS| / max(d_GEOS, 1e-300) over the poses, checked once before
+// timing), contacts (first contact: the share of motions with contact).
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "bench_common.hpp"
+#include "influence2d/detect/separation.hpp"
+#include "influence2d/detect/sweep.hpp"
+#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/influence/bounds.hpp"
+#include "verification/peers.hpp"
+
+#if INFLUENCE2D_HAVE_BOX2D
+#include <box2d/b2_time_of_impact.h>
+#endif
+
+namespace influence2d::bench {
+namespace {
+
+struct cell {
+    std::string type;
+    int static_size, moving_size;
+    std::string name() const { return type + "_" + std::to_string(static_size) + "x" + std::to_string(moving_size); }
+    const polygon& a() const { return family(type + "_" + std::to_string(static_size)); }
+    const polygon& b() const { return family(type + "_" + std::to_string(moving_size)); }
+};
+
+const std::vector<cell>& cells() {
+    static const std::vector<cell> all = {{"convex", 8, 8},       {"contour", 64, 64},      {"contour", 1024, 8},
+                                          {"hole", 1024, 64},     {"starred", 256, 256},    {"irregular", 1024, 1024}};
+    return all;
+}
+
+constexpr std::size_t query_count = 1024;
+constexpr std::uint64_t query_seed = 20040202;
+
+/// The random poses of a cell (the time study's annulus).
+std::vector<pose> poses_of(const cell& c, std::uint64_t seed = query_seed) {
+    const polygon &a = c.a(), &b = c.b();
+    const double r = bounding_radius(a, a.centroid()) + bounding_radius(b, b.centroid());
+    return random_poses(a, b, query_count, 0.4 * r, 1.1 * r, seed);
+}
+
+/// Motions from one random pose to another; `turning` keeps both angles,
+/// else the angle of the start.
+std::vector<std::pair<pose, pose>> motions_of(const cell& c, bool turning) {
+    const std::vector<pose> from = poses_of(c), to = poses_of(c, query_seed + 1);
+    std::vector<std::pair<pose, pose>> m;
+    for (std::size_t k = 0; k < from.size(); ++k)
+        m.push_back({from[k], turning ? to[k] : pose{to[k].tx, to[k].ty, from[k].theta}});
+    return m;
+}
+
+void separation_double(benchmark::State& state, const cell& c) {
+    const std::vector<pose> poses = poses_of(c);
+    separation_query<double> query(c.a(), c.b());
+    std::size_t k = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(query(poses[k]).squared_distance);
+        k = (k + 1) % poses.size();
+    }
+}
+
+void separation_certified(benchmark::State& state, const cell& c) {
+    const std::vector<pose> poses = poses_of(c);
+    std::size_t k = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(certified_separation(c.a(), c.b(), poses[k]).distance);
+        k = (k + 1) % poses.size();
+    }
+}
+
+void first_contact_double(benchmark::State& state, const cell& c, bool turning) {
+    const auto motions = motions_of(c, turning);
+    std::size_t k = 0, contacts = 0, asked = 0;
+    for (auto _ : state) {
+        const auto r = first_contact<double>(c.a(), c.b(), motions[k].first, motions[k].second);
+        contacts += r.contact;
+        ++asked;
+        benchmark::DoNotOptimize(r.time);
+        k = (k + 1) % motions.size();
+    }
+    state.counters["contacts"] = static_cast<double>(contacts) / static_cast<double>(std::max<std::size_t>(asked, 1));
+}
+
+void first_contact_certified(benchmark::State& state, const cell& c) {
+    const auto motions = motions_of(c, false);
+    std::size_t k = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(certified_first_contact(c.a(), c.b(), motions[k].first, motions[k].second).time);
+        k = (k + 1) % motions.size();
+    }
+}
+
+#if INFLUENCE2D_HAVE_GEOS
+/// GEOS's distance, A built (and prepared) once, B built posed per query.
+class geos_distance {
+public:
+    explicit geos_distance(const cell& c) : b_rings_(verification::peer_detail::rings_of(c.b())) {
+        a_ = g_.make(verification::peer_detail::rings_of(c.a()), rotation_pose(pose{}));
+        prepared_ = GEOSPrepare_r(g_.ctx, a_);
+    }
+    geos_distance(const geos_distance&) = delete;
+    geos_distance& operator=(const geos_distance&) = delete;
+    ~geos_distance() {
+        GEOSPreparedGeom_destroy_r(g_.ctx, prepared_);
+        GEOSGeom_destroy_r(g_.ctx, a_);
+    }
+    double operator()(const pose& p, bool prepared) {
+        GEOSGeometry* b = g_.make(b_rings_, rotation_pose(p));
+        double d = -1;
+        const int ok = prepared ? GEOSPreparedDistance_r(g_.ctx, prepared_, b, &d) : GEOSDistance_r(g_.ctx, a_, b, &d);
+        GEOSGeom_destroy_r(g_.ctx, b);
+        if (!ok) throw std::runtime_error("geos: distance failed: " + g_.error);
+        return d;
+    }
+
+private:
+    verification::peer_detail::geos_builder g_;
+    std::vector<std::vector<point<double>>> b_rings_;
+    GEOSGeometry* a_ = nullptr;
+    const GEOSPreparedGeometry* prepared_ = nullptr;
+};
+
+void separation_geos(benchmark::State& state, const cell& c, bool prepared) {
+    const std::vector<pose> poses = poses_of(c);
+    geos_distance geos(c);
+    separation_query<double> ours(c.a(), c.b());
+    double worst = 0;
+    for (const pose& p : poses) {
+        const double g = geos(p, prepared), d = distance_of<double>(ours(p).squared_distance);
+        worst = std::max(worst, std::fabs(d - g) / std::max(g, 1e-300));
+    }
+    std::size_t k = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(geos(poses[k], prepared));
+        k = (k + 1) % poses.size();
+    }
+    state.counters["max_relative_difference"] = worst;
+}
+#endif
+
+#if INFLUENCE2D_HAVE_BOX2D
+void first_contact_box2d(benchmark::State& state, const cell& c, bool turning) {
+    const b2PolygonShape a = verification::box2d_peer::shape(verification::box2d_peer::vertices(c.a()));
+    const b2PolygonShape b = verification::box2d_peer::shape(verification::box2d_peer::vertices(c.b()));
+    b2TOIInput in;
+    in.proxyA.Set(&a, 0);
+    in.proxyB.Set(&b, 0);
+    in.sweepA.localCenter.SetZero();
+    in.sweepA.c0.SetZero();
+    in.sweepA.c.SetZero();
+    in.sweepA.a0 = in.sweepA.a = 0;
+    in.sweepA.alpha0 = 0;
+    in.sweepB.localCenter.SetZero();
+    in.sweepB.alpha0 = 0;
+    in.tMax = 1;
+    const auto motions = motions_of(c, turning);
+    std::size_t k = 0, contacts = 0, asked = 0;
+    for (auto _ : state) {
+        const pose &p0 = motions[k].first, &p1 = motions[k].second;
+        in.sweepB.c0.Set(static_cast<float>(p0.tx), static_cast<float>(p0.ty));
+        in.sweepB.c.Set(static_cast<float>(p1.tx), static_cast<float>(p1.ty));
+        in.sweepB.a0 = static_cast<float>(p0.theta);
+        in.sweepB.a = static_cast<float>(p1.theta);
+        b2TOIOutput out;
+        b2TimeOfImpact(&out, &in);
+        contacts += out.state == b2TOIOutput::e_touching || out.state == b2TOIOutput::e_overlapped;
+        ++asked;
+        benchmark::DoNotOptimize(out.t);
+        k = (k + 1) % motions.size();
+    }
+    state.counters["contacts"] = static_cast<double>(contacts) / static_cast<double>(std::max<std::size_t>(asked, 1));
+}
+#endif
+
+}  // namespace
+
+void register_query_benchmarks() {
+    for (const cell& c : cells()) {
+        benchmark::RegisterBenchmark(("separation/double/" + c.name()).c_str(), separation_double, c);
+        benchmark::RegisterBenchmark(("separation/certified/" + c.name()).c_str(), separation_certified, c);
+#if INFLUENCE2D_HAVE_GEOS
+        benchmark::RegisterBenchmark(("separation/geos/" + c.name()).c_str(), separation_geos, c, false);
+        benchmark::RegisterBenchmark(("separation/geos_prepared/" + c.name()).c_str(), separation_geos, c, true);
+#endif
+        benchmark::RegisterBenchmark(("first_contact/double/" + c.name()).c_str(), first_contact_double, c, false);
+        benchmark::RegisterBenchmark(("first_contact/certified/" + c.name()).c_str(), first_contact_certified, c);
+    }
+    const cell small{"convex", 8, 8};
+    benchmark::RegisterBenchmark(("first_contact_turning/double/" + small.name()).c_str(), first_contact_double, small,
+                                 true);
+#if INFLUENCE2D_HAVE_BOX2D
+    benchmark::RegisterBenchmark(("first_contact/box2d/" + small.name()).c_str(), first_contact_box2d, small, false);
+    benchmark::RegisterBenchmark(("first_contact_turning/box2d/" + small.name()).c_str(), first_contact_box2d, small,
+                                 true);
+#endif
+}
+
+}  // namespace influence2d::bench
