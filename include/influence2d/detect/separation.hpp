@@ -715,13 +715,16 @@ inline certified_separation_result certified_separation(const polygon& a, const 
                        : pair_result(a, b, best);
     }
     certified_separation_result r;
-    r.squared_distance = nearest_double(exact.squared_distance);
-    r.distance = distance_of(exact.squared_distance);
+    const scaled_double squared = scaled_nearest(exact.squared_distance);  // (distance_of's rounding)
+    r.squared_distance = std::ldexp(squared.mantissa, squared.exponent);
+    r.distance = std::ldexp(std::sqrt(squared.mantissa), squared.exponent / 2);
     r.static_feature = exact.static_feature;
     r.moving_feature = exact.moving_feature;
     r.static_point = {nearest_double(exact.static_point.x), nearest_double(exact.static_point.y)};
-    r.moving_point = {nearest_double(exact.moving_point.x), nearest_double(exact.moving_point.y)};
     r.meet = exact.meet();
+    // (Meeting: one point.)
+    r.moving_point = r.meet ? r.static_point
+                            : point<double>{nearest_double(exact.moving_point.x), nearest_double(exact.moving_point.y)};
     r.exact_pairs = w.evaluated;
     return r;
 }
