@@ -55,7 +55,7 @@ struct separation_result {
     /// to static_point when the regions meet.
     point<NT> moving_point;
     /// Whether the regions meet (squared_distance is 0).
-    bool meet() const { return number_traits<NT>::sign(squared_distance) == 0; }
+    bool meet() const { return at_contact(squared_distance); }
 };
 
 namespace separation_detail {
@@ -308,7 +308,7 @@ chosen_pair<NT> closest_candidate(const search_space& space, Evaluate&& evaluate
         ++evaluated;
         const std::uint32_t e = c.static_edge, f = c.moving_edge;
         segment_pair_closest<NT> d = evaluate(e, f);
-        const int order = best.found ? compare_values(d.squared, best.closest.squared) : -1;
+        const int order = best.found ? compare_squared(d.squared, best.closest.squared) : -1;
         if (order < 0 || (order == 0 && (e < best.static_edge || (e == best.static_edge && f < best.moving_edge)))) {
             best.closest = std::move(d);
             best.static_edge = e;
@@ -316,7 +316,7 @@ chosen_pair<NT> closest_candidate(const search_space& space, Evaluate&& evaluate
             best.found = true;
             reach = upper_distance(best.closest.squared);
         }
-        if (number_traits<NT>::sign(best.closest.squared) == 0) break;
+        if (at_contact(best.closest.squared)) break;
     }
     return best;
 }
@@ -482,8 +482,8 @@ private:
 /// the pose t: phase 1, phase 2, and phase 3 when the boundaries are apart.
 ///
 ///   U <- the last frame's pair re-evaluated at this pose (or infinity)
-///   phase 1: candidates <- search_pairs (double, proven bounds)
-///   phase 2: the least candidate in NT (closest_candidate)
+///   phase 1: candidates, or a pair certainly crossing <- search_pairs
+///   phase 2: that pair, or the least candidate in NT (closest_candidate)
 ///   distance 0: the regions meet at that pair's common point
 ///   phase 3: a ring's vertex inside the other region: they meet there
 ///   else: the distance is the pair's
@@ -507,7 +507,7 @@ separation_result<NT> separate(static_side<NT>& side, const search_input& in, wo
         w.evaluated);
     INFLUENCE2D_ASSERT(best.found, "phase 1 left no candidate");
     w.last = std::make_pair(best.static_edge, best.moving_edge);
-    if (number_traits<NT>::sign(best.closest.squared) == 0) return pair_result(in.a, in.b, best);
+    if (at_contact(best.closest.squared)) return pair_result(in.a, in.b, best);
     std::optional<point<NT>> b_origin;
     const auto inside = ring_vertex_inside(
         in.a, in.b, static_window(in), posed_window(in), w.approx,
@@ -543,8 +543,9 @@ separation_result<NT> separate(static_side<NT>& side, const search_input& in, wo
 /// certainly cross (their bounds in double prove it), the first of them the
 /// search meets, in an order that depends on the pose alone. So every query
 /// in an exact NT (this one, the one on polygons, separation_query,
-/// certified_separation) names the same features. When the regions meet: a vertex or edge of each
-/// sharing a point when the boundaries meet (a vertex of one on the other,
+/// certified_separation) names the same features. When the regions meet: a
+/// vertex or edge of each sharing a point when the boundaries meet (a
+/// vertex of one on the other,
 /// or two edges crossing at a rational point); otherwise one contains a ring
 /// of the other, and the witness is that ring's first vertex (its feature
 /// vertex) and the other's interior (feature_kind::interior), both points
@@ -643,7 +644,6 @@ template <class NT>
 double distance_of(const NT& squared_distance) {
     using tr = number_traits<NT>;
     if constexpr (tr::category == number_category::exact) {
-        if (tr::sign(squared_distance) <= 0) return 0;
         const scaled_double r = scaled_nearest(squared_distance);
         return std::ldexp(std::sqrt(r.mantissa), r.exponent / 2);
     } else {
@@ -690,7 +690,7 @@ inline certified_separation_result certified_separation(const polygon& a, const 
         [&](std::uint32_t e, std::uint32_t f) { return pair_closest<exact_rational>(in, w.approx, a_vertex, b_vertex, e, f); },
         w.evaluated);
     separation_result<exact_rational> exact;
-    if (CGAL::sign(best.closest.squared) == 0) {
+    if (at_contact(best.closest.squared)) {
         exact = pair_result(a, b, best);
     } else {
         // Phase 3 in certified, again in exact rationals when a sign is in doubt.

@@ -73,6 +73,20 @@ NT point_segment_squared_distance(const point<NT>& p, const point<NT>& a, const 
     return closest_on_segment(p, a, b).squared;
 }
 
+/// The sign of d1 - d2 for two squared distances (compare_values): which of
+/// two pairs is nearer.
+template <class NT>
+int compare_squared(const NT& d1, const NT& d2) {
+    return compare_values(d1, d2);
+}
+
+/// Whether a squared distance is 0: the two sets meet (the sign of the value,
+/// by number_traits).
+template <class NT>
+bool at_contact(const NT& squared) {
+    return number_traits<NT>::sign(squared) == 0;
+}
+
 /// Where a point lies on [a, b], given that it lies on it: start when it is
 /// a, end when it is b (and not a), else interior. Exact when NT is.
 template <class NT>
@@ -137,7 +151,7 @@ segment_pair_closest<NT> least_end_distance(const point<NT>& a, const point<NT>&
         if (!may_be_least(k)) continue;
         const point<NT>& p = k == 0 ? a : k == 1 ? b : k == 2 ? u : v;
         segment_point<NT> c = k < 2 ? closest_on_segment(p, u, v) : closest_on_segment(p, a, b);
-        if (found && compare_values(c.squared, best.squared) >= 0) continue;
+        if (found && compare_squared(c.squared, best.squared) >= 0) continue;
         found = true;
         if (k < 2)
             best = {std::move(c.squared), p, std::move(c.at), k == 0 ? segment_part::start : part_of(b, a, b), c.part};
@@ -202,7 +216,7 @@ struct scaled_double {
 template <class NT>
 scaled_double scaled_nearest(const NT& x) {
     using tr = number_traits<NT>;
-    if (tr::sign(x) == 0) return {};
+    if (at_contact(x)) return {};
     NT y = x;
     int k = 0;
     double d = tr::to_double(y);
