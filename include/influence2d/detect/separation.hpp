@@ -260,15 +260,19 @@ double search_pairs(const search_input& in, Approx& approx, double upper, search
 /// The relative widening of number_traits::to_double of an exact squared
 /// distance in phase 2's stopping rule: to_double is "a near double" (for
 /// CGAL's rationals within an ulp); 2^-40 takes it as within 2^-40 of the
-/// value. The absolute floor 2^-1000 covers a value whose double underflows.
+/// value.
 inline constexpr double to_double_widening = 0x1p-40;
+/// The absolute widening of the same: a squared distance whose double
+/// underflows (below 2^-1074, as small as 2^-2148) is below it, so its root is
+/// below 2^-500; for distances above 2^-500 the floor changes nothing.
+inline constexpr long double squared_floor = 0x1p-1000L;
 
 /// An upper bound, in double, of the square root of the squared distance x
 /// (for phase 2's stopping rule).
 template <class NT>
 double upper_distance(const NT& x) {
     const double d = number_traits<NT>::to_double(x);
-    return upper_sqrt(static_cast<long double>(d) * (1 + to_double_widening) + 0x1p-1000L);
+    return upper_sqrt(static_cast<long double>(d) * (1 + to_double_widening) + squared_floor);
 }
 
 /// The pair phase 2 chose, with its closest points.
