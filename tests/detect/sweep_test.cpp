@@ -443,7 +443,7 @@ TEST_CASE("exit distance: through, out of the solid into a hole, touching, apart
 }
 
 TEST_CASE("exit distance: random overlaps of multipolygons against the reference", "[sweep][exit][reference]") {
-    const int scenes = test_effort::scaled(12);
+    const int scenes = test_effort::scaled(24);
     std::size_t deep = 0;
     for (int k = 0; k < scenes; ++k) {
         test_scenes::rng g(0xe817ULL + static_cast<std::uint64_t>(k));
@@ -461,6 +461,23 @@ TEST_CASE("exit distance: random overlaps of multipolygons against the reference
         }
     }
     CHECK(deep > static_cast<std::size_t>(scenes));
+}
+
+TEST_CASE("exit distance: the families overlapping, any direction", "[sweep][exit][reference]") {
+    std::size_t deep = 0, poses = 0;
+    test_scenes::rng g(0xe818ULL);
+    for (test_families::family f : verification::all_families)
+        for (std::size_t n : {8u, 64u}) {
+            const polygon& a = test_families::load(f, n);
+            const polygon& b = test_families::load(f, 8);
+            for (const pose& q : influence2d::random_poses(a, b, static_cast<std::size_t>(test_effort::scaled(8)), 0, 80,
+                                                           n + static_cast<std::size_t>(f) * 7)) {
+                const double heading = g.uniform(0, 6.283185307179586);
+                check_exit(a, b, q, std::cos(heading), std::sin(heading), deep);
+                ++poses;
+            }
+        }
+    CHECK(deep > poses / 3);
 }
 
 namespace {

@@ -32,15 +32,15 @@ struct edge_box {
 };
 
 /// The edges of a polygon whose vertices (in double) are `v` and whose box
-/// meets `window`, each with its box grown by `grow`. With a `sweep`, each
-/// box is that of the edge translated by every fraction of the sweep (the
-/// union of its boxes at the start and at the end).
+/// meets `window`, each with its box grown by `grow`. With shifts, each box
+/// is that of the edge translated by every point between `from` and `to`
+/// (the union of its boxes shifted by both).
 inline void edges_meeting(const polygon& shape, const std::vector<point<double>>& v, const box& window, double grow,
-                          std::vector<edge_box>& out, point<double> sweep = {0, 0}) {
+                          std::vector<edge_box>& out, point<double> from = {0, 0}, point<double> to = {0, 0}) {
     out.clear();
     out.reserve(shape.size());
-    const double low_x = std::min(sweep.x, 0.0) - grow, high_x = std::max(sweep.x, 0.0) + grow;
-    const double low_y = std::min(sweep.y, 0.0) - grow, high_y = std::max(sweep.y, 0.0) + grow;
+    const double low_x = std::min(from.x, to.x) - grow, high_x = std::max(from.x, to.x) + grow;
+    const double low_y = std::min(from.y, to.y) - grow, high_y = std::max(from.y, to.y) + grow;
     for (std::size_t e = 0; e < shape.size(); ++e) {
         const point<double>&a = v[e], &b = v[shape.next(e)];
         const edge_box k{std::min(a.x, b.x) + low_x, std::max(a.x, b.x) + high_x, std::min(a.y, b.y) + low_y,

@@ -23,7 +23,6 @@
 #include "influence2d/detect/certified_detector.hpp"
 #include "influence2d/detect/feature.hpp"
 #include "influence2d/detect/one_shot.hpp"
-#include "influence2d/detect/posed_meet.hpp"
 #include "influence2d/detect/scene.hpp"
 #include "influence2d/detect/separation.hpp"
 #include "influence2d/influence/bounds.hpp"
@@ -153,22 +152,25 @@ std::optional<std::pair<feature, feature>> meeting_at_start(const polygon& a, co
 }
 
 /// Calls visit(site) for both sites of every pair of A's edge i and B's
-/// edge j whose boxes overlap, B's edge box swept by `sweep` (double; B's
-/// vertices at the start in `b_start`), every box grown by e: B's vertex j
-/// against A's edge i, and A's vertex i against B's edge j. Every vertex of
-/// B that reaches an edge of A during the sweep is the start of an edge of B
+/// edge j whose boxes overlap, B's edge box swept from its place at the
+/// start (vertices `b_start` in double) shifted by `from` to that place
+/// shifted by `to`, every box grown by e: B's vertex j against A's edge i,
+/// and A's vertex i against B's edge j. Every vertex of B that reaches an
+/// edge of A during that part of the motion is the start of an edge of B
 /// whose swept box meets that edge's box, and likewise for A's vertices: no
-/// event is left out. Sort and sweep along x (one_shot_detail).
+/// event of that part is left out. Sort and sweep along x (one_shot_detail).
 template <class Visit>
 void candidate_sites(const polygon& a, const polygon& b, const std::vector<point<double>>& b_start,
-                     const box& b_start_box, point<double> sweep, double e, Visit&& visit) {
+                     const box& b_start_box, point<double> from, point<double> to, double e, Visit&& visit) {
     using namespace one_shot_detail;
-    box swept = b_start_box;
-    swept.add({b_start_box.min_x + sweep.x, b_start_box.min_y + sweep.y});
-    swept.add({b_start_box.max_x + sweep.x, b_start_box.max_y + sweep.y});
+    box swept;
+    for (const point<double>& shift : {from, to}) {
+        swept.add({b_start_box.min_x + shift.x, b_start_box.min_y + shift.y});
+        swept.add({b_start_box.max_x + shift.x, b_start_box.max_y + shift.y});
+    }
     std::vector<edge_box> a_edges, b_edges;
     edges_meeting(a, a.vertices(), swept.inflated(e), e, a_edges);
-    edges_meeting(b, b_start, a.bounds().inflated(e), e, b_edges, sweep);
+    edges_meeting(b, b_start, a.bounds().inflated(e), e, b_edges, from, to);
     overlapping_pairs(a_edges, b_edges, [&](std::uint32_t i, std::uint32_t j) {
         visit(contact_site{true, j, i});
         visit(contact_site{false, i, j});
@@ -199,37 +201,41 @@ inline double box_entry(const box& ab, const box& bb, point<double> sweep, doubl
 /// found (at most seven windows).
 inline constexpr double first_window = 1.0 / 64;
 
-/// Calls visit(site) for the candidate sites (candidate_sites) of growing
-/// windows of time [0, w], stopping once the earliest event is known:
+/// Calls visit(site) for the candidate sites (candidate_sites) of
+/// consecutive windows of time [w0, w1], growing, stopping once the
+/// earliest event is known:
 ///
 ///   enter <- when B's box first meets A's (box_entry); beyond 1: none
-///   w <- enter + first_window
+///   [w0, w1] <- [enter, enter + first_window]
 ///   loop:
-///       visit the sites of B swept over [0, w]
-///       (every event at a time <= w is among them)
+///       visit the sites of B swept over [w0, w1]
+///       (every event at a time in [w0, w1] is among them)
 ///       u <- best_upper(): a double above the least event found, if any
-///       if u <= w or w = 1:  done
-///       if there is a u:     w <- min(u, 1), visited once more: done
-///       else                 w <- enter + 2 (w - enter), at most 1
+///       if u <= w1 or w1 = 1:  done
+///       next window: [w1, min(u, 1)] (then done) if there is a u,
+///       else [w1, enter + 2 (w1 - enter)], at most 1
 ///
-/// The earliest event found in a window that reaches it is the first
-/// contact; events found beyond a window are true events too, and bound
-/// the last window.
+/// Events before w0 were all found in the earlier windows (none before
+/// enter), so the earliest event found once a window reaches it is the
+/// first contact; events found beyond a window are true events too, and
+/// bound the last window.
 template <class Visit, class Upper>
 void windowed_sites(const polygon& a, const polygon& b, const std::vector<point<double>>& b_start,
                     const box& b_start_box, point<double> sweep, double e, Visit&& visit, Upper&& best_upper) {
     const double enter = box_entry(a.bounds(), b_start_box, sweep, e);
     if (!(enter <= 1)) return;
-    double w = std::min(1.0, enter + first_window);
+    double w0 = enter, w1 = std::min(1.0, enter + first_window);
     for (bool last = false;;) {
-        candidate_sites(a, b, b_start, b_start_box, {w * sweep.x, w * sweep.y}, e, visit);
-        if (last || w >= 1) return;
+        candidate_sites(a, b, b_start, b_start_box, {w0 * sweep.x, w0 * sweep.y}, {w1 * sweep.x, w1 * sweep.y}, e,
+                        visit);
+        if (last || w1 >= 1) return;
+        w0 = w1;
         if (const std::optional<double> u = best_upper()) {
-            if (*u <= w) return;
-            w = std::min(1.0, *u);
+            if (*u <= w1) return;
+            w1 = std::min(1.0, *u);
             last = true;
         } else {
-            w = std::min(1.0, enter + 2 * (w - enter));
+            w1 = std::min(1.0, enter + 2 * (w1 - enter));
         }
     }
 }
@@ -483,13 +489,14 @@ inline double exit_reach(const box& ab, const box& bb, double dx, double dy, dou
 }
 
 /// Whether A and B translated by s = (s0 + s1) / 2 times d meet, in ring
-/// operations: both polygons scaled by D = 2 s0.den s1.den > 0 (which
-/// changes no answer), B's vertices D p + N d with N = s0.num s1.den +
-/// s1.num s0.den. `scale` bounds the magnitudes of the unscaled inputs (the
-/// polygons and B's translation), `reach` |dx| + |dy|.
+/// operations, with what showed it (placed_meet): both polygons scaled by
+/// D = 2 s0.den s1.den > 0 (which changes no answer), B's vertices
+/// D p + N d with N = s0.num s1.den + s1.num s0.den. `scale` bounds the
+/// magnitudes of the unscaled inputs (the polygons and B's translation),
+/// `reach` |dx| + |dy|.
 template <class NT>
-bool meet_between(translation_frame<NT>& f, const time_fraction<NT>& s0, const time_fraction<NT>& s1, double scale,
-                  double reach) {
+meeting meeting_between(translation_frame<NT>& f, const time_fraction<NT>& s0, const time_fraction<NT>& s1,
+                        double scale, double reach) {
     using tr = number_traits<NT>;
     const NT n = s0.num * s1.den + s1.num * s0.den, half = s0.den * s1.den, d = half + half;
     const polygon &as = f.a.shape(), &bs = f.b.shape();
@@ -498,8 +505,35 @@ bool meet_between(translation_frame<NT>& f, const time_fraction<NT>& s0, const t
     const point<NT> nd{n * f.d.x, n * f.d.y};
     for (std::size_t j = 0; j < bs.size(); ++j) bv[j] = {d * f.b[j].x + nd.x, d * f.b[j].y + nd.y};
     const double big = std::fabs(tr::to_double(d)) * scale + std::fabs(tr::to_double(n)) * reach;
-    return regions_meet(as, av, bs, bv, big);
+    placed<NT> pa(as, av), pb(bs, bv);
+    return one_shot_detail::placed_meet(pa, pb, one_shot_detail::posing_margin<NT>(big));
 }
+
+/// Whether an event at `s` can change what the witness `w` shows: it
+/// puts one of the witness's features in contact. A vertex located in the
+/// other polygon stays there until it reaches that polygon's boundary (an
+/// event of that vertex); an edge pair keeps meeting or not until an end of
+/// one reaches the other (an event of the pair).
+inline bool touches(const meeting& w, const contact_site& s, const polygon& a, const polygon& b) {
+    switch (w.how) {
+    case meeting::kind::b_vertex_in_a:
+        return s.moving_vertex && s.vertex == w.b_index;
+    case meeting::kind::a_vertex_in_b:
+        return !s.moving_vertex && s.vertex == w.a_index;
+    case meeting::kind::edges:
+        if (s.moving_vertex) return s.edge == w.a_index && (s.vertex == w.b_index || s.vertex == b.next(w.b_index));
+        return s.edge == w.b_index && (s.vertex == w.a_index || s.vertex == a.next(w.a_index));
+    default:
+        return true;
+    }
+}
+
+/// An event of the exit search: its time and site.
+template <class NT>
+struct timed_site {
+    time_fraction<NT> time;
+    contact_site site;
+};
 
 /// The relative bound of the rounding of a motion's pose at time t in
 /// double (motion_pose), against the exact motion: the angle
@@ -760,22 +794,29 @@ inline contact_result<double> certified_first_contact(const polygon& a, const po
 /// returned s the regions touch, and for s a little larger they do not.
 /// Exact in an exact NT (NT needs division, as for first_contact).
 ///
-///   regions do not meet at q (the one-shot query):      0
+///   w <- the one-shot query at q (what shows they meet); apart:  0
 ///   s_max <- beyond it B's box has left A's box along d (double, widened)
-///   the events of every site whose boxes overlap, B's swept by s_max d:
-///       every time s >= 0 a vertex starts or stops lying on an edge
-///       (contact_times, both ends of a sliding contact)
-///   sort and merge them: 0 < s_1 < s_2 < ... < s_K
-///   for k = 0, 1, ..., K - 1 (s_0 = 0):
-///       if the regions do not meet at (s_k + s_k+1) / 2:  s_k
-///   s_K
+///   the events (every time s >= 0 a vertex starts or stops lying on an
+///   edge: contact_times, both ends of a sliding contact), gathered by
+///   windows (0, s_max / 64], then doubled, from the sites whose boxes
+///   overlap, B's swept over the window; sorted: s_1 < s_2 < ... < s_K
+///   last <- 0
+///   loop:
+///       if an event at `last` touches w's features (a located vertex
+///       reaching an edge, an end of w's edge pair reaching the other):
+///           w <- the meeting at (last + next) / 2 (the one-shot query's
+///           steps on both polygons scaled to keep ring operations)
+///           apart there:                              last
+///       no next event:                                last (then apart)
+///       last <- the next event
 ///
 /// Between two consecutive events no vertex reaches or leaves an edge, so
-/// whether the regions meet does not change (docs/sweep.md, "Exit
-/// distance"); after the last they do not meet. Time O((n + m) log(n + m)
-/// + k log k + j (n + m) log(n + m)) for k events and j intervals tested.
-/// Throws invalid_input for an empty polygon, a NaN or infinite component
-/// of q or of the direction, or a direction (0, 0).
+/// whether the regions meet does not change, and neither does what a
+/// witness shows unless an event at its start touches it (docs/sweep.md,
+/// "Exit distance"). Time O((n + m) log(n + m) + k log k) for k events up to
+/// the exit, plus O((n + m) log(n + m)) for each event that touches the
+/// witness. Throws invalid_input for an empty polygon, a NaN or infinite
+/// component of q or of the direction, or a direction (0, 0).
 template <class NT>
 NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, double dy) {
     using namespace sweep_detail;
@@ -786,29 +827,54 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
     check_direction(dx, dy);
     translation_frame<NT> f(a, b, t, {tr::from_double(dx), tr::from_double(dy)});
     const double scale = coordinate_scale(a) + coordinate_scale(b) + std::fabs(q.tx) + std::fabs(q.ty);
+    const double reach = std::fabs(dx) + std::fabs(dy);
     const double e0 = one_shot_detail::posing_margin<NT>(scale);
-    if (!one_shot_detail::placed_meet(f.a, f.b, e0)) return NT(0);
+    meeting witness = one_shot_detail::placed_meet(f.a, f.b, e0);
+    if (!witness) return NT(0);
 
     const double s_max = exit_reach(a.bounds(), f.b.bounds(), dx, dy, e0);
-    const point<double> sweep{s_max * dx, s_max * dy};
-    std::vector<time_fraction<NT>> events;
-    candidate_sites(a, b, f.b.approx(), f.b.bounds(), sweep,
-                    one_shot_detail::posing_margin<NT>(scale + std::fabs(sweep.x) + std::fabs(sweep.y)),
-                    [&](const contact_site& s) {
-                        time_fraction<NT> out[2];
-                        const int k = f.times(s, false, out);
-                        for (int i = 0; i < k; ++i) events.push_back(std::move(out[i]));
-                    });
-    std::sort(events.begin(), events.end(),
-              [](const time_fraction<NT>& l, const time_fraction<NT>& r) { return compare_times(l, r) < 0; });
-
+    const double e = one_shot_detail::posing_margin<NT>(scale + s_max * reach);
+    const auto beyond = [](const time_fraction<NT>& s, double x) {
+        return compare_values<NT>(s.num, tr::from_double(x) * s.den) > 0;
+    };
+    // The events of the window (w_low, w] of s, sorted.
+    std::vector<timed_site<NT>> events;
+    const auto load = [&](double w_low, double w) {
+        events.clear();
+        candidate_sites(a, b, f.b.approx(), f.b.bounds(), {std::max(w_low, 0.0) * dx, std::max(w_low, 0.0) * dy},
+                        {w * dx, w * dy}, e, [&](const contact_site& site) {
+            time_fraction<NT> out[2];
+            const int k = f.times(site, false, out);
+            for (int i = 0; i < k; ++i)
+                if ((w_low < 0 || beyond(out[i], w_low)) && !beyond(out[i], w)) events.push_back({std::move(out[i]), site});
+        });
+        std::sort(events.begin(), events.end(), [](const timed_site<NT>& l, const timed_site<NT>& r) {
+            return compare_times(l.time, r.time) < 0;
+        });
+    };
+    double w_low = -1, w = std::min(s_max, s_max * first_window);
+    load(w_low, w);
+    std::size_t next = 0;
     time_fraction<NT> last{NT(0), NT(1)};
-    for (const time_fraction<NT>& next : events) {
-        if (compare_times(next, last) <= 0) continue;  // at 0, or the time just passed
-        if (!meet_between(f, last, next, scale, std::fabs(dx) + std::fabs(dy))) break;
-        last = next;
+    for (;;) {
+        // The events at `last` (some may come at 0): do they touch the witness?
+        bool stale = false;
+        for (; next < events.size() && compare_times(events[next].time, last) <= 0; ++next)
+            if (touches(witness, events[next].site, a, b)) stale = true;
+        while (next == events.size() && w < s_max) {
+            w_low = w;
+            w = std::min(s_max, 2 * w);
+            load(w_low, w);
+            next = 0;
+        }
+        if (next == events.size()) return last.num / last.den;  // after the last event, apart
+        const time_fraction<NT>& following = events[next].time;
+        if (stale) {
+            witness = meeting_between(f, last, following, scale, reach);
+            if (!witness) return last.num / last.den;
+        }
+        last = following;
     }
-    return last.num / last.den;
 }
 
 }  // namespace influence2d

@@ -52,8 +52,10 @@ bool time_in_range(const time_fraction<NT>& t, bool bounded) {
 /// direction d, with their signs.
 template <class NT>
 struct segment_sides {
-    NT alpha, beta;  ///< d x (a - p), d x (b - p)
-    int sa, sb;      ///< their signs
+    NT alpha;  ///< d x (a - p)
+    NT beta;   ///< d x (b - p)
+    int sa;    ///< the sign of alpha
+    int sb;    ///< the sign of beta
 
     /// Whether the line meets the closed segment [a, b]: a and b not
     /// strictly on one side of it (the signs not both +1 nor both -1). For
