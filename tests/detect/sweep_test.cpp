@@ -386,6 +386,11 @@ TEST_CASE("sweep: bad input is refused", "[sweep]") {
     CHECK_THROWS_AS(exit_distance<double>(a, a, {0, 0, 0}, 0, 0), invalid_input);
     CHECK_THROWS_AS(exit_distance<exact_rational>(a, a, {0, 0, 0}, 1, -HUGE_VAL), invalid_input);
     CHECK_THROWS_AS(exit_distance<double>(a, polygon{}, {0, 0, 0}, 1, 0), invalid_input);
+    sweep_options bad;
+    bad.tolerance = -1;
+    CHECK_THROWS_AS(first_contact<double>(a, a, {0, 0, 0}, {1, 0, 1}, bad), invalid_input);
+    bad.tolerance = nan;
+    CHECK_THROWS_AS(certified_first_contact(a, a, {0, 0, 0}, {1, 0, 1}, bad), invalid_input);
     // A motion that does not move: the start decides.
     CHECK_FALSE(first_contact<exact_rational>(a, a, {5, 0, 0}, {5, 0, 0}).contact);
     CHECK(certified_first_contact(a, a, {4, 0, 0}, {4, 0, 0}).contact);
@@ -504,7 +509,7 @@ void check_turning(const polygon& a, const polygon& b, const pose& from, const p
     std::optional<double> first_sample;
     for (int k = 0; k <= samples && !first_sample; ++k) {
         const double tk = static_cast<double>(k) / samples;
-        if (certified_intersects(a, b, motion_pose(from, to, tk))) first_sample = tk;
+        if (intersects<exact_rational>(a, b, motion_pose(from, to, tk))) first_sample = tk;
     }
     CHECK(ce.contact == ex.contact);
     if (first_sample) {
@@ -518,7 +523,7 @@ void check_turning(const polygon& a, const polygon& b, const pose& from, const p
     const double time = CGAL::to_double(ex.time);
     CHECK(ex.time == exact_rational(time));
     for (int k = 0; k <= samples && static_cast<double>(k) / samples < time; ++k)
-        CHECK_FALSE(certified_intersects(a, b, motion_pose(from, to, static_cast<double>(k) / samples)));
+        CHECK_FALSE(intersects<exact_rational>(a, b, motion_pose(from, to, static_cast<double>(k) / samples)));
     CHECK(certified_separation(a, b, motion_pose(from, to, time)).distance <= options.tolerance * (1 + 1e-12));
     CHECK(ce.time == time);
     CHECK(ce.static_feature.kind == ex.static_feature.kind);

@@ -294,11 +294,15 @@ struct motion {
     motion(const pose& from, const pose& to) : start(from), end(checked_end(to)) {}
 
     /// The motion of B from `from` to `to` against A, both polygons checked
-    /// for NT (accepted_polygon).
+    /// for NT (accepted_polygon) and the options' tolerance (finite, >= 0).
     template <class NT>
-    static motion accepted(const polygon& a, const polygon& b, const pose& from, const pose& to) {
+    static motion accepted(const polygon& a, const polygon& b, const pose& from, const pose& to,
+                           const sweep_options& options) {
         accepted_polygon<NT>(a, "static");
         accepted_polygon<NT>(b, "moving");
+        if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance))
+            throw invalid_input("sweep_options: tolerance is " + std::to_string(options.tolerance) +
+                                ", not a finite number >= 0");
         return motion(from, to);
     }
 
@@ -731,13 +735,13 @@ inline contact_result<double> certified_turning_first_contact(const polygon& a, 
 /// tolerance (docs/sweep.md, "Motions that turn"). NT needs division for
 /// the time of the result (every number type of the library but certified
 /// and interval: certified_first_contact is the filtered route). Throws
-/// invalid_input for an empty polygon or a NaN or infinite component of
-/// either pose.
+/// invalid_input for an empty polygon, a NaN or infinite component of
+/// either pose, or a tolerance that is negative, NaN or infinite.
 template <class NT>
 contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose& from, const pose& to,
                                  const sweep_options& options = {}) {
     using namespace sweep_detail;
-    const motion m = motion::accepted<NT>(a, b, from, to);
+    const motion m = motion::accepted<NT>(a, b, from, to, options);
     if (from.theta != to.theta) return turning_first_contact<NT>(a, b, from, to, options);
     contact_result<NT> r;
     if (const auto met = meeting_at_start<NT>(a, b, from, m.start)) {
@@ -761,11 +765,14 @@ contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose&
 /// start is decided in `certified` with the one-shot query's exact
 /// fallback; each event is computed and compared in `certified`, and again
 /// in exact rationals only when its signs are not certain; the earliest
-/// time is rounded from its exact value (one site evaluated exactly).
+/// time is rounded from its exact value (one site evaluated exactly). For
+/// a motion that turns: the answer of first_contact<exact_rational> (the
+/// same steps, the stop decided on certified_separation's exact distance;
+/// docs/sweep.md). Throws as first_contact.
 inline contact_result<double> certified_first_contact(const polygon& a, const polygon& b, const pose& from,
                                                       const pose& to, const sweep_options& options = {}) {
     using namespace sweep_detail;
-    const motion m = motion::accepted<double>(a, b, from, to);
+    const motion m = motion::accepted<double>(a, b, from, to, options);
     if (from.theta != to.theta) return certified_turning_first_contact(a, b, from, to, options);
     contact_result<double> r;
     const auto met = detail::fallback<>::run([&] { return meeting_at_start<certified>(a, b, from, m.start); },
