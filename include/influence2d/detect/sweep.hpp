@@ -844,12 +844,24 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
     const auto beyond = [](const time_fraction<NT>& s, double x) {
         return compare_values<NT>(s.num, tr::from_double(x) * s.den) > 0;
     };
-    // The events of the window (w_low, w] of s, sorted.
+    // The events of the window (w_low, w] of s, sorted. In an exact NT a
+    // site is first tried in certified: one that certainly has no event
+    // costs no exact arithmetic.
+    constexpr bool exact = tr::category == number_category::exact;
+    std::optional<translation_frame<certified>> fast;
+    if constexpr (exact) fast.emplace(a, b, t, point<certified>{certified(dx), certified(dy)});
     std::vector<timed_site<NT>> events;
     const auto load = [&](double w_low, double w) {
         events.clear();
         candidate_sites(a, b, f.b.approx(), f.b.bounds(), {std::max(w_low, 0.0) * dx, std::max(w_low, 0.0) * dy},
                         {w * dx, w * dy}, e, [&](const contact_site& site) {
+            if constexpr (exact) {
+                try {
+                    time_fraction<certified> none[2];
+                    if (fast->times(site, false, none) == 0) return;
+                } catch (const uncertain_sign&) {
+                }
+            }
             time_fraction<NT> out[2];
             const int k = f.times(site, false, out);
             for (int i = 0; i < k; ++i)
