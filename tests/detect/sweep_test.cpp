@@ -636,3 +636,36 @@ TEST_CASE("contact times: the nearest double of a fraction", "[sweep][predicates
     CHECK(nearest_double(time_fraction<ER>{ER(0), ER(5)}) == 0);
     CHECK(nearest_double(time_fraction<double>{1, 3}) == 1.0 / 3);
 }
+
+TEST_CASE("sweep: far from 1 in scale, and directions of any length", "[sweep][exit]") {
+    // The tunneling square and the wall scaled by 2^e: the same exact time.
+    for (int e : {-600, -40, 40, 600}) {
+        const auto sq = [e](double x0, double y0, double x1, double y1) {
+            return square(std::ldexp(x0, e), std::ldexp(y0, e), std::ldexp(x1, e), std::ldexp(y1, e));
+        };
+        const polygon wall = sq(0, -5, 0.1, 5), box = sq(-1, -1, 1, 1);
+        const pose from{std::ldexp(-10, e), 0, 0}, to{std::ldexp(10, e), 0, 0};
+        INFO("scale 2^" << e);
+        CHECK(first_contact<exact_rational>(wall, box, from, to).time == exact_rational(9) / exact_rational(20));
+        CHECK(certified_first_contact(wall, box, from, to).time == 0.45);
+        // Double's products overflow or underflow at 2^+-600: run only.
+        const contact_result<double> rounded = first_contact<double>(wall, box, from, to);
+        if (std::abs(e) < 100) CHECK(rounded.time == Approx(0.45));
+        // B overlapping the wall by 0.05 (scaled) moves right through it:
+        // they part once B's left side passes the wall's right side.
+        const pose in{std::ldexp(-0.95, e), 0, 0};
+        const exact_rational through = exact_rational(std::ldexp(0.1, e)) -
+                                       (exact_rational(std::ldexp(-1.0, e)) + exact_rational(std::ldexp(-0.95, e)));
+        CHECK(exit_distance<exact_rational>(wall, box, in, 1, 0) == through);
+        const double rounded_exit = exit_distance<double>(wall, box, in, 1, 0);
+        if (std::abs(e) < 100) CHECK(rounded_exit == Approx(std::ldexp(2.05, e)));
+    }
+    // The exit distance is in units of the direction, of any length.
+    const polygon a = square(0, 0, 4, 4), unit = square(0, 0, 1, 1);
+    CHECK(exit_distance<exact_rational>(a, unit, {3.5, 1, 0}, std::ldexp(1.0, -1000), 0) ==
+          exact_rational(std::ldexp(0.5, 500)) * exact_rational(std::ldexp(1.0, 500)));
+    CHECK(exit_distance<exact_rational>(a, unit, {3.5, 1, 0}, std::ldexp(1.0, 1000), 0) ==
+          exact_rational(std::ldexp(0.5, -1000)));
+    CHECK(exit_distance<double>(a, unit, {3.5, 1, 0}, 1e-300, 0) == Approx(0.5e300));
+    CHECK_THROWS_AS(exit_distance<double>(a, unit, {3.5, 1, 0}, 1e300, 1e-300), invalid_input);
+}

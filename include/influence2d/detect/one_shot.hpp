@@ -167,7 +167,8 @@ public:
 
     /// The origin of the covering that locates points in this polygon: its
     /// centroid placed like its vertices (for given vertices, the centre of
-    /// their box in double; any point gives the same winding numbers).
+    /// their box in double, or their first vertex when that box is beyond
+    /// double's range; any point gives the same winding numbers).
     point<NT> origin() const {
         using tr = number_traits<NT>;
         switch (how_) {
@@ -175,9 +176,11 @@ public:
             return {tr::from_double(shape_.centroid().x), tr::from_double(shape_.centroid().y)};
         case how::posed:
             return pose_.apply<NT>(shape_.centroid());
-        default:
-            return {tr::from_double(bounds_.min_x / 2 + bounds_.max_x / 2),
-                    tr::from_double(bounds_.min_y / 2 + bounds_.max_y / 2)};
+        default: {
+            const double x = bounds_.min_x / 2 + bounds_.max_x / 2, y = bounds_.min_y / 2 + bounds_.max_y / 2;
+            if (std::isfinite(x) && std::isfinite(y)) return {tr::from_double(x), tr::from_double(y)};
+            return (*given_)[0];  // beyond double's range: a vertex serves too
+        }
         }
     }
 

@@ -823,7 +823,8 @@ inline contact_result<double> certified_first_contact(const polygon& a, const po
 /// "Exit distance"). Time O((n + m) log(n + m) + k log k) for k events up to
 /// the exit, plus O((n + m) log(n + m)) for each event that touches the
 /// witness. Throws invalid_input for an empty polygon, a NaN or infinite
-/// component of q or of the direction, or a direction (0, 0).
+/// component of q or of the direction, a direction (0, 0), or one whose
+/// components differ by more than double's range (2^1022 times).
 template <class NT>
 NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, double dy) {
     using namespace sweep_detail;
@@ -832,6 +833,18 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
     accepted_polygon<NT>(b, "moving");
     const rotation_pose t(q);
     check_direction(dx, dy);
+    // The direction scaled by a power of two 2^shift (exactly) to a largest
+    // component in [1, 2): the windows of s, kept in double, then neither
+    // overflow nor underflow; s for (dx, dy) is 2^shift times s for the
+    // scaled one.
+    const int shift = -std::ilogb(std::max(std::fabs(dx), std::fabs(dy)));
+    const double ux = std::ldexp(dx, shift), uy = std::ldexp(dy, shift);
+    if (std::ldexp(ux, -shift) != dx || std::ldexp(uy, -shift) != dy)
+        throw invalid_input("direction: the components' magnitudes are too far apart to scale exactly");
+    const NT unit_scale =
+        tr::from_double(std::ldexp(1.0, shift / 2)) * tr::from_double(std::ldexp(1.0, shift - shift / 2));
+    dx = ux;
+    dy = uy;
     translation_frame<NT> f(a, b, t, {tr::from_double(dx), tr::from_double(dy)});
     const double scale = coordinate_scale(a) + coordinate_scale(b) + std::fabs(q.tx) + std::fabs(q.ty);
     const double reach = std::fabs(dx) + std::fabs(dy);
@@ -886,11 +899,11 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
             load(w_low, w);
             next = 0;
         }
-        if (next == events.size()) return last.num / last.den;  // after the last event, apart
+        if (next == events.size()) return last.num / last.den * unit_scale;  // after the last event, apart
         const time_fraction<NT>& following = events[next].time;
         if (stale) {
             witness = meeting_between(f, last, following, scale, reach);
-            if (!witness) return last.num / last.den;
+            if (!witness) return last.num / last.den * unit_scale;
         }
         last = following;
     }
