@@ -68,9 +68,11 @@ done
 echo
 echo "per-frame answers: $out/*.csv"
 echo
-echo "precision study (short run: every decision of the method in every number type against exact):"
+echo "precision study (short run: every decision of the method, the separation and the first contact, in every number type against exact):"
 "$tool" study --quick --out "$out/study" --regressions "$out/regressions" >"$out/study.log"
 sed -n '/^## What this means/,/^## /p' "$out/study/study.md" | sed '$d'
+grep '^`separation`\|^`first_contact`' "$out/study/study.md"
+echo
 echo "tables and plots: $out/study/study.md, $out/study/*.svg"
 echo
 echo "time study (quick grid: sizes 8 and 1024, every polygon type; the two trajectories, random poses and one-shot queries; every method on the same poses):"

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
-// `influence2d study`: the method's decisions in every number type against the
-// exact reference (verification/study.hpp); writes the tables, a summary and
-// the plots of error against run time.
+// `influence2d study`: the method's decisions and the queries (separation,
+// first contact) in every number type against the exact reference
+// (verification/study.hpp); writes the tables, a summary and the plots of
+// error against run time.
 
 #include <algorithm>
 #include <cstdio>
@@ -31,8 +32,10 @@ struct study_cli_options {
     std::vector<std::string> families;
     std::vector<std::string> types;
     std::vector<std::string> decisions;
+    std::vector<std::string> queries;  ///< empty: both; "none": neither
     std::size_t cases = 3;
     std::size_t frames = 256;
+    std::size_t query_frames = study_options{}.query_frames;
     std::uint64_t seed = study_options{}.seed;
     std::string out;
     std::string regressions;  ///< empty: OUT/regressions
@@ -45,10 +48,20 @@ constexpr std::size_t quick_cases = 1, quick_frames = 40;
 
 /// Rates are drawn on log axes: a rate of zero is drawn at this floor.
 constexpr double rate_floor = 1e-7;
+/// The queries' errors likewise: an error of zero (an exact type) is drawn
+/// at this floor, below the 113-bit types' errors, and one that is not finite
+/// at this ceiling, above every finite one.
+constexpr double error_floor = 1e-40, error_ceiling = 1e20;
 
 std::vector<std::string> decision_kind_names() {
     std::vector<std::string> names;
     for (decision_kind k : all_decision_kinds) names.push_back(decision_name(k));
+    return names;
+}
+
+std::vector<std::string> query_kind_names() {
+    std::vector<std::string> names;
+    for (query_kind k : all_query_kinds) names.push_back(query_name(k));
     return names;
 }
 
@@ -72,6 +85,17 @@ std::map<std::string, decision_tally> totals(const study_result& r, Keep keep) {
     return t;
 }
 
+/// The query rows of each number type pooled over the families, for one query.
+std::map<std::string, query_tally> query_totals(const study_result& r, const std::string& query) {
+    std::map<std::string, query_tally> t;
+    for (const query_row& row : r.query_rows)
+        if (row.query == query) t[row.number_type].merge(row.tally);
+    return t;
+}
+
+/// An error as text: "-" when none was measured.
+std::string error_text(const std::optional<double>& e) { return e ? general(*e, 3) : "-"; }
+
 bool is_collides(const study_row& row) { return row.decision == "collides"; }
 bool is_predicate(const study_row& row) { return row.decision != "collides" && row.decision != "collides_brute_force"; }
 
@@ -81,6 +105,20 @@ std::string study_csv(const study_result& r) {
         s += row.number_type + "," + row.family + "," + row.decision + "," + std::to_string(row.tally.cases) + "," +
              std::to_string(row.tally.disagreements) + "," + general(row.tally.rate()) + "," +
              fixed(row.tally.ns_per_query(), 1) + "\n";
+    return s;
+}
+
+std::string queries_csv(const study_result& r) {
+    std::string s = "number_type,family,query,questions,differing,meeting_differs,features_differ,values_differ,"
+                    "measured,largest_error,median_error,ns_per_question\n";
+    for (const query_row& row : r.query_rows) {
+        const query_tally& t = row.tally;
+        s += row.number_type + "," + row.family + "," + row.query + "," + std::to_string(t.questions) + "," +
+             std::to_string(t.differing) + "," + std::to_string(t.meeting_differs) + "," +
+             std::to_string(t.features_differ) + "," + std::to_string(t.values_differ) + "," +
+             std::to_string(t.errors.size()) + "," + (t.largest_error() ? general(*t.largest_error(), 6) : "") + "," +
+             (t.median_error() ? general(*t.median_error(), 6) : "") + "," + fixed(t.ns_per_question(), 1) + "\n";
+    }
     return s;
 }
 
@@ -150,6 +188,95 @@ std::string advice(const study_result& r) {
     return s + "\n";
 }
 
+/// What a query's error is, for the text.
+std::string error_meaning(const std::string& query) {
+    return query == "separation" ? "relative error of the distance" : "absolute error of the contact time";
+}
+
+/// The paragraph on one query: its fastest type and that type's errors, and
+/// the fastest type whose answers never differed.
+std::string query_summary(const study_result& r, const std::string& query) {
+    const auto totals = query_totals(r, query);
+    std::vector<std::string> asked;
+    for (const std::string& t : r.types)
+        if (totals.count(t) && totals.at(t).questions > 0) asked.push_back(t);
+    if (asked.empty()) return "";
+    const auto ns = [&](const std::string& t) { return totals.at(t).ns_per_question(); };
+    const auto by_time = [&](const std::string& x, const std::string& y) { return ns(x) < ns(y); };
+    const std::string fastest = *std::min_element(asked.begin(), asked.end(), by_time);
+    const query_tally& f = totals.at(fastest);
+    std::string s = "`" + query + "`: the fastest type was " + fastest + ", at " + fixed(ns(fastest), 0) +
+                    " ns per question; its answers differed on " + std::to_string(f.differing) + " of " +
+                    std::to_string(f.questions) + " questions, its " + error_meaning(query) + " was at most " +
+                    error_text(f.largest_error()) + " (median " + error_text(f.median_error()) + ").";
+    std::vector<std::string> sound;
+    for (const std::string& t : asked)
+        if (totals.at(t).differing == 0) sound.push_back(t);
+    if (!sound.empty()) {
+        const std::string best = *std::min_element(sound.begin(), sound.end(), by_time);
+        s += " The fastest type whose answers never differed was " + best + ", at " + fixed(ns(best), 0) + " ns (" +
+             general(ns(best) / std::max(ns(fastest), 1e-9), 3) + " times " + fastest + ").";
+    }
+    for (const type_summary& t : r.summaries)
+        if (t.claims_exact && totals.count(t.number_type) && totals.at(t.number_type).differing > 0)
+            s += " " + t.number_type + " claims exactness and differed on " +
+                 std::to_string(totals.at(t.number_type).differing) +
+                 " questions: library bugs, kept as reproducible cases (below).";
+    return s + "\n\n";
+}
+
+/// The section on the queries: what was asked, then one table per query.
+std::string queries_md(const study_result& r, const study_cli_options& o) {
+    if (r.query_rows.empty()) return "";
+    std::string s = "## Queries: error against time\n\n";
+    s += "The separation at a pose (`separation`) and the first contact along a translation (`first_contact`), "
+         "asked of every type through the library's public API on the first " +
+         std::to_string(std::min(o.query_frames, o.frames)) + " poses of each scene" +
+         (std::count(r.families.begin(), r.families.end(), "large") ? " (16 on `large`)" : "") +
+         ", and on as many translations: toward a pose along the ray from A's centroid through B's, from "
+         "R_A + R_B farther out (ending on the pose, near contact); from a pose away along that ray; from one "
+         "pose's place to the next pose at its angle. The exact answers are `separation<exact_rational>` and "
+         "`first_contact<exact_rational>`; queries.csv has every family.\n\n"
+         "The floating types and exact answer through `separation_query<NT>` (the polygons prepared once per "
+         "scene, not timed) and `first_contact<NT>`; certified and interval through `certified_separation` "
+         "(which builds both edge trees in each call, inside its time) and `certified_first_contact`: interval "
+         "has no route of its own and runs certified's.\n\n"
+         "An answer differs when meet or not (contact or not) differs, when the closest (first) features differ, "
+         "or, for a type that claims exactness, when its value is not the exact one (exact) or its documented "
+         "rounding (certified: `distance_of` the exact squared distance, the exact points and time rounded to "
+         "the nearest double). The error is, for the separation, the relative error of the type's distance (the "
+         "root of its squared distance, taken exactly) over the questions whose exact distance is positive; for "
+         "the first contact, the absolute error of the earliest time over the questions where both touch, but "
+         "not both at the start. `inf` is a value that is not finite (a squared distance beyond float's range, a "
+         "time whose denominator rounded to 0). A relative error of 1 is a distance given as 0: a floating type's "
+         "that says the polygons meet, and certified's on `subnormal` scenes, whose distances lie among "
+         "double's subnormals (its distance, a double, then keeps few bits) or below them.\n\n";
+    for (query_kind k : all_query_kinds) {
+        const std::string query = query_name(k);
+        const auto totals = query_totals(r, query);
+        if (totals.empty()) continue;
+        s += "### " + query + "\n\n" + query_summary(r, query);
+        s += std::string("| number type | questions | answers differing | ") +
+             (k == query_kind::separation ? "meet differs" : "contact differs") +
+             " | features differ | value differs | largest error | median error | ns per question |\n"
+             "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+        for (const std::string& t : r.types) {
+            if (!totals.count(t)) continue;
+            const query_tally& x = totals.at(t);
+            s += "| " + t + " | " + std::to_string(x.questions) + " | " + std::to_string(x.differing) + " | " +
+                 std::to_string(x.meeting_differs) + " | " + std::to_string(x.features_differ) + " | " +
+                 std::to_string(x.values_differ) + " | " + error_text(x.largest_error()) + " | " +
+                 error_text(x.median_error()) + " | " + fixed(x.ns_per_question(), 1) + " |\n";
+        }
+        s += "\n";
+    }
+    for (const type_summary& t : r.summaries)
+        if (t.refused_query_scenes > 0)
+            s += t.number_type + " refused the queries of " + std::to_string(t.refused_query_scenes) +
+                 " scenes whose coordinates lie beyond its range.\n\n";
+    return s;
+}
+
 std::string study_md(const study_result& r, const study_cli_options& o) {
     std::string s = "# Precision study\n\n";
     s += "Each decision of the method is evaluated in every number type on the same input doubles and compared "
@@ -187,6 +314,8 @@ std::string study_md(const study_result& r, const study_cli_options& o) {
         s += "\n";
     }
 
+    s += queries_md(r, o);
+
     if (!r.stability.empty()) {
         s += "## Stability: offset and scale sweeps\n\nEvery decision of a magnitude pooled (stability.csv).\n\n";
         s += "| sweep | magnitude |";
@@ -221,7 +350,7 @@ std::string study_md(const study_result& r, const study_cli_options& o) {
             s += t.number_type + " refused " + std::to_string(t.refused_scenes) +
                  " scenes whose coordinates lie beyond its range; their questions are not in its rows.\n\n";
 
-    s += "## Worst examples\n\nThe first disagreements of each type and decision.\n\n";
+    s += "## Worst examples\n\nThe first disagreements of each type and decision or query.\n\n";
     if (r.examples.empty()) s += "None.\n";
     for (const study_example& e : r.examples)
         s += "- " + e.number_type + ", " + e.decision + ", " + e.family + " (" + e.scene + "), " + e.question +
@@ -291,8 +420,55 @@ std::string plot_script(const study_result& r, const fs::path& dir) {
     return s;
 }
 
+std::string shown_error(const std::optional<double>& e) {
+    return general(std::min(std::max(*e, error_floor), error_ceiling), 6);
+}
+
+/// The plot of the queries: per query and number type, the largest and the
+/// median error against the time per question.
+std::string query_plot_script(const study_result& r, const fs::path& dir) {
+    std::string s, plot;
+    for (query_kind k : all_query_kinds) {
+        const std::string query = query_name(k);
+        const auto totals = query_totals(r, query);
+        std::vector<std::string> lines;
+        for (const std::string& t : r.types) {
+            if (!totals.count(t) || !totals.at(t).largest_error()) continue;
+            const query_tally& x = totals.at(t);
+            lines.push_back("\"" + t + "\" " + general(x.ns_per_question()) + " " + shown_error(x.largest_error()) +
+                            " " + shown_error(x.median_error()));
+        }
+        if (lines.empty()) continue;
+        s += data_block(query, lines);
+        const bool separation = k == query_kind::separation;
+        const std::string title = separation ? "separation" : "first contact";
+        plot += std::string(plot.empty() ? "plot " : ", ") + "$" + query + " using 2:3 with points pointtype " +
+                (separation ? "7" : "5") + " pointsize 1.5 title '" + title + ": largest error', $" + query +
+                " using 2:3:1 with labels rotate by 35 left offset char 0.6,0.6 notitle, $" + query +
+                " using 2:4 with points pointtype " + (separation ? "6" : "4") + " pointsize 1.5 title '" + title +
+                ": median error'";
+    }
+    if (plot.empty()) return "";
+    return "set terminal svg size 900,600 dynamic enhanced font 'sans,12' background '#ffffff'\n"
+           "set logscale xy\nset grid\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
+           "set key right center\nset output '" + (dir / "queries_error_vs_time.svg").string() + "'\n"
+           "set title 'Queries: error against run time, per number type'\n"
+           "set xlabel 'nanoseconds per question (log scale)'\n"
+           "set ylabel 'separation: relative error of the distance; first contact: absolute error of the time'\n"
+           "set yrange [" + general(error_floor / 1e3) + ":" + general(error_ceiling * 1e3) + "]\n"
+           "set arrow 1 from graph 0, first " + general(error_floor) + " to graph 1, first " + general(error_floor) +
+           " nohead dashtype 2\n"
+           "set label 1 'no error (drawn at 10^{-40})' at graph 0.02, first " + general(error_floor * 10) + "\n"
+           "set arrow 2 from graph 0, first " + general(error_ceiling) + " to graph 1, first " +
+           general(error_ceiling) + " nohead dashtype 2\n"
+           "set label 2 'not finite (drawn at 10^{20})' at graph 0.3, first " + general(error_ceiling * 10) + "\n" +
+           s + plot + "\n";
+}
+
 /// Writes the plots with gnuplot (plots.gp in the output directory).
-void write_plots(const study_result& r, const fs::path& dir) { plot_with_gnuplot(dir / "plots.gp", plot_script(r, dir), "study"); }
+void write_plots(const study_result& r, const fs::path& dir) {
+    plot_with_gnuplot(dir / "plots.gp", plot_script(r, dir) + query_plot_script(r, dir), "study");
+}
 
 void run_study_command(study_cli_options o, bool cases_given, bool frames_given) {
     if (o.quick) {
@@ -306,6 +482,14 @@ void run_study_command(study_cli_options o, bool cases_given, bool frames_given)
     so.types = o.types;
     check_names(o.decisions, decision_kind_names(), "decisions");
     for (const std::string& d : o.decisions) so.decisions.push_back(*decision_from_name(d));
+    if (o.queries == std::vector<std::string>{"none"}) {
+        so.queries.clear();
+    } else if (!o.queries.empty()) {
+        check_names(o.queries, query_kind_names(), "queries");
+        so.queries.clear();
+        for (const std::string& q : o.queries) so.queries.push_back(*query_from_name(q));
+    }
+    so.query_frames = o.query_frames;
     so.cases = o.cases;
     so.frames = o.frames;
     so.seed = o.seed;
@@ -327,6 +511,7 @@ void run_study_command(study_cli_options o, bool cases_given, bool frames_given)
     const study_result r = run_study(so);
     write_atomically(dir / "study.csv", study_csv(r));
     write_atomically(dir / "stability.csv", stability_csv(r));
+    write_atomically(dir / "queries.csv", queries_csv(r));
     write_atomically(dir / "study.md", study_md(r, o));
     write_plots(r, dir);
 
@@ -337,12 +522,22 @@ void run_study_command(study_cli_options o, bool cases_given, bool frames_given)
             std::cout << "  " << t << ": " << collides.at(t).disagreements << " of " << collides.at(t).cases
                       << " frames differ (" << percent(collides.at(t).rate()) << "), "
                       << fixed(collides.at(t).ns_per_query(), 1) << " ns per frame\n";
+    for (query_kind k : all_query_kinds) {
+        const auto totals = query_totals(r, query_name(k));
+        if (totals.empty()) continue;
+        std::cout << "study: " << query_name(k) << " per number type (" << error_meaning(query_name(k)) << "):\n";
+        for (const std::string& t : r.types)
+            if (totals.count(t))
+                std::cout << "  " << t << ": " << totals.at(t).differing << " of " << totals.at(t).questions
+                          << " answers differ, largest error " << error_text(totals.at(t).largest_error()) << ", "
+                          << fixed(totals.at(t).ns_per_question(), 1) << " ns per question\n";
+    }
     if (!r.regressions.empty())
         std::cout << "study: " << r.regressions.size()
                   << " disagreements of types that claim exactness, written as reproducible cases to " << o.regressions
                   << " (listed in study.md)\n";
     std::cout << "written: " << (dir / "study.csv").string() << ", " << (dir / "stability.csv").string() << ", "
-              << (dir / "study.md").string() << "\n";
+              << (dir / "queries.csv").string() << ", " << (dir / "study.md").string() << "\n";
 }
 
 }  // namespace
@@ -352,8 +547,9 @@ void register_study(CLI::App& app) {
     CLI::App* sub = app.add_subcommand(
         "study",
         "Compare the method's decisions (cone membership, mask, alpha-sign selection, extended-area candidates, "
-        "edge pairs, containment, the final answer) in every number type with the exact reference, and report "
-        "error against run time: DIR/study.csv, DIR/stability.csv, DIR/study.md and plots (with gnuplot).");
+        "edge pairs, containment, the final answer) and the queries (separation, first contact along a "
+        "translation) in every number type with the exact reference, and report error against run time: "
+        "DIR/study.csv, DIR/stability.csv, DIR/queries.csv, DIR/study.md and plots (with gnuplot).");
     const std::string family_list = joined(default_study_families()), type_list = joined(mode_names(study_modes{}));
     sub->add_option("--families", o->families, "Case families, separated by commas [default: " + family_list +
                         "; also: large, a static polygon of over 100,000 vertices, slow]")
@@ -366,6 +562,15 @@ void register_study(CLI::App& app) {
     sub->add_option("--decisions", o->decisions, "Decision kinds, separated by commas [default: " + decision_list + "]")
         ->delimiter(',')
         ->type_name("LIST");
+    sub->add_option("--queries", o->queries,
+                    "Queries, separated by commas, or none [default: " + joined(query_kind_names()) + "]")
+        ->delimiter(',')
+        ->type_name("LIST");
+    sub->add_option("--query-frames", o->query_frames,
+                    "Questions per scene for each query (at most --frames; 16 on large)")
+        ->capture_default_str()
+        ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 32))
+        ->type_name("N");
     CLI::Option* cases = sub->add_option("--cases", o->cases, "Scenes per family (per magnitude for the sweeps)")
                              ->capture_default_str()
                              ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 30))

@@ -15,6 +15,15 @@
 //           for each number type, for each decision kind:
 //               time its answers to the chunk; compare each with the reference
 //
+// The queries beyond yes or no (the separation, the first contact along a
+// translation; verification/query_study.hpp) are asked of every type too, on
+// the same scenes: their errors against the exact answers, and their time.
+//
+//   for each case, after its decisions:
+//       for each query, for each chunk of its questions (poses, translations):
+//           the exact answers                                          (not timed)
+//           for each number type: time its answers; compare each with the exact one
+//
 // Number types come from one type list (study_modes): each is run once, by the
 // same code. A disagreement of a type that claims the exact answer (its
 // category is not floating) is a bug of the library: it is kept as a
@@ -45,6 +54,7 @@
 #include "influence2d/number/multiprecision.hpp"
 #include "verification/decisions.hpp"
 #include "verification/families.hpp"
+#include "verification/query_study.hpp"
 #include "verification/stiff_cases.hpp"
 
 namespace influence2d::verification {
@@ -56,6 +66,9 @@ struct number_mode {
     using number = NT;
     using fallback = Fallback;
     using evaluator_type = evaluator<NT, Fallback>;
+    /// How the type answers the queries: a filtered type (one with a
+    /// fallback) through certified_separation and certified_first_contact.
+    using route_type = query_route<NT, !std::is_same_v<NT, Fallback>>;
     static std::string name() { return number_type_name<NT>(); }
     /// Whether the type claims the exact answer: its category is not floating.
     static constexpr bool claims_exact = is_exact_v<NT>;
@@ -313,14 +326,39 @@ inline std::string exact_text(double x) {
     return buf;
 }
 
+/// A pose as text: (tx, ty, theta).
+inline std::string pose_text(const pose& p) {
+    return "(" + exact_text(p.tx) + ", " + exact_text(p.ty) + ", " + exact_text(p.theta) + ")";
+}
+
 /// The question of a decision as text.
 inline std::string question_text(decision_kind k, const query& q) {
     if (asks_point(k)) return "point (" + exact_text(q.at.x) + ", " + exact_text(q.at.y) + ")";
-    return "pose (" + exact_text(q.placement.tx) + ", " + exact_text(q.placement.ty) + ", " +
-           exact_text(q.placement.theta) + ")";
+    return "pose " + pose_text(q.placement);
+}
+
+/// The question of a query as text: a pose (the separation; motion.from) or
+/// a translation.
+inline std::string question_text(query_kind k, const translation& motion) {
+    if (k == query_kind::separation) return "pose " + pose_text(motion.from);
+    return "translation from " + pose_text(motion.from) + " to " + pose_text(motion.to);
 }
 
 // --- Reproducible cases ---------------------------------------------------
+
+/// A pose as JSON: {"tx": ..., "ty": ..., "theta": ...}, each %.17g.
+inline std::string pose_json(const pose& p) {
+    return "{\"tx\": " + exact_text(p.tx) + ", \"ty\": " + exact_text(p.ty) + ", \"theta\": " + exact_text(p.theta) +
+           "}";
+}
+
+/// The first lines of a reproducible case: what was asked (`key`: decision
+/// or query), of which type, on which polygons.
+inline std::string regression_head(const std::string& key, const std::string& asked, const std::string& number_type,
+                                   const polygon& a, const polygon& b) {
+    return "{\n  \"" + key + "\": \"" + asked + "\",\n  \"number_type\": \"" + number_type + "\",\n  \"static\": \"" +
+           to_wkt(a) + "\",\n  \"moving\": \"" + to_wkt(b) + "\",\n";
+}
 
 /// The JSON text of a reproducible case (format: data/regressions/README.md).
 inline std::string regression_json(const polygon& a, const polygon& b, double distance, decision_kind k,
@@ -331,35 +369,72 @@ inline std::string regression_json(const polygon& a, const polygon& b, double di
         for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + std::to_string(v[i]);
         return s + "]";
     };
-    std::string s = "{\n";
-    s += "  \"decision\": \"" + std::string(decision_name(k)) + "\",\n";
-    s += "  \"number_type\": \"" + number_type + "\",\n";
-    s += "  \"static\": \"" + to_wkt(a) + "\",\n";
-    s += "  \"moving\": \"" + to_wkt(b) + "\",\n";
+    std::string s = regression_head("decision", decision_name(k), number_type, a, b);
     s += "  \"distance\": " + exact_text(distance) + ",\n";
     if (asks_point(k))
         s += "  \"point\": {\"x\": " + exact_text(q.at.x) + ", \"y\": " + exact_text(q.at.y) + "},\n";
     else
-        s += "  \"pose\": {\"tx\": " + exact_text(q.placement.tx) + ", \"ty\": " + exact_text(q.placement.ty) +
-             ", \"theta\": " + exact_text(q.placement.theta) + "},\n";
+        s += "  \"pose\": " + pose_json(q.placement) + ",\n";
     s += "  \"expected\": " + list(expected) + ",\n";
     s += "  \"got\": " + list(got) + "\n}\n";
     return s;
 }
 
-/// A reproducible case read back.
+/// The JSON text of a reproducible case of a query: its pose (the
+/// separation) or translation, the exact answer and the type's, as text.
+inline std::string query_regression_json(const polygon& a, const polygon& b, query_kind k, const translation& motion,
+                                         const std::string& number_type, const std::string& expected,
+                                         const std::string& got) {
+    std::string s = regression_head("query", query_name(k), number_type, a, b);
+    if (k == query_kind::separation)
+        s += "  \"pose\": " + pose_json(motion.from) + ",\n";
+    else
+        s += "  \"from\": " + pose_json(motion.from) + ",\n  \"to\": " + pose_json(motion.to) + ",\n";
+    s += "  \"expected\": " + nlohmann::json(expected).dump() + ",\n";
+    s += "  \"got\": " + nlohmann::json(got).dump() + "\n}\n";
+    return s;
+}
+
+/// A reproducible case read back: of a decision, or of a query (`asked`).
 struct regression_case {
     decision_kind decision{};
+    std::optional<query_kind> asked;  ///< the query, for a query's case
     std::string number_type;
     polygon a, b;
     double distance = 0;
     query question;
     answer expected;
+    translation motion;         ///< a query's question: its pose (motion.from) or translation
+    std::string expected_text;  ///< a query's exact answer as text
 };
+
+inline pose parse_pose(const nlohmann::json& j) {
+    return {j.at("tx").get<double>(), j.at("ty").get<double>(), j.at("theta").get<double>()};
+}
+
+/// A query's reproducible case (its "query" key read as `kind`).
+inline regression_case parse_query_regression(const nlohmann::json& j, query_kind kind, const std::string& source) {
+    regression_case r;
+    r.asked = kind;
+    r.number_type = j.at("number_type").get<std::string>();
+    r.a = read_wkt(j.at("static").get<std::string>(), source + ": static");
+    r.b = read_wkt(j.at("moving").get<std::string>(), source + ": moving");
+    if (kind == query_kind::separation)
+        r.motion = {parse_pose(j.at("pose")), parse_pose(j.at("pose"))};
+    else
+        r.motion = {parse_pose(j.at("from")), parse_pose(j.at("to"))};
+    r.expected_text = j.at("expected").get<std::string>();
+    return r;
+}
 
 inline regression_case parse_regression(const std::string& text, const std::string& source) {
     try {
         const nlohmann::json j = nlohmann::json::parse(text);
+        if (j.contains("query")) {
+            const auto kind = query_from_name(j.at("query").get<std::string>());
+            if (!kind) throw std::runtime_error("unknown query " + j.at("query").get<std::string>());
+            return parse_query_regression(j, *kind, source);
+        }
         regression_case r;
         const auto kind = decision_from_name(j.at("decision").get<std::string>());
         if (!kind) throw std::runtime_error("unknown decision " + j.at("decision").get<std::string>());
@@ -371,8 +446,7 @@ inline regression_case parse_regression(const std::string& text, const std::stri
         if (asks_point(r.decision))
             r.question.at = {j.at("point").at("x").get<double>(), j.at("point").at("y").get<double>()};
         else
-            r.question.placement = {j.at("pose").at("tx").get<double>(), j.at("pose").at("ty").get<double>(),
-                                    j.at("pose").at("theta").get<double>()};
+            r.question.placement = parse_pose(j.at("pose"));
         r.expected = j.at("expected").get<answer>();
         return r;
     } catch (const nlohmann::json::exception& e) {
@@ -391,6 +465,17 @@ struct replay_outcome {
 template <class... Modes>
 replay_outcome replay_regression(const regression_case& r, mode_list<Modes...>) {
     replay_outcome out;
+    if (r.asked) {
+        out.reference_agrees = exact_answer_text(r.a, r.b, *r.asked, r.motion) == r.expected_text;
+        const auto check = [&](auto mode) {
+            using M = decltype(mode);
+            if constexpr (M::claims_exact)
+                if (fresh_answer<typename M::route_type>(r.a, r.b, *r.asked, r.motion).first.differs())
+                    out.disagreeing.push_back(M::name());
+        };
+        (check(Modes{}), ...);
+        return out;
+    }
     out.reference_agrees = reference_decisions(r.a, r.b, r.distance).decide(r.decision, r.question) == r.expected;
     const auto check = [&](auto mode) {
         using M = decltype(mode);
@@ -421,7 +506,10 @@ struct study_options {
     std::size_t cases = 2;           ///< scenes per family (per magnitude for a sweep)
     std::size_t frames = 100;        ///< poses and query points per scene
     std::uint64_t seed = 20040202;
-    std::size_t examples = 3;        ///< disagreements kept per type and decision
+    std::size_t examples = 3;        ///< disagreements kept per type and decision (or query)
+    /// The queries asked (separation, first contact); empty: none.
+    std::vector<query_kind> queries{std::begin(all_query_kinds), std::end(all_query_kinds)};
+    std::size_t query_frames = 128;  ///< questions per scene for each query (at most `frames`)
     std::string regressions_dir;     ///< where reproducible cases go; empty: not written
     std::function<void(const study_progress&)> progress;
 };
@@ -437,6 +525,55 @@ struct decision_tally {
 struct study_row {
     std::string number_type, family, decision;
     decision_tally tally;
+};
+
+/// The answers of one type to one query: how many differ from the exact
+/// ones, and how, the error of each measured value, and the time.
+struct query_tally {
+    std::size_t questions = 0;
+    std::size_t differing = 0;        ///< answers differing in any way below
+    std::size_t meeting_differs = 0;  ///< meet (separation) or contact (first contact) or not
+    std::size_t features_differ = 0;  ///< the closest (first) features
+    std::size_t values_differ = 0;    ///< not the value a type claiming exactness claims
+    std::vector<double> errors;       ///< relative distance errors, absolute time errors
+    double nanoseconds = 0;
+
+    void add(const query_outcome& o) {
+        ++questions;
+        differing += o.differs() ? 1 : 0;
+        meeting_differs += o.meeting_differs ? 1 : 0;
+        features_differ += o.features_differ ? 1 : 0;
+        values_differ += o.value_differs ? 1 : 0;
+        if (o.error) errors.push_back(*o.error);
+    }
+    void merge(const query_tally& o) {
+        questions += o.questions;
+        differing += o.differing;
+        meeting_differs += o.meeting_differs;
+        features_differ += o.features_differ;
+        values_differ += o.values_differ;
+        errors.insert(errors.end(), o.errors.begin(), o.errors.end());
+        nanoseconds += o.nanoseconds;
+    }
+    std::optional<double> largest_error() const {
+        if (errors.empty()) return std::nullopt;
+        return *std::max_element(errors.begin(), errors.end());
+    }
+    /// The lower median.
+    std::optional<double> median_error() const {
+        if (errors.empty()) return std::nullopt;
+        std::vector<double> e = errors;
+        const auto mid = e.begin() + static_cast<std::ptrdiff_t>((e.size() - 1) / 2);
+        std::nth_element(e.begin(), mid, e.end());
+        return *mid;
+    }
+    double ns_per_question() const { return questions ? nanoseconds / static_cast<double>(questions) : 0; }
+};
+
+/// One line of queries.csv.
+struct query_row {
+    std::string number_type, family, query;
+    query_tally tally;
 };
 
 /// One line of stability.csv: every decision of a sweep's magnitude pooled.
@@ -458,11 +595,13 @@ struct type_summary {
     std::size_t fallbacks = 0;        ///< questions answered by the fallback type
     std::size_t setup_fallbacks = 0;  ///< scenes that could not be set up in the type itself
     std::size_t refused_scenes = 0;   ///< scenes beyond the type's range (float): not asked
+    std::size_t refused_query_scenes = 0;  ///< the same for the queries
 };
 
 struct study_result {
     std::vector<std::string> families, types;
     std::vector<study_row> rows;
+    std::vector<query_row> query_rows;
     std::vector<stability_row> stability;
     std::vector<study_example> examples;
     std::vector<type_summary> summaries;
@@ -486,7 +625,7 @@ public:
                 std::find(o_.decisions.begin(), o_.decisions.end(), all_decision_kinds[d]) != o_.decisions.end())
                 asked_.push_back(d);
         summaries_ = {
-            type_summary{Modes::name(), Modes::claims_exact, Modes::evaluator_type::has_fallback, 0, 0, 0}...};
+            type_summary{Modes::name(), Modes::claims_exact, Modes::evaluator_type::has_fallback, 0, 0, 0, 0, 0}...};
     }
 
     study_result run() {
@@ -503,6 +642,7 @@ public:
             for (std::size_t k = 0; k < cases.size(); ++k) {
                 if (o_.progress) o_.progress({f, families, k, cases.size(), o_.families[f]});
                 run_case(cases[k], std::index_sequence_for<Modes...>{});
+                run_queries(cases[k], std::index_sequence_for<Modes...>{});
             }
             scenes += cases.size();
         }
@@ -587,6 +727,92 @@ private:
         }
     }
 
+    static constexpr std::size_t query_chunk = 16;
+
+    /// The queries of one scene, each on its first query_frames poses (and as
+    /// many translations between them): per chunk of questions, the exact
+    /// answers (not timed), then every type's, timed and compared.
+    template <std::size_t... I>
+    void run_queries(const study_case& c, std::index_sequence<I...>) {
+        if (o_.queries.empty()) return;
+        const std::size_t n = std::min(c.poses.size(), query_questions(c));
+        const std::vector<translation> motions = study_translations(c.a, c.b, c.poses, n);
+        query_reference exact(c.a, c.b);
+        std::tuple<std::optional<typename Modes::route_type>...> routes;
+        ((selected_[I] ? set_up_route(I, std::get<I>(routes), c) : void()), ...);
+        std::vector<translation> questions;
+        for (query_kind k : o_.queries)
+            for (std::size_t first = 0; first < n; first += query_chunk) {
+                const std::size_t last = std::min(n, first + query_chunk);
+                if (k == query_kind::separation) {
+                    questions.clear();
+                    std::vector<separation_result<exact_rational>> expected;
+                    for (std::size_t i = first; i < last; ++i) {
+                        questions.push_back({c.poses[i], c.poses[i]});
+                        expected.push_back(exact.separation(c.poses[i]));
+                    }
+                    (ask<Modes>(I, std::get<I>(routes), c, k, questions, expected), ...);
+                } else {
+                    questions.assign(motions.begin() + static_cast<std::ptrdiff_t>(first),
+                                     motions.begin() + static_cast<std::ptrdiff_t>(last));
+                    std::vector<contact_result<exact_rational>> expected;
+                    for (const translation& m : questions) expected.push_back(exact.first_contact(m));
+                    (ask<Modes>(I, std::get<I>(routes), c, k, questions, expected), ...);
+                }
+            }
+    }
+
+    /// Questions per scene for each query: query_frames, at most
+    /// large_frames on `large`.
+    std::size_t query_questions(const study_case& c) const {
+        return c.family == stiff_family_name(stiff_family::large) ? std::min(o_.query_frames, large_frames)
+                                                                  : o_.query_frames;
+    }
+
+    /// One type's answers to a chunk of one query's questions (a separation's
+    /// pose is motion.from), timed, each compared with the exact answer.
+    template <class Mode, class Route, class Exact>
+    void ask(std::size_t m, std::optional<Route>& route, const study_case& c, query_kind k,
+             const std::vector<translation>& questions, const std::vector<Exact>& expected) {
+        if (!route) return;
+        const auto answer_of = [&](const translation& q) {
+            if constexpr (std::is_same_v<Exact, separation_result<exact_rational>>)
+                return route->separation(q.from);
+            else
+                return route->first_contact(q);
+        };
+        std::vector<decltype(answer_of(questions.front()))> got;
+        got.reserve(questions.size());
+        const auto t0 = std::chrono::steady_clock::now();
+        for (const translation& q : questions) got.push_back(answer_of(q));
+        const auto t1 = std::chrono::steady_clock::now();
+        query_tally& t = query_tallies_[{m, c.family, k}];
+        t.nanoseconds += std::chrono::duration<double, std::nano>(t1 - t0).count();
+        for (std::size_t i = 0; i < questions.size(); ++i) {
+            const query_outcome o = compare_answer(got[i], expected[i], Route::claim);
+            t.add(o);
+            if (!o.differs()) continue;
+            if (examples_[{m, kinds + static_cast<std::size_t>(k)}]++ < o_.examples)
+                example_list_.push_back({Mode::name(), c.family, query_name(k), c.scene,
+                                         question_text(k, questions[i]), answer_text(got[i]),
+                                         answer_text(expected[i])});
+            if (Mode::claims_exact && !o_.regressions_dir.empty())
+                write_query_regression<Mode>(c, k, questions[i]);
+        }
+    }
+
+    /// Builds a type's route for the scene's queries; a type that refuses the
+    /// scene (coordinates beyond float's range) is not asked.
+    template <class Route>
+    void set_up_route(std::size_t m, std::optional<Route>& route, const study_case& c) {
+        try {
+            route.emplace(c.a, c.b);
+        } catch (const invalid_input&) {
+            route.reset();
+            ++summaries_[m].refused_query_scenes;
+        }
+    }
+
     /// Builds a type's evaluator for the scene; a type that refuses the scene
     /// (coordinates beyond float's range) is not asked its questions.
     template <class Evaluator>
@@ -613,13 +839,27 @@ private:
         const polygon a = read_wkt(to_wkt(c.a)), b = read_wkt(to_wkt(c.b));
         const answer expected = reference_decisions(a, b, c.distance).decide(kind, q);
         const answer got = typename Mode::evaluator_type(a, b, c.distance).decide(kind, q);
-        const std::string text = regression_json(a, b, c.distance, kind, q, Mode::name(), expected, got);
+        keep_regression(decision_name(kind), Mode::name(),
+                        regression_json(a, b, c.distance, kind, q, Mode::name(), expected, got));
+    }
+
+    /// The same for a query's question, answered alone by fresh objects.
+    template <class Mode>
+    void write_query_regression(const study_case& c, query_kind k, const translation& motion) {
+        const polygon a = read_wkt(to_wkt(c.a)), b = read_wkt(to_wkt(c.b));
+        const std::string got = fresh_answer<typename Mode::route_type>(a, b, k, motion).second;
+        keep_regression(query_name(k), Mode::name(),
+                        query_regression_json(a, b, k, motion, Mode::name(), exact_answer_text(a, b, k, motion), got));
+    }
+
+    /// Writes a reproducible case to regressions_dir as
+    /// <asked>-<number type>-<hash of the text>.json.
+    void keep_regression(const std::string& asked, const std::string& number_type, const std::string& text) {
         char name[32];  // the same case gets the same name
         std::snprintf(name, sizeof name, "%016llx", static_cast<unsigned long long>(fnv1a(text)));
         const std::filesystem::path dir(o_.regressions_dir);
         std::filesystem::create_directories(dir);
-        const std::filesystem::path path =
-            dir / (std::string(decision_name(kind)) + "-" + Mode::name() + "-" + name + ".json");
+        const std::filesystem::path path = dir / (asked + "-" + number_type + "-" + name + ".json");
         std::ofstream out(path, std::ios::binary | std::ios::trunc);
         out << text;
         if (!out) throw std::runtime_error(path.string() + ": cannot write");
@@ -641,6 +881,11 @@ private:
                     if (it != tallies_.end())
                         r.rows.push_back({names[m], f, decision_name(all_decision_kinds[d]), it->second});
                 }
+            for (const std::string& f : o_.families)
+                for (query_kind k : all_query_kinds) {
+                    const auto it = query_tallies_.find({m, f, k});
+                    if (it != query_tallies_.end()) r.query_rows.push_back({names[m], f, query_name(k), it->second});
+                }
             for (const auto& [key, t] : stability_)
                 if (std::get<0>(key) == m) r.stability.push_back({names[m], std::get<1>(key), std::get<2>(key), t});
         }
@@ -654,6 +899,7 @@ private:
     std::vector<std::size_t> asked_;  ///< indices into all_decision_kinds
     std::vector<type_summary> summaries_;
     std::map<std::tuple<std::size_t, std::string, std::size_t>, decision_tally> tallies_;
+    std::map<std::tuple<std::size_t, std::string, query_kind>, query_tally> query_tallies_;
     std::map<std::tuple<std::size_t, std::string, double>, decision_tally> stability_;
     std::map<std::pair<std::size_t, std::size_t>, std::size_t> examples_;
     std::vector<study_example> example_list_;

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSL-1.0
 // The precision study (verification/study.hpp, `influence2d study`): a tiny
 // run writes its files with the right headers, the types that claim exactness
-// never disagree with the reference, float does on a stiff family; the
-// reproducible-case format reads back; every committed case in
+// never disagree with the reference, float does on a stiff family; the quick
+// run's queries (separation, first contact) likewise; the reproducible-case
+// format reads back, for decisions and queries; every committed case in
 // data/regressions is answered again.
 
 #include <catch2/catch.hpp>
@@ -87,6 +88,72 @@ TEST_CASE("study: a tiny run writes the tables, the summary and the plots", "[ve
     }
 }
 
+TEST_CASE("study: the queries' section, and no disagreement of the types that claim exactness",
+          "[verification][study][cli]") {
+    const temp_dir dir;
+    const auto r = run_cli(dir, "study --quick --out " + quote((dir / "out").string()) + " --regressions " +
+                                    quote((dir / "regressions").string()));
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.out.find("separation per number type") != std::string::npos);
+    CHECK(r.out.find("first_contact per number type") != std::string::npos);
+
+    const std::string md = slurp(dir / "out" / "study.md");
+    CHECK(md.find("## Queries: error against time") != std::string::npos);
+    CHECK(md.find("### separation") != std::string::npos);
+    CHECK(md.find("### first_contact") != std::string::npos);
+
+    const std::vector<std::string> rows = lines_of(slurp(dir / "out" / "queries.csv"));
+    REQUIRE(!rows.empty());
+    CHECK(rows.front() == "number_type,family,query,questions,differing,meeting_differs,features_differ,"
+                          "values_differ,measured,largest_error,median_error,ns_per_question");
+    std::map<std::string, std::size_t> questions, differing;  // per "type query"
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        const std::vector<std::string> f = fields(rows[i]);
+        REQUIRE(f.size() == 12);
+        questions[f[0] + " " + f[2]] += std::stoul(f[3]);
+        differing[f[0] + " " + f[2]] += std::stoul(f[4]);
+    }
+    for (const std::string& type : mode_names(study_modes{}))
+        for (const char* query : {"separation", "first_contact"}) {
+            INFO(type << " " << query);
+            CHECK(questions[type + " " + query] > 0);
+            if (type == "certified" || type == "interval" || type == "exact")
+                CHECK(differing[type + " " + query] == 0);
+        }
+    CHECK(differing["float separation"] > 0);  // the cliff is there
+    CHECK(!fs::exists(dir / "regressions"));
+}
+
+TEST_CASE("study: a query's reproducible case reads back and is answered again", "[verification][study]") {
+    //   +-------+ +-+     A: the square [0,4]^2; B: a unit square moving
+    //   |   A   | |B| <-  toward A's right side, which it reaches at t = 1/2
+    //   +-------+ +-+
+    const polygon a = make({{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+    const polygon b = make({{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}});
+    const translation motion{{5.5, 2, 0}, {3.5, 2, 0}};
+    const std::string expected = exact_answer_text(a, b, query_kind::first_contact, motion);
+    CHECK(expected == "contact at 1/2, e1:v0");
+    const std::string text =
+        query_regression_json(a, b, query_kind::first_contact, motion, "certified", expected, "no contact");
+    const regression_case r = parse_regression(text, "<text>");
+    REQUIRE(r.asked == query_kind::first_contact);
+    CHECK(r.motion.from.tx == 5.5);
+    CHECK(r.motion.to.tx == 3.5);
+    const replay_outcome ok = replay_regression(r);
+    CHECK(ok.reference_agrees);
+    CHECK(ok.disagreeing.empty());
+
+    const translation apart{{5.5, 2, 0}, {5.5, 2, 0}};
+    const regression_case s = parse_regression(
+        query_regression_json(a, b, query_kind::separation, apart, "exact", "apart", "apart"), "<text>");
+    REQUIRE(s.asked == query_kind::separation);
+    CHECK(s.motion.from.tx == 5.5);
+    const replay_outcome wrong = replay_regression(s);  // "apart" is not the exact answer's text
+    CHECK(!wrong.reference_agrees);
+    CHECK(wrong.disagreeing.empty());
+}
+
 TEST_CASE("study: bad arguments are named, exit code 2", "[verification][study][cli]") {
     const temp_dir dir;
     const std::string out = " --out " + quote((dir / "out").string());
@@ -96,6 +163,9 @@ TEST_CASE("study: bad arguments are named, exit code 2", "[verification][study][
     const auto bad_family = run_cli(dir, "study --families convex,triangles" + out);
     CHECK(bad_family.exit_code == 2);
     CHECK(bad_family.err.find("triangles") != std::string::npos);
+    const auto bad_query = run_cli(dir, "study --queries separation,volume" + out);
+    CHECK(bad_query.exit_code == 2);
+    CHECK(bad_query.err.find("volume") != std::string::npos);
     CHECK(run_cli(dir, "study --cases 0" + out).exit_code == 2);
     CHECK(run_cli(dir, "study --frames x" + out).exit_code == 2);
     CHECK(!fs::exists(dir / "out" / "study.csv"));
