@@ -2,9 +2,7 @@
 // `influence2d collide`: runs a detector over a sequence of poses of the moving
 // polygon and reports the frames that collide.
 
-#include <chrono>
 #include <cstddef>
-#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -115,8 +113,7 @@ void run_collide(collide_options o) {
     scene_input in = read_scene(o.scene, o.out);
     std::vector<pose> static_poses;
     if (!o.static_poses.empty()) {
-        static_poses = is_standard_stream(o.static_poses) ? read_poses_csv(std::cin, shown_name(o.static_poses))
-                                                          : read_poses_csv(o.static_poses);
+        static_poses = read_poses_input(o.static_poses);
         if (static_poses.size() != in.poses.size())
             throw invalid_input(shown_name(o.static_poses) + ": " + std::to_string(static_poses.size()) +
                                 " poses of the static polygon for " + std::to_string(in.poses.size()) +
@@ -140,11 +137,11 @@ void run_collide(collide_options o) {
     frames_run r;
     if (!static_poses.empty() && type.meets_both) {
         // Both posed exactly, frame by frame.
-        const auto start = std::chrono::steady_clock::now();
         r.frames.resize(in.poses.size());
-        for (std::size_t k = 0; k < in.poses.size(); ++k)
-            r.frames[k].collides = type.meets_both(in.a, static_poses[k], in.b, in.poses[k]);
-        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        r.seconds = seconds_taken([&] {
+            for (std::size_t k = 0; k < in.poses.size(); ++k)
+                r.frames[k].collides = type.meets_both(in.a, static_poses[k], in.b, in.poses[k]);
+        });
     } else {
         r = type.run({in.a, in.b, in.poses, options, o.algorithm, threads});
     }
@@ -155,9 +152,7 @@ void run_collide(collide_options o) {
     std::size_t between = 0;
     double contact_seconds = 0, separation_seconds = 0;
     if (o.continuous) {
-        const auto start = std::chrono::steady_clock::now();
-        contacts = type.contacts(in.a, in.b, in.poses);
-        contact_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        contact_seconds = seconds_taken([&] { contacts = type.contacts(in.a, in.b, in.poses); });
         for (std::size_t k = 0; k < contacts.size(); ++k)
             if (contacts[k].contact && !r.frames[k + 1].collides) {
                 r.frames[k + 1].collides = true;
@@ -166,9 +161,7 @@ void run_collide(collide_options o) {
     }
     std::vector<separation_row> separations;
     if (o.separation) {
-        const auto start = std::chrono::steady_clock::now();
-        separations = type.separations(in.a, in.b, in.poses);
-        separation_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        separation_seconds = seconds_taken([&] { separations = type.separations(in.a, in.b, in.poses); });
     }
 
     std::size_t collisions = 0, first = 0;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "influence2d/core/invalid_input.hpp"
+#include "influence2d/io/csv.hpp"
 #include "influence2d/io/wkt.hpp"
 
 namespace influence2d::cli {
@@ -73,6 +74,12 @@ inline std::string read_wkt_text_input(const std::string& path) {
 /// start with the file name or "standard input".
 inline polygon read_wkt_input(const std::string& path) {
     return read_wkt(read_wkt_text_input(path), shown_name(path));
+}
+
+/// Poses read from CSV: the file, or standard input for '-'; messages start
+/// with the file name or "standard input".
+inline std::vector<pose> read_poses_input(const std::string& path) {
+    return is_standard_stream(path) ? read_poses_csv(std::cin, shown_name(path)) : read_poses_csv(path);
 }
 
 /// Writes `text` to `path` through a temporary file in the same directory,

@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -18,6 +19,14 @@
 #include "files.hpp"
 
 namespace influence2d::cli {
+
+/// The wall-clock seconds f() takes (steady clock).
+template <class F>
+double seconds_taken(F&& f) {
+    const auto start = std::chrono::steady_clock::now();
+    f();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 /// x with `digits` digits after the point.
 inline std::string fixed(double x, int digits) {

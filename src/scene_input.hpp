@@ -123,10 +123,7 @@ inline scene_input read_scene(const scene_options& o, const std::string& out) {
     attempt([&] { in.a = read_wkt_input(o.static_path); });
     attempt([&] { in.b = read_wkt_input(o.moving_path); });
     if (!o.poses_path.empty())
-        attempt([&] {
-            in.poses = is_standard_stream(o.poses_path) ? read_poses_csv(std::cin, shown_name(o.poses_path))
-                                                        : read_poses_csv(o.poses_path);
-        });
+        attempt([&] { in.poses = read_poses_input(o.poses_path); });
     if (!out.empty()) {
         const std::string why = check_output_path(out);
         if (!why.empty()) errors.push_back(why);

@@ -2,7 +2,6 @@
 // `influence2d sweep`: the first contact of the moving polygon along each
 // motion between two consecutive poses (continuous collision detection).
 
-#include <chrono>
 #include <cstddef>
 #include <iostream>
 #include <memory>
@@ -49,9 +48,8 @@ void run_sweep(const sweep_cli_options& o) {
         throw std::invalid_argument(shown_name(o.scene.poses_path) + ": " + std::to_string(in.poses.size()) +
                                     " pose" + (in.poses.size() == 1 ? "" : "s") +
                                     ": a motion needs two (motion k goes from pose k to pose k + 1)");
-    const auto start = std::chrono::steady_clock::now();
-    const std::vector<contact_row> rows = type.contacts(in.a, in.b, in.poses);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::vector<contact_row> rows;
+    const double seconds = seconds_taken([&] { rows = type.contacts(in.a, in.b, in.poses); });
     if (!o.out.empty()) write_output(o.out, contacts_csv(rows));
 
     std::size_t contacts = 0, first = 0;
