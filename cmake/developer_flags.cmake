@@ -3,7 +3,7 @@
 add_library(influence2d_developer_flags INTERFACE)
 target_compile_options(influence2d_developer_flags INTERFACE
     -ffp-contract=off -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion)
-# The library's internal invariants (INFLUENCE2D_ASSERT, core/assert.hpp) are
+# The library's internal invariants (INFLUENCE2D_ASSERT, assert.hpp) are
 # checked in everything built with these flags.
 target_compile_definitions(influence2d_developer_flags INTERFACE INFLUENCE2D_ENABLE_ASSERTS)
 if(INFLUENCE2D_SANITIZE)

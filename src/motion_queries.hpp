@@ -13,10 +13,10 @@
 
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
-#include "influence2d/detect/feature.hpp"
-#include "influence2d/detect/posed_meet.hpp"
-#include "influence2d/detect/separation.hpp"
-#include "influence2d/detect/sweep.hpp"
+#include "influence2d/core/feature.hpp"
+#include "influence2d/query/both_posed.hpp"
+#include "influence2d/distance/separation.hpp"
+#include "influence2d/motion/first_contact.hpp"
 #include "influence2d/number/traits.hpp"
 #include "influence2d/predicates/contact_time.hpp"
 

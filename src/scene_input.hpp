@@ -15,7 +15,7 @@
 
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
-#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/motion/trajectory.hpp"
 #include "influence2d/io/csv.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "files.hpp"

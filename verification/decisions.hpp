@@ -52,7 +52,7 @@
 #include "influence2d/covering/inclusion.hpp"
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/detect/scene.hpp"
+#include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/influence/extended_area.hpp"
 #include "influence2d/influence/influence_areas.hpp"

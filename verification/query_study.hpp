@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // The queries of the precision study (verification/study.hpp runs them): the
-// separation at a pose (detect/separation.hpp) and the first contact along a
-// translation (detect/sweep.hpp), asked of each number type through the
+// separation at a pose (distance/separation.hpp) and the first contact along a
+// translation (motion/first_contact.hpp), asked of each number type through the
 // library's public API, as the tool asks them (src/motion_queries.hpp):
 //
 //   floating types, exact:  separation_query<NT> (A and B prepared once per
@@ -42,10 +42,10 @@
 
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
-#include "influence2d/detect/feature.hpp"
-#include "influence2d/detect/scene.hpp"
-#include "influence2d/detect/separation.hpp"
-#include "influence2d/detect/sweep.hpp"
+#include "influence2d/core/feature.hpp"
+#include "influence2d/scene/prepared.hpp"
+#include "influence2d/distance/separation.hpp"
+#include "influence2d/motion/first_contact.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/number/traits.hpp"

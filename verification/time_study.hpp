@@ -67,11 +67,11 @@
 #include <vector>
 
 #include "influence2d/detect/brute_force.hpp"
-#include "influence2d/detect/certified_detector.hpp"
+#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/detect/one_shot.hpp"
+#include "influence2d/query/intersects.hpp"
 #include "influence2d/detect/paper_detector.hpp"
-#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/motion/trajectory.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "verification/families.hpp"

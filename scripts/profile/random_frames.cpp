@@ -13,7 +13,7 @@
 #include <valgrind/callgrind.h>
 
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/motion/trajectory.hpp"
 #include "verification/families.hpp"
 #include "verification/time_study.hpp"
 

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "influence2d/detect/separation.hpp"
-#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/distance/separation.hpp"
+#include "influence2d/motion/trajectory.hpp"
 #include "influence2d/io/csv.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "support/process.hpp"

@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/motion/trajectory.hpp"
 #include "influence2d/io/csv.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "support/process.hpp"

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "influence2d/detect/brute_force.hpp"
-#include "influence2d/detect/certified_detector.hpp"
+#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
 #include "influence2d/detect/paper_detector.hpp"
 #include "influence2d/io/wkt.hpp"

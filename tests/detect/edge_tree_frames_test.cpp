@@ -13,7 +13,7 @@
 
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/motion/trajectory.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "support/effort.hpp"

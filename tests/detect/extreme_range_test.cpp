@@ -7,7 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include "influence2d/detect/brute_force.hpp"
-#include "influence2d/detect/certified_detector.hpp"
+#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "verification/cgal_reference.hpp"

@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <vector>
 
-#include <influence2d/detect/batch.hpp>
-#include <influence2d/detect/certified_detector.hpp>
+#include <influence2d/query/batch.hpp>
+#include <influence2d/exact/certified_detector.hpp>
 #include <influence2d/detect/detector.hpp>
-#include <influence2d/detect/trajectory.hpp>
+#include <influence2d/motion/trajectory.hpp>
 
 using namespace influence2d;
 

@@ -5,10 +5,10 @@
 // the README's "Distance, closest features, first contact".
 #include <cstdio>
 
-#include <influence2d/detect/certified_detector.hpp>
-#include <influence2d/detect/posed_meet.hpp>
-#include <influence2d/detect/separation.hpp>
-#include <influence2d/detect/sweep.hpp>
+#include <influence2d/exact/certified_detector.hpp>
+#include <influence2d/query/both_posed.hpp>
+#include <influence2d/distance/separation.hpp>
+#include <influence2d/motion/first_contact.hpp>
 
 using namespace influence2d;
 

@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "influence2d/detect/certified_detector.hpp"
+#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"

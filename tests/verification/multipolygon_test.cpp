@@ -29,9 +29,9 @@
 #endif
 
 #include "influence2d/detect/brute_force.hpp"
-#include "influence2d/detect/certified_detector.hpp"
+#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/detect/interval_detector.hpp"
+#include "influence2d/exact/interval_detector.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "verification/cgal_reference.hpp"

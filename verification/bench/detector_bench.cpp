@@ -23,10 +23,10 @@
 #include <vector>
 
 #include "bench_common.hpp"
-#include "influence2d/detect/certified_detector.hpp"
+#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/detect/interval_detector.hpp"
-#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/exact/interval_detector.hpp"
+#include "influence2d/motion/trajectory.hpp"
 
 namespace influence2d::bench {
 namespace {

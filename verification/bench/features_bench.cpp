@@ -18,7 +18,7 @@
 
 #include "bench_common.hpp"
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/motion/trajectory.hpp"
 #include "influence2d/number/cgal.hpp"
 
 namespace influence2d::bench {

@@ -25,7 +25,7 @@
 
 #include "bench_common.hpp"
 #include "influence2d/core/pose.hpp"
-#include "influence2d/detect/scene.hpp"
+#include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/influence_areas.hpp"
 #include "influence2d/predicates/orientation.hpp"
 #include "influence2d/predicates/segments.hpp"

@@ -30,9 +30,9 @@
 #include <vector>
 
 #include "bench_common.hpp"
-#include "influence2d/detect/separation.hpp"
-#include "influence2d/detect/sweep.hpp"
-#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/distance/separation.hpp"
+#include "influence2d/motion/first_contact.hpp"
+#include "influence2d/motion/trajectory.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "verification/peers.hpp"
 

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "influence2d/core/assert.hpp"
+#include "influence2d/assert.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/predicates/orientation.hpp"

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "influence2d/core/assert.hpp"
+#include "influence2d/assert.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/covering/covering.hpp"

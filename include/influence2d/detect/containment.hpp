@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "influence2d/covering/inclusion.hpp"
-#include "influence2d/detect/scene.hpp"
+#include "influence2d/scene/prepared.hpp"
 
 namespace influence2d {
 

@@ -9,13 +9,13 @@
 #include <stdexcept>
 #include <vector>
 
-#include "influence2d/core/assert.hpp"
+#include "influence2d/assert.hpp"
 #include "influence2d/covering/inclusion.hpp"
 #include "influence2d/detect/containment.hpp"
 #include "influence2d/detect/features.hpp"
 #include "influence2d/detect/pairs.hpp"
 #include "influence2d/detect/result.hpp"
-#include "influence2d/detect/scene.hpp"
+#include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/edge_grid.hpp"
 #include "influence2d/influence/edge_tree.hpp"
 #include "influence2d/influence/extended_area.hpp"

@@ -10,7 +10,7 @@
 
 #include "influence2d/detect/pairs.hpp"
 #include "influence2d/detect/result.hpp"
-#include "influence2d/detect/scene.hpp"
+#include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/edge_grid.hpp"
 #include "influence2d/influence/extended_area.hpp"
 #include "influence2d/influence/influence_areas.hpp"

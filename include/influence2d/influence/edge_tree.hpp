@@ -141,7 +141,7 @@ public:
     std::size_t node_count() const { return nodes_.size(); }
 
     /// One node of the tree, read-only, for traversals of one's own (the
-    /// separation query's branch and bound, detect/separation.hpp).
+    /// separation query's branch and bound, distance/separation.hpp).
     struct node {
         box bounds;            ///< holds the boxes of the node's edges
         point<double> center;  ///< the centre of bounds

@@ -10,7 +10,7 @@
 #include <limits>
 #include <vector>
 
-#include "influence2d/core/assert.hpp"
+#include "influence2d/assert.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/covering/covering.hpp"
 #include "influence2d/covering/inclusion.hpp"

@@ -3,7 +3,7 @@
 /// \file
 /// The certified number type: a double with a running bound of its error.
 /// A sign it cannot decide raises uncertain_sign; certified_detector (in
-/// detect/certified_detector.hpp) then answers the frame in an exact type.
+/// exact/certified_detector.hpp) then answers the frame in an exact type.
 /// The same detector code, generic in NT, runs on it unchanged.
 
 #include <cmath>

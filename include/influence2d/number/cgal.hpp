@@ -63,7 +63,7 @@ struct number_traits<CGAL::Lazy_exact_nt<ET>> {
 /// CGAL::Uncertain_conversion_exception when the intervals overlap. The
 /// predicates never use them (they compare through compare_values, so through
 /// sign); run a detector on intervals through interval_detector
-/// (detect/interval_detector.hpp), which answers the frames it cannot decide
+/// (exact/interval_detector.hpp), which answers the frames it cannot decide
 /// in exact rationals.
 using interval = CGAL::Interval_nt<true>;
 

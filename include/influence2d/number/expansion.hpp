@@ -9,7 +9,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "influence2d/core/assert.hpp"
+#include "influence2d/assert.hpp"
 
 /// Exact signs of sums of products of doubles (no number type involved).
 namespace influence2d::expansion {

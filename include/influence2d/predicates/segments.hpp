@@ -7,7 +7,7 @@
 /// NT's ring operations are; a filtered NT gives the exact answer or throws
 /// uncertain_sign.
 
-#include "influence2d/core/assert.hpp"
+#include "influence2d/assert.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/number/traits.hpp"
 #include "influence2d/predicates/orientation.hpp"

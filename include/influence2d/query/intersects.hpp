@@ -16,7 +16,7 @@
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/covering/inclusion.hpp"
-#include "influence2d/detect/scene.hpp"
+#include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/predicates/segments.hpp"
@@ -304,7 +304,7 @@ double posing_margin(double scale) {
 /// counts; B inside a hole of A does not meet A): the question a detector
 /// answers for one frame with distance 0, without building one. Exact when NT
 /// is; a filtered NT may throw uncertain_sign (certified_intersects in
-/// certified_detector.hpp answers exactly through it). Throws invalid_input
+/// exact/certified_detector.hpp answers exactly through it). Throws invalid_input
 /// for an empty polygon, one beyond NT's range, or a pose with a NaN or
 /// infinite component.
 ///

@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "influence2d/detect/brute_force.hpp"
-#include "influence2d/detect/certified_detector.hpp"
+#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"

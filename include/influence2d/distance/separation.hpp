@@ -19,16 +19,16 @@
 #include <utility>
 #include <vector>
 
-#include "influence2d/core/assert.hpp"
+#include "influence2d/assert.hpp"
 #include "influence2d/core/box.hpp"
 #include "influence2d/core/invalid_input.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/covering/inclusion.hpp"
-#include "influence2d/detect/feature.hpp"
-#include "influence2d/detect/filtered_detector.hpp"
-#include "influence2d/detect/scene.hpp"
+#include "influence2d/core/feature.hpp"
+#include "influence2d/exact/filtered_detector.hpp"
+#include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/influence/edge_tree.hpp"
 #include "influence2d/number/certified.hpp"

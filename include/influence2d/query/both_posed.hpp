@@ -12,9 +12,9 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
-#include "influence2d/detect/certified_detector.hpp"
-#include "influence2d/detect/one_shot.hpp"
-#include "influence2d/detect/scene.hpp"
+#include "influence2d/exact/certified_detector.hpp"
+#include "influence2d/query/intersects.hpp"
+#include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/bounds.hpp"
 
 namespace influence2d {
@@ -22,7 +22,7 @@ namespace influence2d {
 /// Whether the closed regions of A and B meet, given their vertices already
 /// placed in one frame in NT (`a_vertices[i]` is A's stored vertex i, in the
 /// polygon's stored order; likewise for B): the one-shot query's steps
-/// (intersects in one_shot.hpp) after its posing. Touching counts; one
+/// (intersects in query/intersects.hpp) after its posing. Touching counts; one
 /// inside a hole of the other does not meet it. Exact when NT is (one vertex
 /// per ring located in the other polygon, then the edge pairs whose boxes
 /// overlap tested exactly); a filtered NT may throw uncertain_sign.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// First contact along a motion and the exit distance (detect/sweep.hpp)
+// First contact along a motion and the exit distance (motion/first_contact.hpp)
 // against an independent exact reference (support/exact_regions.hpp: every
 // vertex-edge contact time solved as a segment intersection on CGAL's
 // Cartesian kernel over exact rationals, and the regions' meeting decided
@@ -24,8 +24,8 @@
 #include <string>
 #include <vector>
 
-#include "influence2d/detect/sweep.hpp"
-#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/motion/first_contact.hpp"
+#include "influence2d/motion/trajectory.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/predicates/contact_time.hpp"
 

@@ -10,11 +10,11 @@
 #include <cmath>
 #include <vector>
 
-#include "influence2d/detect/batch.hpp"
+#include "influence2d/query/batch.hpp"
 #include "influence2d/detect/brute_force.hpp"
-#include "influence2d/detect/certified_detector.hpp"
+#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/motion/trajectory.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "verification/families.hpp"
 

@@ -11,7 +11,7 @@
 
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/detect/filtered_detector.hpp"
+#include "influence2d/exact/filtered_detector.hpp"
 #include "influence2d/number/cgal.hpp"
 
 namespace influence2d {

@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/motion/trajectory.hpp"
 #include "support/shapes.hpp"
 
 using namespace influence2d;

@@ -15,7 +15,7 @@
 
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
-#include "influence2d/detect/one_shot.hpp"
+#include "influence2d/query/intersects.hpp"
 #include "influence2d/detect/result.hpp"
 
 namespace influence2d {
@@ -101,7 +101,7 @@ struct pair_query {
 /// ask(A, B, pose) for every query, in order, on `threads` threads (0:
 /// every hardware thread): an audit of many pairs, each asked once; `ask` is
 /// a one-shot query such as `intersects<double>` or `certified_intersects`
-/// (one_shot.hpp, certified_detector.hpp) and must be safe to call from
+/// (query/intersects.hpp, exact/certified_detector.hpp) and must be safe to call from
 /// several threads (those are). 1 for a pair that meets, else 0. Throws
 /// invalid_input for a null polygon, and the first exception `ask` throws
 /// (in query order) after every thread ended.

@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "influence2d/detect/certified_detector.hpp"
-#include "influence2d/detect/one_shot.hpp"
-#include "influence2d/detect/trajectory.hpp"
+#include "influence2d/exact/certified_detector.hpp"
+#include "influence2d/query/intersects.hpp"
+#include "influence2d/motion/trajectory.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "verification/cgal_reference.hpp"
 #include "verification/families.hpp"

@@ -5,8 +5,8 @@
 
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/detect/filtered_detector.hpp"
-#include "influence2d/detect/one_shot.hpp"
+#include "influence2d/exact/filtered_detector.hpp"
+#include "influence2d/query/intersects.hpp"
 #include "influence2d/number/certified.hpp"
 
 namespace influence2d {

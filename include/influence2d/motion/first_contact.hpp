@@ -20,11 +20,11 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
-#include "influence2d/detect/certified_detector.hpp"
-#include "influence2d/detect/feature.hpp"
-#include "influence2d/detect/one_shot.hpp"
-#include "influence2d/detect/scene.hpp"
-#include "influence2d/detect/separation.hpp"
+#include "influence2d/exact/certified_detector.hpp"
+#include "influence2d/core/feature.hpp"
+#include "influence2d/query/intersects.hpp"
+#include "influence2d/scene/prepared.hpp"
+#include "influence2d/distance/separation.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/predicates/contact_time.hpp"
 #include "influence2d/predicates/orientation.hpp"
@@ -567,7 +567,7 @@ inline constexpr double distance_shrinking = 0x1p-50;
 /// distance at the same pose, given the scene's size `scale` (the largest
 /// coordinates of A and of B plus the translations): 0 for an exact NT (its
 /// distance is exact before distance_of rounds it); for double the bound
-/// separation.hpp states, 2^-40 scale; for another floating NT its filters'
+/// distance/separation.hpp states, 2^-40 scale; for another floating NT its filters'
 /// slack, four times filter_slack times scale (1e-9 for long double and
 /// quad, far above their rounding; 1e-4 for float).
 template <class NT>

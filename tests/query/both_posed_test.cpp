@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// Both polygons placed in one frame (detect/posed_meet.hpp): the two-pose
+// Both polygons placed in one frame (query/both_posed.hpp): the two-pose
 // intersects against the one-pose reference (verification/cgal_reference)
 // when the relative pose is exact, and against an independent exact
 // placing of both polygons (support/exact_regions.hpp) for any poses;
@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "influence2d/detect/posed_meet.hpp"
+#include "influence2d/query/both_posed.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "verification/cgal_reference.hpp"
 

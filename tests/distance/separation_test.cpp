@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// The separation query (detect/separation.hpp) against an exact reference
+// The separation query (distance/separation.hpp) against an exact reference
 // on CGAL's Cartesian kernel over exact rationals, sharing nothing with the
 // library but the polygon's storage (support/exact_regions.hpp places the
 // polygons and decides meeting): B posed exactly with the same doubles
@@ -43,7 +43,7 @@
 
 #include <CGAL/squared_distance_2.h>
 
-#include "influence2d/detect/separation.hpp"
+#include "influence2d/distance/separation.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/number/multiprecision.hpp"
 
