@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "influence2d/influence/extended_area.hpp"
+
 namespace influence2d {
 
 /// An involved pair of features: static edge and moving edge, each numbered in
@@ -26,12 +28,6 @@ inline bool operator<(const edge_pair& a, const edge_pair& b) {
     return a.static_edge != b.static_edge ? a.static_edge < b.static_edge
                                           : a.moving_edge < b.moving_edge;
 }
-
-/// The shape used for the extended influence area of an edge (docs/method.md section 5).
-enum class extended_area {
-    capsule,  ///< points within n of the edge segment
-    band      ///< the paper's band between parallels at distance n, axis-parallel caps
-};
 
 /// What a detector is asked per frame. Every option changes only the cost of
 /// a frame except `distance` and `witness`, which change the question.

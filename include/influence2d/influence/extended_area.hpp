@@ -8,11 +8,16 @@
 #include <cmath>
 
 #include "influence2d/core/point.hpp"
-#include "influence2d/detect/result.hpp"
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/predicates/segments.hpp"
 
 namespace influence2d {
+
+/// The shape used for the extended influence area of an edge (docs/method.md section 5).
+enum class extended_area {
+    capsule,  ///< points within n of the edge segment
+    band      ///< the paper's band between parallels at distance n, axis-parallel caps
+};
 
 /// The ideal area: points within n of the segment [a, b] (a closed capsule;
 /// a disk for a == b). `n2` is n squared. Exact when NT is.
