@@ -11,6 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "influence2d/exact/certified_separation.hpp"
+#include "influence2d/exact/certified_first_contact.hpp"
+#include "influence2d/exact/certified_both_posed.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/core/feature.hpp"

@@ -40,6 +40,8 @@
 #include <utility>
 #include <vector>
 
+#include "influence2d/exact/certified_separation.hpp"
+#include "influence2d/exact/certified_first_contact.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/core/feature.hpp"

@@ -66,6 +66,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "influence2d/exact/certified_intersects.hpp"
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"

@@ -12,7 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-namespace influence2d::detail {
+namespace influence2d::assert_detail {
 
 /// Prints "file:line: influence2d assertion `condition' failed: message" to
 /// stderr and aborts: the failure of an INFLUENCE2D_ASSERT.
@@ -23,7 +23,7 @@ namespace influence2d::detail {
     std::abort();
 }
 
-}  // namespace influence2d::detail
+}  // namespace influence2d::assert_detail
 
 #if defined(INFLUENCE2D_ENABLE_ASSERTS)
 /// Checks the invariant `cond` (anything convertible to bool); when it is
@@ -32,7 +32,7 @@ namespace influence2d::detail {
 /// evaluated nor costs anything, but must still compile.
 #define INFLUENCE2D_ASSERT(cond, message)                                                                   \
     (static_cast<bool>(cond) ? static_cast<void>(0)                                                         \
-                             : ::influence2d::detail::assertion_failed(#cond, message, __FILE__, __LINE__))
+                             : ::influence2d::assert_detail::assertion_failed(#cond, message, __FILE__, __LINE__))
 #else
 /// Checks the invariant `cond` when INFLUENCE2D_ENABLE_ASSERTS is defined;
 /// here it is not, so `cond` is only type-checked (in an unevaluated

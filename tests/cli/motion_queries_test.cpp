@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "influence2d/exact/certified_separation.hpp"
 #include "influence2d/distance/separation.hpp"
 #include "influence2d/motion/trajectory.hpp"
 #include "influence2d/io/csv.hpp"

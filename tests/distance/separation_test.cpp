@@ -43,6 +43,7 @@
 
 #include <CGAL/squared_distance_2.h>
 
+#include "influence2d/exact/certified_separation.hpp"
 #include "influence2d/distance/separation.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/number/multiprecision.hpp"

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <vector>
 
+#include <influence2d/exact/certified_intersects.hpp>
 #include <influence2d/query/batch.hpp>
 #include <influence2d/exact/certified_detector.hpp>
 #include <influence2d/detect/detector.hpp>

@@ -5,6 +5,9 @@
 // the README's "Distance, closest features, first contact".
 #include <cstdio>
 
+#include <influence2d/exact/certified_separation.hpp>
+#include <influence2d/exact/certified_first_contact.hpp>
+#include <influence2d/exact/certified_both_posed.hpp>
 #include <influence2d/exact/certified_detector.hpp>
 #include <influence2d/query/both_posed.hpp>
 #include <influence2d/distance/separation.hpp>

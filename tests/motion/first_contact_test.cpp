@@ -24,6 +24,9 @@
 #include <string>
 #include <vector>
 
+#include "influence2d/exact/certified_separation.hpp"
+#include "influence2d/exact/certified_first_contact.hpp"
+#include "influence2d/exact/certified_intersects.hpp"
 #include "influence2d/motion/first_contact.hpp"
 #include "influence2d/motion/trajectory.hpp"
 #include "influence2d/number/cgal.hpp"

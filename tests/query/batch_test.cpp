@@ -10,6 +10,7 @@
 #include <cmath>
 #include <vector>
 
+#include "influence2d/exact/certified_intersects.hpp"
 #include "influence2d/query/batch.hpp"
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/exact/certified_detector.hpp"

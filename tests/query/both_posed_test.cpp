@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "influence2d/exact/certified_both_posed.hpp"
 #include "influence2d/query/both_posed.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "verification/cgal_reference.hpp"

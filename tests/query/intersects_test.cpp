@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "influence2d/exact/certified_intersects.hpp"
 #include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/query/intersects.hpp"
 #include "influence2d/motion/trajectory.hpp"

@@ -30,6 +30,8 @@
 #include <vector>
 
 #include "bench_common.hpp"
+#include "influence2d/exact/certified_separation.hpp"
+#include "influence2d/exact/certified_first_contact.hpp"
 #include "influence2d/distance/separation.hpp"
 #include "influence2d/motion/first_contact.hpp"
 #include "influence2d/motion/trajectory.hpp"

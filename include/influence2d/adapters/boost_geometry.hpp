@@ -19,7 +19,7 @@
 
 namespace influence2d {
 
-namespace adapter_detail {
+namespace boost_geometry_detail {
 
 template <class G, class Tag>
 struct has_bg_tag : std::is_same<typename boost::geometry::traits::tag<std::remove_cv_t<G>>::type, Tag> {};
@@ -36,10 +36,10 @@ struct is_bg_plane_point
 /// adapts itself (std::array, which Boost.Geometry can register too).
 template <class P>
 inline constexpr bool is_bg_point_v =
-    std::conjunction_v<has_bg_tag<P, boost::geometry::point_tag>, std::negation<is_builtin_point<P>>,
+    std::conjunction_v<has_bg_tag<P, boost::geometry::point_tag>, std::negation<adapters::is_builtin_point<P>>,
                        is_bg_plane_point<P>>;
 
-}  // namespace adapter_detail
+}  // namespace boost_geometry_detail
 
 /// Any Boost.Geometry point with two Cartesian coordinates of an arithmetic
 /// type (model::d2::point_xy<T>, model::point<T, 2, cs::cartesian>, or a type
@@ -48,7 +48,7 @@ inline constexpr bool is_bg_point_v =
 /// coordinate systems (geographic, spherical) or dimensions are not points
 /// here: the library works in the plane.
 template <class P>
-struct point_traits<P, std::enable_if_t<adapter_detail::is_bg_point_v<P>>> {
+struct point_traits<P, std::enable_if_t<boost_geometry_detail::is_bg_point_v<P>>> {
     static double x(const P& p) { return coordinate_to_double(boost::geometry::get<0>(p)); }
     static double y(const P& p) { return coordinate_to_double(boost::geometry::get<1>(p)); }
 };
@@ -60,7 +60,7 @@ struct point_traits<P, std::enable_if_t<adapter_detail::is_bg_point_v<P>>> {
 /// ring's orientation is decided from its points, and a last point equal to
 /// the first is dropped whether the model says closed or open.
 template <class Polygon,
-          std::enable_if_t<adapter_detail::has_bg_tag<Polygon, boost::geometry::polygon_tag>::value, int> = 0>
+          std::enable_if_t<boost_geometry_detail::has_bg_tag<Polygon, boost::geometry::polygon_tag>::value, int> = 0>
 polygon_builder& add_polygon(polygon_builder& builder, const Polygon& poly) {
     builder.add_outer(boost::geometry::exterior_ring(poly));
     return builder.add_holes(boost::geometry::interior_rings(poly));
@@ -71,7 +71,7 @@ polygon_builder& add_polygon(polygon_builder& builder, const Polygon& poly) {
 /// polygon_builder (numbering, errors). An empty exterior ring is refused
 /// with invalid_input ("ring 0: fewer than three distinct vertices").
 template <class Polygon,
-          std::enable_if_t<adapter_detail::has_bg_tag<Polygon, boost::geometry::polygon_tag>::value, int> = 0>
+          std::enable_if_t<boost_geometry_detail::has_bg_tag<Polygon, boost::geometry::polygon_tag>::value, int> = 0>
 polygon make_polygon(const Polygon& poly) {
     polygon_builder builder;
     return add_polygon(builder, poly).build();
@@ -82,10 +82,10 @@ polygon make_polygon(const Polygon& poly) {
 /// across the parts as WKT's MULTIPOLYGON is read. Parts may touch at
 /// vertices. An empty multi-polygon is refused with invalid_input.
 template <class MultiPolygon,
-          std::enable_if_t<adapter_detail::has_bg_tag<MultiPolygon, boost::geometry::multi_polygon_tag>::value,
+          std::enable_if_t<boost_geometry_detail::has_bg_tag<MultiPolygon, boost::geometry::multi_polygon_tag>::value,
                            int> = 0>
 polygon make_polygon(const MultiPolygon& parts) {
-    return adapter_detail::build_from_parts(parts);
+    return adapters::build_from_parts(parts);
 }
 
 }  // namespace influence2d

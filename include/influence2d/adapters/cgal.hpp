@@ -18,7 +18,7 @@
 
 namespace influence2d {
 
-namespace adapter_detail {
+namespace cgal_adapter_detail {
 
 /// The exact value behind a CGAL number: the number itself, or for a lazy
 /// number (Epeck's field type) its exact value, computed if need be.
@@ -52,7 +52,7 @@ struct is_cgal_polygon_with_holes : std::false_type {};
 template <class K, class C>
 struct is_cgal_polygon_with_holes<CGAL::Polygon_with_holes_2<K, C>> : std::true_type {};
 
-}  // namespace adapter_detail
+}  // namespace cgal_adapter_detail
 
 /// CGAL's Point_2 of any kernel (Epick, Epeck, Simple_cartesian<FT>,
 /// Cartesian<FT>, ...): x() and y() converted to double exactly. With an
@@ -63,9 +63,9 @@ struct is_cgal_polygon_with_holes<CGAL::Polygon_with_holes_2<K, C>> : std::true_
 template <class K>
 struct point_traits<CGAL::Point_2<K>> {
     /// The x coordinate as a double, checked to be exactly a double (invalid_input otherwise).
-    static double x(const CGAL::Point_2<K>& p) { return adapter_detail::cgal_coordinate_to_double(p.x()); }
+    static double x(const CGAL::Point_2<K>& p) { return cgal_adapter_detail::cgal_coordinate_to_double(p.x()); }
     /// The y coordinate as a double, checked to be exactly a double (invalid_input otherwise).
-    static double y(const CGAL::Point_2<K>& p) { return adapter_detail::cgal_coordinate_to_double(p.y()); }
+    static double y(const CGAL::Point_2<K>& p) { return cgal_adapter_detail::cgal_coordinate_to_double(p.y()); }
 };
 
 /// Adds a CGAL Polygon_2 to a builder as a ring of the given role. Its
@@ -112,11 +112,11 @@ polygon make_polygon(const CGAL::Polygon_with_holes_2<K, C>& poly) {
 /// range of them, as CGAL's Boolean operations output): each part's outer
 /// boundary, then its holes, numbered on across the parts. Parts may touch.
 /// An empty range is refused with invalid_input.
-template <class Range, std::enable_if_t<adapter_detail::is_cgal_polygon_with_holes<
-                                            adapter_detail::element_t<Range>>::value,
+template <class Range, std::enable_if_t<cgal_adapter_detail::is_cgal_polygon_with_holes<
+                                            adapters::element_t<Range>>::value,
                                         int> = 0>
 polygon make_polygon(const Range& parts) {
-    return adapter_detail::build_from_parts(parts);
+    return adapters::build_from_parts(parts);
 }
 
 }  // namespace influence2d

@@ -80,7 +80,10 @@ double coordinate_to_double(T v) {
     }
 }
 
-namespace adapter_detail {
+/// The parts the adapter headers (adapters/boost_geometry.hpp,
+/// adapters/cgal.hpp) share with this one: range and ring checks, the
+/// polygon of a range of parts.
+namespace adapters {
 
 /// The types this header adapts itself; the Boost.Geometry adapter leaves
 /// them alone even where Boost.Geometry registers them as points too.
@@ -153,17 +156,17 @@ inline std::string vertex_place(std::size_t ring, std::size_t vertex) {
     return "ring " + std::to_string(ring) + ", vertex " + std::to_string(vertex);
 }
 
-}  // namespace adapter_detail
+}  // namespace adapters
 
 /// True when P has point_traits (a usable specialisation).
 template <class P>
-inline constexpr bool is_point_v = adapter_detail::has_point_traits<P>::value;
+inline constexpr bool is_point_v = adapters::has_point_traits<P>::value;
 /// True when R is a range (begin/end) of points.
 template <class R>
-inline constexpr bool is_ring_v = adapter_detail::is_ring<R>::value;
+inline constexpr bool is_ring_v = adapters::is_ring<R>::value;
 /// True when R is a range of rings.
 template <class R>
-inline constexpr bool is_ring_range_v = adapter_detail::is_ring_range<R>::value;
+inline constexpr bool is_ring_range_v = adapters::is_ring_range<R>::value;
 
 /// influence2d's own point, for any arithmetic coordinate type.
 template <class T>
@@ -217,8 +220,8 @@ public:
     /// Adds a ring of the given role; returns *this for chaining.
     template <class Ring>
     polygon_builder& add_ring(const Ring& ring, ring_role role) {
-        static_assert(adapter_detail::ring_check<Ring>::value);
-        using P = adapter_detail::element_t<Ring>;
+        static_assert(adapters::ring_check<Ring>::value);
+        using P = adapters::element_t<Ring>;
         ring_input in;
         in.role = role;
         const std::size_t r = rings_.size();
@@ -241,7 +244,7 @@ public:
     /// Adds every ring of a range of rings as a hole.
     template <class Rings>
     polygon_builder& add_holes(const Rings& rings) {
-        static_assert(adapter_detail::ring_range_check<Rings>::value);
+        static_assert(adapters::ring_range_check<Rings>::value);
         for (const auto& ring : rings) add_hole(ring);
         return *this;
     }
@@ -260,14 +263,14 @@ private:
         try {
             return static_cast<double>(get());
         } catch (const invalid_input& e) {
-            throw invalid_input(adapter_detail::vertex_place(ring, vertex) + ": " + axis + ": " + e.what());
+            throw invalid_input(adapters::vertex_place(ring, vertex) + ": " + axis + ": " + e.what());
         }
     }
 
     std::vector<ring_input> rings_;
 };
 
-namespace adapter_detail {
+namespace adapters {
 
 /// The polygon of a range of parts (polygons with holes of some library),
 /// each added in order by the add_polygon overload for its type (declared by
@@ -297,13 +300,13 @@ template <class R>
 struct is_ring_candidate<R, std::enable_if_t<is_range<R>::value && !is_ring<R>::value>>
     : std::bool_constant<!is_range<element_t<R>>::value && !is_part<element_t<R>>::value> {};
 
-}  // namespace adapter_detail
+}  // namespace adapters
 
 /// The polygon bounded by one ring (a range of points, closed or open, either
 /// orientation; see polygon_builder for numbering and errors).
-template <class Ring, std::enable_if_t<adapter_detail::is_ring_candidate<Ring>::value, int> = 0>
+template <class Ring, std::enable_if_t<adapters::is_ring_candidate<Ring>::value, int> = 0>
 polygon make_polygon(const Ring& outer) {
-    static_assert(adapter_detail::ring_check<Ring>::value);
+    static_assert(adapters::ring_check<Ring>::value);
     return polygon_builder().add_outer(outer).build();
 }
 
@@ -311,10 +314,10 @@ polygon make_polygon(const Ring& outer) {
 /// (rings 1, 2, ... in range order). Holes are meant to lie inside the outer
 /// ring; nothing checks it. See polygon_builder for numbering and errors.
 template <class Ring, class Holes,
-          std::enable_if_t<adapter_detail::is_ring_candidate<Ring>::value && adapter_detail::is_range<Holes>::value,
+          std::enable_if_t<adapters::is_ring_candidate<Ring>::value && adapters::is_range<Holes>::value,
                            int> = 0>
 polygon make_polygon(const Ring& outer, const Holes& holes) {
-    static_assert(adapter_detail::ring_check<Ring>::value && adapter_detail::ring_range_check<Holes>::value);
+    static_assert(adapters::ring_check<Ring>::value && adapters::ring_range_check<Holes>::value);
     return polygon_builder().add_outer(outer).add_holes(holes).build();
 }
 

@@ -240,7 +240,7 @@ void meeting_edges(const std::vector<std::vector<point<double>>>& rings, Visit v
 }
 
 inline std::string coordinates(const point<double>& p) {
-    return "(" + wkt_detail::format_coordinate(p.x) + " " + wkt_detail::format_coordinate(p.y) + ")";
+    return "(" + format_coordinate(p.x) + " " + format_coordinate(p.y) + ")";
 }
 
 /// The report being written: adds findings, counting each kind and listing at
@@ -315,7 +315,7 @@ inline ring_set read_rings(collector& c, const std::vector<wkt_ring>& input) {
         if (pts.empty()) {
             // GEOS and JTS read an empty ring as no ring; an empty exterior
             // followed by its holes leaves holes without a part.
-            if (wkt_detail::empty_exterior_with_holes(input, k))
+            if (empty_exterior_with_holes(input, k))
                 c.add_at_ring(finding_kind::empty_ring, k, {}, "empty exterior ring with holes", "refused", true);
             else
                 c.add_at_ring(finding_kind::empty_ring, k, {}, "empty ring",
@@ -365,7 +365,7 @@ inline void check_vertices(collector& c, std::size_t k, const std::vector<point<
         } else if (std::max(std::fabs(p.x - q.x), std::fabs(p.y - q.y)) <= near) {
             c.add_at_vertex(finding_kind::near_repeated_vertex, k, v, p,
                             "edge " + std::to_string(v) + " is shorter than " +
-                                wkt_detail::format_coordinate(c.options.relative_tolerance) +
+                                format_coordinate(c.options.relative_tolerance) +
                                 " of the polygon's extent (the longer side of its bounding box)",
                             "kept as it is; exact and certified modes decide on it exactly, float and double may "
                             "not");

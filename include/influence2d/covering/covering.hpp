@@ -25,7 +25,7 @@ struct barycentric_signs {
     int gamma = 0;  ///< sign of the coordinate of V_i+1; P in T_i when all three are >= 0
 };
 
-namespace detail {
+namespace covering_detail {
 
 /// Whether every ring of `shape` is stored with its interior on the left, as
 /// the winding rule of the covering needs: no outer ring clockwise, no hole
@@ -43,7 +43,7 @@ inline bool rings_stored_interior_left(const polygon& shape) {
     return true;
 }
 
-}  // namespace detail
+}  // namespace covering_detail
 
 /// The covering triangles of a polygon's edges from one origin O: triangle i is
 /// (O, V_i, V_next(i)) with sign sigma_i = orientation(O, V_i, V_next(i)).
@@ -61,12 +61,11 @@ public:
     /// Keeps a reference to `shape`, which must outlive the covering. For a
     /// filtered NT without exact fallback, may throw uncertain_sign.
     triangle_covering(const polygon& shape, const point<double>& origin) : shape_(&shape) {
-        INFLUENCE2D_ASSERT(detail::rings_stored_interior_left(shape),
+        INFLUENCE2D_ASSERT(covering_detail::rings_stored_interior_left(shape),
                            "a ring is stored with its interior on the right: the winding numbers would be wrong");
-        using tr = number_traits<NT>;
         vertices_.reserve(shape.size());
-        for (const auto& v : shape.vertices()) vertices_.push_back({tr::from_double(v.x), tr::from_double(v.y)});
-        origin_ = {tr::from_double(origin.x), tr::from_double(origin.y)};
+        for (const auto& v : shape.vertices()) vertices_.push_back(to_point<NT>(v));
+        origin_ = to_point<NT>(origin);
         sigma_.resize(shape.size());
         for (std::size_t i = 0; i < shape.size(); ++i)
             sigma_[i] = static_cast<std::int8_t>(orientation(origin_, start(i), end(i)));

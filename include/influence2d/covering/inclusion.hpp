@@ -21,8 +21,6 @@ enum class location {
     inside     ///< off every edge, with a non-zero winding number
 };
 
-namespace detail {
-
 /// Feito's sum over the covering triangles from origin O, in doubled units:
 ///   for each edge (a, b) with sigma = orientation(O, a, b) != 0 and P in the
 ///   closed triangle (O, a, b):
@@ -53,8 +51,6 @@ location feito_locate(const polygon& shape, const std::vector<point<NT>>& v, con
     return doubled != 0 ? location::inside : location::outside;
 }
 
-}  // namespace detail
-
 /// Locates P in the closed region of the polygon whose vertices, in NT, are
 /// `v` (topology from `shape`), with the covering from origin `o`. When P is the
 /// origin itself the sum is taken from the first vertex instead: any origin
@@ -65,7 +61,7 @@ location feito_locate(const polygon& shape, const std::vector<point<NT>>& v, con
 template <class NT>
 location locate(const polygon& shape, const std::vector<point<NT>>& v, const point<NT>& o,
                 const point<NT>& p) {
-    return detail::feito_locate(shape, v, same_point(p, o) ? v.front() : o, p);
+    return feito_locate(shape, v, same_point(p, o) ? v.front() : o, p);
 }
 
 /// Locates P in the region covered by `cov` (as the overload above).

@@ -70,7 +70,7 @@ private:
     std::shared_ptr<const static_scene<NT>> a_;
     posed_polygon<NT> b_;
     detector_options options_;
-    detail::pair_collector pairs_;
+    pair_collector pairs_;
 };
 
 }  // namespace influence2d

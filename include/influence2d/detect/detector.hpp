@@ -37,7 +37,7 @@ struct detector_statistics {
     std::size_t jump_frames = 0;        ///< frames with no coherence to use (both edge trees, or every pair)
 };
 
-namespace detail {
+namespace detector_detail {
 
 /// A member of type T that exists only when `On`; empty otherwise, so that a
 /// class deriving from it stores nothing for it (empty base). Tag tells
@@ -67,7 +67,7 @@ struct distance_state {
     NT distance, distance2;
 };
 
-}  // namespace detail
+}  // namespace detector_detail
 
 /// Collision detection between a static polygon A and a moving polygon B, one
 /// pose of B per frame. Exact when NT is (number_traits<NT>::category is not
@@ -120,19 +120,19 @@ struct distance_state {
 /// frame takes the edge trees (step 1); without `holes` the ring bookkeeping
 /// is gone (one ring each); without `statistics` nothing is counted.
 template <class NT, class Features = all_features>
-class detector : detail::feature_state<detector_statistics, Features::has(features::statistics), 0>,
-                 detail::feature_state<detail::coherence_state, Features::has(features::coherence), 1>,
-                 detail::feature_state<detail::pair_collector, Features::has(features::witness), 2>,
-                 detail::feature_state<detail::distance_state<NT>, Features::has(features::distance), 3> {
+class detector : detector_detail::feature_state<detector_statistics, Features::has(features::statistics), 0>,
+                 detector_detail::feature_state<detector_detail::coherence_state, Features::has(features::coherence), 1>,
+                 detector_detail::feature_state<pair_collector, Features::has(features::witness), 2>,
+                 detector_detail::feature_state<detector_detail::distance_state<NT>, Features::has(features::distance), 3> {
     static constexpr bool with_statistics = Features::has(features::statistics);
     static constexpr bool with_coherence = Features::has(features::coherence);
     static constexpr bool with_witness = Features::has(features::witness);
     static constexpr bool with_distance = Features::has(features::distance);
     static constexpr bool with_holes = Features::has(features::holes);
-    using statistics_state = detail::feature_state<detector_statistics, with_statistics, 0>;
-    using coherence_state = detail::feature_state<detail::coherence_state, with_coherence, 1>;
-    using witness_state = detail::feature_state<detail::pair_collector, with_witness, 2>;
-    using distance_state = detail::feature_state<detail::distance_state<NT>, with_distance, 3>;
+    using statistics_state = detector_detail::feature_state<detector_statistics, with_statistics, 0>;
+    using coherence_state = detector_detail::feature_state<detector_detail::coherence_state, with_coherence, 1>;
+    using witness_state = detector_detail::feature_state<pair_collector, with_witness, 2>;
+    using distance_state = detector_detail::feature_state<detector_detail::distance_state<NT>, with_distance, 3>;
 
 public:
     /// The feature set the detector was built with.
@@ -278,7 +278,7 @@ private:
     /// less than the skin.
     void refresh_candidates(const frame& f) {
         if constexpr (with_coherence) {
-            const detail::coherence_state& c = coherence_state::value;
+            const detector_detail::coherence_state& c = coherence_state::value;
             if (c.valid && !(filter_length(f.p.x - c.center.x, f.p.y - c.center.y) > c.skin)) return;
         }
         gather(f.p, f.margin);
@@ -294,7 +294,7 @@ private:
     /// and serve no other.
     bool coherent_step(const frame& f) {
         if constexpr (with_coherence) {
-            detail::coherence_state& c = coherence_state::value;
+            detector_detail::coherence_state& c = coherence_state::value;
             if (!options_.temporal_coherence) return false;
             const bool in_skin = c.valid && !(filter_length(f.p.x - c.center.x, f.p.y - c.center.y) > c.skin);
             const bool small_step = c.has_last && !(filter_length(f.p.x - c.last.x, f.p.y - c.last.y) > c.skin);
@@ -386,7 +386,7 @@ private:
         }
         if (met) return {true, {}};
         if constexpr (with_witness) {
-            const detail::pair_collector& pairs = witness_state::value;
+            const pair_collector& pairs = witness_state::value;
             if (!pairs.empty()) return {true, pairs.in_input_numbering(a_->shape, b_.shape())};
         }
         tally(&detector_statistics::containment_tests);
@@ -570,7 +570,7 @@ private:
         for (std::uint32_t e : grid_.query(pd))
             if (may_be_within(pd, s.vertex(e), s.vertex(s.next(e)), keep)) cache_.push_back(e);
         if constexpr (with_coherence) {
-            detail::coherence_state& c = coherence_state::value;
+            detector_detail::coherence_state& c = coherence_state::value;
             c.center = pd;
             c.valid = false;
             if (cache_.empty()) c.center_inside = a_->areas().locate(b_.centroid()) == location::inside;
@@ -584,7 +584,7 @@ private:
     frame_result finish(double n, double frame_margin) {
         frame_result r;
         if constexpr (with_witness) {
-            const detail::pair_collector& pairs = witness_state::value;
+            const pair_collector& pairs = witness_state::value;
             if (!pairs.empty()) {
                 r.collides = true;
                 r.pairs = pairs.in_input_numbering(a_->shape, b_.shape());

@@ -8,7 +8,7 @@
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/detect/result.hpp"
 
-namespace influence2d::detail {
+namespace influence2d {
 
 /// Collects (static edge, moving edge) pairs in stored numbering and hands
 /// them out in input numbering, sorted and without repeats.
@@ -32,4 +32,4 @@ private:
     std::vector<edge_pair> pairs_;
 };
 
-}  // namespace influence2d::detail
+}  // namespace influence2d

@@ -112,7 +112,7 @@ private:
     edge_grid grid_;
     influence_mask previous_, current_;
     bool first_frame_ = true;
-    detail::pair_collector pairs_;
+    pair_collector pairs_;
 };
 
 }  // namespace influence2d

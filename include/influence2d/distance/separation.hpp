@@ -4,8 +4,8 @@
 /// The separation distance between A and B posed by q: the distance between
 /// the closed regions, the closest features and points, or a witness of
 /// their meeting (docs/separation.md). The queries run in any field NT;
-/// the header includes number/cgal.hpp (CGAL and GMP) for
-/// certified_separation, whose exact evaluations are in exact_rational.
+/// certified_separation (exact/certified_separation.hpp) is separation in
+/// exact rationals rounded to double.
 
 #include <algorithm>
 #include <cmath>
@@ -27,12 +27,11 @@
 #include "influence2d/core/pose.hpp"
 #include "influence2d/covering/inclusion.hpp"
 #include "influence2d/core/feature.hpp"
-#include "influence2d/exact/filtered_detector.hpp"
 #include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/influence/edge_tree.hpp"
 #include "influence2d/number/certified.hpp"
-#include "influence2d/number/cgal.hpp"
+#include "influence2d/number/fallback.hpp"
 #include "influence2d/predicates/distance.hpp"
 
 namespace influence2d {
@@ -54,6 +53,8 @@ struct separation_result {
     /// The closest point of posed B (on moving_feature), in A's frame; equal
     /// to static_point when the regions meet.
     point<NT> moving_point;
+    /// The edge pairs whose distance the query evaluated in NT.
+    std::size_t evaluated_pairs = 0;
     /// Whether the regions meet (squared_distance is 0).
     bool meet() const { return at_contact(squared_distance); }
 };
@@ -73,18 +74,6 @@ inline bool evaluated_before(const candidate& l, const candidate& r) {
     if (l.lower != r.lower) return l.lower < r.lower;
     if (l.static_edge != r.static_edge) return l.static_edge < r.static_edge;
     return l.moving_edge < r.moving_edge;
-}
-
-/// The input number of the polygon's stored vertex i: a ring stored reversed
-/// (polygon's constructor reorients it) numbers its vertices backwards.
-inline std::size_t input_vertex(const polygon& shape, std::size_t i) {
-    std::size_t lo = 0, hi = shape.ring_count();  // the ring of i: the last r with ring_begin(r) <= i
-    while (hi - lo > 1) {
-        const std::size_t mid = lo + (hi - lo) / 2;
-        (shape.ring_begin(mid) <= i ? lo : hi) = mid;
-    }
-    const std::size_t begin = shape.ring_begin(lo), n = shape.ring_end(lo) - begin;
-    return shape.source_edge(begin) == begin ? i : begin + (n - 1 - (i - begin));
 }
 
 /// B's vertices posed in T (double for the filters, NT for the decisions),
@@ -429,12 +418,6 @@ separation_result<NT> inside_result(const polygon& a, const polygon& b, const in
     return r;
 }
 
-/// A point of doubles in NT.
-template <class NT>
-point<NT> in(const point<double>& p) {
-    return {number_traits<NT>::from_double(p.x), number_traits<NT>::from_double(p.y)};
-}
-
 /// What one query in NT keeps between frames: B posed in double and in NT,
 /// phase 1's space, the last frame's closest pair.
 template <class NT>
@@ -445,6 +428,23 @@ struct workspace {
     search_space space;
     std::optional<std::pair<std::uint32_t, std::uint32_t>> last;  ///< the last frame's chosen pair
     std::size_t evaluated = 0;  ///< pairs evaluated in NT by the last query
+
+    /// B's vertex j posed in NT (in double: approx's).
+    const point<NT>& posed(std::size_t j) {
+        if constexpr (std::is_same_v<NT, double>) {
+            return approx[j];
+        } else {
+            return exact[j];
+        }
+    }
+    /// Every vertex of B posed in NT.
+    const std::vector<point<NT>>& all_posed() {
+        if constexpr (std::is_same_v<NT, double>) {
+            return approx.all();
+        } else {
+            return exact.all();
+        }
+    }
 };
 
 /// A's side of a query in NT: its vertices in NT (one, or all for a
@@ -459,10 +459,12 @@ public:
     /// From the polygon alone.
     explicit static_side(const polygon& a) : shape_(a) {}
 
+    /// Whether A is prepared (its cone index locates points).
+    bool prepared() const { return scene_ != nullptr; }
     /// Vertex i in NT.
     point<NT> vertex(std::size_t i) const {
         if (scene_) return scene_->covering.start(i);
-        return in<NT>(shape_.vertex(i));
+        return to_point<NT>(shape_.vertex(i));
     }
     /// Where p lies in A's closed region (exact when NT is).
     location locate_point(const point<NT>& p) {
@@ -472,7 +474,7 @@ public:
         } else {
             if (all_.empty())
                 for (std::size_t i = 0; i < shape_.size(); ++i) all_.push_back(vertex(i));
-            return locate(shape_, all_, in<NT>(shape_.centroid()), p);
+            return locate(shape_, all_, to_point<NT>(shape_.centroid()), p);
         }
     }
 
@@ -481,6 +483,41 @@ private:
     const static_scene<NT>* scene_ = nullptr;
     std::vector<point<NT>> all_;
 };
+
+/// Phase 3 in NT: a ring's vertex inside the other region (ring_vertex_inside),
+/// B's vertices posed in NT by `w`, A's given by `side`.
+template <class NT>
+std::optional<inside_vertex> inside_in(static_side<NT>& side, const search_input& in, workspace<NT>& w) {
+    std::optional<point<NT>> b_origin;
+    return ring_vertex_inside(
+        in.a, in.b, static_window(in), posed_window(in), w.approx,
+        [&](std::size_t j) { return side.locate_point(w.posed(j)); },
+        [&](std::size_t i) {
+            if (!b_origin) b_origin = in.t.apply<NT>(in.b.centroid());
+            return locate(in.b, w.all_posed(), *b_origin, side.vertex(i));
+        });
+}
+
+/// Phase 3 in NT, filtered when NT is an exact field and A is not prepared:
+/// first in `certified` (A's vertices and B's posed ones made anew, its
+/// signs exact or raising uncertain_sign), and in NT only when a sign is in
+/// doubt. A location is a sign decision, so both give the same vertex.
+template <class NT>
+std::optional<inside_vertex> phase_3(static_side<NT>& side, const search_input& in, workspace<NT>& w) {
+    if constexpr (number_traits<NT>::category == number_category::exact) {
+        if (!side.prepared()) {
+            const auto in_certified = [&] {
+                static_side<certified> a(in.a);
+                workspace<certified> posed(in.b);
+                posed.approx.place(in.t);
+                posed.exact.place(in.t);
+                return inside_in(a, in, posed);
+            };
+            return fallback<>::run(in_certified, [&] { return inside_in(side, in, w); });
+        }
+    }
+    return inside_in(side, in, w);
+}
 
 /// The query in NT on A (its side and tree) and B (its tree, scale), for
 /// the pose t: phase 1, phase 2, and phase 3 when the boundaries are apart.
@@ -493,16 +530,9 @@ private:
 ///   else: the distance is the pair's
 template <class NT>
 separation_result<NT> separate(static_side<NT>& side, const search_input& in, workspace<NT>& w) {
-    constexpr bool in_double = std::is_same_v<NT, double>;
     w.approx.place(in.t);
-    if constexpr (!in_double) w.exact.place(in.t);
-    const auto b_vertex = [&](std::size_t j) -> const point<NT>& {
-        if constexpr (in_double) {
-            return w.approx[j];
-        } else {
-            return w.exact[j];
-        }
-    };
+    if constexpr (!std::is_same_v<NT, double>) w.exact.place(in.t);
+    const auto b_vertex = [&](std::size_t j) -> const point<NT>& { return w.posed(j); };
     const auto a_vertex = [&](std::size_t i) { return side.vertex(i); };
     search_pairs(in, w.approx, pair_upper(in, w.approx, w.last), w.space);
     w.evaluated = 0;
@@ -511,21 +541,17 @@ separation_result<NT> separate(static_side<NT>& side, const search_input& in, wo
         w.evaluated);
     INFLUENCE2D_ASSERT(best.found, "phase 1 left no candidate");
     w.last = std::make_pair(best.static_edge, best.moving_edge);
-    if (at_contact(best.closest.squared)) return pair_result(in.a, in.b, best);
-    std::optional<point<NT>> b_origin;
-    const auto inside = ring_vertex_inside(
-        in.a, in.b, static_window(in), posed_window(in), w.approx,
-        [&](std::size_t j) { return side.locate_point(b_vertex(j)); },
-        [&](std::size_t i) {
-            if (!b_origin) b_origin = in.t.apply<NT>(in.b.centroid());
-            if constexpr (in_double) {
-                return locate(in.b, w.approx.all(), *b_origin, a_vertex(i));
-            } else {
-                return locate(in.b, w.exact.all(), *b_origin, a_vertex(i));
-            }
-        });
-    if (inside) return inside_result<NT>(in.a, in.b, *inside, inside->moving ? b_vertex(inside->vertex) : a_vertex(inside->vertex));
-    return pair_result(in.a, in.b, best);
+    if (at_contact(best.closest.squared)) {
+        separation_result<NT> r = pair_result(in.a, in.b, best);
+        r.evaluated_pairs = w.evaluated;
+        return r;
+    }
+    const std::optional<inside_vertex> inside = phase_3(side, in, w);
+    separation_result<NT> r = inside ? inside_result<NT>(in.a, in.b, *inside,
+                                                         inside->moving ? b_vertex(inside->vertex) : a_vertex(inside->vertex))
+                                     : pair_result(in.a, in.b, best);
+    r.evaluated_pairs = w.evaluated;
+    return r;
 }
 
 }  // namespace separation_detail
@@ -573,8 +599,9 @@ separation_result<NT> separation(const static_scene<NT>& a, const moving_scene<N
 
 /// The separation of A and of B posed by q (as the overload on prepared
 /// polygons), from the polygons alone: it builds both edge trees (O(n log n
-/// + m log m)) and locates points by Feito's test over the polygon's edges.
-/// Throws invalid_input for an empty polygon, one beyond NT's range, or a
+/// + m log m)) and locates points by Feito's test over the polygon's edges
+/// (in an exact field, in `certified` first and again in NT only when a sign
+/// is in doubt: phase_3). Throws invalid_input for an empty polygon, one beyond NT's range, or a
 /// pose with a NaN or infinite component.
 template <class NT>
 separation_result<NT> separation(const polygon& a, const polygon& b, const pose& q) {
@@ -653,84 +680,6 @@ double distance_of(const NT& squared_distance) {
     } else {
         return std::sqrt(tr::to_double(squared_distance));
     }
-}
-
-/// The separation of certified_separation: the exact answer's features, its
-/// points and its distance rounded to double.
-struct certified_separation_result {
-    double distance = 0;          ///< within one unit in the last place of the exact distance (distance_of)
-    double squared_distance = 0;  ///< the exact squared distance rounded to the nearest double
-    feature static_feature{};     ///< as separation_result, exactly
-    feature moving_feature{};     ///< as separation_result, exactly
-    point<double> static_point;   ///< the exact closest point of A, each coordinate rounded to the nearest double
-    point<double> moving_point;   ///< the exact closest point of posed B, rounded likewise
-    bool meet = false;            ///< whether the regions meet (exact)
-    std::size_t exact_pairs = 0;  ///< edge pairs evaluated in exact rationals
-};
-
-/// The exact separation (separation<exact_rational>: the same features and
-/// points, rounded to double) at about double's cost: the search runs in
-/// double with proven bounds (phase 1), and only the candidate pairs those
-/// bounds cannot separate from the least are evaluated in exact rationals
-/// (usually the one or few pairs at the least distance); a ring's vertex is
-/// located in `certified` and again in exact rationals only when a sign is
-/// in doubt. Throws invalid_input for an empty polygon or a pose with a NaN
-/// or infinite component.
-inline certified_separation_result certified_separation(const polygon& a, const polygon& b, const pose& q) {
-    using namespace separation_detail;
-    accepted_polygon<exact_rational>(a, "static");
-    accepted_polygon<exact_rational>(b, "moving");
-    const rotation_pose t(q);
-    const edge_tree ta(a), tb(b);
-    const search_input in{a, ta, b, tb, t, posing_error(coordinate_scale(b), q.tx, q.ty)};
-    workspace<exact_rational> w(b);
-    w.approx.place(t);
-    w.exact.place(t);
-    search_pairs(in, w.approx, HUGE_VAL, w.space);
-    const auto a_vertex = [&](std::size_t i) { return separation_detail::in<exact_rational>(a.vertex(i)); };
-    const auto b_vertex = [&](std::size_t j) -> const point<exact_rational>& { return w.exact[j]; };
-    const chosen_pair<exact_rational> best = closest_candidate<exact_rational>(
-        w.space,
-        [&](std::uint32_t e, std::uint32_t f) { return pair_closest<exact_rational>(in, w.approx, a_vertex, b_vertex, e, f); },
-        w.evaluated);
-    separation_result<exact_rational> exact;
-    if (at_contact(best.closest.squared)) {
-        exact = pair_result(a, b, best);
-    } else {
-        // Phase 3 in certified, again in exact rationals when a sign is in doubt.
-        const auto located = [&](auto number) {
-            using NT = decltype(number);
-            static_side<NT> side(a);
-            posed_vertices<NT> posed(b);
-            posed.place(t);
-            std::optional<point<NT>> b_origin;
-            return ring_vertex_inside(
-                a, b, static_window(in), posed_window(in), w.approx,
-                [&](std::size_t j) { return side.locate_point(posed[j]); },
-                [&](std::size_t i) {
-                    if (!b_origin) b_origin = t.apply<NT>(b.centroid());
-                    return locate(b, posed.all(), *b_origin, side.vertex(i));
-                });
-        };
-        const std::optional<inside_vertex> inside =
-            detail::fallback<>::run([&] { return located(certified{}); }, [&] { return located(exact_rational{}); });
-        exact = inside ? inside_result<exact_rational>(a, b, *inside, inside->moving ? w.exact[inside->vertex]
-                                                                                     : a_vertex(inside->vertex))
-                       : pair_result(a, b, best);
-    }
-    certified_separation_result r;
-    const scaled_double squared = scaled_nearest(exact.squared_distance);  // (distance_of's rounding)
-    r.squared_distance = std::ldexp(squared.mantissa, squared.exponent);
-    r.distance = std::ldexp(std::sqrt(squared.mantissa), squared.exponent / 2);
-    r.static_feature = exact.static_feature;
-    r.moving_feature = exact.moving_feature;
-    r.static_point = {nearest_double(exact.static_point.x), nearest_double(exact.static_point.y)};
-    r.meet = exact.meet();
-    // (Meeting: one point.)
-    r.moving_point = r.meet ? r.static_point
-                            : point<double>{nearest_double(exact.moving_point.x), nearest_double(exact.moving_point.y)};
-    r.exact_pairs = w.evaluated;
-    return r;
 }
 
 }  // namespace influence2d

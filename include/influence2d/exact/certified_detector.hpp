@@ -6,7 +6,6 @@
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/detector.hpp"
 #include "influence2d/exact/filtered_detector.hpp"
-#include "influence2d/query/intersects.hpp"
 #include "influence2d/number/certified.hpp"
 
 namespace influence2d {
@@ -18,13 +17,5 @@ namespace influence2d {
 /// brute_force_detector.
 template <template <class...> class D>
 using certified_detector = filtered_detector<D, certified>;
-
-/// The exact answer of intersects(a, b, q) at nearly double's cost: the query
-/// runs in `certified`, and again in exact rationals only when one of its
-/// signs is not certain.
-inline bool certified_intersects(const polygon& a, const polygon& b, const pose& q) {
-    return detail::fallback<>::run([&] { return intersects<certified>(a, b, q); },
-                                   [&] { return intersects<exact_rational>(a, b, q); });
-}
 
 }  // namespace influence2d

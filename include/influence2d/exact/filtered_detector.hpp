@@ -15,39 +15,12 @@
 #include "influence2d/core/pose.hpp"
 #include "influence2d/detect/result.hpp"
 #include "influence2d/number/certified.hpp"
+#include "influence2d/number/fallback.hpp"
 #include "influence2d/number/cgal.hpp"
 
 namespace influence2d {
 
-namespace detail {
-
-/// Runs `fast`; if it throws uncertain_sign or one of Uncertain..., runs `exact`.
-template <class... Uncertain>
-struct fallback;
-
-template <>
-struct fallback<> {
-    template <class Fast, class Exact>
-    static auto run(Fast&& fast, Exact&& exact) {
-        try {
-            return fast();
-        } catch (const uncertain_sign&) {
-            return exact();
-        }
-    }
-};
-
-template <class First, class... Rest>
-struct fallback<First, Rest...> {
-    template <class Fast, class Exact>
-    static auto run(Fast&& fast, Exact&& exact) {
-        try {
-            return fallback<Rest...>::run(fast, exact);
-        } catch (const First&) {
-            return exact();
-        }
-    }
-};
+namespace filtered_detector_detail {
 
 /// Whether D has build_structures().
 template <class D, class = void>
@@ -55,7 +28,7 @@ struct has_build_structures : std::false_type {};
 template <class D>
 struct has_build_structures<D, std::void_t<decltype(std::declval<D&>().build_structures())>> : std::true_type {};
 
-}  // namespace detail
+}  // namespace filtered_detector_detail
 
 /// Wraps a detector template D (detector or brute_force_detector): `D<FastNT>`
 /// answers every frame whose decisions it makes with certainty, which is then
@@ -78,7 +51,7 @@ public:
     /// propagates.
     filtered_detector(const polygon& static_polygon, const polygon& moving_polygon, detector_options options = {})
         : a_(static_polygon), b_(moving_polygon), options_(options) {
-        detail::fallback<Uncertain...>::run(
+        fallback<Uncertain...>::run(
             [&] {
                 fast_.emplace(a_, b_, options_);
                 return 0;
@@ -99,7 +72,7 @@ public:
             return exact().collide(p);
         };
         if (!fast_) return exactly();
-        return detail::fallback<Uncertain...>::run([&] { return fast_->collide(p); }, exactly);
+        return fallback<Uncertain...>::run([&] { return fast_->collide(p); }, exactly);
     }
 
     /// Builds now what the frames would build on first use, when D has such
@@ -108,9 +81,9 @@ public:
     /// a sign it cannot settle (every frame is then answered exactly, as when
     /// the fast detector cannot be built).
     void build_structures() {
-        if constexpr (detail::has_build_structures<D<FastNT>>::value) {
+        if constexpr (filtered_detector_detail::has_build_structures<D<FastNT>>::value) {
             if (!fast_) return exact().build_structures();
-            detail::fallback<Uncertain...>::run(
+            fallback<Uncertain...>::run(
                 [&] {
                     fast_->build_structures();
                     return 0;

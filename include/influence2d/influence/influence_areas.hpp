@@ -178,7 +178,7 @@ public:
 
     /// Feito's inclusion test restricted to the triangles that can contain P:
     /// a triangle lies in its edge's cone, so only the cones containing P add
-    /// to the sum (see detail::feito_locate), and the edges collinear with the
+    /// to the sum (see feito_locate), and the edges collinear with the
     /// origin, whose cones are empty, are checked for P on them. The origin
     /// itself, in every cone, takes the full sum from a vertex. The same
     /// answer as locate() on the covering (closed region: boundary on an
@@ -213,10 +213,6 @@ private:
         const double len = std::fabs(q.x - o.x) + std::fabs(q.y - o.y);
         const double mag = std::fabs(q.x) + std::fabs(q.y) + std::fabs(o.x) + std::fabs(o.y);
         return len > 0 ? 8 * std::numeric_limits<double>::epsilon() * mag / len : 1.0;
-    }
-
-    static point<double> to_double_point(const point<NT>& q) {
-        return {number_traits<NT>::to_double(q.x), number_traits<NT>::to_double(q.y)};
     }
 
     const triangle_covering<NT>* cov_ = nullptr;

@@ -40,6 +40,21 @@ struct wkt_ring {
     ring_role role = ring_role::outer;  ///< outer for an exterior ring, hole for an interior one
 };
 
+/// x written in the fewest digits that read back to it (std::to_chars).
+inline std::string format_coordinate(double x) {
+    std::array<char, 32> buf{};
+    const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), x);
+    return std::string(buf.data(), res.ptr);
+}
+
+/// Whether ring `index` of the text is an empty exterior ring followed by
+/// its holes: holes without a part, which the reader refuses (any other empty
+/// ring is no ring, as GEOS and JTS read it).
+inline bool empty_exterior_with_holes(const std::vector<wkt_ring>& read, std::size_t index) {
+    return read[index].points.empty() && read[index].role == ring_role::outer && index + 1 < read.size() &&
+           read[index + 1].role == ring_role::hole;
+}
+
 namespace wkt_detail {
 
 using bg_point = boost::geometry::model::d2::point_xy<double>;
@@ -57,11 +72,6 @@ inline std::string vertex_place(std::size_t ring, std::size_t vertex) {
     return ring_place(ring) + ", vertex " + std::to_string(vertex);
 }
 
-inline std::string format_coordinate(double x) {
-    std::array<char, 32> buf{};
-    const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), x);
-    return std::string(buf.data(), res.ptr);
-}
 
 /// Boost's tokenizer separates on the space character only: other white space
 /// would end up inside number tokens. Every white-space character becomes a
@@ -159,13 +169,6 @@ inline void check_coordinate_tuples(std::string_view source, const std::string& 
     }
 }
 
-/// Whether ring `index` of the text is an empty exterior ring followed by
-/// its holes: holes without a part, which the reader refuses (any other empty
-/// ring is no ring, as GEOS and JTS read it).
-inline bool empty_exterior_with_holes(const std::vector<wkt_ring>& read, std::size_t index) {
-    return read[index].points.empty() && read[index].role == ring_role::outer && index + 1 < read.size() &&
-           read[index + 1].role == ring_role::hole;
-}
 
 /// Appends ring `index` of the text as a ring_input after checking it:
 /// finite coordinates, closed (first point repeated at the end, which is
@@ -325,15 +328,15 @@ inline std::string to_wkt(const polygon& poly) {
     auto write_ring = [&](std::size_t r) {
         out += '(';
         for (std::size_t i = poly.ring_begin(r); i < poly.ring_end(r); ++i) {
-            out += wkt_detail::format_coordinate(poly.vertex(i).x);
+            out += format_coordinate(poly.vertex(i).x);
             out += ' ';
-            out += wkt_detail::format_coordinate(poly.vertex(i).y);
+            out += format_coordinate(poly.vertex(i).y);
             out += ',';
         }
         const auto& first = poly.vertex(poly.ring_begin(r));
-        out += wkt_detail::format_coordinate(first.x);
+        out += format_coordinate(first.x);
         out += ' ';
-        out += wkt_detail::format_coordinate(first.y);
+        out += format_coordinate(first.y);
         out += ')';
     };
     for (std::size_t r = 0; r < rings; ++r) {

@@ -20,9 +20,13 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
-#include "influence2d/exact/certified_detector.hpp"
+#include "influence2d/number/certified.hpp"
+#include "influence2d/number/fallback.hpp"
 #include "influence2d/core/feature.hpp"
 #include "influence2d/query/intersects.hpp"
+#include "influence2d/query/placed_meet.hpp"
+#include "influence2d/scene/edge_boxes.hpp"
+#include "influence2d/scene/placed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
 #include "influence2d/distance/separation.hpp"
 #include "influence2d/influence/bounds.hpp"
@@ -70,8 +74,6 @@ inline pose motion_pose(const pose& from, const pose& to, double t) {
 
 namespace sweep_detail {
 
-using one_shot_detail::meeting;
-using one_shot_detail::placed;
 
 /// A contact event's place: B's vertex `vertex` reaching A's edge `edge`
 /// (moving_vertex), or A's vertex `vertex` reaching B's edge `edge`.
@@ -91,7 +93,6 @@ inline bool site_before(const contact_site& l, const contact_site& r) {
     return l.edge < r.edge;
 }
 
-using separation_detail::input_vertex;
 
 /// The site's features in input numbering: (A's, B's).
 inline std::pair<feature, feature> site_features(const polygon& a, const polygon& b, const contact_site& s) {
@@ -106,9 +107,9 @@ inline std::pair<feature, feature> site_features(const polygon& a, const polygon
 /// pair names a vertex of one on the other's edge when there is one, else
 /// both edges (they cross). Exact when NT is.
 template <class NT>
-std::pair<feature, feature> meeting_features(placed<NT>& a, placed<NT>& b, const meeting& m) {
+std::pair<feature, feature> meeting_features(placed_polygon<NT>& a, placed_polygon<NT>& b, const meeting& m) {
     const polygon &as = a.shape(), &bs = b.shape();
-    const auto edge_holding = [](placed<NT>& p, const point<NT>& v) {
+    const auto edge_holding = [](placed_polygon<NT>& p, const point<NT>& v) {
         const polygon& s = p.shape();
         for (std::size_t e = 0; e < s.size(); ++e)
             if (on_segment(v, p[e], p[s.next(e)])) return feature{feature_kind::edge, s.source_edge(e)};
@@ -142,10 +143,10 @@ std::pair<feature, feature> meeting_features(placed<NT>& a, placed<NT>& b, const
 template <class NT>
 std::optional<std::pair<feature, feature>> meeting_at_start(const polygon& a, const polygon& b, const pose& from,
                                                             const rotation_pose& start) {
-    placed<NT> pa(a), pb(b, start);
-    const meeting met = one_shot_detail::placed_meet(
+    placed_polygon<NT> pa(a), pb(b, start);
+    const meeting met = placed_meet(
         pa, pb,
-        one_shot_detail::posing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) +
+        posing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) +
                                            std::fabs(from.ty)));
     if (!met) return std::nullopt;
     return meeting_features(pa, pb, met);
@@ -158,11 +159,10 @@ std::optional<std::pair<feature, feature>> meeting_at_start(const polygon& a, co
 /// and A's vertex i against B's edge j. Every vertex of B that reaches an
 /// edge of A during that part of the motion is the start of an edge of B
 /// whose swept box meets that edge's box, and likewise for A's vertices: no
-/// event of that part is left out. Sort and sweep along x (one_shot_detail).
+/// event of that part is left out. Sort and sweep along x (scene/edge_boxes.hpp).
 template <class Visit>
 void candidate_sites(const polygon& a, const polygon& b, const std::vector<point<double>>& b_start,
                      const box& b_start_box, point<double> from, point<double> to, double e, Visit&& visit) {
-    using namespace one_shot_detail;
     box swept;
     for (const point<double>& shift : {from, to}) {
         swept.add({b_start_box.min_x + shift.x, b_start_box.min_y + shift.y});
@@ -253,7 +253,7 @@ double time_above(const time_fraction<NT>& t) {
 /// displacement d (and -d, A's motion relative to B).
 template <class NT>
 struct translation_frame {
-    placed<NT> a, b;
+    placed_polygon<NT> a, b;
     point<NT> d, minus_d;
 
     translation_frame(const polygon& as, const polygon& bs, const rotation_pose& start, point<NT> dd)
@@ -280,8 +280,7 @@ struct translation_frame {
 template <class NT>
 std::optional<time_fraction<NT>> site_time(const polygon& a, const polygon& b, const rotation_pose& start,
                                            const point<NT>& d, const contact_site& s) {
-    using tr = number_traits<NT>;
-    const auto in_a = [&](std::size_t i) { return point<NT>{tr::from_double(a.vertex(i).x), tr::from_double(a.vertex(i).y)}; };
+    const auto in_a = [&](std::size_t i) { return to_point<NT>(a.vertex(i)); };
     const auto in_b = [&](std::size_t j) { return start.apply<NT>(b.vertex(j)); };
     if (s.moving_vertex) return earliest_contact_time(in_b(s.vertex), d, in_a(s.edge), in_a(a.next(s.edge)));
     return earliest_contact_time(in_a(s.vertex), point<NT>{-d.x, -d.y}, in_b(s.edge), in_b(b.next(s.edge)));
@@ -321,7 +320,7 @@ private:
 /// double at any time of the motion are within it of their NT values).
 template <class NT>
 double translation_margin(const polygon& a, const polygon& b, const pose& from, const pose& to) {
-    return one_shot_detail::posing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) +
+    return posing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) +
                                               std::fabs(from.ty) + std::fabs(to.tx) + std::fabs(to.ty));
 }
 
@@ -367,12 +366,13 @@ std::optional<earliest_event<NT>> earliest_translation_event(const polygon& a, c
 }
 
 /// An event of the filtered search: its site, its time in `certified` when
-/// every sign of it was certain, and its exact time once asked, with two
-/// doubles around it.
+/// every sign of it was certain, and its time in the exact field Exact once
+/// asked, with two doubles around it.
+template <class Exact>
 struct filtered_event {
     contact_site site;
     std::optional<time_fraction<certified>> fast;        ///< the time in certified, when certain
-    std::optional<time_fraction<exact_rational>> exact;  ///< the exact time, once asked
+    std::optional<time_fraction<Exact>> exact;  ///< the exact time, once asked
     double rounded = 0;                                  ///< the exact time's nearest double, with exact
     double below = 0, above = 0;                         ///< below <= exact time <= above, with exact
 
@@ -387,7 +387,7 @@ struct filtered_event {
     }
 
     /// Sets the exact time, its nearest double and the doubles next to it.
-    void set_exact(time_fraction<exact_rational> t) {
+    void set_exact(time_fraction<Exact> t) {
         const double x = nearest_double(t);
         rounded = x;
         below = std::nextafter(x, -std::numeric_limits<double>::infinity());
@@ -406,8 +406,8 @@ inline int compare_time_with(const time_fraction<certified>& t, double x) {
 /// bound settles it; else c's certified time against the doubles around
 /// e's exact time; else exactly (`exact_time` computes a site's exact
 /// time: it exists, both events having one).
-template <class ExactTime>
-int order(filtered_event& c, filtered_event& e, ExactTime&& exact_time) {
+template <class Exact, class ExactTime>
+int order(filtered_event<Exact>& c, filtered_event<Exact>& e, ExactTime&& exact_time) {
     if (c.fast && e.fast) {
         try {
             return compare_times(*c.fast, *e.fast);
@@ -421,36 +421,37 @@ int order(filtered_event& c, filtered_event& e, ExactTime&& exact_time) {
         } catch (const uncertain_sign&) {
         }
     }
-    for (filtered_event* x : {&c, &e})
+    for (filtered_event<Exact>* x : {&c, &e})
         if (!x->exact) x->set_exact(*exact_time(x->site));
     return compare_times(*c.exact, *e.exact);
 }
 
 /// The earliest event as earliest_translation_event, exact, at nearly
 /// double's cost: each site's time is computed and compared in
-/// `certified`, and again in exact rationals only for the sites whose
+/// `certified`, and again in the exact field Exact only for the sites whose
 /// signs the bound cannot settle (and, when a comparison is not certain,
 /// the two compared).
-inline std::optional<filtered_event> earliest_translation_event_filtered(const polygon& a, const polygon& b,
-                                                                        const pose& from, const pose& to,
-                                                                        const rotation_pose& start) {
+template <class Exact>
+std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const polygon& a, const polygon& b,
+                                                                         const pose& from, const pose& to,
+                                                                         const rotation_pose& start) {
     translation_frame<certified> fast(a, b, start, displacement<certified>(from, to));
-    std::optional<point<exact_rational>> exact_d;
+    std::optional<point<Exact>> exact_d;
     const auto exact_time = [&](const contact_site& s) {
-        if (!exact_d) exact_d = displacement<exact_rational>(from, to);
+        if (!exact_d) exact_d = displacement<Exact>(from, to);
         return site_time(a, b, start, *exact_d, s);
     };
-    std::optional<filtered_event> best;
+    std::optional<filtered_event<Exact>> best;
     windowed_sites(
         a, b, fast.b.approx(), fast.b.bounds(), {to.tx - from.tx, to.ty - from.ty},
         translation_margin<certified>(a, b, from, to),
         [&](const contact_site& s) {
-            filtered_event c{s, std::nullopt, std::nullopt};
+            filtered_event<Exact> c{s, std::nullopt, std::nullopt};
             try {
                 c.fast = fast.earliest(s);
                 if (!c.fast) return;
             } catch (const uncertain_sign&) {
-                std::optional<time_fraction<exact_rational>> t = exact_time(s);
+                std::optional<time_fraction<Exact>> t = exact_time(s);
                 if (!t) return;
                 c.set_exact(std::move(*t));
             }
@@ -509,8 +510,8 @@ meeting meeting_between(translation_frame<NT>& f, const time_fraction<NT>& s0, c
     const point<NT> nd{n * f.d.x, n * f.d.y};
     for (std::size_t j = 0; j < bs.size(); ++j) bv[j] = {d * f.b[j].x + nd.x, d * f.b[j].y + nd.y};
     const double big = std::fabs(tr::to_double(d)) * scale + std::fabs(tr::to_double(n)) * reach;
-    placed<NT> pa(as, av), pb(bs, bv);
-    return one_shot_detail::placed_meet(pa, pb, one_shot_detail::posing_margin<NT>(big));
+    placed_polygon<NT> pa(as, av), pb(bs, bv);
+    return placed_meet(pa, pb, posing_margin<NT>(big));
 }
 
 /// Whether an event at `s` can change what the witness `w` shows: it
@@ -695,17 +696,19 @@ contact_result<NT> turning_first_contact(const polygon& a, const polygon& b, con
     }
 }
 
-/// As turning_first_contact in exact rationals, the fine probe being
-/// certified_separation (the exact distance within one ulp and the exact
-/// features, at about double's cost): the same steps, so the same answer.
-inline contact_result<double> certified_turning_first_contact(const polygon& a, const polygon& b, const pose& from,
-                                                              const pose& to, const sweep_options& options) {
+/// As turning_first_contact in the exact field Exact, the fine probe being
+/// separation<Exact> on the polygons (the exact distance within one ulp and
+/// the exact features, its phase 3 filtered): the same steps, so the same
+/// answer.
+template <class Exact>
+contact_result<double> filtered_turning_first_contact(const polygon& a, const polygon& b, const pose& from,
+                                                      const pose& to, const sweep_options& options) {
     separation_query<double> coarse(a, b);
     return turning_result<double>(advance(
         b, from, to, options.tolerance, separation_error<double>(motion_scale(a, b, from, to)),
         [&](const pose& p) { return probe_of(coarse, p); }, true, 0, [&](const pose& p) {
-            const certified_separation_result s = certified_separation(a, b, p);
-            return probe_result{s.distance, s.static_feature, s.moving_feature};
+            const separation_result<Exact> s = separation<Exact>(a, b, p);
+            return probe_result{distance_of<Exact>(s.squared_distance), s.static_feature, s.moving_feature};
         }));
 }
 
@@ -759,37 +762,39 @@ contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose&
     return r;
 }
 
-/// The exact first contact at nearly double's cost, for a translation: the
-/// exact earliest time rounded to the nearest double, and the exact
-/// features (those of first_contact<exact_rational>). The meeting at the
+/// The first contact in the exact field Exact (first_contact<Exact>) at
+/// nearly double's cost, for a translation: the exact earliest time rounded
+/// to the nearest double, and the exact features. The meeting at the
 /// start is decided in `certified` with the one-shot query's exact
 /// fallback; each event is computed and compared in `certified`, and again
-/// in exact rationals only when its signs are not certain; the earliest
+/// in Exact only when its signs are not certain; the earliest
 /// time is rounded from its exact value (one site evaluated exactly). For
-/// a motion that turns: the answer of first_contact<exact_rational> (the
-/// same steps, the stop decided on certified_separation's exact distance;
-/// docs/sweep.md). Throws as first_contact.
-inline contact_result<double> certified_first_contact(const polygon& a, const polygon& b, const pose& from,
-                                                      const pose& to, const sweep_options& options = {}) {
+/// a motion that turns: the answer of first_contact<Exact> (the same
+/// steps, the stop decided on separation<Exact>'s exact distance;
+/// docs/sweep.md). Throws as first_contact. certified_first_contact
+/// (exact/certified_first_contact.hpp) is this query in exact rationals.
+template <class Exact>
+contact_result<double> filtered_first_contact(const polygon& a, const polygon& b, const pose& from, const pose& to,
+                                              const sweep_options& options = {}) {
     using namespace sweep_detail;
     const motion m = motion::accepted<double>(a, b, from, to, options);
-    if (from.theta != to.theta) return certified_turning_first_contact(a, b, from, to, options);
+    if (from.theta != to.theta) return filtered_turning_first_contact<Exact>(a, b, from, to, options);
     contact_result<double> r;
-    const auto met = detail::fallback<>::run([&] { return meeting_at_start<certified>(a, b, from, m.start); },
-                                             [&] { return meeting_at_start<exact_rational>(a, b, from, m.start); });
+    const auto met = fallback<>::run([&] { return meeting_at_start<certified>(a, b, from, m.start); },
+                                     [&] { return meeting_at_start<Exact>(a, b, from, m.start); });
     if (met) {
         r.contact = true;
         std::tie(r.static_feature, r.moving_feature) = *met;
         return r;
     }
     if (from.tx == to.tx && from.ty == to.ty) return r;  // B stays where it was
-    auto best = earliest_translation_event_filtered(a, b, from, to, m.start);
+    auto best = earliest_translation_event_filtered<Exact>(a, b, from, to, m.start);
     if (!best) return r;
     r.contact = true;
     std::tie(r.static_feature, r.moving_feature) = site_features(a, b, best->site);
     // Rounding to the nearest double asks for the time's sign against the
     // midpoints between doubles, finer than certified's bound: exactly.
-    if (!best->exact) best->set_exact(*site_time(a, b, m.start, displacement<exact_rational>(from, to), best->site));
+    if (!best->exact) best->set_exact(*site_time(a, b, m.start, displacement<Exact>(from, to), best->site));
     r.time = best->rounded;
     return r;
 }
@@ -848,12 +853,12 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
     translation_frame<NT> f(a, b, t, {tr::from_double(dx), tr::from_double(dy)});
     const double scale = coordinate_scale(a) + coordinate_scale(b) + std::fabs(q.tx) + std::fabs(q.ty);
     const double reach = std::fabs(dx) + std::fabs(dy);
-    const double e0 = one_shot_detail::posing_margin<NT>(scale);
-    meeting witness = one_shot_detail::placed_meet(f.a, f.b, e0);
+    const double e0 = posing_margin<NT>(scale);
+    meeting witness = placed_meet(f.a, f.b, e0);
     if (!witness) return NT(0);
 
     const double s_max = exit_reach(a.bounds(), f.b.bounds(), dx, dy, e0);
-    const double e = one_shot_detail::posing_margin<NT>(scale + s_max * reach);
+    const double e = posing_margin<NT>(scale + s_max * reach);
     const auto beyond = [](const time_fraction<NT>& s, double x) {
         return compare_values<NT>(s.num, tr::from_double(x) * s.den) > 0;
     };

@@ -20,12 +20,12 @@ enum class number_category {
     filtered
 };
 
-namespace detail {
+namespace traits_detail {
 /// False, but only once NT is known: a static_assert on it fires when its
 /// template is instantiated, not when it is defined.
 template <class NT>
 struct dependent_false : std::false_type {};
-}  // namespace detail
+}  // namespace traits_detail
 
 /// What the library needs of a number type NT. The primary template serves
 /// no type: naming a member of it stops the compilation with a static_assert
@@ -50,7 +50,7 @@ struct dependent_false : std::false_type {};
 /// partial specialisations through std::enable_if_t.
 template <class NT, class Enable = void>
 struct number_traits {
-    static_assert(detail::dependent_false<NT>::value,
+    static_assert(traits_detail::dependent_false<NT>::value,
                   "no number traits for this number type: specialise influence2d::number_traits for it "
                   "(see influence2d/number/traits.hpp)");
 };

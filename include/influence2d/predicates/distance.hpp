@@ -106,7 +106,7 @@ struct segment_pair_closest {
     segment_part second_part = segment_part::start;  ///< where on_second lies on the second segment
 };
 
-namespace detail {
+namespace distance_detail {
 
 /// The point where [u, v] crosses the line of [a, b], for u and v strictly
 /// on either side of it: u + (c_u / (c_u - c_v))(v - u), c_u = (b - a) x
@@ -161,7 +161,7 @@ segment_pair_closest<NT> least_end_distance(const point<NT>& a, const point<NT>&
     return best;
 }
 
-}  // namespace detail
+}  // namespace distance_detail
 
 /// A closest pair of points of the closed segments [a, b] and [u, v]
 /// (zero-length segments allowed), in a field NT.
@@ -182,8 +182,8 @@ template <class NT>
 segment_pair_closest<NT> closest_between_segments(const point<NT>& a, const point<NT>& b, const point<NT>& u,
                                                   const point<NT>& v) {
     const int ou = orientation(a, b, u), ov = orientation(a, b, v);
-    if (segments_intersect(ou, ov, a, b, u, v)) return detail::meeting_point(a, b, u, v, ou, ov);
-    return detail::least_end_distance(a, b, u, v, [](int) { return true; });
+    if (segments_intersect(ou, ov, a, b, u, v)) return distance_detail::meeting_point(a, b, u, v, ou, ov);
+    return distance_detail::least_end_distance(a, b, u, v, [](int) { return true; });
 }
 
 /// The squared distance between the closed segments [a, b] and [u, v]
@@ -461,7 +461,7 @@ segment_pair_closest<NT> closest_between_segments(const point<double>& a, const 
                                                   const point<NT>& A, const point<NT>& B, const point<NT>& U,
                                                   const point<NT>& V) {
     if (segments_must_cross(a, b, u, v, delta)) {
-        const point<NT> x = detail::crossing(A, B, U, V);
+        const point<NT> x = distance_detail::crossing(A, B, U, V);
         return {number_traits<NT>::from_double(0), x, x, segment_part::interior, segment_part::interior};
     }
     if (segments_may_meet(a, b, u, v, delta)) return closest_between_segments(A, B, U, V);
@@ -470,7 +470,7 @@ segment_pair_closest<NT> closest_between_segments(const point<double>& a, const 
     const double spread = posing_spread * delta * (1 + bound_rounding);
     double cut = HUGE_VAL;
     for (const estimate& m : ms) cut = std::min(cut, (m.value + m.error) * (1 + bound_rounding) + spread);
-    return detail::least_end_distance(A, B, U, V, [&](int k) {
+    return distance_detail::least_end_distance(A, B, U, V, [&](int k) {
         const estimate& m = ms[k];
         // (NaN or an infinite error: evaluated.)
         return !(m.value * (1 - bound_rounding) - m.error * (1 + bound_rounding) - spread > cut);

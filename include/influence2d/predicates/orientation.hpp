@@ -11,13 +11,13 @@
 
 namespace influence2d {
 
-namespace detail {
+namespace orientation_detail {
 template <class NT, class = void>
 struct has_exact_double_fallback : std::false_type {};
 template <class NT>
 struct has_exact_double_fallback<NT, std::void_t<decltype(number_traits<NT>::exact_double_fallback)>>
     : std::bool_constant<number_traits<NT>::exact_double_fallback> {};
-}  // namespace detail
+}  // namespace orientation_detail
 
 /// Sign of the signed area [a b c]: +1 when c lies left of the directed line
 /// a->b (counter-clockwise turn), -1 when right, 0 when the three are collinear.
@@ -32,7 +32,7 @@ template <class NT>
 int orientation(const point<NT>& a, const point<NT>& b, const point<NT>& c) {
     using tr = number_traits<NT>;
     const NT det = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-    if constexpr (detail::has_exact_double_fallback<NT>::value) {
+    if constexpr (orientation_detail::has_exact_double_fallback<NT>::value) {
         // A filtered type whose filter fails on three input doubles (say, the
         // static polygon's vertices and centroid, exactly collinear) gets the
         // exact sign from floating-point expansions.

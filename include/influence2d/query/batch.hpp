@@ -27,7 +27,7 @@ inline unsigned batch_threads(unsigned threads) {
     return std::max(1u, std::thread::hardware_concurrency());
 }
 
-namespace detail {
+namespace batch_detail {
 
 /// A callable that does nothing, whatever it is given.
 struct no_op {
@@ -58,7 +58,7 @@ void in_blocks(std::size_t count, unsigned threads, Block&& block) {
         if (e) std::rethrow_exception(e);
 }
 
-}  // namespace detail
+}  // namespace batch_detail
 
 /// The answers for every pose, in order, from detectors made by
 /// `make_detector()` (one per thread, each answering a contiguous run of the
@@ -77,11 +77,11 @@ void in_blocks(std::size_t count, unsigned threads, Block&& block) {
 /// different threads may overlap). The first exception a detector throws
 /// (invalid_input for a non-finite pose) is rethrown after every thread
 /// ended.
-template <class MakeDetector, class Done = detail::no_op>
+template <class MakeDetector, class Done = batch_detail::no_op>
 std::vector<frame_result> collide_batch(const std::vector<pose>& poses, MakeDetector&& make_detector,
                                         unsigned threads = 0, Done&& done = {}) {
     std::vector<frame_result> out(poses.size());
-    detail::in_blocks(poses.size(), threads, [&](std::size_t first, std::size_t last) {
+    batch_detail::in_blocks(poses.size(), threads, [&](std::size_t first, std::size_t last) {
         if (first == last) return;
         auto d = make_detector();
         for (std::size_t k = first; k < last; ++k) out[k] = d.collide(poses[k]);
@@ -108,7 +108,7 @@ struct pair_query {
 template <class Ask>
 std::vector<char> intersects_batch(const std::vector<pair_query>& queries, Ask&& ask, unsigned threads = 0) {
     std::vector<char> out(queries.size(), 0);
-    detail::in_blocks(queries.size(), threads, [&](std::size_t first, std::size_t last) {
+    batch_detail::in_blocks(queries.size(), threads, [&](std::size_t first, std::size_t last) {
         for (std::size_t k = first; k < last; ++k) {
             const pair_query& q = queries[k];
             if (q.static_polygon == nullptr || q.moving_polygon == nullptr)

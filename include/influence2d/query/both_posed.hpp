@@ -12,8 +12,8 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
-#include "influence2d/exact/certified_detector.hpp"
-#include "influence2d/query/intersects.hpp"
+#include "influence2d/query/placed_meet.hpp"
+#include "influence2d/scene/placed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/bounds.hpp"
 
@@ -40,12 +40,11 @@ namespace influence2d {
 template <class NT>
 bool regions_meet(const polygon& a, const std::vector<point<NT>>& a_vertices, const polygon& b,
                   const std::vector<point<NT>>& b_vertices, double scale = 0) {
-    using namespace one_shot_detail;
     accepted_polygon<NT>(a, "first");
     accepted_polygon<NT>(b, "second");
     if (a_vertices.size() != a.size() || b_vertices.size() != b.size())
         throw invalid_input("regions_meet: the vertices given are not as many as the polygon's");
-    placed<NT> pa(a, a_vertices), pb(b, b_vertices);
+    placed_polygon<NT> pa(a, a_vertices), pb(b, b_vertices);
     if (!(scale > 0)) {
         for (const box& w : {pa.bounds(), pb.bounds()})
             scale = std::max({scale, std::fabs(w.min_x), std::fabs(w.max_x), std::fabs(w.min_y), std::fabs(w.max_y)});
@@ -67,22 +66,13 @@ bool regions_meet(const polygon& a, const std::vector<point<NT>>& a_vertices, co
 ///   when a decision asks for it
 template <class NT>
 bool intersects(const polygon& a, const pose& pose_a, const polygon& b, const pose& pose_b) {
-    using namespace one_shot_detail;
     accepted_polygon<NT>(a, "first");
     accepted_polygon<NT>(b, "second");
     const rotation_pose ta(pose_a), tb(pose_b);
-    placed<NT> pa(a, ta), pb(b, tb);
+    placed_polygon<NT> pa(a, ta), pb(b, tb);
     const double e = posing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(pose_a.tx) +
                                        std::fabs(pose_a.ty) + std::fabs(pose_b.tx) + std::fabs(pose_b.ty));
     return static_cast<bool>(placed_meet(pa, pb, e));
-}
-
-/// The exact answer of intersects(a, pose_a, b, pose_b) at nearly double's
-/// cost: the query runs in `certified`, and again in exact rationals only
-/// when one of its signs is not certain.
-inline bool certified_intersects(const polygon& a, const pose& pose_a, const polygon& b, const pose& pose_b) {
-    return detail::fallback<>::run([&] { return intersects<certified>(a, pose_a, b, pose_b); },
-                                   [&] { return intersects<exact_rational>(a, pose_a, b, pose_b); });
 }
 
 /// B's pose in A's frame, for a query that takes one moving polygon:

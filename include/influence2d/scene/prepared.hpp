@@ -280,10 +280,4 @@ NT squared_distance(const point<NT>& a, const point<NT>& b) {
     return dx * dx + dy * dy;
 }
 
-/// p rounded to double, coordinate by coordinate (number_traits::to_double).
-template <class NT>
-point<double> to_double_point(const point<NT>& p) {
-    return {number_traits<NT>::to_double(p.x), number_traits<NT>::to_double(p.y)};
-}
-
 }  // namespace influence2d

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// The filter of the exact modes: a computation in a fast number type whose
+/// signs may be in doubt, and the same computation in an exact type when one
+/// is.
+
+#include "influence2d/number/certified.hpp"
+
+namespace influence2d {
+
+/// Runs `fast`; if it raises uncertain_sign (a sign of a filtered number type
+/// that its error bound cannot settle) or one of the exception types
+/// Uncertain... (for number types whose comparisons raise their own), runs
+/// `exact` and returns its value instead. What `fast` did before it raised is
+/// discarded: it must leave no state that `exact` or a later call relies on.
+template <class... Uncertain>
+struct fallback;
+
+/// fallback with uncertain_sign alone.
+template <>
+struct fallback<> {
+    /// fast(), or exact() when fast() raises uncertain_sign.
+    template <class Fast, class Exact>
+    static auto run(Fast&& fast, Exact&& exact) {
+        try {
+            return fast();
+        } catch (const uncertain_sign&) {
+            return exact();
+        }
+    }
+};
+
+/// fallback with uncertain_sign, First and Rest....
+template <class First, class... Rest>
+struct fallback<First, Rest...> {
+    /// fast(), or exact() when fast() raises uncertain_sign, First or one of Rest....
+    template <class Fast, class Exact>
+    static auto run(Fast&& fast, Exact&& exact) {
+        try {
+            return fallback<Rest...>::run(fast, exact);
+        } catch (const First&) {
+            return exact();
+        }
+    }
+};
+
+}  // namespace influence2d

@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// Whether two placed polygons meet, and what shows it: the steps of the
+/// one-shot questions after their posing.
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "influence2d/core/box.hpp"
+#include "influence2d/core/point.hpp"
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/covering/inclusion.hpp"
+#include "influence2d/predicates/filters.hpp"
+#include "influence2d/predicates/segments.hpp"
+#include "influence2d/scene/edge_boxes.hpp"
+#include "influence2d/scene/placed_polygon.hpp"
+
+namespace influence2d {
+
+/// What showed that two placed polygons meet.
+struct meeting {
+    /// Which test answered.
+    enum class kind : std::uint8_t {
+        none,         ///< they do not meet
+        a_vertex_in_b,  ///< A's vertex `a_index` lies in B (`where`: inside or on the boundary)
+        b_vertex_in_a,  ///< B's vertex `b_index` lies in A
+        edges         ///< A's edge `a_index` meets B's edge `b_index`
+    } how = kind::none;
+    std::size_t a_index = 0;  ///< A's vertex or edge (stored numbering)
+    std::size_t b_index = 0;  ///< B's vertex or edge (stored numbering)
+    location where = location::outside;  ///< for a located vertex
+
+    /// Whether the regions meet.
+    explicit operator bool() const { return how != kind::none; }
+};
+
+/// Whether the closed regions of the two placed polygons meet, and what
+/// showed it; `e` bounds the distance between each coordinate in double
+/// and in NT (the filters' margin). The steps of intersects below, after
+/// the posing.
+template <class NT>
+meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e) {
+    const box& ab = a.bounds();
+    box b_window = b.bounds().inflated(e), a_window = ab.inflated(e);
+    // A coordinate beyond double's range (or NaN from inf - inf) leaves the
+    // place open: no box shortcut, every edge a candidate.
+    if (!a.finite() || !b.finite()) {
+        const double inf = std::numeric_limits<double>::infinity();
+        b_window = box{-inf, -inf, inf, inf};
+        a_window = b_window;
+    }
+    if (b_window.max_x < ab.min_x || b_window.min_x > ab.max_x || b_window.max_y < ab.min_y ||
+        b_window.min_y > ab.max_y)
+        return {};
+
+    // Containment first: one vertex of every ring located in the other
+    // polygon (containment.hpp says why that decides the case of no
+    // boundary pair). A vertex in the other's closed region is a meeting
+    // point whatever the boundaries do, and most poses that meet are
+    // answered here in linear time, before any sorting. A vertex outside the
+    // other polygon's box (widened) is outside it without a locate.
+    const auto outside = [](const point<double>& v, const box& w) {
+        return v.x < w.min_x || v.x > w.max_x || v.y < w.min_y || v.y > w.max_y;  // NaN: may be inside
+    };
+    const polygon &as = a.shape(), &bs = b.shape();
+    std::optional<point<NT>> a_origin, b_origin;  // once a ring asks
+    for (std::size_t r = 0; r < bs.ring_count(); ++r) {
+        const std::size_t j = bs.ring_begin(r);
+        if (outside(b.approx()[j], a_window)) continue;
+        if (!a_origin) a_origin = a.origin();
+        const location l = locate(as, a.all(), *a_origin, b[j]);
+        if (l != location::outside) return {meeting::kind::b_vertex_in_a, 0, j, l};
+    }
+    for (std::size_t r = 0; r < as.ring_count(); ++r) {
+        const std::size_t i = as.ring_begin(r);
+        if (outside(a.approx()[i], b_window)) continue;
+        if (!b_origin) b_origin = b.origin();
+        const location l = locate(bs, b.all(), *b_origin, a[i]);
+        if (l != location::outside) return {meeting::kind::a_vertex_in_b, i, 0, l};
+    }
+
+    // No ring inside the other polygon: the regions meet iff the boundaries
+    // do. Candidate edges: those whose box meets the other polygon's box.
+    std::vector<edge_box> a_edges, b_edges;
+    edges_meeting(as, a.approx(), b_window, e, a_edges);
+    edges_meeting(bs, b.approx(), a_window, e, b_edges);
+    meeting found;
+    overlapping_pairs(a_edges, b_edges, [&](std::uint32_t i, std::uint32_t j) {
+        const std::size_t i2 = as.next(i), j2 = bs.next(j);
+        if (!segments_may_meet(a.approx()[i], a.approx()[i2], b.approx()[j], b.approx()[j2], e)) return false;
+        if (!segments_intersect(a[i], a[i2], b[j], b[j2])) return false;
+        found = {meeting::kind::edges, i, j, location::boundary};
+        return true;
+    });
+    return found;
+}
+
+}  // namespace influence2d

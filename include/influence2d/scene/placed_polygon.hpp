@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// A polygon placed in a query's frame for a one-shot question: its vertices
+/// in double for the filters, in NT for the decisions, and the margin
+/// between the two.
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <type_traits>
+#include <vector>
+
+#include "influence2d/assert.hpp"
+#include "influence2d/core/box.hpp"
+#include "influence2d/core/point.hpp"
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/core/pose.hpp"
+#include "influence2d/number/traits.hpp"
+
+namespace influence2d {
+
+/// A polygon placed in the query's frame: its vertices in double, for the
+/// filters, with their box; and in NT, for the decisions, each made on first
+/// use. Three placings: the polygon's own vertices, its vertices posed by a
+/// rotation_pose, or vertices given in NT. In double the filters' values
+/// are the decisions' own (the same operations on the same doubles).
+template <class NT>
+class placed_polygon {
+public:
+    /// The polygon where it stands.
+    explicit placed_polygon(const polygon& shape) : shape_(shape), how_(how::own), approx_(&shape.vertices()) {
+        bounds_ = shape.bounds();
+        make_room();
+    }
+
+    /// The polygon posed by t: its vertices posed in double at once.
+    placed_polygon(const polygon& shape, const rotation_pose& t) : shape_(shape), how_(how::posed), pose_(t) {
+        approx_own_.resize(shape.size());
+        for (std::size_t j = 0; j < shape.size(); ++j) {
+            approx_own_[j] = t.apply<double>(shape.vertex(j));
+            finite_ = finite_ && std::isfinite(approx_own_[j].x) && std::isfinite(approx_own_[j].y);
+            bounds_.add(approx_own_[j]);
+        }
+        approx_ = &approx_own_;
+        make_room();
+    }
+
+    /// The polygon's vertices given in NT (shape's topology); their doubles
+    /// are number_traits<NT>::to_double of them.
+    placed_polygon(const polygon& shape, const std::vector<point<NT>>& given)
+        : shape_(shape), how_(how::given), given_(&given) {
+        INFLUENCE2D_ASSERT(given.size() == shape.size(), "the vertices given are not the polygon's");
+        if constexpr (std::is_same_v<NT, double>) {
+            approx_ = &given;
+        } else {
+            using tr = number_traits<NT>;
+            approx_own_.resize(shape.size());
+            for (std::size_t j = 0; j < shape.size(); ++j) approx_own_[j] = {tr::to_double(given[j].x), tr::to_double(given[j].y)};
+            approx_ = &approx_own_;
+        }
+        for (const point<double>& v : *approx_) {
+            finite_ = finite_ && std::isfinite(v.x) && std::isfinite(v.y);
+            bounds_.add(v);
+        }
+    }
+
+    placed_polygon(const placed_polygon&) = delete;
+    placed_polygon& operator=(const placed_polygon&) = delete;
+
+    /// The polygon's topology.
+    const polygon& shape() const { return shape_; }
+    /// The vertices in double.
+    const std::vector<point<double>>& approx() const { return *approx_; }
+    /// The box of approx() (the polygon's own box when it stands where it is).
+    const box& bounds() const { return bounds_; }
+    /// Whether every double coordinate is finite.
+    bool finite() const { return finite_; }
+
+    /// Vertex j in NT. The reference stays valid until the first call of
+    /// all() (which gathers the vertices made so far into one vector).
+    const point<NT>& operator[](std::size_t j) {
+        if constexpr (std::is_same_v<NT, double>) {
+            return how_ == how::given ? (*given_)[j] : (*approx_)[j];
+        } else {
+            if (how_ == how::given) return (*given_)[j];
+            if (!all_.empty()) return all_[j];
+            std::optional<point<NT>>& v = made_[j];
+            if (!v) v = make(j);
+            return *v;
+        }
+    }
+
+    /// Every vertex in NT.
+    const std::vector<point<NT>>& all() {
+        if constexpr (std::is_same_v<NT, double>) {
+            return how_ == how::given ? *given_ : *approx_;
+        } else {
+            if (how_ == how::given) return *given_;
+            if (all_.empty()) {
+                all_.reserve(shape_.size());
+                for (std::size_t j = 0; j < shape_.size(); ++j)
+                    all_.push_back(made_[j] ? std::move(*made_[j]) : make(j));
+                made_.clear();
+            }
+            return all_;
+        }
+    }
+
+    /// The origin of the covering that locates points in this polygon: its
+    /// centroid placed like its vertices (for given vertices, the centre of
+    /// their box in double, or their first vertex when that box is beyond
+    /// double's range; any point gives the same winding numbers).
+    point<NT> origin() const {
+        using tr = number_traits<NT>;
+        switch (how_) {
+        case how::own:
+            return to_point<NT>(shape_.centroid());
+        case how::posed:
+            return pose_.apply<NT>(shape_.centroid());
+        default: {
+            const double x = bounds_.min_x / 2 + bounds_.max_x / 2, y = bounds_.min_y / 2 + bounds_.max_y / 2;
+            if (std::isfinite(x) && std::isfinite(y)) return {tr::from_double(x), tr::from_double(y)};
+            return (*given_)[0];  // beyond double's range: a vertex serves too
+        }
+        }
+    }
+
+private:
+    enum class how : std::uint8_t { own, posed, given };
+
+    // (A vertex in NT is made on first use: an exact NT allocates for each
+    // value, so none is made, not even a default one, before it is asked.)
+    void make_room() {
+        if constexpr (!std::is_same_v<NT, double>) made_.resize(shape_.size());
+    }
+    point<NT> make(std::size_t j) const {
+        const point<double>& v = shape_.vertex(j);
+        return how_ == how::own ? to_point<NT>(v) : pose_.apply<NT>(v);
+    }
+
+    const polygon& shape_;
+    how how_;
+    rotation_pose pose_{pose{}};
+    const std::vector<point<NT>>* given_ = nullptr;
+    const std::vector<point<double>>* approx_ = nullptr;
+    std::vector<point<double>> approx_own_;
+    box bounds_;
+    bool finite_ = true;
+    std::vector<std::optional<point<NT>>> made_;  // the vertices made so far, until all()
+    std::vector<point<NT>> all_;                  // every vertex, once all() asked
+};
+
+/// The margin of the filters of two polygons posed in double: each
+/// coordinate c x - s y + t is a few rounded operations on terms bounded by
+/// the polygon's scale and |t|, so its error is below filter_slack times
+/// their sum (filter_slack >= 1e-9, far above double's few ulps); `scale`
+/// is that sum for both polygons.
+template <class NT>
+double posing_margin(double scale) {
+    return number_traits<NT>::filter_slack * 4 * scale + std::numeric_limits<double>::min();
+}
+
+}  // namespace influence2d
