@@ -54,7 +54,7 @@
 #include "influence2d/detect/detector.hpp"
 #include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/bounds.hpp"
-#include "influence2d/influence/extended_area.hpp"
+#include "influence2d/predicates/extended_area.hpp"
 #include "influence2d/influence/influence_areas.hpp"
 #include "influence2d/number/certified.hpp"
 #include "influence2d/number/cgal.hpp"

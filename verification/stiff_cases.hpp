@@ -54,7 +54,7 @@
 #include "influence2d/core/pose.hpp"
 #include "influence2d/io/csv.hpp"
 #include "influence2d/io/wkt.hpp"
-#include "influence2d/number/expansion.hpp"
+#include "influence2d/number/exact_sum.hpp"
 #include "verification/families.hpp"
 
 namespace influence2d::verification {
@@ -238,7 +238,7 @@ struct lpoint {
 /// The sign of a.x * b.y - a.y * b.x, exact for coordinates below 2^52 in
 /// magnitude (products evaluated as floating-point expansions).
 inline int cross(const lpoint& a, const lpoint& b) {
-    expansion::accumulator acc;
+    exact_sum::accumulator acc;
     acc.add_product(static_cast<double>(a.x), static_cast<double>(b.y));
     acc.add_product(-static_cast<double>(a.y), static_cast<double>(b.x));
     return acc.sign();
@@ -1056,7 +1056,7 @@ inline stiff_scene make_scene(stiff_family f, double magnitude, std::size_t inde
 // and their sums stay normal doubles, so that the study's floating types
 // measure rounding, not overflow. The library is not limited there: its ring
 // orientation sums products exactly over the whole range of double (a
-// fixed-point accumulator, number/expansion.hpp), and the exact and certified
+// fixed-point accumulator, number/exact_sum.hpp), and the exact and certified
 // modes are tested at 1e200, 1e-170 and subnormal scale (tests/detect).
 inline void check_offset(double offset) {
     if (!(offset >= 1 && offset <= 1e150))

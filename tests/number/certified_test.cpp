@@ -330,7 +330,7 @@ TEST_CASE("certified: overflow and underflow leave the sign uncertain", "[certif
 }
 
 // The orientation predicate's exact settling of input doubles
-// (expansion::orientation_sign) once summed products of coordinates in double,
+// (exact_sum::orientation_sign) once summed products of coordinates in double,
 // which overflowed or underflowed at the ends of double's range and gave wrong
 // signs; it now sums them exactly over the whole range.
 TEST_CASE("certified: orientation of input doubles at the ends of double's range", "[certified]") {

@@ -24,6 +24,7 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/io/wkt.hpp"
+#include "influence2d/predicates/exact_doubles.hpp"
 #include "influence2d/predicates/orientation.hpp"
 
 namespace influence2d {
@@ -140,52 +141,12 @@ inline double extent_of(const std::vector<std::vector<point<double>>>& rings) {
     return b.empty() ? 0 : std::max(b.max_x - b.min_x, b.max_y - b.min_y);
 }
 
-/// The exact orientation of three points with finite double coordinates
-/// (see orientation()).
-inline int orient(const point<double>& a, const point<double>& b, const point<double>& c) {
-    return expansion::orientation_sign(a.x, a.y, b.x, b.y, c.x, c.y);
-}
-
-/// Whether q lies on the closed segment [a, b] (exact).
-inline bool on_closed_segment(const point<double>& q, const point<double>& a, const point<double>& b) {
-    return orient(a, b, q) == 0 && within_collinear_segment(q, a, b);
-}
-
-/// Whether the closed segments [a, b] and [c, d] (each of non-zero length)
-/// meet (exact).
-inline bool segments_meet(const point<double>& a, const point<double>& b, const point<double>& c,
-                          const point<double>& d) {
-    const int oc = orient(a, b, c), od = orient(a, b, d);
-    if (oc == 0 && od == 0)
-        return within_collinear_segment(c, a, b) || within_collinear_segment(d, a, b) ||
-               within_collinear_segment(a, c, d) || within_collinear_segment(b, c, d);
-    return oc * od <= 0 && orient(c, d, a) * orient(c, d, b) <= 0;
-}
-
-/// The winding number of a closed ring around q, as the ring is given (exact:
-/// crossings of the ray from q towards +x, upward edges with q on their left
-/// +1, downward edges with q on their right -1); empty when q lies on the ring.
-inline std::optional<int> winding_of_ring(const point<double>& q, const std::vector<point<double>>& ring) {
-    int w = 0;
-    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-        const point<double>& a = ring[i];
-        const point<double>& b = ring[(i + 1) % n];
-        if (on_closed_segment(q, a, b)) return std::nullopt;
-        if (a.y <= q.y) {
-            if (b.y > q.y && orient(a, b, q) > 0) ++w;
-        } else if (b.y <= q.y && orient(a, b, q) < 0) {
-            --w;
-        }
-    }
-    return w;
-}
-
 /// Whether every vertex of the ring lies on one line (exact).
 inline bool all_collinear(const std::vector<point<double>>& ring) {
     std::size_t other = 1;
     while (other < ring.size() && ring[other] == ring[0]) ++other;
     for (std::size_t i = other + 1; i < ring.size(); ++i)
-        if (orient(ring[0], ring[other], ring[i]) != 0) return false;
+        if (exact_orientation(ring[0], ring[other], ring[i]) != 0) return false;
     return true;
 }
 
@@ -230,7 +191,7 @@ void meeting_edges(const std::vector<std::vector<point<double>>>& rings, Visit v
                 continue;
             if (std::max(f->a.y, f->b.y) < std::min(e.a.y, e.b.y) || std::max(e.a.y, e.b.y) < std::min(f->a.y, f->b.y))
                 continue;
-            if (segments_meet(f->a, f->b, e.a, e.b)) {
+            if (segments_meet_exactly(f->a, f->b, e.a, e.b)) {
                 const bool first = std::tie(f->ring, f->index) < std::tie(e.ring, e.index);
                 visit(first ? *f : e, first ? e : *f);
             }
@@ -375,7 +336,7 @@ inline void check_vertices(collector& c, std::size_t k, const std::vector<point<
         while (ring[before] == p && before != v) before = (before + n - 1) % n;
         while (ring[after] == p && after != v) after = (after + 1) % n;
         if (ring[before] == p || ring[after] == p || (v > 0 && ring[v - 1] == p)) continue;
-        if (orient(ring[before], p, ring[after]) != 0) continue;
+        if (exact_orientation(ring[before], p, ring[after]) != 0) continue;
         if (within_collinear_segment(p, ring[before], ring[after]))
             c.add_at_vertex(finding_kind::collinear_run, k, v, p,
                             "vertex " + std::to_string(v) + " lies on the line of its neighbours",
@@ -476,7 +437,7 @@ inline void check_nesting(collector& c, const std::vector<wkt_ring>& input, cons
         const point<double>& q = rings[k][0];
         int w = 0;
         for (std::size_t s = 0; s < rings.size(); ++s)
-            if (s != k && set.usable[s]) w += stored_turn[s] * winding_of_ring(q, rings[s]).value_or(0);
+            if (s != k && set.usable[s]) w += stored_turn[s] * exact_winding(q, rings[s]).value_or(0);
         const bool hole = input[k].role == ring_role::hole;
         if (w == (hole ? 1 : 0)) continue;  // an outer ring outside the others, a hole in one shell
         const int inside = w + (hole ? -1 : 1);
@@ -555,7 +516,7 @@ inline void check_centroid_on_edge_lines(collector& c, const polygon& whole, con
         for (std::size_t v = 0, n = rings[k].size(); v < n; ++v) {
             const point<double>& a = rings[k][v];
             const point<double>& b = rings[k][(v + 1) % n];
-            if (a == b || orient(o, a, b) != 0) continue;
+            if (a == b || exact_orientation(o, a, b) != 0) continue;
             c.add_at_vertex(finding_kind::centroid_on_edge_line, k, v, a,
                             "the centroid " + coordinates(o) + " lies on the line of edge " + std::to_string(v) +
                                 ": its covering triangle is flat, its cone empty",
@@ -594,7 +555,7 @@ inline void check_number_ranges(collector& c, const ring_set& set) {
 /// Audits the rings as read (closing points included where the input has them).
 /// Never throws on bad input: what polygon's constructor would refuse is a
 /// finding with `rejects` set and makes `accepted` false. Every finding but
-/// the near_* ones is decided exactly (orientation by exact expansions,
+/// the near_* ones is decided exactly (orientation by the exact fixed-point sum,
 /// coordinate comparisons, the exact shoelace sign): repeated vertices,
 /// collinear runs and spikes, edges that meet, ring orientation and zero area,
 /// holes outside shells, the centroid (the library's, rounded to double) on

@@ -13,7 +13,7 @@
 #include "influence2d/core/box.hpp"
 #include "influence2d/core/invalid_input.hpp"
 #include "influence2d/core/point.hpp"
-#include "influence2d/number/expansion.hpp"
+#include "influence2d/number/exact_sum.hpp"
 
 namespace influence2d {
 
@@ -123,7 +123,7 @@ public:
     /// in a figure eight). The shoelace sum is evaluated exactly whatever the
     /// magnitude of the coordinates, which must be finite; no vertex gives 0.
     static int signed_area_sign(const std::vector<point<double>>& vs) {
-        expansion::accumulator acc;
+        exact_sum::accumulator acc;
         for (std::size_t k = 0; k < vs.size(); ++k) {
             const auto& a = vs[k];
             const auto& b = vs[(k + 1) % vs.size()];

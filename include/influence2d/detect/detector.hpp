@@ -18,7 +18,7 @@
 #include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/edge_grid.hpp"
 #include "influence2d/influence/edge_tree.hpp"
-#include "influence2d/influence/extended_area.hpp"
+#include "influence2d/predicates/extended_area.hpp"
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/predicates/segments.hpp"
 

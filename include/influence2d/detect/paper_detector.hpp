@@ -12,7 +12,7 @@
 #include "influence2d/detect/result.hpp"
 #include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/edge_grid.hpp"
-#include "influence2d/influence/extended_area.hpp"
+#include "influence2d/predicates/extended_area.hpp"
 #include "influence2d/influence/influence_areas.hpp"
 
 namespace influence2d {
@@ -78,7 +78,7 @@ public:
         // 3. Influence area of length n, then the extended areas.
         bool gate = false;
         a_->areas().for_each_containing(p, [&](std::size_t i) {
-            gate = gate || cov.signs(i, p).alpha >= 0 || line_within(p, cov.start(i), cov.end(i), n2);
+            gate = gate || cov.signs(i, p).alpha >= 0 || point_line_within(p, cov.start(i), cov.end(i), n2);
         });
         if (!gate) return {};
         pairs_.clear();
@@ -98,13 +98,6 @@ public:
     }
 
 private:
-    /// Whether p is within sqrt(n2) of the line through a and b.
-    static bool line_within(const point<NT>& p, const point<NT>& a, const point<NT>& b, const NT& n2) {
-        const NT abx = b.x - a.x, aby = b.y - a.y;
-        const NT cross = abx * (p.y - a.y) - aby * (p.x - a.x);
-        return compare_values<NT>(cross * cross, n2 * (abx * abx + aby * aby)) <= 0;
-    }
-
     std::shared_ptr<const static_scene<NT>> a_;
     posed_polygon<NT> b_;
     detector_options options_;

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "influence2d/influence/extended_area.hpp"
+#include "influence2d/predicates/extended_area.hpp"
 
 namespace influence2d {
 

@@ -6,7 +6,7 @@
 #include <type_traits>
 
 #include "influence2d/core/point.hpp"
-#include "influence2d/number/expansion.hpp"
+#include "influence2d/number/exact_sum.hpp"
 #include "influence2d/number/traits.hpp"
 
 namespace influence2d {
@@ -35,11 +35,11 @@ int orientation(const point<NT>& a, const point<NT>& b, const point<NT>& c) {
     if constexpr (orientation_detail::has_exact_double_fallback<NT>::value) {
         // A filtered type whose filter fails on three input doubles (say, the
         // static polygon's vertices and centroid, exactly collinear) gets the
-        // exact sign from floating-point expansions.
+        // exact sign from the exact fixed-point sum (number/exact_sum.hpp).
         int s;
         if (tr::try_sign(det, s)) return s;
         if (tr::exact(a.x) && tr::exact(a.y) && tr::exact(b.x) && tr::exact(b.y) && tr::exact(c.x) && tr::exact(c.y))
-            return expansion::orientation_sign(tr::to_double(a.x), tr::to_double(a.y), tr::to_double(b.x),
+            return exact_sum::orientation_sign(tr::to_double(a.x), tr::to_double(a.y), tr::to_double(b.x),
                                                tr::to_double(b.y), tr::to_double(c.x), tr::to_double(c.y));
     }
     return tr::sign(det);

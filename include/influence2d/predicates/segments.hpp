@@ -50,6 +50,16 @@ bool segments_intersect(const point<NT>& a, const point<NT>& b, const point<NT>&
     return segments_intersect(orientation(a, b, c), orientation(a, b, d), a, b, c, d);
 }
 
+/// Whether p is within sqrt(d2) of the line through a and b (d2 >= 0;
+/// equality counts): |ab x ap|^2 <= d2 |ab|^2, ring operations only. For
+/// a == b every p is (the line is not defined: 0 <= 0).
+template <class NT>
+bool point_line_within(const point<NT>& p, const point<NT>& a, const point<NT>& b, const NT& d2) {
+    const NT abx = b.x - a.x, aby = b.y - a.y;
+    const NT cross = abx * (p.y - a.y) - aby * (p.x - a.x);
+    return compare_values<NT>(cross * cross, d2 * (abx * abx + aby * aby)) <= 0;
+}
+
 /// Whether dist(p, [a, b])^2 <= d2, for the closed segment and d2 >= 0 the
 /// squared bound (equality counts). Ring operations only: beyond an end the
 /// distance is to that end; in between it is |ab x ap|^2 / |ab|^2, compared
@@ -66,8 +76,7 @@ bool point_segment_within(const point<NT>& p, const point<NT>& a, const point<NT
         const NT bpx = p.x - b.x, bpy = p.y - b.y;
         return compare_values<NT>(bpx * bpx + bpy * bpy, d2) <= 0;
     }
-    const NT cross = abx * apy - aby * apx;
-    return compare_values<NT>(cross * cross, d2 * ab2) <= 0;
+    return point_line_within(p, a, b, d2);
 }
 
 /// Whether dist([a, b], [c, d])^2 <= d2 (d2 >= 0; equality counts): the

@@ -12,7 +12,7 @@
 #include "influence2d/assert.hpp"
 
 /// Exact signs of sums of products of doubles (no number type involved).
-namespace influence2d::expansion {
+namespace influence2d::exact_sum {
 
 /// An exact sum of products of doubles, kept as one fixed-point two's
 /// complement integer wide enough for any of them: a finite double is M 2^E
@@ -105,4 +105,4 @@ inline int orientation_sign(double ax, double ay, double bx, double by, double c
     return acc.sign();
 }
 
-}  // namespace influence2d::expansion
+}  // namespace influence2d::exact_sum

@@ -6,12 +6,12 @@
 #include <vector>
 
 #include "influence2d/number/cgal.hpp"
-#include "influence2d/number/expansion.hpp"
+#include "influence2d/number/exact_sum.hpp"
 #include "support/random.hpp"
 
-using influence2d::expansion::accumulator;
+using influence2d::exact_sum::accumulator;
 
-TEST_CASE("expansion: sign of a sum that cancels below double precision", "[expansion]") {
+TEST_CASE("exact_sum: sign of a sum that cancels below double precision", "[exact_sum]") {
     // 2^53 + 1 - 2^53 - 1 is 0, though in double (2^53 + 1) rounds to 2^53 and
     // the sum to -1; then + 2^-60 leaves only the last term.
     accumulator acc;
@@ -24,7 +24,7 @@ TEST_CASE("expansion: sign of a sum that cancels below double precision", "[expa
     CHECK(acc.sign() == 1);
 }
 
-TEST_CASE("expansion: products keep their rounding error", "[expansion]") {
+TEST_CASE("exact_sum: products keep their rounding error", "[exact_sum]") {
     // (1 + 2^-30)^2 = 1 + 2^-29 + 2^-60; the 2^-60 is lost in a double product.
     const double x = 1 + 0x1p-30;
     accumulator acc;
@@ -38,7 +38,7 @@ TEST_CASE("expansion: products keep their rounding error", "[expansion]") {
     CHECK(acc.sign() == -1);
 }
 
-TEST_CASE("expansion: exact over the whole range of double", "[expansion]") {
+TEST_CASE("exact_sum: exact over the whole range of double", "[exact_sum]") {
     // Products that overflow double (1e200 * 1e200) and that underflow it
     // (subnormal times subnormal) are still summed exactly.
     accumulator big;
@@ -59,8 +59,8 @@ TEST_CASE("expansion: exact over the whole range of double", "[expansion]") {
     CHECK(tiny.sign() == -1);
 }
 
-TEST_CASE("expansion: orientation of points at 1e200 and at subnormal scale", "[expansion]") {
-    using influence2d::expansion::orientation_sign;
+TEST_CASE("exact_sum: orientation of points at 1e200 and at subnormal scale", "[exact_sum]") {
+    using influence2d::exact_sum::orientation_sign;
     CHECK(orientation_sign(0, 0, 1e200, 0, 1e200, 1e200) == 1);
     CHECK(orientation_sign(0, 0, 1e200, 0, 2e200, 0) == 0);
     CHECK(orientation_sign(0, 0, 0x1p-1070, 0, 0x1p-1070, 0x1p-1074) == 1);
@@ -72,7 +72,7 @@ TEST_CASE("expansion: orientation of points at 1e200 and at subnormal scale", "[
     CHECK(acc.sign() == 0);
 }
 
-TEST_CASE("expansion: signs of random sums of products equal those of exact rationals", "[expansion]") {
+TEST_CASE("exact_sum: signs of random sums of products equal those of exact rationals", "[exact_sum]") {
     test_random::rng rng(17);
     const auto any_double = [&] {
         // Random sign, mantissa and exponent over the whole finite range.

@@ -34,16 +34,16 @@ bool in_capsule(const point<NT>& p, const point<NT>& a, const point<NT>& b, cons
 /// Exact when NT is.
 template <class NT>
 bool in_band(const point<NT>& p, const point<NT>& a, const point<NT>& b, const NT& n, const NT& n2) {
+    if (!point_line_within(p, a, b, n2)) return false;
     const NT abx = b.x - a.x, aby = b.y - a.y;
-    const NT cross = abx * (p.y - a.y) - aby * (p.x - a.x);
-    if (cross * cross > n2 * (abx * abx + aby * aby)) return false;
-    const bool vertical_caps = !(aby * aby > abx * abx);
+    const bool vertical_caps = compare_values<NT>(aby * aby, abx * abx) <= 0;
     const NT& pa = vertical_caps ? a.x : a.y;
     const NT& pb = vertical_caps ? b.x : b.y;
     const NT& pp = vertical_caps ? p.x : p.y;
-    const NT& lo = pa < pb ? pa : pb;
-    const NT& hi = pa < pb ? pb : pa;
-    return !(pp < lo - n) && !(pp > hi + n);
+    const bool a_first = compare_values(pa, pb) < 0;
+    const NT& lo = a_first ? pa : pb;
+    const NT& hi = a_first ? pb : pa;
+    return compare_values<NT>(pp, lo - n) >= 0 && compare_values<NT>(pp, hi + n) <= 0;
 }
 
 /// Membership in the chosen shape of extended area of length n >= 0 (closed:

@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "influence2d/influence/edge_grid.hpp"
-#include "influence2d/influence/extended_area.hpp"
+#include "influence2d/predicates/extended_area.hpp"
 #include "support/random.hpp"
 #include "support/shapes.hpp"
 

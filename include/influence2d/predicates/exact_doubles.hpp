@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// Exact decisions on points of finite doubles as given, with no number type:
+/// the orientation by the exact fixed-point sum (number/exact_sum.hpp), and
+/// what is built on it alone. For input that is not yet a polygon (the audit
+/// of rings as read); the detectors decide in their number type instead
+/// (orientation.hpp, segments.hpp).
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "influence2d/core/point.hpp"
+#include "influence2d/number/exact_sum.hpp"
+#include "influence2d/predicates/orientation.hpp"
+
+namespace influence2d {
+
+/// The exact orientation of three points with finite double coordinates
+/// (exact_sum::orientation_sign; orientation() in double rounds).
+inline int exact_orientation(const point<double>& a, const point<double>& b, const point<double>& c) {
+    return exact_sum::orientation_sign(a.x, a.y, b.x, b.y, c.x, c.y);
+}
+
+/// Whether q lies on the closed segment [a, b] (exact).
+inline bool on_segment_exactly(const point<double>& q, const point<double>& a, const point<double>& b) {
+    return exact_orientation(a, b, q) == 0 && within_collinear_segment(q, a, b);
+}
+
+/// Whether the closed segments [a, b] and [c, d] (each of non-zero length)
+/// meet (exact).
+inline bool segments_meet_exactly(const point<double>& a, const point<double>& b, const point<double>& c,
+                                  const point<double>& d) {
+    const int oc = exact_orientation(a, b, c), od = exact_orientation(a, b, d);
+    if (oc == 0 && od == 0)
+        return within_collinear_segment(c, a, b) || within_collinear_segment(d, a, b) ||
+               within_collinear_segment(a, c, d) || within_collinear_segment(b, c, d);
+    return oc * od <= 0 && exact_orientation(c, d, a) * exact_orientation(c, d, b) <= 0;
+}
+
+/// The winding number of a closed ring around q, as the ring is given (exact:
+/// crossings of the ray from q towards +x, upward edges with q on their left
+/// +1, downward edges with q on their right -1); empty when q lies on the ring.
+inline std::optional<int> exact_winding(const point<double>& q, const std::vector<point<double>>& ring) {
+    int w = 0;
+    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+        const point<double>& a = ring[i];
+        const point<double>& b = ring[(i + 1) % n];
+        if (on_segment_exactly(q, a, b)) return std::nullopt;
+        if (a.y <= q.y) {
+            if (b.y > q.y && exact_orientation(a, b, q) > 0) ++w;
+        } else if (b.y <= q.y && exact_orientation(a, b, q) < 0) {
+            --w;
+        }
+    }
+    return w;
+}
+
+}  // namespace influence2d
