@@ -52,6 +52,7 @@
 #include "influence2d/covering/inclusion.hpp"
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/detector.hpp"
+#include "influence2d/scene/posed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/predicates/extended_area.hpp"

@@ -9,6 +9,7 @@
 #include "influence2d/detect/containment.hpp"
 #include "influence2d/detect/pairs.hpp"
 #include "influence2d/detect/result.hpp"
+#include "influence2d/scene/posed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
 #include "influence2d/predicates/segments.hpp"
 

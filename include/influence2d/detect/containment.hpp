@@ -7,6 +7,8 @@
 #include <optional>
 
 #include "influence2d/covering/inclusion.hpp"
+#include "influence2d/predicates/distance.hpp"
+#include "influence2d/scene/posed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
 
 namespace influence2d {

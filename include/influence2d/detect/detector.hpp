@@ -15,6 +15,7 @@
 #include "influence2d/detect/features.hpp"
 #include "influence2d/detect/pairs.hpp"
 #include "influence2d/detect/result.hpp"
+#include "influence2d/scene/posed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/edge_grid.hpp"
 #include "influence2d/influence/edge_tree.hpp"

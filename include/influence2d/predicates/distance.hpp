@@ -67,6 +67,13 @@ segment_point<NT> closest_on_segment(const point<NT>& p, const point<NT>& a, con
     return {NT(cross * cross / length2), point<NT>{NT(a.x + f * abx), NT(a.y + f * aby)}, segment_part::interior};
 }
 
+/// Squared distance between two NT points.
+template <class NT>
+NT squared_distance(const point<NT>& a, const point<NT>& b) {
+    const NT dx = a.x - b.x, dy = a.y - b.y;
+    return dx * dx + dy * dy;
+}
+
 /// The squared distance from p to the closed segment [a, b] (closest_on_segment).
 template <class NT>
 NT point_segment_squared_distance(const point<NT>& p, const point<NT>& a, const point<NT>& b) {

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
-/// What the detectors precompute for the static polygon, and the moving
-/// polygon posed in NT for a frame.
+/// What the detectors and queries precompute for the static polygon A and
+/// the moving polygon B, shared by many of them in any number of threads.
 
 #include <algorithm>
 #include <atomic>
@@ -161,123 +161,6 @@ std::shared_ptr<const static_scene<NT>> prepare_static(const polygon& a) {
 template <class NT>
 std::shared_ptr<const moving_scene<NT>> prepare_moving(const polygon& b) {
     return std::make_shared<const moving_scene<NT>>(b);
-}
-
-/// The moving polygon B: given in its own frame, posed once per frame. A frame
-/// first poses the centroid in double; then, if a filter passes, every vertex
-/// in double. These rounded positions serve conservative filters only. The NT
-/// centroid and vertices are posed when a decision asks for them, so an exact
-/// type pays only for what the frame's decisions need.
-template <class NT>
-class posed_polygon {
-public:
-    /// B in its own frame, not yet posed; throws invalid_input for a polygon
-    /// empty or beyond NT's range (see accepted_polygon).
-    explicit posed_polygon(const polygon& b) : posed_polygon(prepare_moving<NT>(b)) {}
-    /// B prepared (shared with other detectors), not yet posed.
-    explicit posed_polygon(std::shared_ptr<const moving_scene<NT>> b)
-        : scene_(std::move(b)), shape_(scene_->shape), local_centroid_(scene_->centroid), radius_(scene_->radius) {
-        vertices_.resize(shape_.size());
-        approximate_.resize(shape_.size());
-        stamp_.assign(shape_.size(), 0);
-        approximate_stamp_.assign(shape_.size(), 0);
-    }
-
-    /// B as prepared (shared).
-    const moving_scene<NT>& scene() const { return *scene_; }
-    /// B in its own frame.
-    const polygon& shape() const { return shape_; }
-    /// B's number of vertices (and edges).
-    std::size_t size() const { return vertices_.size(); }
-    /// Bounds the distance from the posed centroid to every posed vertex.
-    double radius() const { return radius_; }
-    /// The posed centroid in NT.
-    const point<NT>& centroid() {
-        if (centroid_stamp_ != frame_) {
-            centroid_ = pose_.apply<NT>(local_centroid_);
-            centroid_stamp_ = frame_;
-        }
-        return centroid_;
-    }
-    /// The posed centroid in double (rounded; for filters only).
-    const point<double>& approximate_centroid() const { return approximate_centroid_; }
-
-    /// Sets the frame's pose and poses the centroid in double.
-    void place(const rotation_pose& t) {
-        pose_ = t;
-        ++frame_;
-        approximate_centroid_ = t.apply<double>(local_centroid_);
-    }
-    /// Poses every vertex in double (rounded; for conservative filters only).
-    void place_approximate() {
-        for (std::size_t j = 0; j < approximate_.size(); ++j) {
-            approximate_[j] = pose_.apply<double>(shape_.vertex(j));
-            approximate_stamp_[j] = frame_;
-        }
-    }
-    /// Vertex j posed in double by the last place_approximate() (rounded).
-    const point<double>& approximate(std::size_t j) const { return approximate_[j]; }
-    /// Vertex j posed in double for this frame, posed now if it was not yet
-    /// (for frames that look at a few vertices only).
-    const point<double>& approximate_now(std::size_t j) {
-        if (approximate_stamp_[j] != frame_) {
-            approximate_[j] = pose_.apply<double>(shape_.vertex(j));
-            approximate_stamp_[j] = frame_;
-        }
-        return approximate_[j];
-    }
-
-    /// Vertex j posed in NT.
-    const point<NT>& vertex(std::size_t j) {
-        if (stamp_[j] != frame_) {
-            vertices_[j] = pose_.apply<NT>(shape_.vertex(j));
-            stamp_[j] = frame_;
-        }
-        return vertices_[j];
-    }
-    /// The end vertex of edge j, posed in NT.
-    const point<NT>& end(std::size_t j) { return vertex(shape_.next(j)); }
-    /// Bytes of the heap blocks held for the frames (capacities of the
-    /// per-vertex arrays; the prepared B is counted by its own heap_bytes).
-    std::size_t heap_bytes() const {
-        return vertices_.capacity() * sizeof(point<NT>) +
-               approximate_.capacity() * sizeof(point<double>) +
-               (stamp_.capacity() + approximate_stamp_.capacity()) * sizeof(std::uint64_t);
-    }
-    /// Every vertex posed in NT.
-    const std::vector<point<NT>>& vertices() {
-        for (std::size_t j = 0; j < vertices_.size(); ++j) vertex(j);
-        return vertices_;
-    }
-
-private:
-    std::shared_ptr<const moving_scene<NT>> scene_;
-    const polygon& shape_;  ///< scene_->shape
-    point<double> local_centroid_;
-    double radius_;
-    rotation_pose pose_{pose{}};
-    std::uint64_t frame_ = 0;
-    std::uint64_t centroid_stamp_ = 0;
-    point<double> approximate_centroid_;
-    point<NT> centroid_;
-    std::vector<point<NT>> vertices_;
-    std::vector<point<double>> approximate_;
-    std::vector<std::uint64_t> stamp_;
-    std::vector<std::uint64_t> approximate_stamp_;
-};
-
-/// The reach of the moving polygon for a separation distance d: an upper
-/// bound of r_B + d, the distance from B's centroid within which an edge of A
-/// must lie to come within d of B.
-inline double moving_reach(double moving_radius, double distance) {
-    return std::nextafter((moving_radius + distance) * (1 + pose_scale_widening), std::numeric_limits<double>::infinity());
-}
-
-/// Squared distance between two NT points.
-template <class NT>
-NT squared_distance(const point<NT>& a, const point<NT>& b) {
-    const NT dx = a.x - b.x, dy = a.y - b.y;
-    return dx * dx + dy * dy;
 }
 
 }  // namespace influence2d
