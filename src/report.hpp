@@ -11,12 +11,12 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "files.hpp"
+#include "verification/report_text.hpp"
 
 namespace influence2d::cli {
 
@@ -28,29 +28,10 @@ double seconds_taken(F&& f) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// x with `digits` digits after the point.
-inline std::string fixed(double x, int digits) {
-    std::ostringstream s;
-    s.setf(std::ios::fixed);
-    s.precision(digits);
-    s << x;
-    return s.str();
-}
-
-/// x with `digits` significant digits.
-inline std::string general(double x, int digits = 6) {
-    std::ostringstream s;
-    s.precision(digits);
-    s << x;
-    return s.str();
-}
-
-/// The names joined by commas.
-inline std::string joined(const std::vector<std::string>& names) {
-    std::string list;
-    for (const std::string& n : names) list += (list.empty() ? "" : ",") + n;
-    return list;
-}
+// The number formats and name lists of the reports, shared with verification/.
+using verification::fixed;
+using verification::general;
+using verification::joined;
 
 /// Throws, naming the known ones, when a name of `given` is not in `known`.
 inline void check_names(const std::vector<std::string>& given, const std::vector<std::string>& known,

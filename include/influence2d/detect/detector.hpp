@@ -75,50 +75,50 @@ struct distance_state {
 /// floating); in floating types it answers as the brute-force reference in the
 /// same type does, up to the rounding of its own decisions.
 ///
-/// Per frame (n = r_B + d, p = B's posed centroid):
-///   1. Pose p. If |p - O_A| > R_A + n: the bounding circles are apart: disjoint.
-///      Steps 1 to 3 are filters: evaluated in double, widened by a margin that
-///      covers rounding, so that they can keep too much but never drop anything.
-///      If p jumped since the last frames (no coherence to use: a random pose,
-///      or a detector without features::coherence), A's edge tree and B's
-///      (each in its polygon's own frame) are traversed together, B's circles
-///      posed: below a leaf of B each of its edges, posed in double, finds the
-///      static edges near it, and each pair gets step 4's tests; then step 5.
-///      Nothing is gathered for such a frame.
-///   2. Candidates: the static edges within n + skin of p, gathered through the
-///      edge grid and kept while p stays within `skin` of where they were
-///      gathered (temporal coherence; sound because the skin is part of the
-///      gathering radius).
-///   3. If no moving edge (posed in double) comes within R_A + d of O_A, no
-///      boundary pair exists: go to 5. B's bounding circle may cover much of A
-///      while its edges keep clear of A's circle (a large B passing close by).
-///      B's edges are tested in chunks of chunk_edges (8) under bounding circles fixed in
-///      B's frame, when there are no more chunks than cached candidates.
-///      Then keep the candidates whose extended area of length n contains p.
-///      None: no edge of A comes within n of p, the disk of radius n about p is
-///      wholly inside or outside A, and so is B: collides iff p is inside A.
-///      With B posed in double (a B of no more edges than cached candidates),
-///      the candidates are also those whose box meets B's, and none means no
-///      boundary pair: go to 5.
-///      A B of fewer than a quarter as many edges as cached candidates skips
-///      the extended areas: each moving edge, posed in double, finds the
-///      static edges near it through A's edge tree (edge_tree.hpp), and each
-///      such pair goes to the tests of step 4; then step 5.
-///   4. Pose B's vertices in double. For each candidate edge and each moving edge
-///      whose box meets the candidate's (grown by d and the rounding margin;
-///      B's chunks whose posed circle misses that box are skipped whole):
-///      for d == 0, the signs of alpha of the moving edge's ends (the paper's
-///      detailed test) and the same with the edges' roles swapped, as filters
-///      in double; then the exact segment test (d == 0), or the exact
-///      distance test (d > 0). Only those vertices are posed in NT.
-///   5. No pair: the regions meet iff one contains a ring of the other. A
-///      ring's vertex outside the other polygon's bounding circle or box (in
-///      double, widened) is outside it without a locate.
+/// Per frame, in collide()'s order (n = r_B + d, p = B's posed centroid, O_A
+/// and R_A A's centroid and bounding radius). Everything before the pair
+/// tests is a filter: evaluated in double, widened by a margin that covers
+/// rounding, so that it can keep too much but never drop anything.
+///
+///   p <- B's centroid posed in double; margin <- the rounding of the frame
+///   |p - O_A| > R_A + n (the bounding circles apart):          disjoint
+///   p jumped (a random pose, a first frame far from the last, or no
+///   features::coherence: coherent_step):
+///       few edge pairs (every_pair_pays): B posed in double, every pair
+///           whose boxes meet gets the pair tests;               then containment
+///       else A's and B's edge trees traversed together, B's circles posed:
+///           below a leaf of B each of its edges, posed in double, finds the
+///           static edges near it; each pair gets the pair tests; then containment
+///   candidates <- the static edges within n + skin of p, from the edge grid,
+///       kept while p stays within `skin` of where they were gathered
+///       (temporal coherence; sound because the skin is part of the radius)
+///   if the test pays (B has no more chunks of chunk_edges (8) edges than
+///   candidates) and no moving edge, posed in double under its chunk's
+///   circle, comes within R_A + d of O_A: no boundary pair   (clear_of_a)
+///   B of fewer than a quarter as many edges as candidates (tree_pays):
+///       each moving edge, posed in double, finds the static edges near it
+///       through A's edge tree; each pair gets the pair tests; then containment
+///   else keep the candidates whose extended area of length n contains p (and,
+///   B posed in double first when it has no more edges than candidates,
+///   whose box meets B's):
+///       none: no edge of A within n of p, so B lies wholly inside or outside
+///           A: collides iff p is in A (or containment, with B's box used)
+///       else each candidate against the moving edges whose box meets its own
+///           (grown by d and the margin; chunks whose posed circle misses it
+///           skipped whole): the pair tests; then containment
+///
+///   pair tests: for d == 0 the signs of alpha of the moving edge's ends
+///       (the paper's detailed test) and the same with the roles swapped, as
+///       filters in double; then the exact segment test (d == 0) or the exact
+///       distance test (d > 0), on the two edges' vertices posed in NT
+///   containment (no pair met): the regions meet iff one contains a ring of
+///       the other; a ring's vertex outside the other polygon's bounding
+///       circle or box (in double, widened) is outside it without a locate
 ///
 /// Features (features.hpp) are chosen at compile time; `detector<NT>` has them
 /// all. Without `witness` and `distance` the frame stops at the first meeting
 /// pair and the segment test is the only pair test; without `coherence` every
-/// frame takes the edge trees (step 1); without `holes` the ring bookkeeping
+/// frame is a jump; without `holes` the ring bookkeeping
 /// is gone (one ring each); without `statistics` nothing is counted.
 template <class NT, class Features = all_features>
 class detector : detector_detail::feature_state<detector_statistics, Features::has(features::statistics), 0>,
@@ -268,14 +268,14 @@ private:
         return f;
     }
 
-    /// Step 1: whether the bounding circles are certainly apart (a filter in
+    /// The first filter: whether the bounding circles are certainly apart (a filter in
     /// double, widened by the margin).
     bool circles_apart(const frame& f) const {
         const point<double>& o = a_->shape.centroid();
         return filter_length(f.p.x - o.x, f.p.y - o.y) > a_->radius + f.n + f.margin;
     }
 
-    /// Step 2: the candidates gathered within n + skin, reused while p moves
+    /// Gathering: the candidates gathered within n + skin, reused while p moves
     /// less than the skin.
     void refresh_candidates(const frame& f) {
         if constexpr (with_coherence) {
@@ -323,7 +323,7 @@ private:
     /// more edges than there are cached candidates: its box then prunes them.
     bool pose_b_first() const { return b_.shape().size() <= cache_.size(); }
 
-    /// Step 3, when B's edges keep off A's bounding circle: no boundary pair.
+    /// When B's edges keep off A's bounding circle: no boundary pair.
     /// B's vertices lie outside A's circle, so outside A; A lies wholly in
     /// B or wholly outside it, and can lie in B only if its first vertex
     /// lies within B's circle.
@@ -336,14 +336,14 @@ private:
         return {contains(f.n, f.margin, false), {}};
     }
 
-    /// Steps 3 and 4 without candidates, for a frame with no coherence to use:
+    /// The pair search without candidates, for a frame with no coherence to use:
     /// A's edge tree (in A's frame) and B's (in B's frame, its circles posed
     /// by the frame's pose) traversed together (edge_tree::query_pairs):
     /// below a leaf of B each of its edges, posed in double only then, finds
     /// the static edges near it (or, for a B of more edges than A, the other
     /// way round in B's frame: A's circles and edges placed there by the
-    /// inverse pose), and each such pair gets the tests of step 4,
-    /// stopping at the first meeting pair without witnesses; then step 5
+    /// inverse pose), and each such pair gets the pair tests,
+    /// stopping at the first meeting pair without witnesses; then containment
     /// with B's box taken from its posed bounding circle.
     frame_result pairs_through_trees(const frame& f) {
         tally(&detector_statistics::jump_frames);
@@ -402,10 +402,10 @@ private:
         return {contains_within(bb, finite, f.n, f.margin, true, [&](std::size_t j) { return b_.approximate_now(j); }), {}};
     }
 
-    /// Steps 3 and 4 for a jump of two small polygons: B posed in double,
-    /// every pair whose boxes (grown by d and the margin) meet gets the tests
-    /// of step 4, stopping at the first meeting pair without witnesses; then
-    /// step 5.
+    /// The pair search for a jump of two small polygons: B posed in double,
+    /// every pair whose boxes (grown by d and the margin) meet gets the pair
+    /// tests, stopping at the first meeting pair without witnesses; then
+    /// containment.
     frame_result every_pair(const frame& f) {
         tally(&detector_statistics::jump_frames);
         place_approximate(f.t);
@@ -429,9 +429,9 @@ private:
         return finish(f.n, f.margin);
     }
 
-    /// Steps 3 and 4 through A's edge tree: each moving edge, posed in double,
-    /// finds the static edges near it, and each such pair gets the tests of
-    /// step 4; then step 5.
+    /// The pair search through A's edge tree: each moving edge, posed in double,
+    /// finds the static edges near it, and each such pair gets the pair
+    /// tests; then containment.
     frame_result pairs_through_tree(const frame& f) {
         tally(&detector_statistics::tree_frames);
         place_approximate(f.t);
@@ -449,12 +449,12 @@ private:
         return finish(f.n, f.margin);
     }
 
-    /// Steps 3 to 5 through the cached candidates: keep those whose extended
-    /// area of length n contains p (and, with B posed first, whose box meets
-    /// B's); none decides at once (step 5, or p's location when B's box was
+    /// The pair search and containment through the cached candidates: keep
+    /// those whose extended area of length n contains p (and, with B posed first, whose box meets
+    /// B's); none decides at once (containment, or p's location when B's box was
     /// not used: the disk of radius n about p then holds no edge of A, so B
     /// lies wholly inside or outside A); else each candidate against the
-    /// moving edges near it (step 4), then step 5.
+    /// moving edges near it (the pair tests), then containment.
     frame_result pairs_through_candidates(const frame& f) {
         const bool posed = pose_b_first();
         if (posed) place_approximate(f.t);
@@ -475,7 +475,7 @@ private:
                     candidates_.push_back(e);
             }
             tally(&detector_statistics::candidate_edges, candidates_.size());
-            if (candidates_.empty()) {  // no boundary pair: step 5
+            if (candidates_.empty()) {  // no boundary pair: containment
                 tally(&detector_statistics::containment_tests);
                 return {contains(f.n, f.margin), {}};
             }
@@ -561,7 +561,7 @@ private:
     /// Gathers the edges within reach + skin of p into the cache. When there
     /// are none, the disk of that radius about p holds no boundary of A, so
     /// every point within the skin of p is located as p is: that is cached too.
-    /// Without features::coherence this is step 2 of every frame.
+    /// Without features::coherence every frame gathers anew.
     void gather(const point<double>& pd, double frame_margin) {
         tally(&detector_statistics::candidate_rebuilds);
         cache_.clear();
@@ -581,7 +581,7 @@ private:
     }
 
     /// The end of a frame whose pairs were all tested: the pairs found, if
-    /// any (with witnesses), else step 5.
+    /// any (with witnesses), else containment.
     frame_result finish(double n, double frame_margin) {
         frame_result r;
         if constexpr (with_witness) {
@@ -597,7 +597,7 @@ private:
         return r;
     }
 
-    /// Step 5, B's vertices posed in double: whether one region holds a ring
+    /// Containment, B's vertices posed in double: whether one region holds a ring
     /// of the other (B's rings only if `b_may_be_inside_a`). Each shortcut
     /// holds per ring, so that every part of a multipolygon is accounted for:
     ///   a ring of A can lie in B only if that ring's box lies in B's box (the
@@ -617,7 +617,7 @@ private:
                                [&](std::size_t j) { return b_.approximate(j); });
     }
 
-    /// Step 5 given B's box (a box that holds posed B, with its rounding;
+    /// Containment given B's box (a box that holds posed B, with its rounding;
     /// `finite` false when it cannot be trusted) and B's vertices posed in
     /// double by `approximate(j)`.
     template <class Approximate>

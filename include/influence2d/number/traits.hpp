@@ -45,9 +45,13 @@ struct dependent_false : std::false_type {};
 /// = true` and provide `static bool try_sign(const NT&, int&)` (the sign when
 /// certain) and `static bool exact(const NT&)` (whether the value is an input
 /// double): orientation() then settles an uncertain sign on three input
-/// points exactly instead of throwing. NT needs +, -, * and the comparisons;
-/// no division and no square root is ever asked of it. `Enable` serves
-/// partial specialisations through std::enable_if_t.
+/// points exactly instead of throwing. The detectors and the one-shot
+/// questions need +, -, * and the comparisons of NT only, never a division or
+/// a square root; the separation's closest points, the first contact's time
+/// and the exit distance also divide (a field NT: every type of the library
+/// but certified and interval, which reach them through the exact entry
+/// points of exact/). No square root is asked of NT anywhere. `Enable`
+/// serves partial specialisations through std::enable_if_t.
 template <class NT, class Enable = void>
 struct number_traits {
     static_assert(traits_detail::dependent_false<NT>::value,

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+// The text of the studies' reports: numbers in a fixed or a general format,
+// lists of names.
+
+#include <algorithm>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace influence2d::verification {
+
+/// x with `digits` digits after the point.
+inline std::string fixed(double x, int digits) {
+    std::ostringstream s;
+    s.setf(std::ios::fixed);
+    s.precision(digits);
+    s << x;
+    return s.str();
+}
+
+/// x with `digits` significant digits.
+inline std::string general(double x, int digits = 6) {
+    std::ostringstream s;
+    s.precision(digits);
+    s << x;
+    return s.str();
+}
+
+/// The names joined by commas.
+inline std::string joined(const std::vector<std::string>& names) {
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ",") + n;
+    return list;
+}
+
+/// Whether `name` is one of `names`.
+inline bool has_name(const std::vector<std::string>& names, const std::string& name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+}  // namespace influence2d::verification
