@@ -20,6 +20,8 @@
 #include "commands.hpp"
 #include "report.hpp"
 #include "verification/study.hpp"
+#include "verification/study_advice.hpp"
+#include "verification/study_totals.hpp"
 
 namespace influence2d::cli {
 
@@ -65,26 +67,6 @@ std::vector<std::string> query_kind_names() {
     return names;
 }
 
-std::string percent(double rate) {
-    if (rate == 0) return "0";
-    return general(100 * rate, 3) + "%";
-}
-
-
-/// Sums of the rows that pass `keep`, per number type.
-template <class Keep>
-std::map<std::string, decision_tally> totals(const study_result& r, Keep keep) {
-    std::map<std::string, decision_tally> t;
-    for (const study_row& row : r.rows) {
-        if (!keep(row)) continue;
-        decision_tally& s = t[row.number_type];
-        s.cases += row.tally.cases;
-        s.disagreements += row.tally.disagreements;
-        s.nanoseconds += row.tally.nanoseconds;
-    }
-    return t;
-}
-
 /// The query rows of each number type pooled over the families, for one query.
 std::map<std::string, query_tally> query_totals(const study_result& r, const std::string& query) {
     std::map<std::string, query_tally> t;
@@ -95,9 +77,6 @@ std::map<std::string, query_tally> query_totals(const study_result& r, const std
 
 /// An error as text: "-" when none was measured.
 std::string error_text(const std::optional<double>& e) { return e ? general(*e, 3) : "-"; }
-
-bool is_collides(const study_row& row) { return row.decision == "collides"; }
-bool is_predicate(const study_row& row) { return row.decision != "collides" && row.decision != "collides_brute_force"; }
 
 std::string study_csv(const study_result& r) {
     std::string s = "number_type,family,decision,cases,disagreements,rate,ns_per_query\n";
@@ -128,64 +107,6 @@ std::string stability_csv(const study_result& r) {
         s += row.number_type + "," + row.sweep + "," + general(row.magnitude) + "," + std::to_string(row.tally.cases) +
              "," + std::to_string(row.tally.disagreements) + "," + general(row.tally.rate()) + "\n";
     return s;
-}
-
-/// The paragraph on choosing a number type, from the totals of the run.
-std::string advice(const study_result& r) {
-    const auto collides = totals(r, is_collides);
-    const auto predicates = totals(r, is_predicate);
-    const auto all = totals(r, [](const study_row&) { return true; });
-    const auto ns = [&](const std::string& t) { return collides.at(t).ns_per_query(); };
-    std::vector<const type_summary*> asked;
-    for (const type_summary& t : r.summaries)
-        if (collides.count(t.number_type) && collides.at(t.number_type).cases > 0) asked.push_back(&t);
-    if (asked.empty()) return "No collision question was asked in this run.\n";
-    const type_summary* fastest = *std::min_element(asked.begin(), asked.end(), [&](auto* x, auto* y) {
-        return ns(x->number_type) < ns(y->number_type);
-    });
-    const auto times = [&](const std::string& t) {
-        return general(ns(t) / std::max(ns(fastest->number_type), 1e-9), 3) + " times " + fastest->number_type;
-    };
-    const decision_tally& f = collides.at(fastest->number_type);
-    std::string s = "For the final answer (collides) the fastest type was " + fastest->number_type + ", at " +
-                    fixed(f.ns_per_query(), 0) + " ns per frame; it answered " + std::to_string(f.disagreements) +
-                    " of " + std::to_string(f.cases) + " frames wrongly (" + percent(f.rate()) + ").";
-    std::string sound_floats;
-    for (const type_summary* t : asked) {
-        if (t == fastest || t->claims_exact) continue;
-        const decision_tally& c = collides.at(t->number_type);
-        s += " " + t->number_type + ": " + percent(c.rate()) + " wrong at " + fixed(c.ns_per_query(), 0) + " ns (" +
-             times(t->number_type) + ").";
-        if (c.disagreements == 0)
-            sound_floats += (sound_floats.empty() ? "" : ", ") + t->number_type + " (" +
-                            percent(predicates.at(t->number_type).rate()) + ")";
-    }
-    if (!sound_floats.empty())
-        s += " The floating types with no wrong final answer in this run are still not exact: their predicates "
-             "disagreed with the reference on a share of the questions: " + sound_floats +
-             "; more precision moves the cliff closer to contact, it does not remove it.";
-    const type_summary* fastest_exact = nullptr;
-    for (const type_summary* t : asked) {
-        if (!t->claims_exact) continue;
-        const decision_tally& a = all.at(t->number_type);
-        s += " " + t->number_type + " (claims exactness): " + fixed(ns(t->number_type), 0) + " ns per frame (" +
-             times(t->number_type) + ")";
-        if (t->fallbacks > 0)
-            s += ", " + percent(static_cast<double>(t->fallbacks) / static_cast<double>(t->questions)) +
-                 " of its questions answered in its exact fallback";
-        s += a.disagreements == 0 ? ", no disagreement."
-                                  : ", " + std::to_string(a.disagreements) +
-                                        " disagreements: library bugs, kept as reproducible cases (below).";
-        if (a.disagreements == 0 && (!fastest_exact || ns(t->number_type) < ns(fastest_exact->number_type)))
-            fastest_exact = t;
-    }
-    if (fastest_exact)
-        s += " The fastest type with no disagreement on any decision was " + fastest_exact->number_type + ".";
-    s += " The inputs are aimed at the precision cliff (contacts within ulps, points on cone boundaries, extreme "
-         "offsets and scales), so the rates are those of near-degenerate work, far above those of typical frames; "
-         "a filtered type's cost grows with the share of such inputs. Choose a floating type where a wrong answer "
-         "within rounding of contact is acceptable, and the fastest type without disagreement where it is not.";
-    return s + "\n";
 }
 
 /// What a query's error is, for the text.
@@ -287,7 +208,7 @@ std::string study_md(const study_result& r, const study_cli_options& o) {
          " per family or sweep magnitude, " +
          std::to_string(o.frames) + " questions each), seed " + std::to_string(o.seed) + ", " +
          fixed(r.seconds, 1) + " s.\n\n";
-    s += "## What this means when choosing a number type\n\n" + advice(r) + "\n";
+    s += "## What this means when choosing a number type\n\n" + number_type_advice(r) + "\n";
 
     for (decision_kind k : all_decision_kinds) {
         const std::string name = decision_name(k);
@@ -298,7 +219,7 @@ std::string study_md(const study_result& r, const study_cli_options& o) {
         s += " questions | disagreements | rate | ns per question |\n|---|";
         for (std::size_t i = 0; i < r.families.size() + 4; ++i) s += "---:|";
         s += "\n";
-        const auto sum = totals(r, [&](const study_row& row) { return row.decision == name; });
+        const auto sum = totals_by_type(r, [&](const study_row& row) { return row.decision == name; });
         for (const std::string& t : r.types) {
             s += "| " + t + " |";
             for (const std::string& f : r.families) {
@@ -380,7 +301,7 @@ std::string plot_script(const study_result& r, const fs::path& dir) {
                     "set label 1 'no disagreement (drawn at 10^{-7})' at graph 0.02, first " +
                     general(rate_floor * 1.6) + "\n";
     std::vector<std::string> collides, predicates;
-    const auto c = totals(r, is_collides), p = totals(r, is_predicate);
+    const auto c = totals_by_type(r, asks_collides), p = totals_by_type(r, asks_predicate);
     const auto entry = [](const std::string& t, const decision_tally& x) {
         return "\"" + t + "\" " + general(x.ns_per_query()) + " " + shown_rate(x.rate());
     };
@@ -515,7 +436,7 @@ void run_study_command(study_cli_options o, bool cases_given, bool frames_given)
     write_atomically(dir / "study.md", study_md(r, o));
     write_plots(r, dir);
 
-    const auto collides = totals(r, is_collides);
+    const auto collides = totals_by_type(r, asks_collides);
     std::cout << "study: " << r.cases << " scenes in " << fixed(r.seconds, 1) << " s; collides per number type:\n";
     for (const std::string& t : r.types)
         if (collides.count(t))

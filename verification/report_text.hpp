@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // The text of the studies' reports: numbers in a fixed or a general format,
-// lists of names.
+// rates as percentages, lists of names.
 
 #include <algorithm>
 #include <sstream>
@@ -25,6 +25,12 @@ inline std::string general(double x, int digits = 6) {
     s.precision(digits);
     s << x;
     return s.str();
+}
+
+/// A rate as a percentage with 3 significant digits ("0" for none).
+inline std::string percent(double rate) {
+    if (rate == 0) return "0";
+    return general(100 * rate, 3) + "%";
 }
 
 /// The names joined by commas.
