@@ -22,10 +22,13 @@
 #include "influence2d/covering/covering.hpp"
 #include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
+#include "influence2d/scene/posed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
 #include "influence2d/motion/trajectory.hpp"
 #include "influence2d/influence/bounds.hpp"
-#include "influence2d/influence/extended_area.hpp"
+#include "influence2d/influence/candidate_edges.hpp"
+#include "influence2d/influence/extended_area_outline.hpp"
+#include "influence2d/predicates/extended_area.hpp"
 #include "influence2d/io/csv.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"
@@ -127,9 +130,8 @@ std::vector<shown_frame> evaluate(const scene_input& in, const std::vector<std::
         s.result = det.collide(q);
         for (const auto& v : in.b.vertices()) s.b.push_back(t.apply<double>(v));
         s.p = t.apply<double>(in.b.centroid());
-        const point<exact_rational> p = t.apply<exact_rational>(in.b.centroid());
-        for (std::size_t i = 0; i < cov.size(); ++i)
-            if (in_extended_area(options.shape, p, cov.start(i), cov.end(i), reach)) s.candidates.push_back(i);
+        s.candidates =
+            edges_whose_extended_area_holds(options.shape, t.apply<exact_rational>(in.b.centroid()), cov, reach);
         shown.push_back(std::move(s));
     }
     return shown;
@@ -141,45 +143,6 @@ std::vector<std::size_t> stored_edges(const polygon& shape) {
     std::vector<std::size_t> stored(shape.size());
     for (std::size_t i = 0; i < shape.size(); ++i) stored[shape.source_edge(i)] = i;
     return stored;
-}
-
-/// The outline of an extended area of length n of the edge [a, b], as a closed
-/// polygon (the capsule's round ends are arcs, drawn separately). Returns the
-/// corners of the band, or of the capsule's straight part.
-struct area_outline {
-    bool circle = false;     ///< a zero-length edge's capsule: the disc about a
-    bool unbounded = false;  ///< a zero-length edge's band: a slab of width 2n
-    std::vector<point<double>> corners;
-};
-
-area_outline outline_of(extended_area shape, const point<double>& a, const point<double>& b, double n) {
-    area_outline out;
-    const double dx = b.x - a.x, dy = b.y - a.y;
-    if (dx == 0 && dy == 0) {
-        out.circle = shape == extended_area::capsule;
-        out.unbounded = !out.circle;
-        return out;
-    }
-    const double len = std::hypot(dx, dy);
-    if (shape == extended_area::capsule) {
-        const double nx = -dy / len * n, ny = dx / len * n;  // the left normal, of length n
-        out.corners = {{a.x + nx, a.y + ny}, {b.x + nx, b.y + ny}, {b.x - nx, b.y - ny}, {a.x - nx, a.y - ny}};
-        return out;
-    }
-    // The band: with vertical caps (|slope| <= 1) u is x and v is y, else the
-    // reverse; the parallels are v = v(u) +- h, the caps u = lo - n and hi + n.
-    const bool vertical = !(dy * dy > dx * dx);
-    const double au = vertical ? a.x : a.y, av = vertical ? a.y : a.x;
-    const double bu = vertical ? b.x : b.y;
-    const double du = vertical ? dx : dy, dv = vertical ? dy : dx;
-    const double h = n * len / std::fabs(du);
-    const double lo = std::min(au, bu) - n, hi = std::max(au, bu) + n;
-    const auto corner = [&](double u, double side) {
-        const double v = av + dv / du * (u - au) + side * h;
-        return vertical ? point<double>{u, v} : point<double>{v, u};
-    };
-    out.corners = {corner(lo, -1), corner(hi, -1), corner(hi, 1), corner(lo, 1)};
-    return out;
 }
 
 /// The mapping from scene coordinates to the SVG: the scene's box (padded,
@@ -348,8 +311,8 @@ private:
             if (o_.no_extended) continue;
             for (std::size_t i : f.candidates) {
                 const point<double>&u = in_.a.vertex(i), &v = in_.a.vertex(in_.a.next(i));
-                const area_outline area = outline_of(shape_, u, v, n_);
-                if (area.circle || area.unbounded || shape_ == extended_area::capsule) {
+                const extended_area_outline area = outline_of_extended_area(shape_, u, v, n_);
+                if (area.disc || area.strip || shape_ == extended_area::capsule) {
                     b.add({std::min(u.x, v.x) - n_, std::min(u.y, v.y) - n_});
                     b.add({std::max(u.x, v.x) + n_, std::max(u.y, v.y) + n_});
                 }
@@ -461,14 +424,14 @@ private:
 
     std::string extended(const shown_frame& f, std::size_t i) const {
         const point<double>&u = in_.a.vertex(i), &v = in_.a.vertex(in_.a.next(i));
-        const area_outline area = outline_of(shape_, u, v, n_);
+        const extended_area_outline area = outline_of_extended_area(shape_, u, v, n_);
         svg::path_data d;
-        if (area.circle) {
+        if (area.disc) {
             // Two half-circles about u.
             d.move(view_.x(u.x + n_), view_.y(u.y));
             d.arc(view_.length(n_), true, view_.x(u.x - n_), view_.y(u.y));
             d.arc(view_.length(n_), true, view_.x(u.x + n_), view_.y(u.y)).close();
-        } else if (area.unbounded) {
+        } else if (area.strip) {
             const double reach = 2 * view_.diagonal();
             d = polygon_path({{u.x - n_, u.y - reach}, {u.x + n_, u.y - reach}, {u.x + n_, u.y + reach}, {u.x - n_, u.y + reach}});
         } else if (shape_ == extended_area::band) {
