@@ -84,15 +84,15 @@ void write_frames(const std::string& out, const std::vector<frame_result>& frame
     write_output(out, text.str());
 }
 
-
-void run_collide(collide_options o) {
+/// Checks the options against each other and the number type (before any
+/// input is read); turns the old --frames into --trajectory-frames.
+void check_options(collide_options& o, const number_type& type) {
     if (o.deprecated_frames != 0) {
         if (o.scene.frames != 0)
             throw std::invalid_argument("--frames is the old name of --trajectory-frames: give only one of them");
         std::cerr << "influence2d: warning: --frames is the old name of --trajectory-frames; use that\n";
         o.scene.frames = o.deprecated_frames;
     }
-    const number_type& type = *find_number_type(o.number_type);  // the option's check has run
     if (o.algorithm == "paper" && type.exact_fallback)
         throw std::invalid_argument("--number-type " + o.number_type +
                                     " cannot run --algorithm paper: the paper's detector keeps "
@@ -105,18 +105,30 @@ void run_collide(collide_options o) {
     if ((o.continuous || o.separation) && o.algorithm == "paper")
         throw std::invalid_argument(std::string(o.continuous ? "--continuous" : "--separation") +
                                     " is answered by the sound queries only, not --algorithm paper");
-    // Read every input and check the output path first; report all problems at once.
+}
+
+/// What collide reads: the scene, and the static polygon's poses when given
+/// (empty otherwise).
+struct collide_inputs {
+    scene_input scene;
+    std::vector<pose> static_poses;
+};
+
+/// Reads every input and checks the output path first, reporting all their
+/// problems at once; then the static poses, one per frame, and the options
+/// they allow in `type`. A rounded type's poses of B become its poses
+/// relative to A, composed in double.
+collide_inputs read_inputs(const collide_options& o, const number_type& type) {
     check_one_standard_input({{"--static", o.scene.static_path},
                               {"--moving", o.scene.moving_path},
                               {"--poses", o.scene.poses_path},
                               {"--static-poses", o.static_poses}});
-    scene_input in = read_scene(o.scene, o.out);
-    std::vector<pose> static_poses;
+    collide_inputs in{read_scene(o.scene, o.out), {}};
     if (!o.static_poses.empty()) {
-        static_poses = read_poses_input(o.static_poses);
-        if (static_poses.size() != in.poses.size())
-            throw invalid_input(shown_name(o.static_poses) + ": " + std::to_string(static_poses.size()) +
-                                " poses of the static polygon for " + std::to_string(in.poses.size()) +
+        in.static_poses = read_poses_input(o.static_poses);
+        if (in.static_poses.size() != in.scene.poses.size())
+            throw invalid_input(shown_name(o.static_poses) + ": " + std::to_string(in.static_poses.size()) +
+                                " poses of the static polygon for " + std::to_string(in.scene.poses.size()) +
                                 " of the moving one: give one per frame");
         if (type.meets_both && (o.witness || o.distance != 0 || o.separation || o.continuous || o.algorithm != "sound"))
             throw std::invalid_argument("--static-poses in --number-type " + o.number_type +
@@ -124,17 +136,39 @@ void run_collide(collide_options o) {
                                         "--witness, --distance, --separation, --continuous and --algorithm");
         // A rounded type runs its detector on B's pose relative to A, composed in double.
         if (!type.meets_both)
-            for (std::size_t k = 0; k < in.poses.size(); ++k) in.poses[k] = relative_pose(static_poses[k], in.poses[k]);
+            for (std::size_t k = 0; k < in.scene.poses.size(); ++k)
+                in.scene.poses[k] = relative_pose(in.static_poses[k], in.scene.poses[k]);
     }
+    return in;
+}
+
+/// What a run of collide found: the frames, the motions between them
+/// (--continuous), the separations (--separation), and their times.
+struct collide_run {
+    frames_run frames;
+    unsigned threads = 1;
+    std::vector<contact_row> contacts;
+    std::size_t between = 0;  ///< frames that collide only between the poses
+    double contact_seconds = 0;
+    std::vector<separation_row> separations;
+    double separation_seconds = 0;
+};
+
+/// Runs the detector over the frames, then the motions between them and the
+/// separations when asked.
+collide_run run_queries(const collide_options& o, const number_type& type, const collide_inputs& inputs) {
+    const scene_input& in = inputs.scene;
+    const std::vector<pose>& static_poses = inputs.static_poses;
     detector_options options;
     options.distance = o.distance;
     options.witness = o.witness;
     options.shape = o.shape == "band" ? extended_area::band : extended_area::capsule;
 
+    collide_run out;
     // The paper's detector carries its influence mask from frame to frame:
     // its answers depend on the frames before, so it runs on one thread.
-    const unsigned threads = o.algorithm == "paper" ? 1 : batch_threads(o.threads);
-    frames_run r;
+    out.threads = o.algorithm == "paper" ? 1 : batch_threads(o.threads);
+    frames_run& r = out.frames;
     if (!static_poses.empty() && type.meets_both) {
         // Both posed exactly, frame by frame.
         r.frames.resize(in.poses.size());
@@ -143,27 +177,29 @@ void run_collide(collide_options o) {
                 r.frames[k].collides = type.meets_both(in.a, static_poses[k], in.b, in.poses[k]);
         });
     } else {
-        r = type.run({in.a, in.b, in.poses, options, o.algorithm, threads});
+        r = type.run({in.a, in.b, in.poses, options, o.algorithm, out.threads});
     }
 
     // Continuous: frame k > 0 also collides when the motion from pose k - 1
     // meets A at some time between the poses.
-    std::vector<contact_row> contacts;
-    std::size_t between = 0;
-    double contact_seconds = 0, separation_seconds = 0;
     if (o.continuous) {
-        contact_seconds = seconds_taken([&] { contacts = type.contacts(in.a, in.b, in.poses); });
-        for (std::size_t k = 0; k < contacts.size(); ++k)
-            if (contacts[k].contact && !r.frames[k + 1].collides) {
+        out.contact_seconds = seconds_taken([&] { out.contacts = type.contacts(in.a, in.b, in.poses); });
+        for (std::size_t k = 0; k < out.contacts.size(); ++k)
+            if (out.contacts[k].contact && !r.frames[k + 1].collides) {
                 r.frames[k + 1].collides = true;
-                ++between;
+                ++out.between;
             }
     }
-    std::vector<separation_row> separations;
     if (o.separation) {
-        separation_seconds = seconds_taken([&] { separations = type.separations(in.a, in.b, in.poses); });
+        out.separation_seconds = seconds_taken([&] { out.separations = type.separations(in.a, in.b, in.poses); });
     }
+    return out;
+}
 
+/// Writes the frames (--out) and the summary: to standard output, or to
+/// standard error when the frames go to standard output.
+void report_results(const collide_options& o, const collide_run& result) {
+    const frames_run& r = result.frames;
     std::size_t collisions = 0, first = 0;
     bool any = false;
     for (std::size_t i = 0; i < r.frames.size(); ++i) {
@@ -175,7 +211,7 @@ void run_collide(collide_options o) {
 
     if (!o.out.empty())
         write_frames(o.out, r.frames, o.witness,
-                     {o.continuous ? &contacts : nullptr, o.separation ? &separations : nullptr, o.witness});
+                     {o.continuous ? &result.contacts : nullptr, o.separation ? &result.separations : nullptr, o.witness});
 
     // With the frames on standard output, the summary goes to standard error.
     std::ostream& summary = is_standard_stream(o.out) ? std::cerr : std::cout;
@@ -185,7 +221,7 @@ void run_collide(collide_options o) {
             << "first collision: " << (any ? "frame " + std::to_string(first) : "none") << "\n"
             << "number type:     " << o.number_type << "\n"
             << "algorithm:       " << o.algorithm << "\n"
-            << "threads:         " << threads << "\n"
+            << "threads:         " << result.threads << "\n"
             << "time per frame:  "
             << (r.frames.empty()
                     ? std::string("n/a")
@@ -193,12 +229,14 @@ void run_collide(collide_options o) {
                           " us")
             << "   (total " << fixed(total_ms, total_ms >= 1 ? 1 : 3) << " ms)\n";
     if (o.continuous)
-        summary << "between poses:   " << between
+        summary << "between poses:   " << result.between
                 << " frames whose motion meets the static polygon only between the poses\n"
                 << "time per motion: "
-                << (contacts.empty() ? std::string("n/a")
-                                     : fixed(contact_seconds * 1e6 / static_cast<double>(contacts.size()), 3) + " us")
+                << (result.contacts.empty()
+                        ? std::string("n/a")
+                        : fixed(result.contact_seconds * 1e6 / static_cast<double>(result.contacts.size()), 3) + " us")
                 << "\n";
+    const std::vector<separation_row>& separations = result.separations;
     if (o.separation && !separations.empty()) {
         std::size_t nearest = 0;
         for (std::size_t k = 1; k < separations.size(); ++k)
@@ -206,10 +244,18 @@ void run_collide(collide_options o) {
         summary << "least separation: " << general(separations[nearest].distance, 17) << " (frame " << nearest
                 << ")\n"
                 << "time per separation: "
-                << fixed(separation_seconds * 1e6 / static_cast<double>(separations.size()), 3) << " us\n";
+                << fixed(result.separation_seconds * 1e6 / static_cast<double>(separations.size()), 3) << " us\n";
     }
     if (r.exact_frames) summary << "exact fallbacks: " << *r.exact_frames << " frames\n";
     if (!o.out.empty()) summary << "frames written:  " << shown_name(o.out, true) << "\n";
+}
+
+/// `influence2d collide`: check the options, read the inputs, run, report.
+void run_collide(collide_options o) {
+    const number_type& type = *find_number_type(o.number_type);  // the option's check has run
+    check_options(o, type);
+    const collide_inputs inputs = read_inputs(o, type);
+    report_results(o, run_queries(o, type, inputs));
 }
 
 }  // namespace
