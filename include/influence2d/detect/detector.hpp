@@ -168,8 +168,7 @@ public:
             throw std::invalid_argument("detector: built without features::distance, options.distance must be 0");
         reach_ = moving_reach(b_.radius(), distance());
         if constexpr (with_coherence) coherence_state::value.skin = options_.temporal_coherence ? 0.25 * reach_ : 0.0;
-        margin_ = tr::filter_slack * 4 * (a_->scale + a_->radius + reach_ + skin() + b_.scene().scale) +
-                  std::numeric_limits<double>::min();
+        margin_ = posing_margin<NT>(a_->scale + a_->radius + reach_ + skin() + b_.scene().scale);
         const polygon& as = a_->shape;
         a_ring_boxes_.resize(with_holes ? as.ring_count() : 1);
         for (std::size_t r = 0; r < a_ring_boxes_.size(); ++r)

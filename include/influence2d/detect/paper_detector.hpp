@@ -44,10 +44,9 @@ public:
     /// are ignored (always the band; the mask is the paper's coherence).
     paper_detector(const polygon& static_polygon, const polygon& moving_polygon, detector_options options = {})
         : a_(std::make_shared<const static_scene<NT>>(static_polygon)), b_(moving_polygon), options_(options) {
-        using tr = number_traits<NT>;
         reach_ = moving_reach(b_.radius(), options_.distance);
         // The band reaches up to (1 + sqrt 2 + 1) n from its edge at the caps' corners.
-        grid_ = edge_grid(a_->shape, 3 * reach_, tr::filter_slack * 4 * (a_->scale + a_->radius + 3 * reach_));
+        grid_ = edge_grid(a_->shape, 3 * reach_, posing_margin<NT>(a_->scale + a_->radius + 3 * reach_));
         previous_ = influence_mask(a_->shape.size());
         current_ = influence_mask(a_->shape.size());
     }

@@ -568,15 +568,15 @@ inline constexpr double distance_shrinking = 0x1p-50;
 /// distance at the same pose, given the scene's size `scale` (the largest
 /// coordinates of A and of B plus the translations): 0 for an exact NT (its
 /// distance is exact before distance_of rounds it); for double the bound
-/// distance/separation.hpp states, 2^-40 scale; for another floating NT its filters'
-/// slack, four times filter_slack times scale (1e-9 for long double and
-/// quad, far above their rounding; 1e-4 for float).
+/// distance/separation.hpp states, 2^-40 scale; for another floating NT its
+/// filters' margin, posing_margin (four times filter_slack times scale: 1e-9
+/// for long double and quad, far above their rounding; 1e-4 for float).
 template <class NT>
 double separation_error(double scale) {
     using tr = number_traits<NT>;
     if constexpr (tr::category != number_category::floating) return 0;
     if constexpr (std::is_same_v<NT, double>) return 0x1p-40 * scale;
-    return tr::filter_slack * 4 * scale;
+    return posing_margin<NT>(scale);
 }
 
 /// The distance at one time of a turning motion, with the features that

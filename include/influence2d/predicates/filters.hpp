@@ -7,7 +7,7 @@
 /// whenever the exact answer could be true (also when its own arithmetic
 /// cannot be trusted: overflow, underflow, NaN); `certain_side` answers a
 /// side only when its rounding bound proves it. Decisions (exact signs) are
-/// in orientation.hpp and segments.hpp.
+/// in the other headers of predicates/.
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +15,7 @@
 
 #include "influence2d/core/box.hpp"
 #include "influence2d/core/point.hpp"
+#include "influence2d/number/traits.hpp"
 
 namespace influence2d {
 
@@ -157,6 +158,22 @@ inline bool box_may_be_near_line(const box& b, const point<double>& u, const poi
             side = s;
         }
     return false;
+}
+
+/// The margin between points posed in double and the same points posed in
+/// NT, for coordinates whose terms (the polygons' coordinates and the
+/// translations) sum to at most `scale` in magnitude: each coordinate
+/// c x - s y + t is a few rounded operations on such terms, in double and in
+/// NT, so the two differ by less than filter_slack times the scale
+/// (filter_slack >= 1e-9 is far above double's few ulps; float's 1e-4 above
+/// its own); four times that, plus the least normal double for coordinates
+/// that underflow. The filters of the detectors, of the one-shot questions and
+/// of the sweep widen by it, which also covers their own few roundings. The
+/// separation's bounds count each rounding in double separately and take the
+/// tighter posing_error (predicates/distance.hpp) for the same posing.
+template <class NT>
+double posing_margin(double scale) {
+    return number_traits<NT>::filter_slack * 4 * scale + std::numeric_limits<double>::min();
 }
 
 }  // namespace influence2d

@@ -2,8 +2,8 @@
 #pragma once
 /// \file
 /// A polygon placed in a query's frame for a one-shot question: its vertices
-/// in double for the filters, in NT for the decisions, and the margin
-/// between the two.
+/// in double for the filters, in NT for the decisions (posing_margin in
+/// predicates/filters.hpp bounds the distance between the two).
 
 #include <cmath>
 #include <cstdint>
@@ -151,15 +151,5 @@ private:
     std::vector<std::optional<point<NT>>> made_;  // the vertices made so far, until all()
     std::vector<point<NT>> all_;                  // every vertex, once all() asked
 };
-
-/// The margin of the filters of two polygons posed in double: each
-/// coordinate c x - s y + t is a few rounded operations on terms bounded by
-/// the polygon's scale and |t|, so its error is below filter_slack times
-/// their sum (filter_slack >= 1e-9, far above double's few ulps); `scale`
-/// is that sum for both polygons.
-template <class NT>
-double posing_margin(double scale) {
-    return number_traits<NT>::filter_slack * 4 * scale + std::numeric_limits<double>::min();
-}
 
 }  // namespace influence2d
