@@ -201,21 +201,73 @@ TEST_CASE("study: a reproducible case reads back and is answered again", "[verif
     CHECK_THROWS_WITH(parse_regression("{\"decision\": \"pairs\"}", "case.json"), Catch::Contains("case.json"));
 }
 
+namespace {
+
+/// float, pretending to claim the exact answer: the study keeps every
+/// disagreement of such a type as a reproducible case, so a run of it makes
+/// cases through the study's own path.
+struct float_claiming_exact : number_mode<float> {
+    static std::string name() { return "float-claiming-exact"; }
+    static constexpr bool claims_exact = true;
+};
+
+}  // namespace
+
 TEST_CASE("study: every reproducible case in data/regressions is answered exactly", "[verification][study]") {
-    const fs::path dir = fs::path(INFLUENCE2D_DATA_DIR) / "regressions";
-    REQUIRE(fs::is_directory(dir));
-    CHECK(fs::exists(dir / "README.md"));
-    std::size_t cases = 0;
+    // The committed cases (data/regressions: README.md and one JSON file per
+    // case; none is the normal state) are copied to a scratch folder, where
+    // a short study of a type that claims exactness but answers in float adds
+    // the cases it writes (float disagrees on the touching family). Every
+    // case there is then replayed: the count replayed must be the count of
+    // files present, and at least the study's.
+    const fs::path committed = fs::path(INFLUENCE2D_DATA_DIR) / "regressions";
+    REQUIRE(fs::is_directory(committed));
+    CHECK(fs::exists(committed / "README.md"));
+    const temp_dir scratch;
+    const fs::path dir = scratch / "regressions";
+    fs::create_directories(dir);
+    std::size_t committed_cases = 0;
+    for (const auto& entry : fs::directory_iterator(committed)) {
+        if (entry.path().filename() == "README.md") continue;
+        INFO(entry.path().string());
+        CHECK(entry.path().extension() == ".json");  // nothing else is kept there
+        fs::copy_file(entry.path(), dir / entry.path().filename());
+        ++committed_cases;
+    }
+
+    study_options o;
+    o.families = {"touching"};
+    o.cases = 1;
+    o.frames = 12;
+    o.query_frames = 12;
+    o.regressions_dir = dir.string();
+    const study_result run = run_study(o, mode_list<float_claiming_exact>{});
+    REQUIRE(!run.regressions.empty());
+    for (const std::string& written : run.regressions) CHECK(fs::path(written).parent_path() == dir);
+
+    std::size_t present = 0;
+    for (const auto& entry : fs::directory_iterator(dir)) present += entry.is_regular_file() ? 1 : 0;
+    CHECK(present == committed_cases + run.regressions.size());
+
+    std::size_t replayed = 0, reproduced = 0;
     for (const auto& entry : fs::directory_iterator(dir)) {
         if (entry.path().extension() != ".json") continue;
-        ++cases;
-        INFO(entry.path().string());
+        INFO(entry.path().filename().string());
         const regression_case r = parse_regression(slurp(entry.path()), entry.path().string());
-        const replay_outcome o = replay_regression(r);
-        CHECK(o.reference_agrees);
-        for (const std::string& t : o.disagreeing) FAIL_CHECK(t << " disagrees with the exact answer");
+        const replay_outcome o_exact = replay_regression(r);
+        CHECK(o_exact.reference_agrees);
+        for (const std::string& t : o_exact.disagreeing) FAIL_CHECK(t << " disagrees with the exact answer");
+        // The study's cases reproduce the disagreement of the type that wrote them.
+        if (r.number_type == float_claiming_exact::name()) {
+            const replay_outcome again = replay_regression(r, mode_list<float_claiming_exact>{});
+            CHECK(again.reference_agrees);
+            reproduced += again.disagreeing == std::vector<std::string>{float_claiming_exact::name()} ? 1 : 0;
+        }
+        ++replayed;
     }
-    SUCCEED(cases << " reproducible cases replayed");
+    CHECK(replayed == present);
+    CHECK(replayed >= run.regressions.size());
+    CHECK(reproduced > 0);
 }
 
 TEST_CASE("study: --decisions selects the kinds, and large keeps every pose only for per-frame decisions",
