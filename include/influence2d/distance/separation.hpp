@@ -27,6 +27,7 @@
 #include "influence2d/core/pose.hpp"
 #include "influence2d/covering/inclusion.hpp"
 #include "influence2d/core/feature.hpp"
+#include "influence2d/scene/posed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/influence/edge_tree.hpp"
@@ -75,59 +76,6 @@ inline bool evaluated_before(const candidate& l, const candidate& r) {
     if (l.static_edge != r.static_edge) return l.static_edge < r.static_edge;
     return l.moving_edge < r.moving_edge;
 }
-
-/// B's vertices posed in T (double for the filters, NT for the decisions),
-/// each on first use within a frame. In a T other than double a vertex is
-/// made only when asked (an exact number costs allocations), and the whole
-/// array only when all() asks for it.
-template <class T>
-class posed_vertices {
-public:
-    /// Nothing posed yet; place() starts a frame.
-    explicit posed_vertices(const polygon& shape) : shape_(&shape), at_(shape.size()), stamp_(shape.size(), 0) {}
-
-    /// A new frame posed by t: every earlier value is stale.
-    void place(const rotation_pose& t) {
-        pose_ = t;
-        ++frame_;
-    }
-    /// Vertex j posed.
-    const point<T>& operator[](std::size_t j) {
-        if (stamp_[j] != frame_) {
-            at_[j] = pose_.apply<T>(shape_->vertex(j));
-            stamp_[j] = frame_;
-        }
-        if constexpr (std::is_same_v<T, double>) {
-            return at_[j];
-        } else {
-            return *at_[j];
-        }
-    }
-    /// Every vertex posed.
-    const std::vector<point<T>>& all() {
-        if constexpr (std::is_same_v<T, double>) {
-            for (std::size_t j = 0; j < at_.size(); ++j) (*this)[j];
-            return at_;
-        } else {
-            if (all_frame_ != frame_) {
-                all_.clear();
-                all_.reserve(at_.size());
-                for (std::size_t j = 0; j < at_.size(); ++j) all_.push_back((*this)[j]);
-                all_frame_ = frame_;
-            }
-            return all_;
-        }
-    }
-
-private:
-    using slot = std::conditional_t<std::is_same_v<T, double>, point<T>, std::optional<point<T>>>;
-    const polygon* shape_;
-    rotation_pose pose_{::influence2d::pose{}};
-    std::uint64_t frame_ = 0, all_frame_ = 0;
-    std::vector<slot> at_;
-    std::vector<std::uint64_t> stamp_;
-    std::vector<point<T>> all_;
-};
 
 /// What phase 1 keeps between calls (its stack and candidates), so that a
 /// query object allocates once.
@@ -418,31 +366,43 @@ separation_result<NT> inside_result(const polygon& a, const polygon& b, const in
     return r;
 }
 
-/// What one query in NT keeps between frames: B posed in double and in NT,
-/// phase 1's space, the last frame's closest pair.
+/// B's vertices posed in double by a posed_polygon, as phase 1 and the
+/// windows read them (approx[j], all()).
+template <class NT>
+class posed_doubles {
+public:
+    explicit posed_doubles(posed_polygon<NT>& b) : b_(&b) {}
+    /// Vertex j posed in double.
+    const point<double>& operator[](std::size_t j) { return b_->approximate_now(j); }
+    /// Every vertex posed in double.
+    const std::vector<point<double>>& all() { return b_->approximate_all(); }
+
+private:
+    posed_polygon<NT>* b_;
+};
+
+/// What one query in NT keeps between frames: B posed (in double and in NT,
+/// each vertex on first use), phase 1's space, the last frame's closest pair.
 template <class NT>
 struct workspace {
-    explicit workspace(const polygon& b) : approx(b), exact(b) {}
-    posed_vertices<double> approx;
-    posed_vertices<NT> exact;  ///< (unused when NT is double: approx serves)
+    explicit workspace(std::shared_ptr<const moving_scene<NT>> b) : b_posed(std::move(b)), approx(b_posed) {}
+    workspace(const workspace&) = delete;
+    workspace& operator=(const workspace&) = delete;
+
+    posed_polygon<NT> b_posed;
+    posed_doubles<NT> approx;  ///< b_posed's vertices in double
     search_space space;
     std::optional<std::pair<std::uint32_t, std::uint32_t>> last;  ///< the last frame's chosen pair
     std::size_t evaluated = 0;  ///< pairs evaluated in NT by the last query
 
-    /// B's vertex j posed in NT (in double: approx's).
+    /// A new frame posed by t.
+    void place(const rotation_pose& t) { b_posed.place(t); }
+    /// B's vertex j posed in NT (in double: the filters' value, the same).
     const point<NT>& posed(std::size_t j) {
         if constexpr (std::is_same_v<NT, double>) {
-            return approx[j];
+            return b_posed.approximate_now(j);
         } else {
-            return exact[j];
-        }
-    }
-    /// Every vertex of B posed in NT.
-    const std::vector<point<NT>>& all_posed() {
-        if constexpr (std::is_same_v<NT, double>) {
-            return approx.all();
-        } else {
-            return exact.all();
+            return b_posed.vertex(j);
         }
     }
 };
@@ -485,16 +445,29 @@ private:
 };
 
 /// Phase 3 in NT: a ring's vertex inside the other region (ring_vertex_inside),
-/// B's vertices posed in NT by `w`, A's given by `side`.
-template <class NT>
-std::optional<inside_vertex> inside_in(static_side<NT>& side, const search_input& in, workspace<NT>& w) {
+/// B's vertices given in double by `approx` and in NT by the posed polygon
+/// `b` (the query's own, or one in another NT), A's by `side`.
+template <class NT, class Approx>
+std::optional<inside_vertex> inside_in(static_side<NT>& side, const search_input& in, Approx& approx,
+                                       posed_polygon<NT>& b) {
+    const auto b_vertex = [&](std::size_t j) -> const point<NT>& {
+        if constexpr (std::is_same_v<NT, double>) {
+            return b.approximate_now(j);
+        } else {
+            return b.vertex(j);
+        }
+    };
     std::optional<point<NT>> b_origin;
     return ring_vertex_inside(
-        in.a, in.b, static_window(in), posed_window(in), w.approx,
-        [&](std::size_t j) { return side.locate_point(w.posed(j)); },
+        in.a, in.b, static_window(in), posed_window(in), approx,
+        [&](std::size_t j) { return side.locate_point(b_vertex(j)); },
         [&](std::size_t i) {
             if (!b_origin) b_origin = in.t.apply<NT>(in.b.centroid());
-            return locate(in.b, w.all_posed(), *b_origin, side.vertex(i));
+            if constexpr (std::is_same_v<NT, double>) {
+                return locate(in.b, b.approximate_all(), *b_origin, side.vertex(i));
+            } else {
+                return locate(in.b, b.vertices(), *b_origin, side.vertex(i));
+            }
         });
 }
 
@@ -508,15 +481,14 @@ std::optional<inside_vertex> phase_3(static_side<NT>& side, const search_input& 
         if (!side.prepared()) {
             const auto in_certified = [&] {
                 static_side<certified> a(in.a);
-                workspace<certified> posed(in.b);
-                posed.approx.place(in.t);
-                posed.exact.place(in.t);
-                return inside_in(a, in, posed);
+                posed_polygon<certified> b(prepare_moving<certified>(in.b));
+                b.place(in.t);
+                return inside_in(a, in, w.approx, b);
             };
-            return fallback<>::run(in_certified, [&] { return inside_in(side, in, w); });
+            return fallback<>::run(in_certified, [&] { return inside_in(side, in, w.approx, w.b_posed); });
         }
     }
-    return inside_in(side, in, w);
+    return inside_in(side, in, w.approx, w.b_posed);
 }
 
 /// The query in NT on A (its side and tree) and B (its tree, scale), for
@@ -530,8 +502,7 @@ std::optional<inside_vertex> phase_3(static_side<NT>& side, const search_input& 
 ///   else: the distance is the pair's
 template <class NT>
 separation_result<NT> separate(static_side<NT>& side, const search_input& in, workspace<NT>& w) {
-    w.approx.place(in.t);
-    if constexpr (!std::is_same_v<NT, double>) w.exact.place(in.t);
+    w.place(in.t);
     const auto b_vertex = [&](std::size_t j) -> const point<NT>& { return w.posed(j); };
     const auto a_vertex = [&](std::size_t i) { return side.vertex(i); };
     search_pairs(in, w.approx, pair_upper(in, w.approx, w.last), w.space);
@@ -590,7 +561,8 @@ separation_result<NT> separate(static_side<NT>& side, const search_input& in, wo
 template <class NT>
 separation_result<NT> separation(const static_scene<NT>& a, const moving_scene<NT>& b, const pose& q) {
     const rotation_pose t(q);
-    separation_detail::workspace<NT> w(b.shape);
+    // (b outlives the query: a pointer that does not own it.)
+    separation_detail::workspace<NT> w(std::shared_ptr<const moving_scene<NT>>(std::shared_ptr<void>(), &b));
     separation_detail::static_side<NT> side(a);
     const separation_detail::search_input in{a.shape, a.tree(), b.shape, b.tree(), t,
                                              posing_error(b.scale, q.tx, q.ty)};
@@ -609,9 +581,9 @@ separation_result<NT> separation(const polygon& a, const polygon& b, const pose&
     accepted_polygon<NT>(b, "moving");
     const rotation_pose t(q);
     const edge_tree ta(a), tb(b);
-    separation_detail::workspace<NT> w(b);
+    separation_detail::workspace<NT> w(prepare_moving<NT>(b));
     separation_detail::static_side<NT> side(a);
-    const double scale = coordinate_scale(b);
+    const double scale = w.b_posed.scene().scale;
     const separation_detail::search_input in{a, ta, b, tb, t, posing_error(scale, q.tx, q.ty)};
     return separation_detail::separate(side, in, w);
 }
@@ -635,7 +607,7 @@ public:
                      std::shared_ptr<const moving_scene<NT>> moving_polygon)
         : a_(checked(std::move(static_polygon), "static")),
           b_(checked(std::move(moving_polygon), "moving")),
-          w_(b_->shape),
+          w_(b_),
           side_(*a_) {}
 
     /// The separation at pose q (separation()). Throws invalid_input for a

@@ -8,21 +8,29 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/influence/bounds.hpp"
+#include "influence2d/number/traits.hpp"
 #include "influence2d/scene/prepared.hpp"
 
 namespace influence2d {
 
-/// The moving polygon B: given in its own frame, posed once per frame. A frame
-/// first poses the centroid in double; then, if a filter passes, every vertex
-/// in double. These rounded positions serve conservative filters only. The NT
-/// centroid and vertices are posed when a decision asks for them, so an exact
-/// type pays only for what the frame's decisions need.
+/// The moving polygon B: given in its own frame, posed once per frame, by the
+/// detectors and by the separation query. A frame first poses the centroid in
+/// double; then every vertex in double at once (place_approximate) or each
+/// when asked (approximate_now). These rounded positions serve conservative
+/// filters only (their error: posing_margin, or posing_error for the
+/// separation's bounds). The NT centroid and vertices are posed when a
+/// decision asks for them, so an exact type pays only for what the frame's
+/// decisions need: in an exact NT not even a default value of a vertex is
+/// made before it is asked (each costs allocations).
 template <class NT>
 class posed_polygon {
 public:
@@ -32,7 +40,7 @@ public:
     /// B prepared (shared with other detectors), not yet posed.
     explicit posed_polygon(std::shared_ptr<const moving_scene<NT>> b)
         : scene_(std::move(b)), shape_(scene_->shape), local_centroid_(scene_->centroid), radius_(scene_->radius) {
-        vertices_.resize(shape_.size());
+        slots_.resize(shape_.size());
         approximate_.resize(shape_.size());
         stamp_.assign(shape_.size(), 0);
         approximate_stamp_.assign(shape_.size(), 0);
@@ -43,7 +51,7 @@ public:
     /// B in its own frame.
     const polygon& shape() const { return shape_; }
     /// B's number of vertices (and edges).
-    std::size_t size() const { return vertices_.size(); }
+    std::size_t size() const { return slots_.size(); }
     /// Bounds the distance from the posed centroid to every posed vertex.
     double radius() const { return radius_; }
     /// The posed centroid in NT.
@@ -82,27 +90,59 @@ public:
         return approximate_[j];
     }
 
-    /// Vertex j posed in NT.
+    /// Every vertex posed in double for this frame (those not yet posed now).
+    const std::vector<point<double>>& approximate_all() {
+        for (std::size_t j = 0; j < approximate_.size(); ++j) approximate_now(j);
+        return approximate_;
+    }
+
+    /// Vertex j posed in NT. (In an exact NT the reference stays valid until
+    /// the frame's first call of vertices(), which gathers the vertices.)
     const point<NT>& vertex(std::size_t j) {
+        if constexpr (made_when_asked) {
+            if (all_frame_ == frame_) return all_[j];
+        }
         if (stamp_[j] != frame_) {
-            vertices_[j] = pose_.apply<NT>(shape_.vertex(j));
+            slots_[j] = pose_.apply<NT>(shape_.vertex(j));
             stamp_[j] = frame_;
         }
-        return vertices_[j];
+        if constexpr (made_when_asked) {
+            return *slots_[j];
+        } else {
+            return slots_[j];
+        }
     }
     /// The end vertex of edge j, posed in NT.
     const point<NT>& end(std::size_t j) { return vertex(shape_.next(j)); }
     /// Bytes of the heap blocks held for the frames (capacities of the
     /// per-vertex arrays; the prepared B is counted by its own heap_bytes).
     std::size_t heap_bytes() const {
-        return vertices_.capacity() * sizeof(point<NT>) +
+        return slots_.capacity() * sizeof(slot) + all_.capacity() * sizeof(point<NT>) +
                approximate_.capacity() * sizeof(point<double>) +
                (stamp_.capacity() + approximate_stamp_.capacity()) * sizeof(std::uint64_t);
     }
     /// Every vertex posed in NT.
     const std::vector<point<NT>>& vertices() {
-        for (std::size_t j = 0; j < vertices_.size(); ++j) vertex(j);
-        return vertices_;
+        if constexpr (made_when_asked) {
+            if (all_frame_ != frame_) {
+                // The vertices made so far are moved, the others made.
+                all_.clear();
+                all_.reserve(slots_.size());
+                for (std::size_t j = 0; j < slots_.size(); ++j) {
+                    if (stamp_[j] == frame_) {
+                        all_.push_back(std::move(*slots_[j]));
+                    } else {
+                        all_.push_back(pose_.apply<NT>(shape_.vertex(j)));
+                    }
+                    slots_[j].reset();
+                }
+                all_frame_ = frame_;
+            }
+            return all_;
+        } else {
+            for (std::size_t j = 0; j < slots_.size(); ++j) vertex(j);
+            return slots_;
+        }
     }
 
 private:
@@ -115,7 +155,12 @@ private:
     std::uint64_t centroid_stamp_ = 0;
     point<double> approximate_centroid_;
     point<NT> centroid_;
-    std::vector<point<NT>> vertices_;
+    /// In an exact NT a vertex is made on first use only (see the class).
+    static constexpr bool made_when_asked = number_traits<NT>::category == number_category::exact;
+    using slot = std::conditional_t<made_when_asked, std::optional<point<NT>>, point<NT>>;
+    std::vector<slot> slots_;
+    std::vector<point<NT>> all_;  ///< every vertex, gathered by vertices() (exact NT)
+    std::uint64_t all_frame_ = 0;
     std::vector<point<double>> approximate_;
     std::vector<std::uint64_t> stamp_;
     std::vector<std::uint64_t> approximate_stamp_;
