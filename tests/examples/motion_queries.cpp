@@ -12,6 +12,7 @@
 #include <influence2d/query/both_posed.hpp>
 #include <influence2d/distance/separation.hpp>
 #include <influence2d/motion/first_contact.hpp>
+#include <influence2d/motion/exit_distance.hpp>
 
 using namespace influence2d;
 

@@ -28,6 +28,7 @@
 #include "influence2d/exact/certified_first_contact.hpp"
 #include "influence2d/exact/certified_intersects.hpp"
 #include "influence2d/motion/first_contact.hpp"
+#include "influence2d/motion/exit_distance.hpp"
 #include "influence2d/motion/trajectory.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/predicates/contact_time.hpp"

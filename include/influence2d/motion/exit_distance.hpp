@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// The exit distance: how far B must translate along a direction to leave A
+/// (the directional penetration depth; docs/sweep.md, "Exit distance").
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "influence2d/core/invalid_input.hpp"
+#include "influence2d/core/point.hpp"
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/core/pose.hpp"
+#include "influence2d/number/certified.hpp"
+#include "influence2d/number/fallback.hpp"
+#include "influence2d/core/feature.hpp"
+#include "influence2d/query/intersects.hpp"
+#include "influence2d/query/placed_meet.hpp"
+#include "influence2d/scene/edge_boxes.hpp"
+#include "influence2d/scene/placed_polygon.hpp"
+#include "influence2d/scene/prepared.hpp"
+#include "influence2d/distance/separation.hpp"
+#include "influence2d/influence/bounds.hpp"
+#include "influence2d/predicates/contact_time.hpp"
+#include "influence2d/predicates/orientation.hpp"
+
+#include "influence2d/motion/translation_events.hpp"
+
+namespace influence2d {
+
+namespace exit_distance_detail {
+
+using namespace sweep;
+
+/// Throws invalid_input naming a component of the direction that is NaN or
+/// infinite, or a direction of length zero.
+inline void check_direction(double dx, double dy) {
+    for (const auto& [name, v] : {std::pair<const char*, double>{"dx", dx}, {"dy", dy}})
+        if (!std::isfinite(v))
+            throw invalid_input(std::string("direction: ") + name + " is " +
+                                (std::isnan(v) ? "NaN" : v > 0 ? "+infinity" : "-infinity") + ", not a finite number");
+    if (dx == 0 && dy == 0) throw invalid_input("direction: (0, 0) has no direction");
+}
+
+/// A double s_max such that B, its box `bb` (in double, within e of its
+/// place in NT) moved by s (dx, dy) for any s > s_max, lies beyond A's box
+/// `ab` on one axis: the least over the axes that move of the s at which
+/// B's box has crossed A's, with 4e of room and widened by 2^-40 relative
+/// (the few roundings of the quotient are below 2^-50 relative, and the
+/// difference of the box sides rounds by far less than e).
+inline double exit_reach(const box& ab, const box& bb, double dx, double dy, double e) {
+    double s = std::numeric_limits<double>::infinity();
+    if (dx > 0) s = std::min(s, (ab.max_x - bb.min_x + 4 * e) / dx);
+    if (dx < 0) s = std::min(s, (ab.min_x - bb.max_x - 4 * e) / dx);
+    if (dy > 0) s = std::min(s, (ab.max_y - bb.min_y + 4 * e) / dy);
+    if (dy < 0) s = std::min(s, (ab.min_y - bb.max_y - 4 * e) / dy);
+    return std::max(0.0, s) * (1 + 0x1p-40) + std::numeric_limits<double>::min();
+}
+
+/// Whether A and B translated by s = (s0 + s1) / 2 times d meet, in ring
+/// operations, with what showed it (placed_meet): both polygons scaled by
+/// D = 2 s0.den s1.den > 0 (which changes no answer), B's vertices
+/// D p + N d with N = s0.num s1.den + s1.num s0.den. `scale` bounds the
+/// magnitudes of the unscaled inputs (the polygons and B's translation),
+/// `reach` |dx| + |dy|.
+template <class NT>
+meeting meeting_between(translation_frame<NT>& f, const time_fraction<NT>& s0, const time_fraction<NT>& s1,
+                        double scale, double reach) {
+    using tr = number_traits<NT>;
+    const NT n = s0.num * s1.den + s1.num * s0.den, half = s0.den * s1.den, d = half + half;
+    const polygon &as = f.a.shape(), &bs = f.b.shape();
+    std::vector<point<NT>> av(as.size()), bv(bs.size());
+    for (std::size_t i = 0; i < as.size(); ++i) av[i] = {d * f.a[i].x, d * f.a[i].y};
+    const point<NT> nd{n * f.d.x, n * f.d.y};
+    for (std::size_t j = 0; j < bs.size(); ++j) bv[j] = {d * f.b[j].x + nd.x, d * f.b[j].y + nd.y};
+    const double big = std::fabs(tr::to_double(d)) * scale + std::fabs(tr::to_double(n)) * reach;
+    placed_polygon<NT> pa(as, av), pb(bs, bv);
+    return placed_meet(pa, pb, posing_margin<NT>(big));
+}
+
+/// Whether an event at `s` can change what the witness `w` shows: it
+/// puts one of the witness's features in contact. A vertex located in the
+/// other polygon stays there until it reaches that polygon's boundary (an
+/// event of that vertex); an edge pair keeps meeting or not until an end of
+/// one reaches the other (an event of the pair).
+inline bool touches(const meeting& w, const contact_site& s, const polygon& a, const polygon& b) {
+    switch (w.how) {
+    case meeting::kind::b_vertex_in_a:
+        return s.moving_vertex && s.vertex == w.b_index;
+    case meeting::kind::a_vertex_in_b:
+        return !s.moving_vertex && s.vertex == w.a_index;
+    case meeting::kind::edges:
+        if (s.moving_vertex) return s.edge == w.a_index && (s.vertex == w.b_index || s.vertex == b.next(w.b_index));
+        return s.edge == w.b_index && (s.vertex == w.a_index || s.vertex == a.next(w.a_index));
+    default:
+        return true;
+    }
+}
+
+/// An event of the exit search: its time and site.
+template <class NT>
+struct timed_site {
+    time_fraction<NT> time;
+    contact_site site;
+};
+
+}  // namespace exit_distance_detail
+
+/// The directional penetration depth: with B posed by q and then translated
+/// by s (dx, dy), the end of the interval of s >= 0, starting at 0, during
+/// which the closed regions of A and B meet; 0 when they do not meet at q.
+/// In units of (dx, dy): a distance when it is a unit vector. At the
+/// returned s the regions touch, and for s a little larger they do not.
+/// Exact in an exact NT (NT needs division, as for first_contact).
+///
+///   w <- the one-shot query at q (what shows they meet); apart:  0
+///   s_max <- beyond it B's box has left A's box along d (double, widened)
+///   the events (every time s >= 0 a vertex starts or stops lying on an
+///   edge: contact_times, both ends of a sliding contact), gathered by
+///   windows (0, s_max / 64], then doubled, from the sites whose boxes
+///   overlap, B's swept over the window; sorted: s_1 < s_2 < ... < s_K
+///   last <- 0
+///   loop:
+///       if an event at `last` touches w's features (a located vertex
+///       reaching an edge, an end of w's edge pair reaching the other):
+///           w <- the meeting at (last + next) / 2 (the one-shot query's
+///           steps on both polygons scaled to keep ring operations)
+///           apart there:                              last
+///       no next event:                                last (then apart)
+///       last <- the next event
+///
+/// Between two consecutive events no vertex reaches or leaves an edge, so
+/// whether the regions meet does not change, and neither does what a
+/// witness shows unless an event at its start touches it (docs/sweep.md,
+/// "Exit distance"). Time O((n + m) log(n + m) + k log k) for k events up to
+/// the exit, plus O((n + m) log(n + m)) for each event that touches the
+/// witness. Throws invalid_input for an empty polygon, a NaN or infinite
+/// component of q or of the direction, a direction (0, 0), or one whose
+/// components differ by more than double's range (2^1022 times).
+template <class NT>
+NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, double dy) {
+    using namespace sweep;
+    using namespace exit_distance_detail;
+    using tr = number_traits<NT>;
+    accepted_polygon<NT>(a, "static");
+    accepted_polygon<NT>(b, "moving");
+    const rotation_pose t(q);
+    check_direction(dx, dy);
+    // The direction scaled by a power of two 2^shift (exactly) to a largest
+    // component in [1, 2): the windows of s, kept in double, then neither
+    // overflow nor underflow; s for (dx, dy) is 2^shift times s for the
+    // scaled one.
+    const int shift = -std::ilogb(std::max(std::fabs(dx), std::fabs(dy)));
+    const double ux = std::ldexp(dx, shift), uy = std::ldexp(dy, shift);
+    if (std::ldexp(ux, -shift) != dx || std::ldexp(uy, -shift) != dy)
+        throw invalid_input("direction: the components' magnitudes are too far apart to scale exactly");
+    const NT unit_scale =
+        tr::from_double(std::ldexp(1.0, shift / 2)) * tr::from_double(std::ldexp(1.0, shift - shift / 2));
+    dx = ux;
+    dy = uy;
+    translation_frame<NT> f(a, b, t, {tr::from_double(dx), tr::from_double(dy)});
+    const double scale = coordinate_scale(a) + coordinate_scale(b) + std::fabs(q.tx) + std::fabs(q.ty);
+    const double reach = std::fabs(dx) + std::fabs(dy);
+    const double e0 = posing_margin<NT>(scale);
+    meeting witness = placed_meet(f.a, f.b, e0);
+    if (!witness) return NT(0);
+
+    const double s_max = exit_reach(a.bounds(), f.b.bounds(), dx, dy, e0);
+    const double e = posing_margin<NT>(scale + s_max * reach);
+    const auto beyond = [](const time_fraction<NT>& s, double x) {
+        return compare_values<NT>(s.num, tr::from_double(x) * s.den) > 0;
+    };
+    // The events of the window (w_low, w] of s, sorted. In an exact NT a
+    // site is first tried in certified: one that certainly has no event
+    // costs no exact arithmetic.
+    constexpr bool exact = tr::category == number_category::exact;
+    std::optional<translation_frame<certified>> fast;
+    if constexpr (exact) fast.emplace(a, b, t, point<certified>{certified(dx), certified(dy)});
+    std::vector<timed_site<NT>> events;
+    const auto load = [&](double w_low, double w) {
+        events.clear();
+        candidate_sites(a, b, f.b.approx(), f.b.bounds(), {std::max(w_low, 0.0) * dx, std::max(w_low, 0.0) * dy},
+                        {w * dx, w * dy}, e, [&](const contact_site& site) {
+            if constexpr (exact) {
+                try {
+                    time_fraction<certified> none[2];
+                    if (fast->times(site, false, none) == 0) return;
+                } catch (const uncertain_sign&) {
+                }
+            }
+            time_fraction<NT> out[2];
+            const int k = f.times(site, false, out);
+            for (int i = 0; i < k; ++i)
+                if ((w_low < 0 || beyond(out[i], w_low)) && !beyond(out[i], w)) events.push_back({std::move(out[i]), site});
+        });
+        std::sort(events.begin(), events.end(), [](const timed_site<NT>& l, const timed_site<NT>& r) {
+            return compare_times(l.time, r.time) < 0;
+        });
+    };
+    double w_low = -1, w = std::min(s_max, s_max * first_window);
+    load(w_low, w);
+    std::size_t next = 0;
+    time_fraction<NT> last{NT(0), NT(1)};
+    for (;;) {
+        // The events at `last` (some may come at 0): do they touch the witness?
+        bool stale = false;
+        for (; next < events.size() && compare_times(events[next].time, last) <= 0; ++next)
+            if (touches(witness, events[next].site, a, b)) stale = true;
+        while (next == events.size() && w < s_max) {
+            w_low = w;
+            w = std::min(s_max, 2 * w);
+            load(w_low, w);
+            next = 0;
+        }
+        if (next == events.size()) return last.num / last.den * unit_scale;  // after the last event, apart
+        const time_fraction<NT>& following = events[next].time;
+        if (stale) {
+            witness = meeting_between(f, last, following, scale, reach);
+            if (!witness) return last.num / last.den * unit_scale;
+        }
+        last = following;
+    }
+}
+
+}  // namespace influence2d

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// What a motion query answers and takes: a motion of B between two poses,
+/// its first contact, the options.
+
+#include "influence2d/core/feature.hpp"
+#include "influence2d/core/pose.hpp"
+
+namespace influence2d {
+
+/// The first contact of a motion.
+template <class NT>
+struct contact_result {
+    /// Whether the closed regions meet at some time in [0, 1] (for a motion
+    /// that turns: come within the tolerance of sweep_options).
+    bool contact = false;
+    /// The earliest such time: 0 when they meet at the start; exact in an
+    /// exact NT for a translation; 0 when there is no contact.
+    NT time{};
+    /// A's feature that B touches first: an edge (B's vertex on it), a
+    /// vertex (on B's edge), or, when the regions already meet at the start
+    /// without boundary contact, the interior (B's vertex lies inside A).
+    /// Input numbering; meaningful only with `contact`.
+    feature static_feature{};
+    /// B's feature in that contact, as static_feature.
+    feature moving_feature{};
+};
+
+/// Options of first_contact.
+struct sweep_options {
+    /// For motions that turn: contact is reported at the first step where
+    /// the distance between the regions is at most this (absolute, in the
+    /// polygons' units; raised to the motion's resolution in double when
+    /// smaller, see docs/sweep.md). 1e-9: far below any modelling
+    /// tolerance of polygons of size 1 to 10^4, and far above the rounding
+    /// of the posing (about 10^-16 times the scene's size) for them.
+    double tolerance = 1e-9;
+};
+
+/// The pose of B at time t of the motion from `from` to `to`, as
+/// first_contact computes it for a motion that turns: each component
+/// from + t (to - from), in double.
+inline pose motion_pose(const pose& from, const pose& to, double t) {
+    return {from.tx + t * (to.tx - from.tx), from.ty + t * (to.ty - from.ty),
+            from.theta + t * (to.theta - from.theta)};
+}
+
+}  // namespace influence2d

@@ -1,0 +1,443 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// The contact events of a translating polygon: which vertex reaches which
+/// edge and when, found over the pairs of edges whose swept boxes overlap,
+/// exactly in NT or filtered through `certified` (motion/first_contact.hpp,
+/// motion/exit_distance.hpp).
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "influence2d/core/invalid_input.hpp"
+#include "influence2d/core/point.hpp"
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/core/pose.hpp"
+#include "influence2d/number/certified.hpp"
+#include "influence2d/number/fallback.hpp"
+#include "influence2d/core/feature.hpp"
+#include "influence2d/query/intersects.hpp"
+#include "influence2d/query/placed_meet.hpp"
+#include "influence2d/scene/edge_boxes.hpp"
+#include "influence2d/scene/placed_polygon.hpp"
+#include "influence2d/scene/prepared.hpp"
+#include "influence2d/distance/separation.hpp"
+#include "influence2d/influence/bounds.hpp"
+#include "influence2d/predicates/contact_time.hpp"
+#include "influence2d/predicates/orientation.hpp"
+
+#include "influence2d/motion/motion.hpp"
+
+namespace influence2d {
+
+/// The steps the motion queries share (motion/first_contact.hpp,
+/// motion/exit_distance.hpp): contact sites and their times, the windows
+/// of a translation, conservative advancement. Not an interface of their
+/// own: their contracts are those of the queries built on them.
+namespace sweep {
+
+/// A contact event's place: B's vertex `vertex` reaching A's edge `edge`
+/// (moving_vertex), or A's vertex `vertex` reaching B's edge `edge`.
+/// Stored numbering.
+struct contact_site {
+    bool moving_vertex = true;  ///< whose vertex: B's (true) or A's
+    std::uint32_t vertex = 0;   ///< the vertex
+    std::uint32_t edge = 0;     ///< the other polygon's edge
+};
+
+/// The order that breaks ties between events of one time, so that every
+/// mode names the same features: B's vertices first, then by vertex, then
+/// by edge.
+inline bool site_before(const contact_site& l, const contact_site& r) {
+    if (l.moving_vertex != r.moving_vertex) return l.moving_vertex;
+    if (l.vertex != r.vertex) return l.vertex < r.vertex;
+    return l.edge < r.edge;
+}
+
+
+/// The site's features in input numbering: (A's, B's).
+inline std::pair<feature, feature> site_features(const polygon& a, const polygon& b, const contact_site& s) {
+    if (s.moving_vertex)
+        return {{feature_kind::edge, a.source_edge(s.edge)}, {feature_kind::vertex, input_vertex(b, s.vertex)}};
+    return {{feature_kind::vertex, input_vertex(a, s.vertex)}, {feature_kind::edge, b.source_edge(s.edge)}};
+}
+
+/// The features of a meeting at the start (meeting from placed_meet): a
+/// vertex inside the other region meets its interior; a vertex on the
+/// other's boundary meets the first edge (stored order) holding it; an edge
+/// pair names a vertex of one on the other's edge when there is one, else
+/// both edges (they cross). Exact when NT is.
+template <class NT>
+std::pair<feature, feature> meeting_features(placed_polygon<NT>& a, placed_polygon<NT>& b, const meeting& m) {
+    const polygon &as = a.shape(), &bs = b.shape();
+    const auto edge_holding = [](placed_polygon<NT>& p, const point<NT>& v) {
+        const polygon& s = p.shape();
+        for (std::size_t e = 0; e < s.size(); ++e)
+            if (on_segment(v, p[e], p[s.next(e)])) return feature{feature_kind::edge, s.source_edge(e)};
+        return feature{feature_kind::interior, 0};  // (not reached: the vertex was located on the boundary)
+    };
+    switch (m.how) {
+    case meeting::kind::b_vertex_in_a: {
+        const feature fb{feature_kind::vertex, input_vertex(bs, m.b_index)};
+        if (m.where == location::inside) return {{feature_kind::interior, 0}, fb};
+        return {edge_holding(a, b[m.b_index]), fb};
+    }
+    case meeting::kind::a_vertex_in_b: {
+        const feature fa{feature_kind::vertex, input_vertex(as, m.a_index)};
+        if (m.where == location::inside) return {fa, {feature_kind::interior, 0}};
+        return {fa, edge_holding(b, a[m.a_index])};
+    }
+    default: {
+        const std::size_t i = m.a_index, i2 = as.next(i), j = m.b_index, j2 = bs.next(j);
+        const feature ea{feature_kind::edge, as.source_edge(i)}, eb{feature_kind::edge, bs.source_edge(j)};
+        if (on_segment(b[j], a[i], a[i2])) return {ea, {feature_kind::vertex, input_vertex(bs, j)}};
+        if (on_segment(b[j2], a[i], a[i2])) return {ea, {feature_kind::vertex, input_vertex(bs, j2)}};
+        if (on_segment(a[i], b[j], b[j2])) return {{feature_kind::vertex, input_vertex(as, i)}, eb};
+        if (on_segment(a[i2], b[j], b[j2])) return {{feature_kind::vertex, input_vertex(as, i2)}, eb};
+        return {ea, eb};
+    }
+    }
+}
+
+/// The features of the meeting of A and of B posed at the motion's start,
+/// decided in NT; none when they do not meet there (the one-shot query).
+template <class NT>
+std::optional<std::pair<feature, feature>> meeting_at_start(const polygon& a, const polygon& b, const pose& from,
+                                                            const rotation_pose& start) {
+    placed_polygon<NT> pa(a), pb(b, start);
+    const meeting met = placed_meet(
+        pa, pb,
+        posing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) +
+                                           std::fabs(from.ty)));
+    if (!met) return std::nullopt;
+    return meeting_features(pa, pb, met);
+}
+
+/// Calls visit(site) for both sites of every pair of A's edge i and B's
+/// edge j whose boxes overlap, B's edge box swept from its place at the
+/// start (vertices `b_start` in double) shifted by `from` to that place
+/// shifted by `to`, every box grown by e: B's vertex j against A's edge i,
+/// and A's vertex i against B's edge j. Every vertex of B that reaches an
+/// edge of A during that part of the motion is the start of an edge of B
+/// whose swept box meets that edge's box, and likewise for A's vertices: no
+/// event of that part is left out. Sort and sweep along x (scene/edge_boxes.hpp).
+template <class Visit>
+void candidate_sites(const polygon& a, const polygon& b, const std::vector<point<double>>& b_start,
+                     const box& b_start_box, point<double> from, point<double> to, double e, Visit&& visit) {
+    box swept;
+    for (const point<double>& shift : {from, to}) {
+        swept.add({b_start_box.min_x + shift.x, b_start_box.min_y + shift.y});
+        swept.add({b_start_box.max_x + shift.x, b_start_box.max_y + shift.y});
+    }
+    std::vector<edge_box> a_edges, b_edges;
+    edges_meeting(a, a.vertices(), swept.inflated(e), e, a_edges);
+    edges_meeting(b, b_start, a.bounds().inflated(e), e, b_edges, from, to);
+    overlapping_pairs(a_edges, b_edges, [&](std::uint32_t i, std::uint32_t j) {
+        visit(contact_site{true, j, i});
+        visit(contact_site{false, i, j});
+        return false;
+    });
+}
+
+/// A lower bound, in double, of the first t >= 0 at which B's box `bb`
+/// (within e of its place in NT) moved by t `sweep` meets A's box `ab`:
+/// the latest of the axes' entry times, with 4e of room and shrunk by
+/// 2^-40 relative (the quotients' roundings are below 2^-50 relative);
+/// infinity when an axis that does not move keeps the boxes apart.
+inline double box_entry(const box& ab, const box& bb, point<double> sweep, double e) {
+    double t = 0;
+    const auto axis = [&](double a_min, double a_max, double b_min, double b_max, double d) {
+        if (b_max + 4 * e >= a_min && b_min - 4 * e <= a_max) return;  // overlapping already
+        if (d == 0) t = std::numeric_limits<double>::infinity();
+        else if (b_max < a_min) t = std::max(t, d > 0 ? (a_min - b_max - 4 * e) / d : std::numeric_limits<double>::infinity());
+        else t = std::max(t, d < 0 ? (a_max - b_min + 4 * e) / d : std::numeric_limits<double>::infinity());
+    };
+    axis(ab.min_x, ab.max_x, bb.min_x, bb.max_x, sweep.x);
+    axis(ab.min_y, ab.max_y, bb.min_y, bb.max_y, sweep.y);
+    return t * (1 - 0x1p-40);
+}
+
+/// The first window of a translation's search, as a fraction of the
+/// motion after B's box first meets A's: 1/64, doubled while no event is
+/// found (at most seven windows).
+inline constexpr double first_window = 1.0 / 64;
+
+/// Calls visit(site) for the candidate sites (candidate_sites) of
+/// consecutive windows of time [w0, w1], growing, stopping once the
+/// earliest event is known:
+///
+///   enter <- when B's box first meets A's (box_entry); beyond 1: none
+///   [w0, w1] <- [enter, enter + first_window]
+///   loop:
+///       visit the sites of B swept over [w0, w1]
+///       (every event at a time in [w0, w1] is among them)
+///       u <- best_upper(): a double above the least event found, if any
+///       if u <= w1 or w1 = 1:  done
+///       next window: [w1, min(u, 1)] (then done) if there is a u,
+///       else [w1, enter + 2 (w1 - enter)], at most 1
+///
+/// Events before w0 were all found in the earlier windows (none before
+/// enter), so the earliest event found once a window reaches it is the
+/// first contact; events found beyond a window are true events too, and
+/// bound the last window.
+template <class Visit, class Upper>
+void windowed_sites(const polygon& a, const polygon& b, const std::vector<point<double>>& b_start,
+                    const box& b_start_box, point<double> sweep, double e, Visit&& visit, Upper&& best_upper) {
+    const double enter = box_entry(a.bounds(), b_start_box, sweep, e);
+    if (!(enter <= 1)) return;
+    double w0 = enter, w1 = std::min(1.0, enter + first_window);
+    for (bool last = false;;) {
+        candidate_sites(a, b, b_start, b_start_box, {w0 * sweep.x, w0 * sweep.y}, {w1 * sweep.x, w1 * sweep.y}, e,
+                        visit);
+        if (last || w1 >= 1) return;
+        w0 = w1;
+        if (const std::optional<double> u = best_upper()) {
+            if (*u <= w1) return;
+            w1 = std::min(1.0, *u);
+            last = true;
+        } else {
+            w1 = std::min(1.0, enter + 2 * (w1 - enter));
+        }
+    }
+}
+
+/// A double above the time num / den (exact or floating NT): the quotient of
+/// their nearest doubles (within 2^-50 relative) widened by 2^-40.
+template <class NT>
+double time_above(const time_fraction<NT>& t) {
+    using tr = number_traits<NT>;
+    const double q = tr::to_double(t.num) / tr::to_double(t.den);
+    return std::isfinite(q) ? q * (1 + 0x1p-40) + 0x1p-1000 : std::numeric_limits<double>::infinity();
+}
+
+/// A translation in NT: A where it stands, B posed at the start, the
+/// displacement d (and -d, A's motion relative to B).
+template <class NT>
+struct translation_frame {
+    placed_polygon<NT> a, b;
+    point<NT> d, minus_d;
+
+    translation_frame(const polygon& as, const polygon& bs, const rotation_pose& start, point<NT> dd)
+        : a(as), b(bs, start), d(dd), minus_d{-dd.x, -dd.y} {}
+
+    /// The site's contact times in range (t in [0, 1] when bounded, t >= 0
+    /// otherwise): at most two (contact_times).
+    int times(const contact_site& s, bool bounded, time_fraction<NT> out[2]) {
+        if (s.moving_vertex)
+            return contact_times(b[s.vertex], d, a[s.edge], a[a.shape().next(s.edge)], bounded, out);
+        return contact_times(a[s.vertex], minus_d, b[s.edge], b[b.shape().next(s.edge)], bounded, out);
+    }
+
+    /// The site's earliest contact time in [0, 1], if any.
+    std::optional<time_fraction<NT>> earliest(const contact_site& s) {
+        if (s.moving_vertex) return earliest_contact_time(b[s.vertex], d, a[s.edge], a[a.shape().next(s.edge)]);
+        return earliest_contact_time(a[s.vertex], minus_d, b[s.edge], b[b.shape().next(s.edge)]);
+    }
+};
+
+/// The earliest contact time of one site in [0, 1] in NT, posing only the
+/// site's three vertices (B's by `start`; `d` the displacement in NT): the
+/// filtered search's exact evaluation of a site, without the whole frame.
+template <class NT>
+std::optional<time_fraction<NT>> site_time(const polygon& a, const polygon& b, const rotation_pose& start,
+                                           const point<NT>& d, const contact_site& s) {
+    const auto in_a = [&](std::size_t i) { return to_point<NT>(a.vertex(i)); };
+    const auto in_b = [&](std::size_t j) { return start.apply<NT>(b.vertex(j)); };
+    if (s.moving_vertex) return earliest_contact_time(in_b(s.vertex), d, in_a(s.edge), in_a(a.next(s.edge)));
+    return earliest_contact_time(in_a(s.vertex), point<NT>{-d.x, -d.y}, in_b(s.edge), in_b(b.next(s.edge)));
+}
+
+/// The validated parts of a motion: its start and end as rotation poses
+/// (invalid_input for a NaN or infinite component of either).
+struct motion {
+    rotation_pose start, end;
+    motion(const pose& from, const pose& to) : start(from), end(checked_end(to)) {}
+
+    /// The motion of B from `from` to `to` against A, both polygons checked
+    /// for NT (accepted_polygon) and the options' tolerance (finite, >= 0).
+    template <class NT>
+    static motion accepted(const polygon& a, const polygon& b, const pose& from, const pose& to,
+                           const sweep_options& options) {
+        accepted_polygon<NT>(a, "static");
+        accepted_polygon<NT>(b, "moving");
+        if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance))
+            throw invalid_input("sweep_options: tolerance is " + std::to_string(options.tolerance) +
+                                ", not a finite number >= 0");
+        return motion(from, to);
+    }
+
+private:
+    static rotation_pose checked_end(const pose& to) {
+        try {
+            return rotation_pose(to);
+        } catch (const invalid_input& e) {
+            throw invalid_input(std::string("end ") + e.what());
+        }
+    }
+};
+
+/// The filters' margin for a translation from `from` to `to`: the posing
+/// margin of one_shot with both translations in the scale (B's vertices in
+/// double at any time of the motion are within it of their NT values).
+template <class NT>
+double translation_margin(const polygon& a, const polygon& b, const pose& from, const pose& to) {
+    return posing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) +
+                                              std::fabs(from.ty) + std::fabs(to.tx) + std::fabs(to.ty));
+}
+
+/// The displacement of a translation in NT: to - from on the input doubles.
+template <class NT>
+point<NT> displacement(const pose& from, const pose& to) {
+    using tr = number_traits<NT>;
+    return {tr::from_double(to.tx) - tr::from_double(from.tx), tr::from_double(to.ty) - tr::from_double(from.ty)};
+}
+
+/// The earliest event of a translation in one NT: its site and time.
+template <class NT>
+struct earliest_event {
+    contact_site site;
+    time_fraction<NT> time;
+};
+
+/// The earliest contact event of B translated from `from` to `to` (same
+/// angle) against A, in NT: every candidate site's earliest time in [0, 1],
+/// the least by time then by site_before. None when no vertex reaches an
+/// edge (the caller has found that the regions do not meet at the start).
+template <class NT>
+std::optional<earliest_event<NT>> earliest_translation_event(const polygon& a, const polygon& b, const pose& from,
+                                                             const pose& to, const rotation_pose& start) {
+    translation_frame<NT> f(a, b, start, displacement<NT>(from, to));
+    std::optional<earliest_event<NT>> best;
+    windowed_sites(
+        a, b, f.b.approx(), f.b.bounds(), {to.tx - from.tx, to.ty - from.ty}, translation_margin<NT>(a, b, from, to),
+        [&](const contact_site& s) {
+            std::optional<time_fraction<NT>> t = f.earliest(s);
+            if (!t) return;
+            if (best) {
+                const int c = compare_times(*t, best->time);
+                if (c > 0 || (c == 0 && !site_before(s, best->site))) return;
+            }
+            best = earliest_event<NT>{s, std::move(*t)};
+        },
+        [&]() -> std::optional<double> {
+            if (!best) return std::nullopt;
+            return time_above(best->time);
+        });
+    return best;
+}
+
+/// An event of the filtered search: its site, its time in `certified` when
+/// every sign of it was certain, and its time in the exact field Exact once
+/// asked, with two doubles around it.
+template <class Exact>
+struct filtered_event {
+    contact_site site;
+    std::optional<time_fraction<certified>> fast;        ///< the time in certified, when certain
+    std::optional<time_fraction<Exact>> exact;  ///< the exact time, once asked
+    double rounded = 0;                                  ///< the exact time's nearest double, with exact
+    double below = 0, above = 0;                         ///< below <= exact time <= above, with exact
+
+    /// A double above the time: from the exact time's neighbours, else from
+    /// the certified time's bounds (num at most its value plus its error,
+    /// den at least its value minus its error), widened by 2^-40.
+    double time_above() const {
+        if (exact) return above;
+        const double num = fast->num.value() + fast->num.error(), den = fast->den.value() - fast->den.error();
+        const double q = num / den;
+        return den > 0 && std::isfinite(q) ? q * (1 + 0x1p-40) + 0x1p-1000 : std::numeric_limits<double>::infinity();
+    }
+
+    /// Sets the exact time, its nearest double and the doubles next to it.
+    void set_exact(time_fraction<Exact> t) {
+        const double x = nearest_double(t);
+        rounded = x;
+        below = std::nextafter(x, -std::numeric_limits<double>::infinity());
+        above = std::nextafter(x, std::numeric_limits<double>::infinity());
+        exact = std::move(t);
+    }
+};
+
+/// The sign of the time t (in certified) minus the double x; throws
+/// uncertain_sign when not certain.
+inline int compare_time_with(const time_fraction<certified>& t, double x) {
+    return compare_values<certified>(t.num, certified(x) * t.den);
+}
+
+/// The sign of c's time minus e's: in certified when both have one and the
+/// bound settles it; else c's certified time against the doubles around
+/// e's exact time; else exactly (`exact_time` computes a site's exact
+/// time: it exists, both events having one).
+template <class Exact, class ExactTime>
+int order(filtered_event<Exact>& c, filtered_event<Exact>& e, ExactTime&& exact_time) {
+    if (c.fast && e.fast) {
+        try {
+            return compare_times(*c.fast, *e.fast);
+        } catch (const uncertain_sign&) {
+        }
+    }
+    if (c.fast && e.exact) {
+        try {
+            if (compare_time_with(*c.fast, e.above) > 0) return 1;
+            if (compare_time_with(*c.fast, e.below) < 0) return -1;
+        } catch (const uncertain_sign&) {
+        }
+    }
+    for (filtered_event<Exact>* x : {&c, &e})
+        if (!x->exact) x->set_exact(*exact_time(x->site));
+    return compare_times(*c.exact, *e.exact);
+}
+
+/// The earliest event as earliest_translation_event, exact, at nearly
+/// double's cost: each site's time is computed and compared in
+/// `certified`, and again in the exact field Exact only for the sites whose
+/// signs the bound cannot settle (and, when a comparison is not certain,
+/// the two compared).
+template <class Exact>
+std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const polygon& a, const polygon& b,
+                                                                         const pose& from, const pose& to,
+                                                                         const rotation_pose& start) {
+    translation_frame<certified> fast(a, b, start, displacement<certified>(from, to));
+    std::optional<point<Exact>> exact_d;
+    const auto exact_time = [&](const contact_site& s) {
+        if (!exact_d) exact_d = displacement<Exact>(from, to);
+        return site_time(a, b, start, *exact_d, s);
+    };
+    std::optional<filtered_event<Exact>> best;
+    windowed_sites(
+        a, b, fast.b.approx(), fast.b.bounds(), {to.tx - from.tx, to.ty - from.ty},
+        translation_margin<certified>(a, b, from, to),
+        [&](const contact_site& s) {
+            filtered_event<Exact> c{s, std::nullopt, std::nullopt};
+            try {
+                c.fast = fast.earliest(s);
+                if (!c.fast) return;
+            } catch (const uncertain_sign&) {
+                std::optional<time_fraction<Exact>> t = exact_time(s);
+                if (!t) return;
+                c.set_exact(std::move(*t));
+            }
+            if (best) {
+                const int o = order(c, *best, exact_time);
+                if (o > 0 || (o == 0 && !site_before(s, best->site))) return;
+            }
+            best = std::move(c);
+        },
+        [&]() -> std::optional<double> {
+            if (!best) return std::nullopt;
+            return best->time_above();
+        });
+    return best;
+}
+
+}  // namespace sweep
+
+}  // namespace influence2d
