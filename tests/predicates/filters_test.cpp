@@ -1,0 +1,470 @@
+// SPDX-License-Identifier: BSL-1.0
+// The conservative filters in double (predicates/filters.hpp), each constant
+// and bound checked against exact arithmetic: CGAL's exact rationals (the
+// kernel CGAL::Cartesian<exact_rational> for distances and intersections,
+// support/exact_distance.hpp) and MPFR for the angles. A filter that may keep
+// too much must never drop what the exact decision keeps (soundness), on
+// random inputs at many scales and on adversarial ones built to sit at the
+// filter's edge; each test also counts that both of its answers occur.
+
+#include <catch2/catch.hpp>
+
+#include <cfloat>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include <mpfr.h>
+
+#include "influence2d/core/box.hpp"
+#include "influence2d/number/cgal.hpp"
+#include "influence2d/number/traits.hpp"
+#include "influence2d/predicates/filters.hpp"
+#include "support/effort.hpp"
+#include "support/exact_distance.hpp"
+#include "support/random.hpp"
+
+using namespace influence2d;
+using test_exact::at_least_root;
+using test_exact::at_most_root;
+using test_exact::exact;
+using test_exact::pow2;
+using test_exact::Q;
+
+namespace {
+
+const double inf = std::numeric_limits<double>::infinity();
+const double nan_value = std::numeric_limits<double>::quiet_NaN();
+
+/// A double of magnitude about 2^e, either sign.
+double at_scale(test_random::rng& r, int e) { return std::ldexp(r.signed_unit(), e); }
+
+/// The exact side value (b - a) x (q - a).
+Q exact_side(const point<double>& a, const point<double>& b, const point<double>& q) {
+    return (Q(b.x) - a.x) * (Q(q.y) - a.y) - (Q(b.y) - a.y) * (Q(q.x) - a.x);
+}
+
+int sign_of(const Q& x) { return static_cast<int>(CGAL::sign(x)); }
+
+/// A point near the line a-b: a + f (b - a) rounded, then moved a few ulps.
+point<double> near_line(test_random::rng& r, const point<double>& a, const point<double>& b) {
+    const double f = r.uniform(-0.5, 1.5);
+    point<double> q{a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)};
+    for (int k = static_cast<int>(r.index(4)); k > 0; --k) q.y = std::nextafter(q.y, r.chance(0.5) ? inf : -inf);
+    for (int k = static_cast<int>(r.index(3)); k > 0; --k) q.x = std::nextafter(q.x, r.chance(0.5) ? inf : -inf);
+    return q;
+}
+
+/// |angle(y, x) - t| computed by MPFR at 256 bits, t a double.
+double atan2_error(double y, double x, double t) {
+    mpfr_t a, yy, xx;
+    mpfr_inits2(256, a, yy, xx, static_cast<mpfr_ptr>(nullptr));
+    mpfr_set_d(yy, y, MPFR_RNDN);
+    mpfr_set_d(xx, x, MPFR_RNDN);
+    mpfr_atan2(a, yy, xx, MPFR_RNDN);
+    mpfr_sub_d(a, a, t, MPFR_RNDN);
+    const double e = std::fabs(mpfr_get_d(a, MPFR_RNDN));
+    mpfr_clears(a, yy, xx, static_cast<mpfr_ptr>(nullptr));
+    return e;
+}
+
+int count(int n) { return test_effort::scaled(n); }
+
+}  // namespace
+
+TEST_CASE("filters: square_safe_low and square_safe_high keep squares and their sums in double's normal range",
+          "[filters]") {
+    const Q low(square_safe_low), high(square_safe_high);
+    CHECK(low * low == pow2(-800));
+    CHECK(high * high == pow2(800));
+    CHECK(low * low > Q(DBL_MIN));            // far from the subnormals
+    CHECK(Q(8) * high * high < Q(DBL_MAX));   // a sum of eight squares: below 2^803
+    CHECK(Q(8) * high * high <= pow2(803));
+
+    // filter_length within about an ulp of the exact length at every
+    // magnitude, inside the safe range (squares) and outside it (hypot).
+    test_random::rng r(1);
+    std::size_t inside = 0, outside = 0;
+    for (int k = 0; k < count(20000); ++k) {
+        const int e = static_cast<int>(r.index(2090)) - 1070;
+        const double x = at_scale(r, e), y = r.chance(0.2) ? 0.0 : at_scale(r, e - static_cast<int>(r.index(60)));
+        const double f = filter_length(x, y);
+        const double big = std::max(std::fabs(x), std::fabs(y));
+        (big > square_safe_low && big < square_safe_high ? inside : outside) += 1;
+        INFO("x = " << x << ", y = " << y << ", filter_length = " << f);
+        REQUIRE(std::isfinite(f));
+        const Q l2 = Q(x) * x + Q(y) * y;
+        const Q tiny = pow2(-1074);
+        CHECK(at_most_root(Q(f) * (1 - Q(0x1p-51)) - tiny, l2));
+        CHECK(at_least_root(Q(f) * (1 + Q(0x1p-51)) + tiny, l2));
+    }
+    CHECK(inside > 1000);
+    CHECK(outside > 1000);
+    // Exact lengths at the ends of the range.
+    CHECK(filter_length(3 * 0x1p-1074, 4 * 0x1p-1074) == 5 * 0x1p-1074);
+    CHECK(filter_length(0x1.8p1000, 0x1p1001) == 0x1.4p1001);  // 3, 4, 5 times 2^999
+}
+
+TEST_CASE("filters: upper_sqrt is strictly above the root, by sqrt_widening and an ulp at most", "[filters]") {
+    test_random::rng r(2);
+    for (int k = 0; k < count(20000); ++k) {
+        // x = (hi + lo) 2^e with 64 significant bits, e within +-2000 (a
+        // long double beyond double's range, whose root is in it).
+        const double hi = r.uniform(1, 2), lo = r.chance(0.5) ? std::ldexp(r.signed_unit(), -60) : 0.0;
+        const int e = static_cast<int>(r.index(4000)) - 2000;
+        const long double x = std::ldexp(static_cast<long double>(hi) + static_cast<long double>(lo), e);
+        const Q exact_x = (Q(hi) + Q(lo)) * pow2(e);
+        const double up = upper_sqrt(x);
+        INFO("x = " << static_cast<double>(x) << " (2^" << e << ")");
+        REQUIRE(std::isfinite(up));
+        CHECK(Q(up) * up > exact_x);
+        // Not looser than sqrt_widening (and the roundings) allow.
+        CHECK(Q(up) * up < exact_x * (1 + Q(4 * sqrt_widening)));
+    }
+    // Named cases: a perfect square, zero, and what is not a root.
+    CHECK(upper_sqrt(4.0L) > 2);
+    CHECK(upper_sqrt(0.0L) > 0);
+    CHECK(upper_sqrt(std::numeric_limits<long double>::infinity()) == inf);
+    CHECK(upper_sqrt(0x1p5000L) == inf);  // root 2^2500: beyond double
+    CHECK(std::isnan(upper_sqrt(-1.0L)));
+    CHECK(std::isnan(upper_sqrt(std::numeric_limits<long double>::quiet_NaN())));
+    // The constant is far above the rounding it covers: a long double root
+    // rounded to double is within 2^-53 + 2^-64 of the root.
+    CHECK(Q(sqrt_widening) > 2 * (Q(0x1p-53) + Q(0x1p-64)));
+}
+
+TEST_CASE("filters: pose_scale_widening covers sqrt(c^2 + s^2) of the rounded cosine and sine", "[filters]") {
+    test_random::rng r(3);
+    const Q w(pose_scale_widening);
+    const Q below = (1 - w) * (1 - w), above = (1 + w) * (1 + w);
+    std::size_t off_one = 0;
+    const auto check = [&](double theta) {
+        const double c = std::cos(theta), s = std::sin(theta);
+        const Q n = Q(c) * c + Q(s) * s;
+        INFO("theta = " << theta);
+        CHECK(n > below);
+        CHECK(n < above);
+        off_one += n != 1 ? 1 : 0;
+    };
+    for (int k = 0; k < count(20000); ++k) check(at_scale(r, static_cast<int>(r.index(40)) - 20));
+    // Near the multiples of pi/4, where one of c, s is tiny or both equal;
+    // huge angles, whose reduction is the library's.
+    for (int k = -64; k <= 64; ++k) {
+        const double t = k * 0.78539816339744830962;
+        check(t);
+        check(std::nextafter(t, inf));
+        check(std::nextafter(t, -inf));
+    }
+    for (double t : {1e300, -1e300, 1e22, 0x1p1023, 3.0e-300, 0.0}) check(t);
+    CHECK(off_one > 100);  // c^2 + s^2 is not 1 in general: the widening is needed
+}
+
+TEST_CASE("filters: atan2_widening covers std::atan2's error on doubles", "[filters]") {
+    test_random::rng r(4);
+    double worst = 0;
+    for (int k = 0; k < count(20000); ++k) {
+        const int e = static_cast<int>(r.index(200)) - 100;
+        double x = at_scale(r, e), y = at_scale(r, e + static_cast<int>(r.index(80)) - 40);
+        if (r.chance(0.1)) x = 0;
+        if (r.chance(0.1)) y = std::ldexp(x, -60);  // near an axis
+        if (x == 0 && y == 0) continue;
+        const double t = std::atan2(y, x);
+        const double err = atan2_error(y, x, t);
+        worst = std::max(worst, err);
+        INFO("atan2(" << y << ", " << x << ") = " << t);
+        CHECK(err < atan2_widening);
+    }
+    CHECK(worst < 1e-15);  // "within a few ulps (below 1e-15 rad)"
+}
+
+TEST_CASE("filters: direction_trust_factor keeps a trusted offset's direction within about 1e-3 rad",
+          "[filters]") {
+    // An offset o of the cone index, computed with an error below
+    // filter_slack * scale per coordinate, is trusted when |o|_1 exceeds
+    // direction_trust_factor * filter_slack * scale; its direction is then
+    // within asin(2 / direction_trust_factor) of the exact one (the error
+    // vector is at most sqrt 2 times the per-coordinate bound, |o|_2 at least
+    // |o|_1 / sqrt 2).
+    const double slack = number_traits<double>::filter_slack;
+    test_random::rng r(5);
+    const double limit = std::asin(2 / direction_trust_factor);
+    CHECK(limit < 2.1e-3);
+    for (int k = 0; k < count(5000); ++k) {
+        const double scale = std::ldexp(1.0, static_cast<int>(r.index(100)) - 50);
+        const double bound = slack * scale;
+        // At the threshold, in a random direction.
+        const double phi = r.uniform(-3.14159, 3.14159);
+        const double l1 = direction_trust_factor * bound * (1 + 1e-9) / (std::fabs(std::cos(phi)) + std::fabs(std::sin(phi)));
+        const double ox = l1 * std::cos(phi), oy = l1 * std::sin(phi);
+        if (!(std::fabs(ox) + std::fabs(oy) > direction_trust_factor * bound)) continue;
+        // The exact offset: the worst corners of the error box, and a random one.
+        const double ex = r.chance(0.5) ? bound : -bound, ey = r.chance(0.5) ? bound : -bound;
+        const double tx = ox + ex * r.signed_unit(), ty = oy + ey * r.signed_unit();
+        const double seen = std::atan2(oy, ox);
+        double err = atan2_error(ty, tx, seen);
+        if (err > 3.14159) err = 2 * 3.14159265358979 - err;
+        CHECK(err < limit);
+    }
+}
+
+TEST_CASE("filters: segment_distance is the distance within its rounding, at any scale", "[filters]") {
+    test_random::rng r(6);
+    for (int k = 0; k < count(20000); ++k) {
+        const int e = static_cast<int>(r.index(2000)) - 1000;
+        const point<double> a{at_scale(r, e), at_scale(r, e)};
+        const point<double> b = r.chance(0.1) ? a : point<double>{at_scale(r, e), at_scale(r, e)};
+        const point<double> p = r.chance(0.3) ? near_line(r, a, b) : point<double>{at_scale(r, e), at_scale(r, e)};
+        const double d = segment_distance(p, a, b);
+        INFO("scale 2^" << e);
+        REQUIRE(std::isfinite(d));
+        const Q d2 = test_exact::squared_distance(p, a, b);
+        const Q room = Q(0x1p-45) * (CGAL::abs(Q(b.x) - a.x) + CGAL::abs(Q(b.y) - a.y) + CGAL::abs(Q(p.x) - a.x) +
+                                     CGAL::abs(Q(p.y) - a.y)) +
+                       pow2(-1074);
+        CHECK(at_most_root(Q(d) - room, d2));
+        CHECK(at_least_root(Q(d) + room, d2));
+    }
+    // Named cases.
+    //   p = a = b: all three coincide
+    CHECK(segment_distance({1, 1}, {1, 1}, {1, 1}) == 0);
+    //   p . . . a=b    a zero-length segment: the distance to a
+    CHECK(segment_distance({0, 0}, {3, 4}, {3, 4}) == 5);
+    //   a-----p-----b  p on the segment
+    CHECK(segment_distance({1, 1}, {0, 0}, {2, 2}) == 0);
+    //   a <- 2^1024 -> b: the difference overflows
+    CHECK(segment_distance({0, 0}, {-DBL_MAX, 0}, {DBL_MAX, 0}) == inf);
+}
+
+TEST_CASE("filters: may_be_within never drops a point within reach", "[filters]") {
+    // Sound with the callers' margin: a point at exact distance D <= reach
+    // passes with reach widened by 2^-45 (|b - a|_1 + |p - a|_1), above
+    // segment_distance's rounding. reach is set at the edge: the nearest
+    // double to D, moved a few ulps either way.
+    test_random::rng r(7);
+    std::size_t kept = 0, dropped = 0;
+    for (int k = 0; k < count(20000); ++k) {
+        const int e = static_cast<int>(r.index(2000)) - 1000;
+        const point<double> a{at_scale(r, e), at_scale(r, e)};
+        const point<double> b = r.chance(0.1) ? a : point<double>{at_scale(r, e), at_scale(r, e)};
+        const point<double> p = r.chance(0.3) ? near_line(r, a, b) : point<double>{at_scale(r, e), at_scale(r, e)};
+        const Q d2 = test_exact::squared_distance(p, a, b);
+        double reach = std::sqrt(CGAL::to_double(d2 * pow2(-2 * e))) * std::ldexp(1.0, e);
+        for (int s = static_cast<int>(r.index(7)) - 3; s != 0; s += s > 0 ? -1 : 1)
+            reach = std::nextafter(reach, s > 0 ? inf : 0.0);
+        if (r.chance(0.2)) reach *= r.uniform(0, 2);
+        const double margin = 0x1p-45 * (std::fabs(b.x - a.x) + std::fabs(b.y - a.y) + std::fabs(p.x - a.x) +
+                                         std::fabs(p.y - a.y)) + 0x1p-1074;
+        const bool within = at_least_root(Q(reach), d2);
+        const bool answer = may_be_within(p, a, b, reach + margin);
+        if (within) {
+            INFO("scale 2^" << e << ", reach " << reach);
+            CHECK(answer);
+        }
+        (answer ? kept : dropped) += 1;
+    }
+    CHECK(kept > 1000);
+    CHECK(dropped > 1000);
+    // Named cases.
+    //   a-----p-----b  p on the segment: within reach 0
+    CHECK(may_be_within({1, 1}, {0, 0}, {2, 2}, 0));
+    //   p
+    //   |  1           p at distance 1 above a horizontal segment
+    //   a-----b
+    CHECK(may_be_within({0.5, 1}, {0, 0}, {2, 0}, 1));
+    CHECK_FALSE(may_be_within({0.5, 1}, {0, 0}, {2, 0}, std::nextafter(1.0, 0.0)));
+    // A difference that overflows: kept whatever the reach.
+    CHECK(may_be_within({0, 0}, {-DBL_MAX, 0}, {DBL_MAX, 0}, 0));
+}
+
+TEST_CASE("filters: certain_side answers only sides that exact arithmetic confirms, beyond the slack",
+          "[filters]") {
+    // Callers pass the direction as the rounded difference b - a; the answer
+    // must hold for the exact line through a and b: the exact (b - a) x
+    // (q - a) has the answered sign and exceeds the slack. Random triples at
+    // many scales, half of them within a few ulps of the line.
+    test_random::rng r(8);
+    std::size_t answered = 0, refused = 0;
+    for (int k = 0; k < count(40000); ++k) {
+        const int e = static_cast<int>(r.index(1600)) - 800;
+        const point<double> a{at_scale(r, e), at_scale(r, e)}, b{at_scale(r, e), at_scale(r, e)};
+        const point<double> q = r.chance(0.5) ? near_line(r, a, b) : point<double>{at_scale(r, e), at_scale(r, e)};
+        const double dx = b.x - a.x, dy = b.y - a.y;
+        double slack = 0;
+        if (r.chance(0.5)) slack = std::ldexp(r.unit(), 2 * e - static_cast<int>(r.index(40)));
+        const int side = certain_side(a, dx, dy, q, slack);
+        if (side == 0) {
+            ++refused;
+            continue;
+        }
+        ++answered;
+        const Q exact_value = exact_side(a, b, q);
+        INFO("scale 2^" << e << ", slack " << slack);
+        CHECK(sign_of(exact_value) == side);
+        CHECK(CGAL::abs(exact_value) > Q(slack));
+        // And with the direction as given.
+        const Q given = Q(dx) * (Q(q.y) - a.y) - Q(dy) * (Q(q.x) - a.x);
+        CHECK(sign_of(given) == side);
+    }
+    CHECK(answered > 10000);
+    CHECK(refused > 1000);
+
+    // Named cases.
+    //   a-----q-----b   q on the line: no side
+    CHECK(certain_side({0, 0}, 2, 2, {1, 1}, 0) == 0);
+    //         q
+    //   a-----------b   q above, 1 from the line: left, unless the slack reaches it
+    CHECK(certain_side({0, 0}, 4, 0, {2, 1}, 0) == 1);
+    CHECK(certain_side({0, 0}, 4, 0, {2, -1}, 0) == -1);
+    CHECK(certain_side({0, 0}, 4, 0, {2, 1}, 4) == 0);  // |o| = 4 is not beyond slack 4
+    // A product of 2^-920: its bound, 2^-968, is below side_bound_floor and
+    // not trusted, although the exact side is +1; a product of 2^-840 has the
+    // bound 2^-888, trusted.
+    const double t = 0x1p-460;
+    CHECK(sign_of(exact_side({0, 0}, {t, 0}, {0, t})) == 1);
+    CHECK(certain_side({0, 0}, t, 0, {0, t}, 0) == 0);
+    CHECK(certain_side({0, 0}, 0x1p-420, 0, {0, 0x1p-420}, 0) == 1);
+    // Overflow and NaN: no side.
+    CHECK(certain_side({0, 0}, DBL_MAX, DBL_MAX, {-DBL_MAX, DBL_MAX}, 0) == 0);
+    CHECK(certain_side({0, 0}, 1, 0, {0, nan_value}, 0) == 0);
+}
+
+TEST_CASE("filters: segments_may_meet never drops segments that meet, with or without an error e",
+          "[filters]") {
+    test_random::rng r(9);
+    using test_exact::exact_segment;
+    std::size_t meeting = 0, apart = 0;
+
+    // e = 0: the doubles are the segments; CGAL's exact do_intersect decides.
+    for (int k = 0; k < count(20000); ++k) {
+        const int e = static_cast<int>(r.index(1200)) - 600;
+        const point<double> a{at_scale(r, e), at_scale(r, e)}, b{at_scale(r, e), at_scale(r, e)};
+        point<double> u{at_scale(r, e), at_scale(r, e)}, v{at_scale(r, e), at_scale(r, e)};
+        if (r.chance(0.5)) u = near_line(r, a, b);  // u at the line of [a, b], often on it
+        if (r.chance(0.2)) v = near_line(r, a, b);  // both: nearly collinear
+        if (r.chance(0.1)) u = r.chance(0.5) ? a : b;  // a shared end
+        const bool meet = CGAL::do_intersect(exact_segment(exact(a), exact(b)), exact_segment(exact(u), exact(v)));
+        const bool answer = segments_may_meet(a, b, u, v, 0);
+        if (meet) {
+            ++meeting;
+            INFO("scale 2^" << e);
+            CHECK(answer);
+        }
+        apart += answer ? 0 : 1;
+    }
+    CHECK(meeting > 1000);
+    CHECK(apart > 1000);
+
+    // e > 0: exact segments whose ends lie within e of the doubles on each
+    // coordinate, pushed towards each other by up to e: whenever those meet,
+    // the filter must answer true.
+    meeting = apart = 0;
+    for (int k = 0; k < count(20000); ++k) {
+        const int s = static_cast<int>(r.index(1200)) - 600;
+        const double scale = std::ldexp(1.0, s);
+        const double e = scale * std::ldexp(1.0, -static_cast<int>(r.index(30)) - 2);
+        const point<double> a{at_scale(r, s), at_scale(r, s)}, b{at_scale(r, s), at_scale(r, s)};
+        // v near the line of [a, b], a few e off it; u away from it.
+        const point<double> on = near_line(r, a, b);
+        const double gap = r.uniform(0, 4) * e;
+        const point<double> v{on.x + (r.chance(0.5) ? gap : -gap), on.y + (r.chance(0.5) ? gap : -gap)};
+        const point<double> u{v.x + at_scale(r, s), v.y + at_scale(r, s)};
+        // Each end moved within e on each coordinate (k/8 of e, exactly).
+        const auto moved = [&](const point<double>& p) {
+            return test_exact::exact_point(Q(p.x) + Q(e) * Q(static_cast<int>(r.index(17)) - 8) / 8,
+                                           Q(p.y) + Q(e) * Q(static_cast<int>(r.index(17)) - 8) / 8);
+        };
+        const bool meet = CGAL::do_intersect(exact_segment(moved(a), moved(b)), exact_segment(moved(u), moved(v)));
+        const bool answer = segments_may_meet(a, b, u, v, e);
+        if (meet) {
+            ++meeting;
+            INFO("scale 2^" << s << ", e " << e);
+            CHECK(answer);
+        }
+        apart += answer ? 0 : 1;
+    }
+    CHECK(meeting > 500);
+    CHECK(apart > 1000);
+
+    // Named cases, e = 0.
+    //   a-----b=u
+    //          \        a shared end
+    //           v
+    CHECK(segments_may_meet({0, 0}, {2, 0}, {2, 0}, {3, 1}, 0));
+    //   a====u====b====v   collinear, overlapping on [u, b]
+    CHECK(segments_may_meet({0, 0}, {2, 0}, {1, 0}, {3, 0}, 0));
+    //         v
+    //         |
+    //   a-----u-----b      u on the interior of [a, b] (a T)
+    CHECK(segments_may_meet({0, 0}, {2, 0}, {1, 0}, {1, 1}, 0));
+    //   a-----b  u-----v   collinear, apart: no line of either separates the
+    //                      other's ends, so the filter keeps them (conservative)
+    CHECK(segments_may_meet({0, 0}, {1, 0}, {2, 0}, {3, 0}, 0));
+    //             v
+    //            /
+    //           u          u and v both above the line of [a, b]: apart
+    //   a-----b
+    CHECK_FALSE(segments_may_meet({0, 0}, {1, 0}, {2, 0.5}, {3, 2}, 0));
+    //   u-----v
+    //                      parallel, 1 apart: apart for e = 0.2 (2e < 1),
+    //   a-----b            maybe meeting for e = 0.6 (the exact ends may close the gap)
+    CHECK_FALSE(segments_may_meet({0, 0}, {2, 0}, {0, 1}, {2, 1}, 0.2));
+    CHECK(segments_may_meet({0, 0}, {2, 0}, {0, 1}, {2, 1}, 0.6));
+    // Non-finite: may meet.
+    CHECK(segments_may_meet({0, 0}, {1, 0}, {nan_value, 0}, {2, 0}, 0));
+}
+
+TEST_CASE("filters: box_may_be_near_line never drops a box within g of the line", "[filters]") {
+    test_random::rng r(10);
+    std::size_t near = 0, far = 0;
+    for (int k = 0; k < count(20000); ++k) {
+        const int s = static_cast<int>(r.index(1200)) - 600;
+        const double x0 = at_scale(r, s), y0 = at_scale(r, s);
+        const box bx{x0, y0, x0 + std::ldexp(r.unit(), s - static_cast<int>(r.index(10))),
+                     y0 + std::ldexp(r.unit(), s - static_cast<int>(r.index(10)))};
+        point<double> u{at_scale(r, s), at_scale(r, s)}, v{at_scale(r, s), at_scale(r, s)};
+        if (r.chance(0.3)) {
+            // The line just past a corner.
+            const point<double> c{r.chance(0.5) ? bx.min_x : bx.max_x, r.chance(0.5) ? bx.min_y : bx.max_y};
+            u = {c.x + at_scale(r, s), c.y + at_scale(r, s)};
+            v = near_line(r, u, c);
+        }
+        const double g = r.chance(0.2) ? 0.0 : std::ldexp(r.unit(), s - static_cast<int>(r.index(20)));
+        // Exact: the box is within g of the line when the corners are not all
+        // strictly on one side, or the nearest corner is within g.
+        const point<double> corners[4] = {{bx.min_x, bx.min_y}, {bx.max_x, bx.min_y}, {bx.min_x, bx.max_y},
+                                          {bx.max_x, bx.max_y}};
+        int side = 0;
+        bool crossed = false;
+        Q nearest = -1;
+        for (const point<double>& c : corners) {
+            const Q o = exact_side(u, v, c);
+            const int sg = sign_of(o);
+            if (sg == 0 || (side != 0 && sg != side)) crossed = true;
+            side = sg;
+            if (nearest < 0 || CGAL::abs(o) < nearest) nearest = CGAL::abs(o);
+        }
+        const Q length2 = (Q(v.x) - u.x) * (Q(v.x) - u.x) + (Q(v.y) - u.y) * (Q(v.y) - u.y);
+        const bool within = crossed || nearest * nearest <= Q(g) * g * length2;
+        const bool answer = box_may_be_near_line(bx, u, v, g);
+        if (within) {
+            ++near;
+            INFO("scale 2^" << s << ", g " << g);
+            CHECK(answer);
+        }
+        far += answer ? 0 : 1;
+    }
+    CHECK(near > 1000);
+    CHECK(far > 1000);
+    // Named cases.
+    //   +--+  |          the box [0,1]^2 and the line x = 2: 1 apart
+    //   |  |  |
+    //   +--+  |
+    CHECK_FALSE(box_may_be_near_line({0, 0, 1, 1}, {2, -1}, {2, 5}, 0.5));
+    CHECK(box_may_be_near_line({0, 0, 1, 1}, {2, -1}, {2, 5}, 1));  // exactly g away: kept
+    //   +--+
+    //   | /|             a line through the box
+    //   +--+
+    CHECK(box_may_be_near_line({0, 0, 1, 1}, {0, 0}, {1, 1}, 0));
+    //   u=v              no line: kept
+    CHECK(box_may_be_near_line({0, 0, 1, 1}, {5, 5}, {5, 5}, 0));
+}
