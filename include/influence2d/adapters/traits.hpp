@@ -105,11 +105,15 @@ struct has_point_traits<P, std::void_t<decltype(static_cast<double>(point_traits
 
 /// begin and end as a range-based for loop finds them: members, or free
 /// functions through argument-dependent lookup, or std's for arrays.
+/// begin and end as a range-for finds them (std:: or by argument-dependent
+/// lookup).
 namespace range_lookup {
 using std::begin;
 using std::end;
+/// The iterator type begin() gives for a const R.
 template <class R>
 using begin_t = decltype(begin(std::declval<const R&>()));
+/// The sentinel type end() gives for a const R.
 template <class R>
 using end_t = decltype(end(std::declval<const R&>()));
 }  // namespace range_lookup
@@ -152,6 +156,7 @@ struct ring_range_check {
     static constexpr bool value = ring_check<element_t<Rings>>::value;  ///< true once the checks pass
 };
 
+/// "ring R, vertex V", for messages.
 inline std::string vertex_place(std::size_t ring, std::size_t vertex) {
     return "ring " + std::to_string(ring) + ", vertex " + std::to_string(vertex);
 }

@@ -14,11 +14,16 @@ namespace influence2d {
 /// them out in input numbering, sorted and without repeats.
 class pair_collector {
 public:
+    /// Forgets every pair (a new frame).
     void clear() { pairs_.clear(); }
+    /// Adds the pair of A's stored edge i and B's stored edge j.
     void add(std::size_t i, std::size_t j) { pairs_.push_back({i, j}); }
+    /// Whether no pair was added since the last clear().
     bool empty() const { return pairs_.empty(); }
+    /// Bytes of the heap block held.
     std::size_t heap_bytes() const { return pairs_.capacity() * sizeof(edge_pair); }
 
+    /// The pairs in A's and B's input numbering, sorted, without repeats.
     std::vector<edge_pair> in_input_numbering(const polygon& a, const polygon& b) const {
         std::vector<edge_pair> out;
         out.reserve(pairs_.size());

@@ -223,9 +223,12 @@ double time_above(const time_fraction<NT>& t) {
 /// displacement d (and -d, A's motion relative to B).
 template <class NT>
 struct translation_frame {
-    placed_polygon<NT> a, b;
-    point<NT> d, minus_d;
+    placed_polygon<NT> a;    ///< A where it stands
+    placed_polygon<NT> b;    ///< B posed at the start
+    point<NT> d;             ///< B's displacement over the motion
+    point<NT> minus_d;       ///< A's displacement relative to B
 
+    /// A and B placed for the translation of B by dd from `start`.
     translation_frame(const polygon& as, const polygon& bs, const rotation_pose& start, point<NT> dd)
         : a(as), b(bs, start), d(dd), minus_d{-dd.x, -dd.y} {}
 
@@ -259,7 +262,10 @@ std::optional<time_fraction<NT>> site_time(const polygon& a, const polygon& b, c
 /// The validated parts of a motion: its start and end as rotation poses
 /// (invalid_input for a NaN or infinite component of either).
 struct motion {
-    rotation_pose start, end;
+    rotation_pose start;  ///< B's pose at time 0
+    rotation_pose end;    ///< B's pose at time 1
+    /// The motion from `from` to `to`; throws invalid_input for a NaN or
+    /// infinite component of either.
     motion(const pose& from, const pose& to) : start(from), end(checked_end(to)) {}
 
     /// The motion of B from `from` to `to` against A, both polygons checked
@@ -304,8 +310,8 @@ point<NT> displacement(const pose& from, const pose& to) {
 /// The earliest event of a translation in one NT: its site and time.
 template <class NT>
 struct earliest_event {
-    contact_site site;
-    time_fraction<NT> time;
+    contact_site site;       ///< where the event happens
+    time_fraction<NT> time;  ///< when
 };
 
 /// The earliest contact event of B translated from `from` to `to` (same
@@ -340,11 +346,12 @@ std::optional<earliest_event<NT>> earliest_translation_event(const polygon& a, c
 /// asked, with two doubles around it.
 template <class Exact>
 struct filtered_event {
-    contact_site site;
+    contact_site site;  ///< where the event happens
     std::optional<time_fraction<certified>> fast;        ///< the time in certified, when certain
     std::optional<time_fraction<Exact>> exact;  ///< the exact time, once asked
     double rounded = 0;                                  ///< the exact time's nearest double, with exact
-    double below = 0, above = 0;                         ///< below <= exact time <= above, with exact
+    double below = 0;  ///< a double at most the exact time, with exact
+    double above = 0;  ///< a double at least the exact time, with exact
 
     /// A double above the time: from the exact time's neighbours, else from
     /// the certified time's bounds (num at most its value plus its error,

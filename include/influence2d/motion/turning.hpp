@@ -82,8 +82,8 @@ double separation_error(double scale) {
 /// realise it (separation's).
 struct probe_result {
     double distance = 0;  ///< within one ulp of the separation's distance
-    feature static_feature{};
-    feature moving_feature{};
+    feature static_feature{};  ///< A's feature at that distance
+    feature moving_feature{};  ///< B's feature at that distance
 };
 
 /// The earliest time of conservative advancement along the motion from

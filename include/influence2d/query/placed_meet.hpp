@@ -29,7 +29,7 @@ struct meeting {
         a_vertex_in_b,  ///< A's vertex `a_index` lies in B (`where`: inside or on the boundary)
         b_vertex_in_a,  ///< B's vertex `b_index` lies in A
         edges         ///< A's edge `a_index` meets B's edge `b_index`
-    } how = kind::none;
+    } how = kind::none;  ///< which test answered
     std::size_t a_index = 0;  ///< A's vertex or edge (stored numbering)
     std::size_t b_index = 0;  ///< B's vertex or edge (stored numbering)
     location where = location::outside;  ///< for a located vertex

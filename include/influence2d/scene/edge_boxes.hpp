@@ -16,8 +16,11 @@ namespace influence2d {
 
 /// An edge's box in double (posed, for B) with its edge number.
 struct edge_box {
-    double min_x, max_x, min_y, max_y;
-    std::uint32_t edge;
+    double min_x;        ///< the box's least abscissa
+    double max_x;        ///< its greatest abscissa
+    double min_y;        ///< its least ordinate
+    double max_y;        ///< its greatest ordinate
+    std::uint32_t edge;  ///< the edge (stored numbering)
 };
 
 /// The edges of a polygon whose vertices (in double) are `v` and whose box
