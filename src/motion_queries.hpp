@@ -51,8 +51,6 @@ inline std::string feature_text(const feature& f) {
     return "interior";
 }
 
-namespace query_detail {
-
 /// A time of NT as the nearest double (exactly rounded for an exact NT).
 template <class NT>
 double time_as_double(const NT& t) {
@@ -116,7 +114,5 @@ inline bool exact_meets_both(const polygon& a, const pose& pose_a, const polygon
 inline bool certified_meets_both(const polygon& a, const pose& pose_a, const polygon& b, const pose& pose_b) {
     return certified_intersects(a, pose_a, b, pose_b);
 }
-
-}  // namespace query_detail
 
 }  // namespace influence2d::cli

@@ -138,20 +138,19 @@ struct number_type {
 inline const number_type number_types[] = {
     // clang-format off
     {"float", "IEEE single precision, refusing coordinates beyond float's range", false, false, &number_type_detail::run_in<float>,
-     &query_detail::separations_in<float>, &query_detail::contacts_in<float>, nullptr},
+     &separations_in<float>, &contacts_in<float>, nullptr},
     {"double", "IEEE double precision", false, false, &number_type_detail::run_in<double>,
-     &query_detail::separations_in<double>, &query_detail::contacts_in<double>, nullptr},
+     &separations_in<double>, &contacts_in<double>, nullptr},
     {"long-double", "the platform's long double (64-bit significand on x86)", false, false, &number_type_detail::run_in<long double>,
-     &query_detail::separations_in<long double>, &query_detail::contacts_in<long double>, nullptr},
+     &separations_in<long double>, &contacts_in<long double>, nullptr},
     {"quad", "113-bit software floating point (Boost cpp_bin_float_quad)", false, false, &number_type_detail::run_in<quad>,
-     &query_detail::separations_in<quad>, &query_detail::contacts_in<quad>, nullptr},
+     &separations_in<quad>, &contacts_in<quad>, nullptr},
     {"exact", "CGAL's exact rationals, slower", true, false, &number_type_detail::run_in<exact_rational>,
-     &query_detail::separations_in<exact_rational>, &query_detail::contacts_in<exact_rational>,
-     &query_detail::exact_meets_both},
+     &separations_in<exact_rational>, &contacts_in<exact_rational>, &exact_meets_both},
     {"certified", "double with a running error bound, a frame whose signs it cannot certify answered again in exact rationals (counted as 'exact fallbacks')", true, true, &number_type_detail::run_filtered<certified_detector>,
-     &query_detail::certified_separations, &query_detail::certified_contacts, &query_detail::certified_meets_both},
+     &certified_separations, &certified_contacts, &certified_meets_both},
     {"interval", "the same with CGAL's interval arithmetic (separation and sweep: as certified)", true, true, &number_type_detail::run_filtered<interval_detector>,
-     &query_detail::certified_separations, &query_detail::certified_contacts, &query_detail::certified_meets_both},
+     &certified_separations, &certified_contacts, &certified_meets_both},
     // clang-format on
 };
 

@@ -34,6 +34,7 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/io/wkt.hpp"
+#include "verification/seeded_draws.hpp"
 
 namespace influence2d::verification {
 
@@ -66,7 +67,6 @@ inline std::string family_name(family f) {
 
 namespace family_detail {
 
-constexpr double pi = 3.14159265358979323846;
 constexpr double enclosing_radius = 50;
 
 /// A vertex in polar form about the origin.
@@ -74,49 +74,6 @@ struct polar {
     double angle;
     double radius;
 };
-
-/// The splitmix64 finaliser: decorrelates nearby seeds.
-inline std::uint64_t mix(std::uint64_t x) {
-    x += 0x9e3779b97f4a7c15ULL;
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-    return x ^ (x >> 31);
-}
-
-/// Uniform doubles in [0, 1) from the top 53 bits (never a library distribution,
-/// whose algorithm is implementation-defined).
-class uniform_source {
-public:
-    explicit uniform_source(std::uint64_t seed) : engine_(seed) {}
-    double next() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
-    /// Uniform in [lo, hi).
-    double between(double lo, double hi) { return lo + (hi - lo) * next(); }
-
-private:
-    std::mt19937_64 engine_;
-};
-
-/// `count` increasing angles from `start` covering `span`: the gaps are
-/// span * w_k / sum(w) with weights w_k uniform in [1 - spread, 1 + spread].
-/// With `closed` the gaps go once around (count gaps, last back to the first
-/// angle); otherwise count - 1 gaps run from `start` to `start + span`.
-inline std::vector<double> jittered_angles(uniform_source& u, std::size_t count, double start,
-                                           double span, double spread, bool closed) {
-    const std::size_t gaps = closed ? count : count - 1;
-    std::vector<double> w(gaps);
-    double total = 0;
-    for (double& x : w) {
-        x = u.between(1 - spread, 1 + spread);
-        total += x;
-    }
-    std::vector<double> angles(count);
-    double sum = 0;
-    for (std::size_t k = 0; k < count; ++k) {
-        angles[k] = start + span * (sum / total);
-        if (k < gaps) sum += w[k];
-    }
-    return angles;
-}
 
 /// Onto the grid of 2^-20, towards zero; -0 becomes +0.
 inline double to_grid(double v) { return std::ldexp(std::trunc(std::ldexp(v, 20)), -20) + 0.0; }
@@ -195,22 +152,6 @@ std::vector<polar> star_ring(uniform_source& u, std::size_t n, double spread, Ra
     for (std::size_t k = 0; k < n; ++k) ring[k] = {angles[k], radius(k)};
     return ring;
 }
-
-/// Smooth random wobble in [-1, 1]: the mean of three sinusoids of low
-/// frequency with random phases.
-class wobble {
-public:
-    explicit wobble(uniform_source& u) {
-        for (double& p : phase_) p = u.between(0, 2 * pi);
-    }
-    double operator()(double angle) const {
-        return (std::sin(angle + phase_[0]) + std::sin(2 * angle + phase_[1]) +
-                std::sin(3 * angle + phase_[2])) / 3;
-    }
-
-private:
-    double phase_[3] = {};
-};
 
 /// Shortest distance from the origin to the ring's edges, as a bound for
 /// the hole (in double: the margin it feeds is a fraction of the distance).

@@ -65,11 +65,9 @@
 
 namespace influence2d::verification {
 
-namespace peer_detail {
-
 /// The rings of P as closed-free vertex lists; ring 0 first. The peers take
 /// polygons with one outer ring (ring 0) and holes, as every family polygon is.
-inline std::vector<std::vector<point<double>>> rings_of(const polygon& P) {
+inline std::vector<std::vector<point<double>>> peer_rings(const polygon& P) {
     std::vector<std::vector<point<double>>> rings;
     for (std::size_t r = 0; r < P.ring_count(); ++r) {
         if ((P.role(r) == ring_role::hole) != (r > 0))
@@ -82,11 +80,9 @@ inline std::vector<std::vector<point<double>>> rings_of(const polygon& P) {
 }
 
 /// B's vertex q posed in double.
-inline point<double> posed(const rotation_pose& r, const point<double>& q) {
+inline point<double> posed_vertex(const rotation_pose& r, const point<double>& q) {
     return {r.c * q.x - r.s * q.y + r.tx, r.s * q.x + r.c * q.y + r.ty};
 }
-
-}  // namespace peer_detail
 
 namespace peer_detail {
 
@@ -101,7 +97,7 @@ inline bg_polygon bg_posed(const std::vector<std::vector<point<double>>>& rings,
         auto& ring = k == 0 ? out.outer() : out.inners()[k - 1];
         ring.reserve(rings[k].size() + 1);
         for (const auto& q : rings[k]) {
-            const point<double> v = posed(r, q);
+            const point<double> v = posed_vertex(r, q);
             ring.push_back(bg_point(v.x, v.y));
         }
         ring.push_back(ring.front());
@@ -120,13 +116,13 @@ public:
     /// cell by the time study, outside every timing).
     static bool applies(const polygon& A, const polygon& B) {
         const rotation_pose identity{pose{}};
-        return boost::geometry::is_valid(peer_detail::bg_posed(peer_detail::rings_of(A), identity)) &&
-               boost::geometry::is_valid(peer_detail::bg_posed(peer_detail::rings_of(B), identity));
+        return boost::geometry::is_valid(peer_detail::bg_posed(peer_rings(A), identity)) &&
+               boost::geometry::is_valid(peer_detail::bg_posed(peer_rings(B), identity));
     }
 
-    boost_geometry_peer(const polygon& A, const polygon& B) : b_rings_(peer_detail::rings_of(B)) {
+    boost_geometry_peer(const polygon& A, const polygon& B) : b_rings_(peer_rings(B)) {
         const rotation_pose identity{pose{}};
-        a_ = peer_detail::bg_posed(peer_detail::rings_of(A), identity);
+        a_ = peer_detail::bg_posed(peer_rings(A), identity);
         b_ = peer_detail::bg_posed(b_rings_, identity);
     }
 
@@ -141,7 +137,7 @@ private:
     template <class Ring>
     static void fill(Ring& ring, const std::vector<point<double>>& from, const rotation_pose& r) {
         for (std::size_t i = 0; i < from.size(); ++i) {
-            const point<double> q = peer_detail::posed(r, from[i]);
+            const point<double> q = posed_vertex(r, from[i]);
             ring[i] = peer_detail::bg_point(q.x, q.y);
         }
         ring[from.size()] = ring[0];
@@ -158,8 +154,8 @@ public:
     static bool applies(const polygon& A, const polygon& B) { return boost_geometry_peer::applies(A, B); }
 
     boost_geometry_one_shot(const polygon& A, const polygon& B)
-        : a_(peer_detail::bg_posed(peer_detail::rings_of(A), rotation_pose(pose{}))),
-          b_rings_(peer_detail::rings_of(B)) {}
+        : a_(peer_detail::bg_posed(peer_rings(A), rotation_pose(pose{}))),
+          b_rings_(peer_rings(B)) {}
 
     bool collide(const pose& p) const {
         return boost::geometry::intersects(a_, peer_detail::bg_posed(b_rings_, rotation_pose(p)));
@@ -181,8 +177,6 @@ struct missing_peer {
 };
 
 #if INFLUENCE2D_HAVE_GEOS
-namespace peer_detail {
-
 /// A GEOS context (reentrant C API) with its error message and a coordinate
 /// buffer: builds polygons from rings, posed.
 class geos_builder {
@@ -221,7 +215,7 @@ private:
     GEOSGeometry* ring(const std::vector<point<double>>& from, const rotation_pose& r) {
         buffer_.resize(2 * (from.size() + 1));
         for (std::size_t i = 0; i < from.size(); ++i) {
-            const point<double> q = posed(r, from[i]);
+            const point<double> q = posed_vertex(r, from[i]);
             buffer_[2 * i] = q.x;
             buffer_[2 * i + 1] = q.y;
         }
@@ -239,16 +233,14 @@ private:
     std::vector<GEOSGeometry*> holes_;
 };
 
-}  // namespace peer_detail
-
 /// GEOS, frame form: the static polygon prepared once.
 class geos_peer {
 public:
     static const char* name() { return "geos"; }
     static bool applies(const polygon&, const polygon&) { return true; }
 
-    geos_peer(const polygon& A, const polygon& B) : b_rings_(peer_detail::rings_of(B)) {
-        a_ = g_.make(peer_detail::rings_of(A), rotation_pose(pose{}));
+    geos_peer(const polygon& A, const polygon& B) : b_rings_(peer_rings(B)) {
+        a_ = g_.make(peer_rings(A), rotation_pose(pose{}));
         prepared_ = GEOSPrepare_r(g_.ctx, a_);
         if (!prepared_) throw std::runtime_error("geos_peer: GEOSPrepare_r failed: " + g_.error);
     }
@@ -267,7 +259,7 @@ public:
     }
 
 private:
-    peer_detail::geos_builder g_;
+    geos_builder g_;
     std::vector<std::vector<point<double>>> b_rings_;
     GEOSGeometry* a_ = nullptr;
     const GEOSPreparedGeometry* prepared_ = nullptr;
@@ -279,7 +271,7 @@ public:
     static bool applies(const polygon&, const polygon&) { return true; }
 
     geos_one_shot(const polygon& A, const polygon& B)
-        : a_rings_(peer_detail::rings_of(A)), b_rings_(peer_detail::rings_of(B)) {}
+        : a_rings_(peer_rings(A)), b_rings_(peer_rings(B)) {}
 
     bool collide(const pose& p) {
         GEOSGeometry* a = g_.make(a_rings_, rotation_pose(pose{}));
@@ -291,7 +283,7 @@ public:
     }
 
 private:
-    peer_detail::geos_builder g_;
+    geos_builder g_;
     std::vector<std::vector<point<double>>> a_rings_, b_rings_;
 };
 #else
@@ -310,8 +302,8 @@ public:
     static const char* name() { return "cgal"; }
     static bool applies(const polygon&, const polygon&) { return true; }
 
-    cgal_peer(const polygon& A, const polygon& B) : b_rings_(peer_detail::rings_of(B)) {
-        const auto a = peer_detail::rings_of(A);
+    cgal_peer(const polygon& A, const polygon& B) : b_rings_(peer_rings(B)) {
+        const auto a = peer_rings(A);
         a_ = make(a, [](const point<double>& q) { return kernel::Point_2(q.x, q.y); });
     }
 

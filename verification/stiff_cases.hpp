@@ -56,6 +56,7 @@
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/number/exact_sum.hpp"
 #include "verification/families.hpp"
+#include "verification/seeded_draws.hpp"
 
 namespace influence2d::verification {
 
@@ -134,9 +135,6 @@ inline std::vector<double> scale_magnitudes() {
 namespace stiff_detail {
 
 using dpoint = point<double>;
-using family_detail::mix;
-using family_detail::uniform_source;
-constexpr double pi = family_detail::pi;
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
 inline std::uint64_t scene_seed(std::uint64_t seed, stiff_family f, std::size_t index) {
@@ -271,7 +269,7 @@ inline std::vector<lpoint> lattice_star(uniform_source& u, std::size_t m, double
                                         double spread = 0.3) {
     for (int attempt = 0; attempt < 10000; ++attempt) {
         const std::vector<double> angles =
-            family_detail::jittered_angles(u, m, u.between(0, 2 * pi), 2 * pi, spread, true);
+            jittered_angles(u, m, u.between(0, 2 * pi), 2 * pi, spread, true);
         std::vector<lpoint> ring(m);
         for (std::size_t k = 0; k < m; ++k) {
             const double r = u.between(rmin, rmax);
@@ -314,7 +312,7 @@ inline std::vector<dpoint> from_lattice(const std::vector<lpoint>& ring, double 
 /// in double: jittered angles (every gap below pi), radii in [0.6, 1] * radius.
 inline std::vector<dpoint> small_star(uniform_source& u, std::size_t m, double radius) {
     const std::vector<double> angles =
-        family_detail::jittered_angles(u, m, u.between(0, 2 * pi), 2 * pi, 0.2, true);
+        jittered_angles(u, m, u.between(0, 2 * pi), 2 * pi, 0.2, true);
     std::vector<dpoint> ring(m);
     for (std::size_t k = 0; k < m; ++k) {
         const double r = radius * u.between(0.6, 1);
@@ -618,7 +616,7 @@ inline plan needle_plan(uniform_source& u) {
     const std::size_t spikes = static_cast<std::size_t>(integer(u, 2, 5));
     const std::size_t slots = body + spikes, every = slots / spikes;
     const std::vector<double> angles =
-        family_detail::jittered_angles(u, slots, u.between(0, 2 * pi), 2 * pi, 0.2, true);
+        jittered_angles(u, slots, u.between(0, 2 * pi), 2 * pi, 0.2, true);
     std::vector<dpoint> ring;
     std::size_t made = 0;
     for (std::size_t k = 0; k < slots; ++k) {
@@ -652,7 +650,7 @@ inline plan tiny_beside_huge_plan(uniform_source& u) {
     plan p;
     const std::size_t m = static_cast<std::size_t>(integer(u, 5, 8));
     const double radius = u.between(600, 900);
-    const std::vector<double> angles = family_detail::jittered_angles(u, m, u.between(0, 2 * pi), 2 * pi, 0.2, true);
+    const std::vector<double> angles = jittered_angles(u, m, u.between(0, 2 * pi), 2 * pi, 0.2, true);
     std::vector<dpoint> big(m);
     for (std::size_t k = 0; k < m; ++k) {
         const double r = radius * u.between(0.8, 1);
@@ -788,7 +786,7 @@ inline plan grazing_plan(uniform_source& u, std::size_t index) {
 inline std::vector<lpoint> pinwheel(uniform_source& u, std::vector<std::size_t>& radial) {
     for (int attempt = 0; attempt < 10000; ++attempt) {
         const std::size_t k = static_cast<std::size_t>(integer(u, 3, 8));
-        std::vector<double> angles = family_detail::jittered_angles(u, k + 1, u.between(0, pi), pi, 0.3, false);
+        std::vector<double> angles = jittered_angles(u, k + 1, u.between(0, pi), pi, 0.3, false);
         angles.pop_back();
         const double reach = u.between(8, 24);
         std::vector<lpoint> dirs(k);
@@ -848,8 +846,8 @@ inline plan large_plan(uniform_source& u) {
     const std::size_t n = static_cast<std::size_t>(integer(u, 100000, 131072));
     const double radius = 0x1p20;
     for (int attempt = 0;; ++attempt) {
-        const family_detail::wobble w(u);
-        const std::vector<double> angles = family_detail::jittered_angles(u, n, 0, 2 * pi, 0.5, true);
+        const wobble w(u);
+        const std::vector<double> angles = jittered_angles(u, n, 0, 2 * pi, 0.5, true);
         std::vector<lpoint> ring(n);
         for (std::size_t k = 0; k < n; ++k) {
             const double r = radius * (0.75 + 0.15 * w(angles[k])) + u.between(-16, 16);

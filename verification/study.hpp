@@ -55,6 +55,7 @@
 #include "verification/decisions.hpp"
 #include "verification/families.hpp"
 #include "verification/query_study.hpp"
+#include "verification/seeded_draws.hpp"
 #include "verification/stiff_cases.hpp"
 
 namespace influence2d::verification {
@@ -131,8 +132,6 @@ inline std::uint64_t fnv1a(const std::string& text) {
 }
 
 namespace study_detail {
-
-constexpr double pi = 3.14159265358979323846;
 
 struct random_source {
     std::mt19937_64 gen;

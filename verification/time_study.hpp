@@ -354,12 +354,6 @@ namespace time_study_detail {
 
 using clock = std::chrono::steady_clock;
 
-inline family family_of(const std::string& name) {
-    for (family f : all_families)
-        if (family_name(f) == name) return f;
-    throw std::invalid_argument("unknown polygon type: " + name);
-}
-
 template <class T>
 struct form_tag {
     using type = T;
@@ -393,10 +387,20 @@ void with_form(const std::string& m, const std::string& trajectory, G&& g) {
         method_table());
 }
 
+}  // namespace time_study_detail
+
+/// The polygon family of a time study type (convex, starred, irregular,
+/// contour, hole).
+inline family family_of(const std::string& name) {
+    for (family f : all_families)
+        if (family_name(f) == name) return f;
+    throw std::invalid_argument("unknown polygon type: " + name);
+}
+
 /// Calls f(d) with method m's form for the workload built for A and B.
 template <class F>
 void with_method(const std::string& m, const std::string& trajectory, const polygon& a, const polygon& b, F&& f) {
-    with_form(m, trajectory, [&](auto tag) {
+    time_study_detail::with_form(m, trajectory, [&](auto tag) {
         typename decltype(tag)::type d(a, b);
         f(d);
     });
@@ -406,17 +410,19 @@ void with_method(const std::string& m, const std::string& trajectory, const poly
 inline double build_seconds(const std::string& m, const std::string& trajectory, const polygon& a,
                             const polygon& b) {
     double seconds = 0;
-    with_form(m, trajectory, [&](auto tag) {
+    time_study_detail::with_form(m, trajectory, [&](auto tag) {
         std::optional<typename decltype(tag)::type> d;
-        const auto t0 = clock::now();
+        const auto t0 = time_study_detail::clock::now();
         d.emplace(a, b);
-        seconds = std::chrono::duration<double>(clock::now() - t0).count();
+        seconds = std::chrono::duration<double>(time_study_detail::clock::now() - t0).count();
     });
     return seconds;
 }
 
+/// Whether the form d (a method built for a pair) answers that the pair
+/// meets at pose p: a frame form's frame_result, a one-shot form's bool.
 template <class D>
-bool collides(D& d, const pose& p) {
+bool form_collides(D& d, const pose& p) {
     if constexpr (std::is_same_v<decltype(d.collide(p)), bool>)
         return d.collide(p);
     else
@@ -429,10 +435,12 @@ template <class D>
 double run_frames(D& d, const std::vector<pose>& poses, std::size_t stride, std::vector<char>& answers) {
     answers.clear();
     answers.reserve(poses.size() / stride + 1);
-    const auto t0 = clock::now();
-    for (std::size_t k = 0; k < poses.size(); k += stride) answers.push_back(collides(d, poses[k]) ? 1 : 0);
-    return std::chrono::duration<double>(clock::now() - t0).count();
+    const auto t0 = time_study_detail::clock::now();
+    for (std::size_t k = 0; k < poses.size(); k += stride) answers.push_back(form_collides(d, poses[k]) ? 1 : 0);
+    return std::chrono::duration<double>(time_study_detail::clock::now() - t0).count();
 }
+
+namespace time_study_detail {
 
 /// The stride that keeps a run of d within `budget` seconds, from 8 evenly
 /// spaced frames, asked once untimed (first calls pay for cold caches and
@@ -441,9 +449,9 @@ template <class D>
 std::size_t stride_for(D& d, const std::vector<pose>& poses, double budget) {
     const std::size_t probe = std::min<std::size_t>(8, poses.size());
     if (probe == 0) return 1;
-    for (std::size_t k = 0; k < probe; ++k) (void)collides(d, poses[k * poses.size() / probe]);
+    for (std::size_t k = 0; k < probe; ++k) (void)form_collides(d, poses[k * poses.size() / probe]);
     const auto t0 = clock::now();
-    for (std::size_t k = 0; k < probe; ++k) (void)collides(d, poses[k * poses.size() / probe]);
+    for (std::size_t k = 0; k < probe; ++k) (void)form_collides(d, poses[k * poses.size() / probe]);
     const double per_frame = std::chrono::duration<double>(clock::now() - t0).count() / static_cast<double>(probe);
     const double whole = per_frame * static_cast<double>(poses.size());
     if (whole <= budget) return 1;

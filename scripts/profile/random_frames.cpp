@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
         }
         const time_cell c{cell.substr(0, c1), "random", std::stoul(cell.substr(c1 + 1, c2 - c1 - 1)),
                           std::stoul(cell.substr(c2 + 1))};
-        const family f = time_study_detail::family_of(c.type);
+        const family f = family_of(c.type);
         const polygon a = make_family_polygon(f, c.static_size, o.seed);
         const polygon b = make_family_polygon(f, c.moving_size, o.seed);
         const std::vector<pose> poses = time_study_poses(o, c, a, b);

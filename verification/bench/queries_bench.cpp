@@ -124,8 +124,8 @@ void first_contact_certified(benchmark::State& state, const cell& c) {
 /// GEOS's distance, A built (and prepared) once, B built posed per query.
 class geos_distance {
 public:
-    explicit geos_distance(const cell& c) : b_rings_(verification::peer_detail::rings_of(c.b())) {
-        a_ = g_.make(verification::peer_detail::rings_of(c.a()), rotation_pose(pose{}));
+    explicit geos_distance(const cell& c) : b_rings_(verification::peer_rings(c.b())) {
+        a_ = g_.make(verification::peer_rings(c.a()), rotation_pose(pose{}));
         prepared_ = GEOSPrepare_r(g_.ctx, a_);
     }
     geos_distance(const geos_distance&) = delete;
@@ -144,7 +144,7 @@ public:
     }
 
 private:
-    verification::peer_detail::geos_builder g_;
+    verification::geos_builder g_;
     std::vector<std::vector<point<double>>> b_rings_;
     GEOSGeometry* a_ = nullptr;
     const GEOSPreparedGeometry* prepared_ = nullptr;
