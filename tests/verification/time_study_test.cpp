@@ -82,10 +82,22 @@ TEST_CASE("time study: the registry names, parses and builds every method", "[ve
             if (!runs_on(m, j)) continue;
             INFO(j);
             REQUIRE(method_of(m).applies(a, b));
-            bool answer = true;
-            with_method(m, j, a, b, [&](auto& d) { answer = form_collides(d, apart); });
+            // Apart, and B on A (the same polygon at the identity): the
+            // certified detector's answers.
+            const pose on_top{0, 0, 0};
+            REQUIRE(certified_detector<detector>(a, b).collide(on_top).collides);
+            bool answer = true, overlapping = false;
+            with_method(m, j, a, b, [&](auto& d) {
+                answer = form_collides(d, apart);
+                overlapping = form_collides(d, on_top);
+            });
             CHECK(!answer);
-            CHECK(build_seconds(m, j, a, b) >= 0);
+            CHECK(overlapping);
+            // A build was timed: a finite, positive duration (its size is not
+            // checked).
+            const double built = build_seconds(m, j, a, b);
+            CHECK(std::isfinite(built));
+            CHECK(built > 0);
         }
     }
     // Influence2d's methods first, then the peers.
@@ -118,6 +130,52 @@ TEST_CASE("time study: the registry names, parses and builds every method", "[ve
     o.methods = {"double"};
     o.trajectories = {"spiral"};
     CHECK_THROWS_AS(run_time_study(o), std::invalid_argument);
+}
+
+namespace {
+
+/// A stand-in for a method's form: records the poses it is asked and
+/// answers tx > 0, as a bool or as a frame_result.
+template <bool as_bool>
+struct recording_form {
+    std::vector<pose> asked;
+    auto collide(const pose& p) {
+        asked.push_back(p);
+        if constexpr (as_bool)
+            return p.tx > 0;
+        else
+            return frame_result{p.tx > 0, {}};
+    }
+};
+
+template <bool as_bool>
+void check_run_frames() {
+    std::vector<pose> poses;
+    for (int k = 0; k < 10; ++k) poses.push_back({k % 3 == 0 ? 1.0 + k : -1.0 - k, static_cast<double>(k), 0});
+    for (const std::size_t stride : {std::size_t{1}, std::size_t{3}, std::size_t{4}, std::size_t{10}, std::size_t{11}}) {
+        INFO("stride " << stride);
+        recording_form<as_bool> d;
+        std::vector<char> answers{1, 1, 1};  // cleared by the run
+        const double seconds = run_frames(d, poses, stride, answers);
+        CHECK(std::isfinite(seconds));
+        CHECK(seconds >= 0);
+        // Every stride-th pose from the first, in order, once; one answer each.
+        const std::size_t expected = (poses.size() + stride - 1) / stride;
+        REQUIRE(d.asked.size() == expected);
+        REQUIRE(answers.size() == expected);
+        for (std::size_t k = 0; k < expected; ++k) {
+            CHECK(d.asked[k].ty == poses[k * stride].ty);
+            CHECK(answers[k] == (poses[k * stride].tx > 0 ? 1 : 0));
+        }
+    }
+}
+
+}  // namespace
+
+TEST_CASE("time study: a timed run asks every stride-th pose once and keeps each answer",
+          "[verification][bench][time_study]") {
+    check_run_frames<true>();
+    check_run_frames<false>();
 }
 
 TEST_CASE("time study: the random poses are seeded and lie in the annulus", "[verification][bench][time_study]") {
