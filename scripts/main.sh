@@ -11,8 +11,9 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/deps.sh"
 cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$root/build" -j "$(nproc)" --target influence2d_cli >/dev/null
+cmake --build "$root/build" -j "$(nproc)" --target influence2d_cli influence2d_bench_cli >/dev/null
 tool="$root/build/src/influence2d"
+bench_tool="$root/build/src/influence2d-bench"
 data="$root/data/families"
 out="$root/build/main-job"
 rm -rf "$out"
@@ -76,7 +77,7 @@ echo
 echo "tables and plots: $out/study/study.md, $out/study/*.svg"
 echo
 echo "time study (quick grid: sizes 8 and 1024, every polygon type; the two trajectories, random poses and one-shot queries; every method on the same poses):"
-"$tool" bench --quick --out "$out/bench" >"$out/bench.log"
+"$bench_tool" --quick --out "$out/bench" >"$out/bench.log"
 sed -n '/^## Methods/,/^## Targets/p' "$out/bench/bench.md" | sed '$d'
 sed -n '/^## Targets/,/^## Speed-up/p' "$out/bench/bench.md" | sed '$d'
-echo "tables and heat maps: $out/bench/bench.md, $out/bench/heatmap_*.png (full grid: influence2d bench)"
+echo "tables and heat maps: $out/bench/bench.md, $out/bench/heatmap_*.png (full grid: influence2d-bench)"

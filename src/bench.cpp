@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// `influence2d bench`: the paper's time study (verification/time_study.hpp)
+// influence2d-bench (bench_main.cpp): the paper's time study (verification/time_study.hpp)
 // against the libraries a user would pick instead, on the paper's trajectories,
 // on random poses near contact and as one-shot queries; writes bench.csv,
 // bench.md (per workload: our speed-up over the fastest peer per cell,
@@ -213,10 +213,10 @@ std::string methods_help() {
 
 }  // namespace
 
-void register_bench(CLI::App& app) {
+void configure_bench(CLI::App& app) {
     auto o = std::make_shared<bench_cli_options>();
-    CLI::App* sub = app.add_subcommand(
-        "bench",
+    CLI::App* sub = &app;
+    sub->description(
         "The paper's time study against Boost.Geometry, GEOS, CGAL, Box2D and an all-pairs test, on the same "
         "poses: the paper's trajectories, random poses near contact and one-shot queries; DIR/bench.csv, "
         "DIR/bench.md (speed-ups, preparation, targets, peak memory) and heat maps (with gnuplot).");
@@ -265,7 +265,7 @@ void register_bench(CLI::App& app) {
     sub->add_flag("--progress", o->progress, "Report progress on stderr even when it is not a terminal");
     sub->footer(methods_help());
     sub->callback([o, sub] {
-        std::string command = "influence2d bench";
+        std::string command = "influence2d-bench";
         for (const CLI::Option* opt : sub->get_options()) {
             if (opt->count() == 0 || opt->get_name() == "--help") continue;
             command += " " + opt->get_name();

@@ -4,27 +4,35 @@
 // Exit codes: 0 success (or --help), 1 `audit`: the library refuses the
 // polygon (the findings say why), 2 bad usage, bad input or a file that cannot
 // be read or written; messages go to stderr as `influence2d: error: ...`.
+//
+// The time study, once `influence2d bench`, is the program influence2d-bench
+// (bench_main.cpp): it links the peer libraries, one of them GPL, which this
+// tool does not. `influence2d bench` is kept, out of the help, to say so.
 
-#include <exception>
-#include <iostream>
+#include <stdexcept>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
 #include "influence2d/version.hpp"
+#include "tool.hpp"
 
 namespace {
 
-/// Prints every line of `message` with the tool's error prefix.
-void print_error(const std::string& message) {
-    std::size_t start = 0;
-    for (;;) {
-        const std::size_t end = message.find('\n', start);
-        std::cerr << "influence2d: error: " << message.substr(start, end - start) << '\n';
-        if (end == std::string::npos) break;
-        start = end + 1;
-    }
+/// `influence2d bench`: not listed in the help; whatever its arguments, it
+/// names the program the time study moved to and fails (exit code 2).
+void register_moved_bench(CLI::App& app) {
+    CLI::App* sub = app.add_subcommand("bench", "The time study: moved to the program influence2d-bench");
+    sub->group("");
+    sub->allow_extras();
+    sub->set_help_flag();
+    sub->callback([] {
+        throw std::invalid_argument(
+            "bench: the time study is the program influence2d-bench now (built beside influence2d; CMake target "
+            "influence2d_bench_cli): run `influence2d-bench` with the same options, `influence2d-bench --help` "
+            "lists them");
+    });
 }
 
 }  // namespace
@@ -40,21 +48,9 @@ int main(int argc, char** argv) {
     influence2d::cli::register_generate(app);
     influence2d::cli::register_generate_stiff(app);
     influence2d::cli::register_study(app);
-    influence2d::cli::register_bench(app);
     influence2d::cli::register_audit(app);
     influence2d::cli::register_render(app);
     influence2d::cli::register_sweep(app);
-
-    try {
-        app.parse(argc, argv);
-    } catch (const influence2d::cli::exit_status& e) {
-        return e.code;
-    } catch (const CLI::ParseError& e) {
-        // --help and --version are "errors" with exit code 0.
-        return app.exit(e) == 0 ? 0 : 2;
-    } catch (const std::exception& e) {
-        print_error(e.what());
-        return 2;
-    }
-    return 0;
+    register_moved_bench(app);
+    return influence2d::cli::run_tool(app, argc, argv);
 }

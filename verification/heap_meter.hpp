@@ -4,8 +4,9 @@
 // operator new (C++ code: the library, CGAL, Boost.Geometry, GEOS) and through
 // GMP (CGAL's exact numbers) while the meter is on, and their peak.
 //
-// The counting operator new / delete live in src/heap_meter.cpp, linked into
-// the influence2d tool only; elsewhere heap_meter::available() is false and
+// The counting operator new / delete live in verification/heap_meter.cpp
+// (the library influence2d_peers), linked into influence2d-bench and the
+// tests that ask for them; elsewhere heap_meter::available() is false and
 // nothing is counted. Off, the count costs one branch per allocation.
 
 #include <cstddef>

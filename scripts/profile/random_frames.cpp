@@ -2,7 +2,7 @@
 // Where a random-pose frame of detector<double> spends its instructions, for
 // scripts/profile/random_frames.sh: each cell named on the command line
 // (type:static:moving) runs the time study's random poses (the same seed and
-// annulus as `influence2d bench`), with a detector built with
+// annulus as `influence2d-bench`), with a detector built with
 // build_structures() and one frame asked before counting; callgrind counts
 // only the frame loop of each cell (one dump per cell, named after it).
 

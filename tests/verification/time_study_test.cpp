@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSL-1.0
-// The time study (verification/time_study.hpp, `influence2d bench`): one
+// The time study (verification/time_study.hpp, influence2d-bench): one
 // registry names, parses and builds every method; every method runs on the
 // same poses of each cell, influence2d's modes agree with the reference on
 // every pose, a peer's strided poses are counted; the random stream is seeded
