@@ -50,7 +50,8 @@ TEST_CASE("cli bench: influence2d-bench runs the time study and writes its table
                                   "--linear-frames 16 --budget 0.001 --out " + quote((dir / "out").string()));
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
-    CHECK(r.out.find("## Targets") == 0);
+    // The targets on standard output (gnuplot, when it runs, may write there too).
+    CHECK(r.out.find("## Targets") != std::string::npos);
     CHECK(fs::exists(dir / "out" / "bench.csv"));
     const std::string md = slurp(dir / "out" / "bench.md");
     CHECK(md.find("Command: `influence2d-bench --types convex") != std::string::npos);
