@@ -23,21 +23,21 @@
 
 #include <catch2/catch.hpp>
 
-#include "support/effort.hpp"
-
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <iomanip>
-#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "support/effort.hpp"
+#include "support/families.hpp"
+#include "support/poses.hpp"
+#include "support/random.hpp"
 #include "verification/cgal_reference.hpp"
 
 namespace {
@@ -45,8 +45,8 @@ namespace {
 using namespace influence2d;
 using verification::cgal_reference;
 
-constexpr std::array<const char*, 5> family_names = {"convex", "starred", "irregular", "contour", "hole"};
-constexpr std::array<int, 4> family_sizes = {8, 16, 32, 64};
+using verification::all_families;
+constexpr std::array<std::size_t, 4> family_sizes = {8, 16, 32, 64};
 
 /// Frames per family pair: random ones, and contact ones each followed by its
 /// hair-apart frame. Fewer for d > 0, where exact distance tests cost more.
@@ -59,26 +59,20 @@ const frame_counts counts_distance{test_effort::scaled(9), test_effort::scaled(6
 
 struct shape {
     std::string name;
-    polygon poly;
+    const polygon* poly;
 };
 
-const shape& family(std::size_t f, std::size_t s) {
-    static const std::vector<shape> all = [] {
-        std::vector<shape> v;
-        for (const char* name : family_names)
-            for (int n : family_sizes) {
-                const std::string id = std::string(name) + "_" + std::to_string(n);
-                v.push_back({id, read_wkt_file(std::string(INFLUENCE2D_DATA_DIR) + "/families/" + id + ".wkt")});
-            }
-        return v;
-    }();
-    return all[f * family_sizes.size() + s];
+/// Family f of all_families with family_sizes[s] vertices (data/families).
+shape family(std::size_t f, std::size_t s) {
+    const std::size_t n = family_sizes[s];
+    return {verification::family_name(all_families[f]) + "_" + std::to_string(n),
+            &test_families::load(all_families[f], n)};
 }
 
 /// One ordered pair of polygons: A static, B moving.
 struct family_pair {
-    const shape* a;
-    const shape* b;
+    shape a;
+    shape b;
     std::uint64_t seed;
 };
 
@@ -87,28 +81,14 @@ struct family_pair {
 std::vector<family_pair> family_pairs() {
     std::vector<family_pair> out;
     std::uint64_t k = 0;
-    for (std::size_t fa = 0; fa < family_names.size(); ++fa)
-        for (std::size_t fb = 0; fb < family_names.size(); ++fb, ++k)
+    for (std::size_t fa = 0; fa < std::size(all_families); ++fa)
+        for (std::size_t fb = 0; fb < std::size(all_families); ++fb, ++k)
             for (std::size_t r = 0; r < 2; ++r) {
                 const std::size_t combo = (2 * k + r) % 16;
-                out.push_back({&family(fa, combo % 4), &family(fb, (combo / 4 + fa) % 4),
+                out.push_back({family(fa, combo % 4), family(fb, (combo / 4 + fa) % 4),
                                0x1f2e3d4c5b6a7988ULL + 7919 * (2 * k + r)});
             }
     return out;
-}
-
-struct rng {
-    std::mt19937_64 gen;
-    explicit rng(std::uint64_t seed) : gen(seed) {}
-    /// Uniform in [0, 1) with 53 random bits.
-    double unit() { return std::ldexp(static_cast<double>(gen() >> 11), -53); }
-    std::size_t index(std::size_t n) { return static_cast<std::size_t>(gen() % n); }
-};
-
-double max_distance(const polygon& p, const point<double>& c) {
-    double r = 0;
-    for (const auto& v : p.vertices()) r = std::max(r, std::hypot(v.x - c.x, v.y - c.y));
-    return r;
 }
 
 enum class frame_kind { random, contact, hair_apart };
@@ -121,59 +101,35 @@ struct frame {
 /// The frames of one family pair, the same for every distance.
 /// The first frames of a smaller count are those of a larger one.
 std::vector<frame> make_frames(const family_pair& fp, frame_counts counts) {
-    const polygon& A = fp.a->poly;
-    const polygon& B = fp.b->poly;
-    rng r(fp.seed);
+    const polygon& A = *fp.a.poly;
+    const polygon& B = *fp.b.poly;
+    test_random::rng r(fp.seed);
     std::vector<frame> frames;
     const double pi = std::acos(-1.0);
     const point<double> ca = A.centroid(), cb = B.centroid();
-    const double reach = max_distance(A, ca) + max_distance(B, cb) + 4;
+    const double reach = test_poses::reach(A, B, 4);
     for (int k = 0; k < counts.random; ++k) {
         // A quarter anywhere within the reach (deep overlaps, containment),
         // the rest in its outer part, where the close calls are.
         const double dist = reach * (k % 4 == 0 ? r.unit() : 0.6 + 0.4 * r.unit());
         const double phi = 2 * pi * r.unit();
         const double theta = 2 * pi * r.unit() - pi;
-        const double c = std::cos(theta), s = std::sin(theta);
-        // Place B's posed centroid at ca + dist (cos phi, sin phi).
-        const double tx = ca.x + dist * std::cos(phi) - (c * cb.x - s * cb.y);
-        const double ty = ca.y + dist * std::sin(phi) - (s * cb.x + c * cb.y);
-        frames.push_back({pose{tx, ty, theta}, frame_kind::random});
+        frames.push_back({test_poses::centroid_at(ca, cb, dist, phi, theta), frame_kind::random});
     }
-    r = rng(fp.seed + 1);  // contacts do not depend on the number of random frames
+    r = test_random::rng(fp.seed + 1);  // contacts do not depend on the number of random frames
     for (int k = 0; k < counts.contact; ++k) {
         // A point a on A's boundary (a vertex or an edge midpoint, exact) and
-        // the outward normal there (interior is on the left of stored edges).
-        const std::size_t i = r.index(A.size());
-        const point<double> v0 = A.vertex(i), v1 = A.vertex(A.next(i));
-        point<double> a, n;
-        if (r.index(2) == 0) {
-            a = v0;
-            // Vertex: the sum of the outward normals of its two edges.
-            std::size_t prev = i;
-            while (A.next(prev) != i) prev = A.next(prev);
-            const point<double> u = A.vertex(prev);
-            n = {(v1.y - v0.y) + (v0.y - u.y), -(v1.x - v0.x) - (v0.x - u.x)};
-        } else {
-            a = {(v0.x + v1.x) / 2, (v0.y + v1.y) / 2};
-            n = {v1.y - v0.y, -(v1.x - v0.x)};
-        }
+        // the outward normal there, made of unit length.
+        const test_poses::boundary_point a = test_poses::random_boundary_point(A, r);
+        point<double> n = a.normal;
         const double len = std::hypot(n.x, n.y);
         if (len > 0) n = {n.x / len, n.y / len};
         std::size_t j = r.index(B.size());
-        if (k % 4 != 3) {
-            // B's vertex furthest against n: B then lies beyond the line through a.
-            double best = 0;
-            for (std::size_t m = 0; m < B.size(); ++m) {
-                const double dot = B.vertex(m).x * n.x + B.vertex(m).y * n.y;
-                if (m == 0 || dot < best) {
-                    best = dot;
-                    j = m;
-                }
-            }
-        }
+        // Three in four: B's vertex furthest against n, so that B lies beyond
+        // the line through a; the others a random vertex.
+        if (k % 4 != 3) j = test_poses::extreme_vertex(B, n);
         const point<double> q = B.vertex(j);
-        const pose touch{a.x - q.x, a.y - q.y, 0};
+        const pose touch{a.at.x - q.x, a.at.y - q.y, 0};
         frames.push_back({touch, frame_kind::contact});
         const double hair = std::ldexp(1.0, -20);
         frames.push_back({pose{touch.tx + hair * n.x, touch.ty + hair * n.y, 0}, frame_kind::hair_apart});
@@ -183,7 +139,7 @@ std::vector<frame> make_frames(const family_pair& fp, frame_counts counts) {
 
 std::string describe(const family_pair& fp, std::size_t index, const frame& f, double d) {
     std::ostringstream o;
-    o << std::setprecision(17) << "A = " << fp.a->name << ", B = " << fp.b->name << ", d = " << d << ", frame "
+    o << std::setprecision(17) << "A = " << fp.a.name << ", B = " << fp.b.name << ", d = " << d << ", frame "
       << index << " ("
       << (f.kind == frame_kind::random ? "random" : f.kind == frame_kind::contact ? "contact" : "hair apart")
       << "), pose tx = " << f.p.tx << ", ty = " << f.p.ty << ", theta = " << f.p.theta;
@@ -213,8 +169,8 @@ struct tally {
 tally run_all(double d, frame_counts counts) {
     tally t;
     for (const family_pair& fp : family_pairs()) {
-        const polygon& A = fp.a->poly;
-        const polygon& B = fp.b->poly;
+        const polygon& A = *fp.a.poly;
+        const polygon& B = *fp.b.poly;
         detector_options wit;
         wit.distance = d;
         wit.witness = true;

@@ -3,7 +3,9 @@
 // Poses of B against A for the detector tests: random poses near contact
 // (influence2d::random_poses about A's centroid, within the reach of the two
 // bounding circles), exact touching poses with their one-ulp neighbours, and
-// a deterministic approach from apart to overlapping.
+// a deterministic approach from apart to overlapping; and the pieces they are
+// made of (a point of A's boundary with its outward normal, B's extreme
+// vertex against it, the pose that puts B's centroid at a given place).
 
 #include <algorithm>
 #include <cmath>
@@ -47,6 +49,51 @@ inline std::vector<pose> near_contact(const polygon& a, const polygon& b, std::s
     return influence2d::random_poses(a, b, count, inner_share * r, r, seed);
 }
 
+/// A point of A's boundary and the outward normal there (not of unit
+/// length): a vertex with the sum of its two edges' outward normals, or the
+/// midpoint of an edge with the edge's (the interior lies left of stored
+/// edges). Two draws of r: the edge, then vertex or midpoint.
+struct boundary_point {
+    point<double> at;
+    point<double> normal;
+};
+
+inline boundary_point random_boundary_point(const polygon& a, test_random::rng& r) {
+    const std::size_t i = r.index(a.size());
+    const point<double> v0 = a.vertex(i), v1 = a.vertex(a.next(i));
+    if (r.index(2) == 0) {
+        std::size_t prev = i;
+        while (a.next(prev) != i) prev = a.next(prev);
+        const point<double> u = a.vertex(prev);
+        return {v0, {(v1.y - v0.y) + (v0.y - u.y), -(v1.x - v0.x) - (v0.x - u.x)}};
+    }
+    return {{(v0.x + v1.x) / 2, (v0.y + v1.y) / 2}, {v1.y - v0.y, -(v1.x - v0.x)}};
+}
+
+/// The vertex of B furthest against the direction n (the least dot product;
+/// the first on a tie): B, put with it on a line normal to n, lies beyond
+/// that line.
+inline std::size_t extreme_vertex(const polygon& b, const point<double>& n) {
+    std::size_t j = 0;
+    double best = 0;
+    for (std::size_t m = 0; m < b.size(); ++m) {
+        const double dot = b.vertex(m).x * n.x + b.vertex(m).y * n.y;
+        if (m == 0 || dot < best) {
+            best = dot;
+            j = m;
+        }
+    }
+    return j;
+}
+
+/// The pose turned by theta that puts B's centroid cb (in B's frame) at
+/// ca + dist (cos phi, sin phi).
+inline pose centroid_at(const point<double>& ca, const point<double>& cb, double dist, double phi, double theta) {
+    const double c = std::cos(theta), s = std::sin(theta);
+    return {ca.x + dist * std::cos(phi) - (c * cb.x - s * cb.y), ca.y + dist * std::sin(phi) - (s * cb.x + c * cb.y),
+            theta};
+}
+
 /// `count` poses at theta = 0 that put B against a point of A's boundary (a
 /// vertex, or the midpoint of an edge), B's extreme vertex against the
 /// outward normal there on it; each is followed by the pose with tx, then
@@ -56,31 +103,9 @@ inline std::vector<pose> touching(const polygon& a, const polygon& b, test_rando
     std::vector<pose> out;
     const double inf = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < count; ++k) {
-        const std::size_t i = r.index(a.size());
-        const point<double> v0 = a.vertex(i), v1 = a.vertex(a.next(i));
-        point<double> at, n;
-        if (r.index(2) == 0) {
-            // A vertex: the sum of the outward normals of its two edges.
-            at = v0;
-            std::size_t prev = i;
-            while (a.next(prev) != i) prev = a.next(prev);
-            const point<double> u = a.vertex(prev);
-            n = {(v1.y - v0.y) + (v0.y - u.y), -(v1.x - v0.x) - (v0.x - u.x)};
-        } else {
-            at = {(v0.x + v1.x) / 2, (v0.y + v1.y) / 2};
-            n = {v1.y - v0.y, -(v1.x - v0.x)};
-        }
-        std::size_t j = 0;
-        double best = 0;
-        for (std::size_t m = 0; m < b.size(); ++m) {
-            const double dot = b.vertex(m).x * n.x + b.vertex(m).y * n.y;
-            if (m == 0 || dot < best) {
-                best = dot;
-                j = m;
-            }
-        }
-        const point<double> q = b.vertex(j);
-        const pose touch{at.x - q.x, at.y - q.y, 0};
+        const boundary_point at = random_boundary_point(a, r);
+        const point<double> q = b.vertex(extreme_vertex(b, at.normal));
+        const pose touch{at.at.x - q.x, at.at.y - q.y, 0};
         out.push_back(touch);
         out.push_back({std::nextafter(touch.tx, k % 2 ? inf : -inf), touch.ty, 0});
         out.push_back({touch.tx, std::nextafter(touch.ty, k % 2 ? -inf : inf), 0});
@@ -105,10 +130,7 @@ inline std::vector<pose> approach(const polygon& a, const polygon& b, std::size_
     std::vector<pose> out;
     for (std::size_t k = 0; k < frames; ++k) {
         const double f = static_cast<double>(k) / static_cast<double>(frames);
-        const double dist = start * (1 - f), phi = path.heading + path.veer * f, theta = path.turn + path.spin * f;
-        const double c = std::cos(theta), s = std::sin(theta);
-        out.push_back({ca.x + dist * std::cos(phi) - (c * cb.x - s * cb.y),
-                       ca.y + dist * std::sin(phi) - (s * cb.x + c * cb.y), theta});
+        out.push_back(centroid_at(ca, cb, start * (1 - f), path.heading + path.veer * f, path.turn + path.spin * f));
     }
     return out;
 }
