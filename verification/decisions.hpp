@@ -44,8 +44,6 @@
 #include <type_traits>
 #include <vector>
 
-#include <CGAL/Uncertain.h>
-
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
@@ -262,9 +260,10 @@ private:
 };
 
 /// Evaluates the decisions in NT; with a Fallback type other than NT, a
-/// question whose evaluation in NT raises uncertain_sign or, for CGAL's
-/// intervals, CGAL::Uncertain_conversion_exception (or a scene whose set-up in
-/// NT does) is answered again in Fallback. This is the evaluation of the
+/// question whose evaluation in NT raises uncertain_sign (or a scene whose
+/// set-up in NT does) is answered again in Fallback: every decision compares
+/// through number_traits, so CGAL's intervals raise that too, never CGAL's
+/// own Uncertain_conversion_exception. This is the evaluation of the
 /// filtered types: evaluator<certified, exact_rational>, as certified_detector
 /// does, and evaluator<interval, exact_rational>, as interval_detector does.
 template <class NT, class Fallback = NT>
@@ -277,8 +276,6 @@ public:
             try {
                 primary_.emplace(a, b, distance);
             } catch (const uncertain_sign&) {
-                setup_fell_back_ = true;
-            } catch (const CGAL::Uncertain_conversion_exception&) {
                 setup_fell_back_ = true;
             }
             fallback_.emplace(a, b, distance);
@@ -295,8 +292,6 @@ public:
                     primary_->decide(k, q, out);
                     return;
                 } catch (const uncertain_sign&) {
-                    out.resize(mark);
-                } catch (const CGAL::Uncertain_conversion_exception&) {
                     out.resize(mark);
                 }
             }
