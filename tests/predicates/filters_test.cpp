@@ -12,11 +12,13 @@
 #include <cfloat>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 
 #include <mpfr.h>
 
 #include "influence2d/core/box.hpp"
+#include "influence2d/core/pose.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/number/traits.hpp"
 #include "influence2d/predicates/filters.hpp"
@@ -467,4 +469,48 @@ TEST_CASE("filters: box_may_be_near_line never drops a box within g of the line"
     CHECK(box_may_be_near_line({0, 0, 1, 1}, {0, 0}, {1, 1}, 0));
     //   u=v              no line: kept
     CHECK(box_may_be_near_line({0, 0, 1, 1}, {5, 5}, {5, 5}, 0));
+}
+
+namespace {
+
+/// An NT value exactly as a rational (a long double as the sum of two doubles).
+Q to_exact(float x) { return Q(static_cast<double>(x)); }
+Q to_exact(double x) { return Q(x); }
+Q to_exact(long double x) {
+    const double hi = static_cast<double>(x);
+    return Q(hi) + Q(static_cast<double>(x - static_cast<long double>(hi)));
+}
+Q to_exact(const exact_rational& x) { return x; }
+
+/// posing_margin<NT> bounds, per coordinate, the distance between points
+/// posed in double and in NT, for terms summing to at most the scale.
+template <class NT>
+void check_posing_margin(int lowest, int highest, std::uint64_t seed) {
+    test_random::rng r(seed);
+    for (int k = 0; k < count(5000); ++k) {
+        const int e = lowest + static_cast<int>(r.index(static_cast<std::size_t>(highest - lowest + 1)));
+        const int t = r.chance(0.5) ? e : lowest + static_cast<int>(r.index(static_cast<std::size_t>(highest - lowest + 1)));
+        const point<double> q{at_scale(r, e), at_scale(r, e)};
+        const pose p{at_scale(r, t), at_scale(r, t), r.uniform(-10, 10)};
+        const rotation_pose rp(p);
+        const point<double> in_double = rp.apply<double>(q);
+        const point<NT> in_nt = rp.apply<NT>(q);
+        const double scale = std::fabs(q.x) + std::fabs(q.y) + std::fabs(p.tx) + std::fabs(p.ty);
+        const Q margin(posing_margin<NT>(scale));
+        INFO("q at 2^" << e << ", translation at 2^" << t);
+        CHECK(CGAL::abs(Q(in_double.x) - to_exact(in_nt.x)) < margin);
+        CHECK(CGAL::abs(Q(in_double.y) - to_exact(in_nt.y)) < margin);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("filters: posing_margin covers the posing in double against the posing in NT", "[filters]") {
+    check_posing_margin<float>(-60, 60, 21);
+    check_posing_margin<double>(-1070, 1000, 22);
+    check_posing_margin<long double>(-1070, 1000, 23);
+    check_posing_margin<exact_rational>(-1070, 1000, 24);
+    // The margin is NT's filter slack times the scale, widened.
+    CHECK(posing_margin<double>(1) > 4 * 0x1p-53);
+    CHECK(posing_margin<double>(0) > 0);  // coordinates that underflow
 }
