@@ -40,6 +40,9 @@ double at_scale(test_random::rng& r, int e) { return std::ldexp(r.signed_unit(),
 
 int count(int n) { return test_effort::scaled(n); }
 
+/// A count of cases that must be reached, scaled like the samples drawn.
+std::size_t at_least(int n) { return static_cast<std::size_t>(count(n)); }
+
 /// A scale exponent: mostly within 2^-600..2^600, sometimes near the ends
 /// of double's normal range (2^-1000..2^-980, 2^900..2^960). Subnormal
 /// coordinates are left out: below about 2^-1025 the error terms of
@@ -145,7 +148,7 @@ TEST_CASE("distance bounds: point_segment_estimate brackets the exact distance",
         CHECK(m.error >= 0);
         CHECK(brackets(m.value - m.error, m.value + m.error, test_exact::squared_distance(p, a, b)));
     }
-    CHECK(degenerate > 100);
+    CHECK(degenerate > at_least(100));
     // Named cases.
     //   p=a=b          all three coincide: exactly 0
     const estimate same = point_segment_estimate({2, 3}, {2, 3}, {2, 3});
@@ -194,8 +197,8 @@ TEST_CASE("distance bounds: segment_distance_range brackets the exact distance",
         crossing += d2 == 0 ? 1 : 0;
         positive_lower += d.lower > 0 ? 1 : 0;
     }
-    CHECK(crossing > 1000);
-    CHECK(positive_lower > 1000);
+    CHECK(crossing > at_least(1000));
+    CHECK(positive_lower > at_least(1000));
 
     // delta > 0: B's edge posed in double; the exact edge is the same edge
     // posed exactly, within posing_error of it.
@@ -214,8 +217,8 @@ TEST_CASE("distance bounds: segment_distance_range brackets the exact distance",
         crossing += d2 == 0 ? 1 : 0;
         positive_lower += d.lower > 0 ? 1 : 0;
     }
-    CHECK(crossing > 1000);
-    CHECK(positive_lower > 1000);
+    CHECK(crossing > at_least(1000));
+    CHECK(positive_lower > at_least(1000));
 
     // A large delta (up to 2^-2 of the scale): the exact ends anywhere within
     // it, the doubles' segments near each other.
@@ -280,7 +283,7 @@ TEST_CASE("distance bounds: segments_must_cross only when the exact segments cro
         CHECK(CGAL::orientation(A, B, s.U) * CGAL::orientation(A, B, s.V) < 0);
         CHECK(CGAL::orientation(s.U, s.V, A) * CGAL::orientation(s.U, s.V, B) < 0);
     }
-    CHECK(certain > 1000);
+    CHECK(certain > at_least(1000));
 
     // Adversarial: the exact end U lies within a few delta of the line of
     // [a, b], on either side, and u is U moved within delta, so that u may
@@ -305,7 +308,7 @@ TEST_CASE("distance bounds: segments_must_cross only when the exact segments cro
         CHECK(CGAL::orientation(A, B, EU) * CGAL::orientation(A, B, EV) < 0);
         CHECK(CGAL::orientation(EU, EV, A) * CGAL::orientation(EU, EV, B) < 0);
     }
-    CHECK(certain > 1000);
+    CHECK(certain > at_least(1000));
     //       v
     //       |
     //   a---+---b      a cross strictly inside both: certain
@@ -386,7 +389,7 @@ TEST_CASE("distance bounds: node_gap_lower and box_gap_lower are lower bounds", 
         CHECK(g >= 0);
         CHECK(at_most_root(Q(g), gx * gx + gy * gy));
     }
-    CHECK(positive > 1000);
+    CHECK(positive > at_least(1000));
     // Named cases.
     //   +--+ +--+      boxes 1 apart along x: the gap is at most 1
     //   |  | |  |

@@ -72,6 +72,9 @@ double atan2_error(double y, double x, double t) {
 
 int count(int n) { return test_effort::scaled(n); }
 
+/// A count of cases that must be reached, scaled like the samples drawn.
+std::size_t at_least(int n) { return static_cast<std::size_t>(count(n)); }
+
 }  // namespace
 
 TEST_CASE("filters: square_safe_low and square_safe_high keep squares and their sums in double's normal range",
@@ -100,8 +103,8 @@ TEST_CASE("filters: square_safe_low and square_safe_high keep squares and their 
         CHECK(at_most_root(Q(f) * (1 - Q(0x1p-51)) - tiny, l2));
         CHECK(at_least_root(Q(f) * (1 + Q(0x1p-51)) + tiny, l2));
     }
-    CHECK(inside > 1000);
-    CHECK(outside > 1000);
+    CHECK(inside > at_least(1000));
+    CHECK(outside > at_least(1000));
     // Exact lengths at the ends of the range.
     CHECK(filter_length(3 * 0x1p-1074, 4 * 0x1p-1074) == 5 * 0x1p-1074);
     CHECK(filter_length(0x1.8p1000, 0x1p1001) == 0x1.4p1001);  // 3, 4, 5 times 2^999
@@ -158,7 +161,7 @@ TEST_CASE("filters: pose_scale_widening covers sqrt(c^2 + s^2) of the rounded co
         check(std::nextafter(t, -inf));
     }
     for (double t : {1e300, -1e300, 1e22, 0x1p1023, 3.0e-300, 0.0}) check(t);
-    CHECK(off_one > 100);  // c^2 + s^2 is not 1 in general: the widening is needed
+    CHECK(off_one > at_least(100));  // c^2 + s^2 is not 1 in general: the widening is needed
 }
 
 TEST_CASE("filters: atan2_widening covers std::atan2's error on doubles", "[filters]") {
@@ -264,8 +267,8 @@ TEST_CASE("filters: may_be_within never drops a point within reach", "[filters]"
         }
         (answer ? kept : dropped) += 1;
     }
-    CHECK(kept > 1000);
-    CHECK(dropped > 1000);
+    CHECK(kept > at_least(1000));
+    CHECK(dropped > at_least(1000));
     // Named cases.
     //   a-----p-----b  p on the segment: within reach 0
     CHECK(may_be_within({1, 1}, {0, 0}, {2, 2}, 0));
@@ -307,8 +310,8 @@ TEST_CASE("filters: certain_side answers only sides that exact arithmetic confir
         const Q given = Q(dx) * (Q(q.y) - a.y) - Q(dy) * (Q(q.x) - a.x);
         CHECK(sign_of(given) == side);
     }
-    CHECK(answered > 10000);
-    CHECK(refused > 1000);
+    CHECK(answered > at_least(10000));
+    CHECK(refused > at_least(1000));
 
     // Named cases.
     //   a-----q-----b   q on the line: no side
@@ -353,8 +356,8 @@ TEST_CASE("filters: segments_may_meet never drops segments that meet, with or wi
         }
         apart += answer ? 0 : 1;
     }
-    CHECK(meeting > 1000);
-    CHECK(apart > 1000);
+    CHECK(meeting > at_least(1000));
+    CHECK(apart > at_least(1000));
 
     // e > 0: exact segments whose ends lie within e of the doubles on each
     // coordinate, pushed towards each other by up to e: whenever those meet,
@@ -384,8 +387,8 @@ TEST_CASE("filters: segments_may_meet never drops segments that meet, with or wi
         }
         apart += answer ? 0 : 1;
     }
-    CHECK(meeting > 500);
-    CHECK(apart > 1000);
+    CHECK(meeting > at_least(500));
+    CHECK(apart > at_least(1000));
 
     // Named cases, e = 0.
     //   a-----b=u
@@ -455,8 +458,8 @@ TEST_CASE("filters: box_may_be_near_line never drops a box within g of the line"
         }
         far += answer ? 0 : 1;
     }
-    CHECK(near > 1000);
-    CHECK(far > 1000);
+    CHECK(near > at_least(1000));
+    CHECK(far > at_least(1000));
     // Named cases.
     //   +--+  |          the box [0,1]^2 and the line x = 2: 1 apart
     //   |  |  |
