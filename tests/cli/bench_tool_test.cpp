@@ -15,24 +15,6 @@ using namespace test_process;
 
 namespace {
 
-const std::string bench_path = INFLUENCE2D_BENCH_PATH;
-
-/// Runs influence2d-bench with `args` (already quoted), capturing stdout and stderr.
-run_result run_bench(const temp_dir& dir, const std::string& args) {
-    REQUIRE(!bench_path.empty());
-    const fs::path out = dir / "bench_stdout.txt", err = dir / "bench_stderr.txt";
-    const std::string command =
-        quote(bench_path) + " " + args + " >" + quote(out.string()) + " 2>" + quote(err.string());
-    const int status = std::system(command.c_str());
-    REQUIRE(status != -1);
-    REQUIRE(WIFEXITED(status));
-    run_result r;
-    r.exit_code = WEXITSTATUS(status);
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-}
-
 /// The options (--name) that `text` mentions, --help left out.
 std::set<std::string> options_in(const std::string& text) {
     static const std::regex option(R"(--[a-z][a-z0-9-]*)");

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
-// Running the influence2d tool as a separate process on files in a temporary directory.
+// Running the influence2d tool (or influence2d-bench) as a separate process on files in a temporary directory.
 
 #include <catch2/catch.hpp>
 
@@ -20,6 +20,8 @@ namespace test_process {
 namespace fs = std::filesystem;
 
 inline const std::string cli_path = INFLUENCE2D_CLI_PATH;
+/// influence2d-bench, the time study's program.
+inline const std::string bench_path = INFLUENCE2D_BENCH_PATH;
 
 inline std::string quote(const std::string& s) {
     std::string q = "'";
@@ -75,12 +77,12 @@ struct run_result {
     std::string err;
 };
 
-/// Runs the tool with `args` (already quoted), capturing stdout and stderr.
-inline run_result run_cli(const temp_dir& dir, const std::string& args) {
-    REQUIRE(!cli_path.empty());
+/// Runs `program` with `args` (already quoted), capturing stdout and stderr.
+inline run_result run_program(const std::string& program, const temp_dir& dir, const std::string& args) {
+    REQUIRE(!program.empty());
     const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
     const std::string command =
-        quote(cli_path) + " " + args + " >" + quote(out.string()) + " 2>" + quote(err.string());
+        quote(program) + " " + args + " >" + quote(out.string()) + " 2>" + quote(err.string());
     const int status = std::system(command.c_str());
     run_result r;
     REQUIRE(status != -1);
@@ -89,6 +91,14 @@ inline run_result run_cli(const temp_dir& dir, const std::string& args) {
     r.out = slurp(out);
     r.err = slurp(err);
     return r;
+}
+
+/// Runs the tool with `args` (already quoted), capturing stdout and stderr.
+inline run_result run_cli(const temp_dir& dir, const std::string& args) { return run_program(cli_path, dir, args); }
+
+/// Runs influence2d-bench with `args` (already quoted), capturing stdout and stderr.
+inline run_result run_bench(const temp_dir& dir, const std::string& args) {
+    return run_program(bench_path, dir, args);
 }
 
 }  // namespace test_process

@@ -29,7 +29,7 @@ using namespace influence2d;
 using namespace influence2d::verification;
 using test_process::lines_of;
 using test_process::quote;
-using test_process::run_cli;
+using test_process::run_bench;
 using test_process::slurp;
 using test_process::temp_dir;
 
@@ -328,9 +328,9 @@ TEST_CASE("time study: random and one-shot rows, no disagreement, the preparatio
 TEST_CASE("time study: the command writes the table, the summary and the heat maps",
           "[verification][bench][cli][time_study]") {
     const temp_dir dir;
-    const auto r = run_cli(dir, "bench --quick --types convex --sizes 8,16 --trajectories linear,one-shot "
-                                "--random-frames 200 --out " +
-                                    quote((dir / "out").string()));
+    const auto r = run_bench(dir, "--quick --types convex --sizes 8,16 --trajectories linear,one-shot "
+                                  "--random-frames 200 --out " +
+                                      quote((dir / "out").string()));
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     CHECK(r.out.find("## Targets") != std::string::npos);
@@ -366,19 +366,19 @@ TEST_CASE("time study: the command writes the table, the summary and the heat ma
 TEST_CASE("time study: bad arguments are named, exit code 2", "[verification][bench][cli][time_study]") {
     const temp_dir dir;
     const std::string out = " --out " + quote((dir / "out").string());
-    const auto bad_size = run_cli(dir, "bench --sizes 8,100" + out);
+    const auto bad_size = run_bench(dir, "--sizes 8,100" + out);
     CHECK(bad_size.exit_code == 2);
     CHECK(bad_size.err.find("100") != std::string::npos);
-    const auto bad_method = run_cli(dir, "bench --methods double,pivot2d" + out);
+    const auto bad_method = run_bench(dir, "--methods double,pivot2d" + out);
     CHECK(bad_method.exit_code == 2);
     CHECK(bad_method.err.find("pivot2d") != std::string::npos);
     CHECK(bad_method.err.find("double-detector") != std::string::npos);  // the known names
-    const auto bad_workload = run_cli(dir, "bench --trajectories spiral" + out);
+    const auto bad_workload = run_bench(dir, "--trajectories spiral" + out);
     CHECK(bad_workload.exit_code == 2);
     CHECK(bad_workload.err.find("one-shot") != std::string::npos);
     CHECK(!fs::exists(dir / "out" / "bench.csv"));
     // The help lists every method from the registry.
-    const auto help = run_cli(dir, "bench --help");
+    const auto help = run_bench(dir, "--help");
     CHECK(help.exit_code == 0);
     for (const std::string& m : known_methods()) CHECK(help.out.find("  " + m) != std::string::npos);
 }
