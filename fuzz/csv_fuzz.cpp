@@ -17,7 +17,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const std::vector<pose> poses = read_poses_csv(in, "<fuzz>");
         for (const pose& p : poses)
             if (!std::isfinite(p.tx) || !std::isfinite(p.ty) || !std::isfinite(p.theta)) std::abort();
-    } catch (const invalid_input&) {
-    }
+    } catch (const invalid_input&) {}
     return 0;
 }

@@ -15,13 +15,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string text(reinterpret_cast<const char*>(data), size);
     try {
         (void)audit_rings(read_wkt_rings(text, "<fuzz>"));
-    } catch (const invalid_input&) {
-    }
+    } catch (const invalid_input&) {}
     try {
         const polygon p = read_wkt(text, "<fuzz>");
         const polygon q = read_wkt(to_wkt(p), "<round trip>");
         if (q.vertices() != p.vertices()) std::abort();
-    } catch (const invalid_input&) {
-    }
+    } catch (const invalid_input&) {}
     return 0;
 }

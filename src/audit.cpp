@@ -65,8 +65,7 @@ void run_audit(const audit_cli_options& o) {
     const audit_report r = audit_rings(read_wkt_rings(read_wkt_text_input(o.file), name));
     if (!o.json.empty()) write_output(o.json, to_json(name, r).dump(2) + "\n");
     if (!is_standard_stream(o.json)) {
-        std::cout << name << ": " << r.rings << " ring(s), " << r.vertices << " vertices, "
-                  << r.total << " finding(s)"
+        std::cout << name << ": " << r.rings << " ring(s), " << r.vertices << " vertices, " << r.total << " finding(s)"
                   << (r.total > r.findings.size() ? " (" + std::to_string(r.findings.size()) + " listed)" : "") << "; "
                   << (r.accepted ? "accepted" : "refused: " + r.rejection) << "\n";
         for (const finding& f : r.findings)
@@ -90,8 +89,9 @@ void register_audit(CLI::App& app) {
     sub->add_option("POLYGON", o->file, "WKT file (POLYGON or MULTIPOLYGON); '-': standard input")
         ->required()
         ->type_name("FILE");
-    sub->add_option("--json", o->json, "Also write the findings as JSON to FILE ('-': standard output, instead of "
-                                       "the readable lines)")
+    sub->add_option("--json", o->json,
+                    "Also write the findings as JSON to FILE ('-': standard output, instead of "
+                    "the readable lines)")
         ->type_name("FILE");
     sub->callback([o] { run_audit(*o); });
 }

@@ -95,9 +95,9 @@ std::string heat_maps(const time_study_result& r, const time_study_options& o, c
         if (std::none_of(r.rows.begin(), r.rows.end(),
                          [&](const time_row& row) { return row.method == m && in_group(row); }))
             continue;
-        const std::string what = workloads.size() == 1 && workloads[0] == "one-shot" ? "seconds per " +
-                                                                                            std::to_string(o.random_frames) + " queries"
-                                                                                      : "seconds per workload";
+        const std::string what = workloads.size() == 1 && workloads[0] == "one-shot"
+                                     ? "seconds per " + std::to_string(o.random_frames) + " queries"
+                                     : "seconds per workload";
         script += "set terminal pngcairo size " + std::to_string(250 * columns + 120) + "," +
                   std::to_string(250 * rows_n + 60) + " font 'sans,9' background '#ffffff'\n";
         script += "set output '" + (dir / ("heatmap_" + prefix + m + ".png")).string() + "'\n";
@@ -110,8 +110,8 @@ std::string heat_maps(const time_study_result& r, const time_study_options& o, c
         for (std::size_t i = 0; i < o.sizes.size(); ++i)
             tics += (i ? ", " : "") + std::string("'") + std::to_string(o.sizes[i]) + "' " + std::to_string(i);
         script += "set xtics (" + tics + ") rotate by 90 right\nset ytics (" + tics + ")\n";
-        script += "set xrange [-0.5:" + std::to_string(o.sizes.size()) + "-0.5]\nset yrange [-0.5:" +
-                  std::to_string(o.sizes.size()) + "-0.5]\n";
+        script += "set xrange [-0.5:" + std::to_string(o.sizes.size()) +
+                  "-0.5]\nset yrange [-0.5:" + std::to_string(o.sizes.size()) + "-0.5]\n";
         for (const std::string& j : workloads)
             for (const std::string& t : o.types) {
                 // One colour box, beside the last panel of each row.
@@ -130,9 +130,10 @@ std::string heat_maps(const time_study_result& r, const time_study_options& o, c
                     ++points;
                 }
                 script += "EOD\n";
-                script += points ? "plot $d using 1:2:(0.5):(0.5):3 with boxxyerror fillstyle solid 1.0 noborder lc "
-                                   "palette\n"
-                                 : "set label 1 'not applicable' at graph 0.5, graph 0.5 center\nplot NaN\nunset label 1\n";
+                script +=
+                    points ? "plot $d using 1:2:(0.5):(0.5):3 with boxxyerror fillstyle solid 1.0 noborder lc "
+                             "palette\n"
+                           : "set label 1 'not applicable' at graph 0.5, graph 0.5 center\nplot NaN\nunset label 1\n";
             }
         script += "unset multiplot\n";
     }
@@ -203,8 +204,7 @@ void run_bench_command(bench_cli_options o, Given given, const std::string& comm
 std::string methods_help() {
     std::string s = "Methods (frame form on circular, linear and random; one-shot form on one-shot):\n";
     for (const method_info& m : method_infos()) {
-        s += "  " + std::string(m.name) + (m.own ? "" : " (peer)") + (m.available ? "" : " [not in this build]") +
-             "\n";
+        s += "  " + std::string(m.name) + (m.own ? "" : " (peer)") + (m.available ? "" : " [not in this build]") + "\n";
         if (*m.frames) s += "      frames:   " + std::string(m.frames) + "\n";
         if (*m.one_shot) s += "      one-shot: " + std::string(m.one_shot) + "\n";
     }
@@ -272,7 +272,8 @@ void configure_bench(CLI::App& app) {
             if (opt->get_type_size() == 0) continue;  // a flag
             for (const std::string& v : opt->results()) command += " " + v;
         }
-        run_bench_command(*o, [sub](const std::string& name) { return sub->get_option(name)->count() > 0; }, command);
+        run_bench_command(
+            *o, [sub](const std::string& name) { return sub->get_option(name)->count() > 0; }, command);
     });
 }
 

@@ -12,14 +12,14 @@
 
 #include "commands.hpp"
 #include "files.hpp"
-#include "motion_queries.hpp"
-#include "number_types.hpp"
-#include "report.hpp"
-#include "scene_input.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/detect/result.hpp"
 #include "influence2d/io/csv.hpp"
+#include "motion_queries.hpp"
+#include "number_types.hpp"
+#include "report.hpp"
+#include "scene_input.hpp"
 
 namespace influence2d::cli {
 
@@ -32,10 +32,10 @@ struct collide_options {
     std::string shape = "capsule";
     double distance = 0.0;
     bool witness = false;
-    bool separation = false;  ///< add the separation at every pose
-    bool continuous = false;  ///< a frame collides when the motion into it meets A
+    bool separation = false;   ///< add the separation at every pose
+    bool continuous = false;   ///< a frame collides when the motion into it meets A
     std::string static_poses;  ///< the static polygon's poses too, one per frame (empty: A unmoved)
-    unsigned threads = 0;  ///< 0: every hardware thread
+    unsigned threads = 0;      ///< 0: every hardware thread
     std::string out;
     /// The old spelling of --trajectory-frames, still taken with a warning.
     std::size_t deprecated_frames = 0;
@@ -45,7 +45,7 @@ struct collide_options {
 /// continuous contact time (--continuous), the separation and the closest
 /// features (--separation, the features with --witness).
 struct frame_extras {
-    const std::vector<contact_row>* contacts = nullptr;       ///< motion k - 1 into frame k
+    const std::vector<contact_row>* contacts = nullptr;        ///< motion k - 1 into frame k
     const std::vector<separation_row>* separations = nullptr;  ///< per frame
     bool closest = false;
 
@@ -100,8 +100,10 @@ void check_options(collide_options& o, const number_type& type) {
                                     "answered again in exact arithmetic cannot hand back; use "
                                     "--algorithm sound or brute-force, or another number type");
     if (o.continuous && o.distance != 0)
-        throw std::invalid_argument("--continuous asks whether the polygons meet between poses: it takes "
-                                    "--distance 0 only (got " + general(o.distance, 17) + ")");
+        throw std::invalid_argument(
+            "--continuous asks whether the polygons meet between poses: it takes "
+            "--distance 0 only (got " +
+            general(o.distance, 17) + ")");
     if ((o.continuous || o.separation) && o.algorithm == "paper")
         throw std::invalid_argument(std::string(o.continuous ? "--continuous" : "--separation") +
                                     " is answered by the sound queries only, not --algorithm paper");
@@ -210,8 +212,9 @@ void report_results(const collide_options& o, const collide_run& result) {
     }
 
     if (!o.out.empty())
-        write_frames(o.out, r.frames, o.witness,
-                     {o.continuous ? &result.contacts : nullptr, o.separation ? &result.separations : nullptr, o.witness});
+        write_frames(
+            o.out, r.frames, o.witness,
+            {o.continuous ? &result.contacts : nullptr, o.separation ? &result.separations : nullptr, o.witness});
 
     // With the frames on standard output, the summary goes to standard error.
     std::ostream& summary = is_standard_stream(o.out) ? std::cerr : std::cout;
@@ -223,10 +226,8 @@ void report_results(const collide_options& o, const collide_run& result) {
             << "algorithm:       " << o.algorithm << "\n"
             << "threads:         " << result.threads << "\n"
             << "time per frame:  "
-            << (r.frames.empty()
-                    ? std::string("n/a")
-                    : fixed(r.seconds * 1e6 / static_cast<double>(r.frames.size()), 3) +
-                          " us")
+            << (r.frames.empty() ? std::string("n/a")
+                                 : fixed(r.seconds * 1e6 / static_cast<double>(r.frames.size()), 3) + " us")
             << "   (total " << fixed(total_ms, total_ms >= 1 ? 1 : 3) << " ms)\n";
     if (o.continuous)
         summary << "between poses:   " << result.between
@@ -241,8 +242,7 @@ void report_results(const collide_options& o, const collide_run& result) {
         std::size_t nearest = 0;
         for (std::size_t k = 1; k < separations.size(); ++k)
             if (separations[k].distance < separations[nearest].distance) nearest = k;
-        summary << "least separation: " << general(separations[nearest].distance, 17) << " (frame " << nearest
-                << ")\n"
+        summary << "least separation: " << general(separations[nearest].distance, 17) << " (frame " << nearest << ")\n"
                 << "time per separation: "
                 << fixed(result.separation_seconds * 1e6 / static_cast<double>(separations.size()), 3) << " us\n";
     }
@@ -262,11 +262,10 @@ void run_collide(collide_options o) {
 
 void register_collide(CLI::App& app) {
     auto o = std::make_shared<collide_options>();
-    CLI::App* sub = app.add_subcommand(
-        "collide",
-        "Run a collision detector between a static polygon and a moving polygon over a "
-        "sequence of poses of the moving one (from a CSV file or one of the paper's "
-        "trajectories); print a summary and optionally write one line per frame.");
+    CLI::App* sub = app.add_subcommand("collide",
+                                       "Run a collision detector between a static polygon and a moving polygon over a "
+                                       "sequence of poses of the moving one (from a CSV file or one of the paper's "
+                                       "trajectories); print a summary and optionally write one line per frame.");
 
     CLI::Option* trajectory = add_scene_options(sub, o->scene);
     // The old spelling, kept working but left out of the help.
@@ -324,7 +323,8 @@ void register_collide(CLI::App& app) {
         ->check(CLI::Range(0u, 4096u))
         ->type_name("N");
     sub->add_option("--out", o->out,
-                    "Write one CSV line per frame (frame,collides[,edges][,contact_t][,separation[,closest]]) to this file; it is "
+                    "Write one CSV line per frame (frame,collides[,edges][,contact_t][,separation[,closest]]) to this "
+                    "file; it is "
                     "replaced only when the whole run succeeds. '-': standard output, and the "
                     "summary goes to standard error")
         ->type_name("FRAMES.csv");

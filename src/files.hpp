@@ -72,9 +72,7 @@ inline std::string read_wkt_text_input(const std::string& path) {
 
 /// A polygon read from WKT: the file, or standard input for '-'; messages
 /// start with the file name or "standard input".
-inline polygon read_wkt_input(const std::string& path) {
-    return read_wkt(read_wkt_text_input(path), shown_name(path));
-}
+inline polygon read_wkt_input(const std::string& path) { return read_wkt(read_wkt_text_input(path), shown_name(path)); }
 
 /// Poses read from CSV: the file, or standard input for '-'; messages start
 /// with the file name or "standard input".
@@ -123,8 +121,9 @@ inline void write_output(const std::string& path, const std::string& text) {
 /// output.
 inline std::filesystem::path output_directory(const std::string& out) {
     if (is_standard_stream(out))
-        throw std::invalid_argument("--out -: this command writes several files into a directory, which standard "
-                                    "output cannot hold; name a directory");
+        throw std::invalid_argument(
+            "--out -: this command writes several files into a directory, which standard "
+            "output cannot hold; name a directory");
     const std::filesystem::path dir(out);
     std::error_code ec;
     if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))

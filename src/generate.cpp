@@ -27,34 +27,31 @@ void run_generate(const generate_options& o) {
     std::size_t files = 0, vertices = 0;
     for (const auto f : verification::all_families) {
         for (const std::size_t n : o.sizes) {
-            write_atomically(dir / verification::family_file_name(f, n),
-                                  verification::family_file_text(f, n, o.seed));
+            write_atomically(dir / verification::family_file_name(f, n), verification::family_file_text(f, n, o.seed));
             ++files;
             vertices += n;
         }
     }
-    std::cout << "generate: wrote " << files << " files (" << std::size(verification::all_families)
-              << " families x " << o.sizes.size() << " sizes, " << vertices << " vertices, seed "
-              << o.seed << ") to " << o.out << "\n";
+    std::cout << "generate: wrote " << files << " files (" << std::size(verification::all_families) << " families x "
+              << o.sizes.size() << " sizes, " << vertices << " vertices, seed " << o.seed << ") to " << o.out << "\n";
 }
 
 }  // namespace
 
 void register_generate(CLI::App& app) {
     auto o = std::make_shared<generate_options>();
-    CLI::App* sub = app.add_subcommand(
-        "generate",
-        "Write the paper's polygon families (convex, starred, irregular, contour, hole) as WKT, "
-        "one file <family>_<n>.wkt per family and vertex count. Every polygon has its vertices "
-        "within radius 50 of the origin and vertex 0 at (50, 0); the output is the same on every "
-        "platform for a given seed.");
+    CLI::App* sub =
+        app.add_subcommand("generate",
+                           "Write the paper's polygon families (convex, starred, irregular, contour, hole) as WKT, "
+                           "one file <family>_<n>.wkt per family and vertex count. Every polygon has its vertices "
+                           "within radius 50 of the origin and vertex 0 at (50, 0); the output is the same on every "
+                           "platform for a given seed.");
     sub->add_option("--out", o->out,
                     "Output directory, created if missing (required: the committed families are data/families "
                     "of the source tree); files are written through temporary files renamed into place")
         ->required()
         ->type_name("DIR");
-    sub->add_option("--seed", o->seed,
-                    "Seed of the random shapes; the committed data/families use the default")
+    sub->add_option("--seed", o->seed, "Seed of the random shapes; the committed data/families use the default")
         ->capture_default_str()
         ->type_name("S");
     sub->add_option("--sizes", o->sizes,

@@ -49,13 +49,12 @@ void register_generate_stiff(CLI::App& app) {
         "(moving polygon in its own frame) and <name>_poses.csv (tx,ty,theta), many of them within a few ulps "
         "of contact; and manifest.csv (name,family,magnitude,a,b,poses). The output depends only on the seed "
         "and the count; the committed data/stiff uses the defaults.");
-    sub->add_option("--out", o->out, "Output directory, created if missing; files are written through "
-                                     "temporary files renamed into place")
+    sub->add_option("--out", o->out,
+                    "Output directory, created if missing; files are written through "
+                    "temporary files renamed into place")
         ->required()
         ->type_name("DIR");
-    sub->add_option("--seed", o->seed, "Seed of the random shapes and poses")
-        ->capture_default_str()
-        ->type_name("S");
+    sub->add_option("--seed", o->seed, "Seed of the random shapes and poses")->capture_default_str()->type_name("S");
     sub->add_option("--count", o->count,
                     "Scenes per family (the large family always has one scene: its polygon has over 100,000 "
                     "vertices); the offset and scaled scenes spread over their magnitudes")

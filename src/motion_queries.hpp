@@ -11,17 +11,17 @@
 #include <string>
 #include <vector>
 
-#include "influence2d/exact/certified_separation.hpp"
-#include "influence2d/exact/certified_first_contact.hpp"
-#include "influence2d/exact/certified_both_posed.hpp"
+#include "influence2d/core/feature.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
-#include "influence2d/core/feature.hpp"
-#include "influence2d/query/both_posed.hpp"
 #include "influence2d/distance/separation.hpp"
+#include "influence2d/exact/certified_both_posed.hpp"
+#include "influence2d/exact/certified_first_contact.hpp"
+#include "influence2d/exact/certified_separation.hpp"
 #include "influence2d/motion/first_contact.hpp"
 #include "influence2d/number/traits.hpp"
 #include "influence2d/predicates/contact_time.hpp"
+#include "influence2d/query/both_posed.hpp"
 
 namespace influence2d::cli {
 
@@ -44,9 +44,9 @@ struct contact_row {
 /// edge (input numbering, rings one after another), "interior" for the region.
 inline std::string feature_text(const feature& f) {
     switch (f.kind) {
-        case feature_kind::vertex: return "v" + std::to_string(f.index);
-        case feature_kind::edge: return "e" + std::to_string(f.index);
-        case feature_kind::interior: break;
+    case feature_kind::vertex: return "v" + std::to_string(f.index);
+    case feature_kind::edge: return "e" + std::to_string(f.index);
+    case feature_kind::interior: break;
     }
     return "interior";
 }

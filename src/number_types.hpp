@@ -19,15 +19,15 @@
 
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
-#include "influence2d/query/batch.hpp"
 #include "influence2d/detect/brute_force.hpp"
-#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/exact/interval_detector.hpp"
 #include "influence2d/detect/paper_detector.hpp"
 #include "influence2d/detect/result.hpp"
+#include "influence2d/exact/certified_detector.hpp"
+#include "influence2d/exact/interval_detector.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/number/multiprecision.hpp"
+#include "influence2d/query/batch.hpp"
 #include "motion_queries.hpp"
 
 namespace influence2d::cli {
@@ -83,12 +83,15 @@ template <class NT>
 frames_run run_in(const detector_job& job) {
     const auto nothing = [](const auto&) {};
     if (job.algorithm == "paper")
-        return time_frames(job, [&] { return paper_detector<NT>(job.a, job.b, job.options); }, nothing);
+        return time_frames(
+            job, [&] { return paper_detector<NT>(job.a, job.b, job.options); }, nothing);
     if (job.algorithm == "brute-force")
-        return time_frames(job, [&] { return brute_force_detector<NT>(job.a, job.b, job.options); }, nothing);
+        return time_frames(
+            job, [&] { return brute_force_detector<NT>(job.a, job.b, job.options); }, nothing);
     const auto a = prepare_static<NT>(job.a);
     const auto b = prepare_moving<NT>(job.b);
-    return time_frames(job, [&] { return detector<NT>(a, b, job.options); }, nothing);
+    return time_frames(
+        job, [&] { return detector<NT>(a, b, job.options); }, nothing);
 }
 
 /// A filtered type: Wrapper<Detector> runs Detector in a fast type and answers
@@ -99,10 +102,11 @@ template <template <template <class...> class> class Wrapper>
 frames_run run_filtered(const detector_job& job) {
     std::atomic<std::size_t> exact_frames{0};
     const auto count = [&](const auto& det) { exact_frames += det.exact_frames(); };
-    frames_run r =
-        job.algorithm == "brute-force"
-            ? time_frames(job, [&] { return Wrapper<brute_force_detector>(job.a, job.b, job.options); }, count)
-            : time_frames(job, [&] { return Wrapper<detector>(job.a, job.b, job.options); }, count);
+    frames_run r = job.algorithm == "brute-force"
+                       ? time_frames(
+                             job, [&] { return Wrapper<brute_force_detector>(job.a, job.b, job.options); }, count)
+                       : time_frames(
+                             job, [&] { return Wrapper<detector>(job.a, job.b, job.options); }, count);
     r.exact_frames = exact_frames.load();
     return r;
 }
@@ -176,8 +180,8 @@ inline std::string number_type_help() {
     std::string help = "Arithmetic of the detector's decisions. ";
     std::vector<std::string> fallback;
     for (const number_type& t : number_types) {
-        help += std::string(t.name) + (t.claims_exact ? " (exact answers): " : " (rounded answers): ") +
-                t.description + "; ";
+        help += std::string(t.name) + (t.claims_exact ? " (exact answers): " : " (rounded answers): ") + t.description +
+                "; ";
         if (t.exact_fallback) fallback.emplace_back(t.name);
     }
     help.replace(help.size() - 2, 2, ".");

@@ -20,18 +20,18 @@
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/covering/covering.hpp"
-#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/scene/posed_polygon.hpp"
-#include "influence2d/scene/prepared.hpp"
-#include "influence2d/motion/trajectory.hpp"
+#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/influence/candidate_edges.hpp"
 #include "influence2d/influence/extended_area_outline.hpp"
-#include "influence2d/predicates/extended_area.hpp"
 #include "influence2d/io/csv.hpp"
 #include "influence2d/io/wkt.hpp"
+#include "influence2d/motion/trajectory.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "influence2d/predicates/extended_area.hpp"
+#include "influence2d/scene/posed_polygon.hpp"
+#include "influence2d/scene/prepared.hpp"
 #include "report.hpp"
 #include "scene_input.hpp"
 #include "svg.hpp"
@@ -249,8 +249,14 @@ class picture {
 public:
     picture(const render_options& o, const scene_input& in, const triangle_covering<exact_rational>& cov, double n,
             std::vector<shown_frame> frames, std::string first)
-        : o_(o), in_(in), cov_(cov), n_(n), frames_(std::move(frames)), first_(std::move(first)),
-          shape_(o.shape == "band" ? extended_area::band : extended_area::capsule), view_(scene_box(), static_cast<double>(o.width)) {}
+        : o_(o),
+          in_(in),
+          cov_(cov),
+          n_(n),
+          frames_(std::move(frames)),
+          first_(std::move(first)),
+          shape_(o.shape == "band" ? extended_area::band : extended_area::capsule),
+          view_(scene_box(), static_cast<double>(o.width)) {}
 
     std::string text() {
         std::size_t bold = 0;  // the first lines, of the file names
@@ -290,9 +296,18 @@ public:
                  .attr("overflow", "hidden")
                  .open();
         s += svg::element("defs").open() + svg::element("clipPath").attr("id", "scene-clip").open();
-        s += svg::element("rect").attr("x", "-50%").attr("y", "-50%").attr("width", "100%").attr("height", "100%").empty();
+        s += svg::element("rect")
+                 .attr("x", "-50%")
+                 .attr("y", "-50%")
+                 .attr("width", "100%")
+                 .attr("height", "100%")
+                 .empty();
         s += svg::close("clipPath") + svg::close("defs");
-        s += svg::element("g").attr("class", "scene").attr("transform", "scale(1,-1)").attr("clip-path", "url(#scene-clip)").open();
+        s += svg::element("g")
+                 .attr("class", "scene")
+                 .attr("transform", "scale(1,-1)")
+                 .attr("clip-path", "url(#scene-clip)")
+                 .open();
         s += scene;
         s += svg::close("g") + svg::close("svg");
         s += labels(title_height);
@@ -433,7 +448,8 @@ private:
             d.arc(view_.length(n_), true, view_.x(u.x + n_), view_.y(u.y)).close();
         } else if (area.strip) {
             const double reach = 2 * view_.diagonal();
-            d = polygon_path({{u.x - n_, u.y - reach}, {u.x + n_, u.y - reach}, {u.x + n_, u.y + reach}, {u.x - n_, u.y + reach}});
+            d = polygon_path(
+                {{u.x - n_, u.y - reach}, {u.x + n_, u.y - reach}, {u.x + n_, u.y + reach}, {u.x - n_, u.y + reach}});
         } else if (shape_ == extended_area::band) {
             d = polygon_path(area.corners);
         } else {
@@ -446,10 +462,15 @@ private:
             d.move(view_.x(c[0].x), view_.y(c[0].y)).line(view_.x(c[1].x), view_.y(c[1].y));
             d.arc(r, false, view_.x(v.x + tx), view_.y(v.y + ty)).arc(r, false, view_.x(c[2].x), view_.y(c[2].y));
             d.line(view_.x(c[3].x), view_.y(c[3].y));
-            d.arc(r, false, view_.x(u.x - tx), view_.y(u.y - ty)).arc(r, false, view_.x(c[0].x), view_.y(c[0].y)).close();
+            d.arc(r, false, view_.x(u.x - tx), view_.y(u.y - ty))
+                .arc(r, false, view_.x(c[0].x), view_.y(c[0].y))
+                .close();
         }
         svg::element e("path");
-        e.attr("class", "extended").index("data-frame", f.index).index("data-edge", in_.a.source_edge(i)).attr("d", d.str());
+        e.attr("class", "extended")
+            .index("data-frame", f.index)
+            .index("data-edge", in_.a.source_edge(i))
+            .attr("d", d.str());
         return painted(e, extended_paint, view_.per_pixel()).empty();
     }
 
@@ -493,7 +514,8 @@ private:
         for (const shown_frame& f : frames_) {
             std::string pairs;
             for (const edge_pair& p : f.result.pairs)
-                pairs += (pairs.empty() ? "" : ";") + std::to_string(p.static_edge) + ":" + std::to_string(p.moving_edge);
+                pairs +=
+                    (pairs.empty() ? "" : ";") + std::to_string(p.static_edge) + ":" + std::to_string(p.moving_edge);
             const bool contained = f.result.collides && f.result.pairs.empty();
             svg::element e("path");
             e.attr("class", contained ? "moving-polygon contained" : "moving-polygon")
@@ -611,9 +633,9 @@ private:
         entries.push_back({nullptr, false, "O: centroid of A"});
         if (!frames_.empty()) {
             if (!o_.no_extended)
-                entries.push_back({&extended_paint, false, std::string("extended area (") +
-                                                               (shape_ == extended_area::band ? "band" : "capsule") +
-                                                               ") of a candidate edge"});
+                entries.push_back({&extended_paint, false,
+                                   std::string("extended area (") +
+                                       (shape_ == extended_area::band ? "band" : "capsule") + ") of a candidate edge"});
             entries.push_back({&moving_paint, false, "B at a frame (dot: its centroid)"});
             entries.push_back({&static_witness_paint, true, "colliding edge of A"});
             entries.push_back({&moving_witness_paint, true, "colliding edge of B"});
@@ -630,7 +652,12 @@ private:
                 y += row;
             }
             if (e.p == nullptr) {
-                out += svg::element("circle").num("cx", x + 11).num("cy", y + 6).num("r", 3.5).attr("fill", "#111111").empty();
+                out += svg::element("circle")
+                           .num("cx", x + 11)
+                           .num("cy", y + 6)
+                           .num("r", 3.5)
+                           .attr("fill", "#111111")
+                           .empty();
             } else if (e.line) {
                 svg::element l("line");
                 l.num("x1", x + 2).num("y1", y + 6).num("x2", x + 22).num("y2", y + 6);
@@ -673,7 +700,8 @@ bool names_svg(const std::string& path) {
 
 void run_render(const render_options& o) {
     if (!names_svg(o.out))
-        throw invalid_input("--out " + o.out + ": render writes SVG; give a file name ending in .svg, or '-' for "
+        throw invalid_input("--out " + o.out +
+                            ": render writes SVG; give a file name ending in .svg, or '-' for "
                             "standard output");
     const scene_input in = read_scene(o.scene, o.out);
     detector_options options;
@@ -705,7 +733,8 @@ void register_render(CLI::App& app) {
         ->capture_default_str()
         ->check(finite_non_negative())
         ->type_name("D");
-    sub->add_option("--extended-area", o->shape, "Shape of the extended influence areas drawn: capsule or band (the paper's)")
+    sub->add_option("--extended-area", o->shape,
+                    "Shape of the extended influence areas drawn: capsule or band (the paper's)")
         ->capture_default_str()
         ->check(CLI::IsMember({"capsule", "band"}))
         ->type_name("SHAPE");

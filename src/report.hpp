@@ -39,7 +39,8 @@ inline void check_names(const std::vector<std::string>& given, const std::vector
     for (const std::string& g : given) {
         bool found = false;
         for (const std::string& k : known) found = found || k == g;
-        if (!found) throw std::invalid_argument("--" + what + ": unknown name '" + g + "' (known: " + joined(known) + ")");
+        if (!found)
+            throw std::invalid_argument("--" + what + ": unknown name '" + g + "' (known: " + joined(known) + ")");
     }
 }
 

@@ -13,12 +13,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include "files.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
-#include "influence2d/motion/trajectory.hpp"
 #include "influence2d/io/csv.hpp"
 #include "influence2d/io/wkt.hpp"
-#include "files.hpp"
+#include "influence2d/motion/trajectory.hpp"
 
 namespace influence2d::cli {
 
@@ -77,14 +77,13 @@ inline CLI::Option* add_scene_options(CLI::App* sub, scene_options& o) {
                          "rotated by theta radians about its own origin, then moved by (tx, ty) ('-': "
                          "standard input)")
             ->type_name("POSES.csv");
-    CLI::Option* trajectory_opt =
-        motion
-            ->add_option("--trajectory", o.trajectory,
-                         "The paper's trajectories: circular (B orbits A close by without "
-                         "touching, 90000 frames) or linear (B approaches A and ends in "
-                         "collision, 9000 frames)")
-            ->check(CLI::IsMember({"circular", "linear"}))
-            ->type_name("KIND");
+    CLI::Option* trajectory_opt = motion
+                                      ->add_option("--trajectory", o.trajectory,
+                                                   "The paper's trajectories: circular (B orbits A close by without "
+                                                   "touching, 90000 frames) or linear (B approaches A and ends in "
+                                                   "collision, 9000 frames)")
+                                      ->check(CLI::IsMember({"circular", "linear"}))
+                                      ->type_name("KIND");
     motion->require_option(1);
     poses_opt->excludes(trajectory_opt);
 
@@ -122,8 +121,7 @@ inline scene_input read_scene(const scene_options& o, const std::string& out) {
     };
     attempt([&] { in.a = read_wkt_input(o.static_path); });
     attempt([&] { in.b = read_wkt_input(o.moving_path); });
-    if (!o.poses_path.empty())
-        attempt([&] { in.poses = read_poses_input(o.poses_path); });
+    if (!o.poses_path.empty()) attempt([&] { in.poses = read_poses_input(o.poses_path); });
     if (!out.empty()) {
         const std::string why = check_output_path(out);
         if (!why.empty()) errors.push_back(why);
@@ -136,7 +134,8 @@ inline scene_input read_scene(const scene_options& o, const std::string& out) {
     if (o.poses_path.empty()) {
         const bool circular = o.trajectory == "circular";
         const std::size_t frames = o.frames != 0 ? o.frames : circular ? 90000 : 9000;
-        in.poses = circular ? circular_trajectory(in.a, in.b, frames, o.gap) : linear_trajectory(in.a, in.b, frames, o.gap);
+        in.poses =
+            circular ? circular_trajectory(in.a, in.b, frames, o.gap) : linear_trajectory(in.a, in.b, frames, o.gap);
     }
     return in;
 }

@@ -88,8 +88,9 @@ std::string study_csv(const study_result& r) {
 }
 
 std::string queries_csv(const study_result& r) {
-    std::string s = "number_type,family,query,questions,differing,meeting_differs,features_differ,values_differ,"
-                    "measured,largest_error,median_error,ns_per_question\n";
+    std::string s =
+        "number_type,family,query,questions,differing,meeting_differs,features_differ,values_differ,"
+        "measured,largest_error,median_error,ns_per_question\n";
     for (const query_row& row : r.query_rows) {
         const query_tally& t = row.tally;
         s += row.number_type + "," + row.family + "," + row.query + "," + std::to_string(t.questions) + "," +
@@ -205,9 +206,8 @@ std::string study_md(const study_result& r, const study_cli_options& o) {
          "decisions, a pose of B for the others), disagreements are answers that differ from the reference, time "
          "is per question, set-up excluded.\n\n";
     s += "Run: " + std::to_string(r.cases) + " scenes (" + std::to_string(o.cases) +
-         " per family or sweep magnitude, " +
-         std::to_string(o.frames) + " questions each), seed " + std::to_string(o.seed) + ", " +
-         fixed(r.seconds, 1) + " s.\n\n";
+         " per family or sweep magnitude, " + std::to_string(o.frames) + " questions each), seed " +
+         std::to_string(o.seed) + ", " + fixed(r.seconds, 1) + " s.\n\n";
     s += "## What this means when choosing a number type\n\n" + number_type_advice(r) + "\n";
 
     for (decision_kind k : all_decision_kinds) {
@@ -292,14 +292,16 @@ std::string data_block(const std::string& name, const std::vector<std::string>& 
 std::string shown_rate(double rate) { return general(std::max(rate, rate_floor), 6); }
 
 std::string plot_script(const study_result& r, const fs::path& dir) {
-    std::string s = "set terminal svg size 900,600 dynamic enhanced font 'sans,12' background '#ffffff'\n"
-                    "set logscale xy\nset grid\n"
-                    "set format x '10^{%L}'\nset format y '10^{%L}'\n"
-                    "set ylabel 'disagreement rate with the exact reference'\n"
-                    "set arrow 1 from graph 0, first " + general(rate_floor) + " to graph 1, first " +
-                    general(rate_floor) + " nohead dashtype 2\n"
-                    "set label 1 'no disagreement (drawn at 10^{-7})' at graph 0.02, first " +
-                    general(rate_floor * 1.6) + "\n";
+    std::string s =
+        "set terminal svg size 900,600 dynamic enhanced font 'sans,12' background '#ffffff'\n"
+        "set logscale xy\nset grid\n"
+        "set format x '10^{%L}'\nset format y '10^{%L}'\n"
+        "set ylabel 'disagreement rate with the exact reference'\n"
+        "set arrow 1 from graph 0, first " +
+        general(rate_floor) + " to graph 1, first " + general(rate_floor) +
+        " nohead dashtype 2\n"
+        "set label 1 'no disagreement (drawn at 10^{-7})' at graph 0.02, first " +
+        general(rate_floor * 1.6) + "\n";
     std::vector<std::string> collides, predicates;
     const auto c = totals_by_type(r, asks_collides), p = totals_by_type(r, asks_predicate);
     const auto entry = [](const std::string& t, const decision_tally& x) {
@@ -310,10 +312,13 @@ std::string plot_script(const study_result& r, const fs::path& dir) {
         if (p.count(t)) predicates.push_back(entry(t, p.at(t)));
     }
     s += data_block("collides", collides) + data_block("predicates", predicates);
-    s += "set key top right\nset output '" + (dir / "error_vs_time.svg").string() + "'\n"
+    s += "set key top right\nset output '" + (dir / "error_vs_time.svg").string() +
+         "'\n"
          "set title 'Error against run time, per number type'\n"
          "set xlabel 'nanoseconds per question (log scale)'\n"
-         "set yrange [" + general(rate_floor / 3) + ":2]\n"
+         "set yrange [" +
+         general(rate_floor / 3) +
+         ":2]\n"
          "plot $collides using 2:3 with points pointtype 7 pointsize 1.5 title 'collides (final answer)', "
          "$collides using 2:3:1 with labels rotate by 35 left offset char 0.6,0.6 notitle, "
          "$predicates using 2:3 with points pointtype 5 pointsize 1.5 title 'predicates (pooled)', "
@@ -372,18 +377,26 @@ std::string query_plot_script(const study_result& r, const fs::path& dir) {
     if (plot.empty()) return "";
     return "set terminal svg size 900,600 dynamic enhanced font 'sans,12' background '#ffffff'\n"
            "set logscale xy\nset grid\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
-           "set key right center\nset output '" + (dir / "queries_error_vs_time.svg").string() + "'\n"
+           "set key right center\nset output '" +
+           (dir / "queries_error_vs_time.svg").string() +
+           "'\n"
            "set title 'Queries: error against run time, per number type'\n"
            "set xlabel 'nanoseconds per question (log scale)'\n"
            "set ylabel 'separation: relative error of the distance; first contact: absolute error of the time'\n"
-           "set yrange [" + general(error_floor / 1e3) + ":" + general(error_ceiling * 1e3) + "]\n"
-           "set arrow 1 from graph 0, first " + general(error_floor) + " to graph 1, first " + general(error_floor) +
+           "set yrange [" +
+           general(error_floor / 1e3) + ":" + general(error_ceiling * 1e3) +
+           "]\n"
+           "set arrow 1 from graph 0, first " +
+           general(error_floor) + " to graph 1, first " + general(error_floor) +
            " nohead dashtype 2\n"
-           "set label 1 'no error (drawn at 10^{-40})' at graph 0.02, first " + general(error_floor * 10) + "\n"
-           "set arrow 2 from graph 0, first " + general(error_ceiling) + " to graph 1, first " +
-           general(error_ceiling) + " nohead dashtype 2\n"
-           "set label 2 'not finite (drawn at 10^{20})' at graph 0.3, first " + general(error_ceiling * 10) + "\n" +
-           s + plot + "\n";
+           "set label 1 'no error (drawn at 10^{-40})' at graph 0.02, first " +
+           general(error_floor * 10) +
+           "\n"
+           "set arrow 2 from graph 0, first " +
+           general(error_ceiling) + " to graph 1, first " + general(error_ceiling) +
+           " nohead dashtype 2\n"
+           "set label 2 'not finite (drawn at 10^{20})' at graph 0.3, first " +
+           general(error_ceiling * 10) + "\n" + s + plot + "\n";
 }
 
 /// Writes the plots with gnuplot (plots.gp in the output directory).
@@ -415,8 +428,9 @@ void run_study_command(study_cli_options o, bool cases_given, bool frames_given)
     so.frames = o.frames;
     so.seed = o.seed;
     if (is_standard_stream(o.regressions))
-        throw std::invalid_argument("--regressions -: reproducible cases are files in a directory, which standard "
-                                    "output cannot hold; name a directory");
+        throw std::invalid_argument(
+            "--regressions -: reproducible cases are files in a directory, which standard "
+            "output cannot hold; name a directory");
     const fs::path dir = output_directory(o.out);
     if (o.regressions.empty()) o.regressions = (dir / "regressions").string();
     so.regressions_dir = o.regressions;
@@ -472,7 +486,8 @@ void register_study(CLI::App& app) {
         "translation) in every number type with the exact reference, and report error against run time: "
         "DIR/study.csv, DIR/stability.csv, DIR/queries.csv, DIR/study.md and plots (with gnuplot).");
     const std::string family_list = joined(default_study_families()), type_list = joined(mode_names(study_modes{}));
-    sub->add_option("--families", o->families, "Case families, separated by commas [default: " + family_list +
+    sub->add_option("--families", o->families,
+                    "Case families, separated by commas [default: " + family_list +
                         "; also: large, a static polygon of over 100,000 vertices, slow]")
         ->delimiter(',')
         ->type_name("LIST");

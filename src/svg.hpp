@@ -23,13 +23,15 @@ inline std::string escape(std::string_view text) {
         const auto byte = static_cast<unsigned char>(text[i]);
         if (byte < 0x80) {
             switch (byte) {
-                case '&': out += "&amp;"; break;
-                case '<': out += "&lt;"; break;
-                case '>': out += "&gt;"; break;
-                case '"': out += "&quot;"; break;
-                case '\'': out += "&apos;"; break;
-                case '\t': case '\n': case '\r': out += static_cast<char>(byte); break;
-                default: out += byte < 0x20 || byte == 0x7f ? '?' : static_cast<char>(byte);
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            case '\'': out += "&apos;"; break;
+            case '\t':
+            case '\n':
+            case '\r': out += static_cast<char>(byte); break;
+            default: out += byte < 0x20 || byte == 0x7f ? '?' : static_cast<char>(byte);
             }
             ++i;
             continue;
@@ -94,7 +96,9 @@ public:
     /// The start tag alone (the caller writes the content and close(name)).
     std::string open() const { return text_ + ">\n"; }
     /// The element with `content` (escaped) as its text.
-    std::string with_text(std::string_view content) const { return text_ + ">" + escape(content) + "</" + name_ + ">\n"; }
+    std::string with_text(std::string_view content) const {
+        return text_ + ">" + escape(content) + "</" + name_ + ">\n";
+    }
 
 private:
     std::string name_;

@@ -33,9 +33,10 @@ std::string contacts_csv(const std::vector<contact_row>& rows) {
     std::string s = "motion,contact,t,static_feature,moving_feature\n";
     for (std::size_t k = 0; k < rows.size(); ++k) {
         const contact_row& r = rows[k];
-        s += std::to_string(k) + (r.contact ? ",1," + general(r.t, 17) + "," + feature_text(r.static_feature) + "," +
-                                                  feature_text(r.moving_feature)
-                                            : std::string(",0,,,")) +
+        s += std::to_string(k) +
+             (r.contact ? ",1," + general(r.t, 17) + "," + feature_text(r.static_feature) + "," +
+                              feature_text(r.moving_feature)
+                        : std::string(",0,,,")) +
              "\n";
     }
     return s;
@@ -45,8 +46,8 @@ void run_sweep(const sweep_cli_options& o) {
     const number_type& type = *find_number_type(o.number_type);  // the option's check has run
     const scene_input in = read_scene(o.scene, o.out);
     if (in.poses.size() < 2)
-        throw std::invalid_argument(shown_name(o.scene.poses_path) + ": " + std::to_string(in.poses.size()) +
-                                    " pose" + (in.poses.size() == 1 ? "" : "s") +
+        throw std::invalid_argument(shown_name(o.scene.poses_path) + ": " + std::to_string(in.poses.size()) + " pose" +
+                                    (in.poses.size() == 1 ? "" : "s") +
                                     ": a motion needs two (motion k goes from pose k to pose k + 1)");
     std::vector<contact_row> rows;
     const double seconds = seconds_taken([&] { rows = type.contacts(in.a, in.b, in.poses); });
@@ -74,13 +75,13 @@ void run_sweep(const sweep_cli_options& o) {
 
 void register_sweep(CLI::App& app) {
     auto o = std::make_shared<sweep_cli_options>();
-    CLI::App* sub = app.add_subcommand(
-        "sweep",
-        "First contact along motions: motion k moves the moving polygon from pose k to pose k + 1 "
-        "(translation linear in time, angle linear in time); for each, whether the polygons meet at "
-        "some time in [0, 1] and the earliest such time, with the features that touch first. Exact "
-        "for translations in the exact and certified types; for motions that turn, never after the "
-        "true first contact (contact within 1e-9, see docs/sweep.md).");
+    CLI::App* sub =
+        app.add_subcommand("sweep",
+                           "First contact along motions: motion k moves the moving polygon from pose k to pose k + 1 "
+                           "(translation linear in time, angle linear in time); for each, whether the polygons meet at "
+                           "some time in [0, 1] and the earliest such time, with the features that touch first. Exact "
+                           "for translations in the exact and certified types; for motions that turn, never after the "
+                           "true first contact (contact within 1e-9, see docs/sweep.md).");
     add_scene_options(sub, o->scene);
     add_number_type_option(sub, o->number_type);
     sub->add_option("--out", o->out,

@@ -120,7 +120,7 @@ private:
         point_2 from, to;
         bool degenerate = false;  ///< zero length: tested as the point `from`
         CGAL::Bbox_2 box;
-        std::size_t source = 0;   ///< input numbering
+        std::size_t source = 0;  ///< input numbering
     };
 
     struct ring {
@@ -137,7 +137,7 @@ private:
             e.from = pts[i];
             e.to = pts[j];
             e.degenerate = P.vertex(i) == P.vertex(j);  // same input doubles, same posed point
-            e.box = pts[i].bbox() + pts[j].bbox();       // encloses the exact points
+            e.box = pts[i].bbox() + pts[j].bbox();      // encloses the exact points
             e.source = P.source_edge(i);
             edges.push_back(e);
         }
@@ -156,7 +156,8 @@ private:
             // ring of non-zero area turns counter-clockwise, a hole clockwise.
             const CGAL::Sign area = g.points.size() < 3 ? CGAL::ZERO : signed_area_sign(g.points);
             if (area != CGAL::ZERO && (area == CGAL::POSITIVE) != !g.hole)
-                throw std::logic_error("cgal_reference: ring " + std::to_string(r) + " is stored with the wrong orientation");
+                throw std::logic_error("cgal_reference: ring " + std::to_string(r) +
+                                       " is stored with the wrong orientation");
             rings.push_back(std::move(g));
         }
         return rings;

@@ -50,15 +50,15 @@
 #include "influence2d/covering/inclusion.hpp"
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/scene/posed_polygon.hpp"
-#include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/bounds.hpp"
-#include "influence2d/predicates/extended_area.hpp"
 #include "influence2d/influence/influence_areas.hpp"
 #include "influence2d/number/certified.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "influence2d/predicates/extended_area.hpp"
 #include "influence2d/predicates/orientation.hpp"
 #include "influence2d/predicates/segments.hpp"
+#include "influence2d/scene/posed_polygon.hpp"
+#include "influence2d/scene/prepared.hpp"
 #include "verification/cgal_reference.hpp"
 
 namespace influence2d::verification {
@@ -76,21 +76,23 @@ enum class decision_kind : std::uint8_t {
 };
 
 inline constexpr decision_kind all_decision_kinds[] = {
-    decision_kind::cone_membership,    decision_kind::mask,    decision_kind::alpha_selection,
-    decision_kind::capsule_candidates, decision_kind::band_candidates, decision_kind::pairs,
-    decision_kind::containment,        decision_kind::collides, decision_kind::collides_brute_force};
+    decision_kind::cone_membership,     decision_kind::mask,
+    decision_kind::alpha_selection,     decision_kind::capsule_candidates,
+    decision_kind::band_candidates,     decision_kind::pairs,
+    decision_kind::containment,         decision_kind::collides,
+    decision_kind::collides_brute_force};
 
 inline const char* decision_name(decision_kind k) {
     switch (k) {
-        case decision_kind::cone_membership: return "cone_membership";
-        case decision_kind::mask: return "mask";
-        case decision_kind::alpha_selection: return "alpha_selection";
-        case decision_kind::capsule_candidates: return "capsule_candidates";
-        case decision_kind::band_candidates: return "band_candidates";
-        case decision_kind::pairs: return "pairs";
-        case decision_kind::containment: return "containment";
-        case decision_kind::collides: return "collides";
-        case decision_kind::collides_brute_force: return "collides_brute_force";
+    case decision_kind::cone_membership: return "cone_membership";
+    case decision_kind::mask: return "mask";
+    case decision_kind::alpha_selection: return "alpha_selection";
+    case decision_kind::capsule_candidates: return "capsule_candidates";
+    case decision_kind::band_candidates: return "band_candidates";
+    case decision_kind::pairs: return "pairs";
+    case decision_kind::containment: return "containment";
+    case decision_kind::collides: return "collides";
+    case decision_kind::collides_brute_force: return "collides_brute_force";
     }
     return "unknown";
 }
@@ -102,9 +104,7 @@ inline std::optional<decision_kind> decision_from_name(std::string_view name) {
 }
 
 /// Whether the decision is asked of a query point (else of a pose of B).
-inline bool asks_point(decision_kind k) {
-    return k == decision_kind::cone_membership || k == decision_kind::mask;
-}
+inline bool asks_point(decision_kind k) { return k == decision_kind::cone_membership || k == decision_kind::mask; }
 
 /// One question: a point for the point decisions, a pose of B for the others.
 struct query {
@@ -150,16 +150,15 @@ public:
 
     void decide(decision_kind k, const query& q, answer& out) {
         switch (k) {
-            case decision_kind::cone_membership: return cone_membership(q.at, out);
-            case decision_kind::mask: return mask(q.at, out);
-            case decision_kind::alpha_selection: return alpha_selection(q.placement, out);
-            case decision_kind::capsule_candidates: return candidates(q.placement, extended_area::capsule, out);
-            case decision_kind::band_candidates: return candidates(q.placement, extended_area::band, out);
-            case decision_kind::pairs: return pairs(q.placement, out);
-            case decision_kind::containment: return containment(q.placement, out);
-            case decision_kind::collides: return out.push_back(detector_.collide(q.placement).collides ? 1 : 0);
-            case decision_kind::collides_brute_force:
-                return out.push_back(brute_.collide(q.placement).collides ? 1 : 0);
+        case decision_kind::cone_membership: return cone_membership(q.at, out);
+        case decision_kind::mask: return mask(q.at, out);
+        case decision_kind::alpha_selection: return alpha_selection(q.placement, out);
+        case decision_kind::capsule_candidates: return candidates(q.placement, extended_area::capsule, out);
+        case decision_kind::band_candidates: return candidates(q.placement, extended_area::band, out);
+        case decision_kind::pairs: return pairs(q.placement, out);
+        case decision_kind::containment: return containment(q.placement, out);
+        case decision_kind::collides: return out.push_back(detector_.collide(q.placement).collides ? 1 : 0);
+        case decision_kind::collides_brute_force: return out.push_back(brute_.collide(q.placement).collides ? 1 : 0);
         }
     }
 
@@ -329,25 +328,25 @@ public:
 
     void decide(decision_kind k, const query& q, answer& out) {
         switch (k) {
-            case decision_kind::cone_membership:
-            case decision_kind::mask: {
-                // Every cone, without the angular index.
-                const auto& cov = exact_.scene().covering;
-                const point<exact_rational> p{exact_rational(q.at.x), exact_rational(q.at.y)};
-                for (std::size_t i = 0; i < cov.size(); ++i)
-                    if (in_influence_area(cov, i, p)) out.push_back(static_cast<long>(i));
-                return;
+        case decision_kind::cone_membership:
+        case decision_kind::mask: {
+            // Every cone, without the angular index.
+            const auto& cov = exact_.scene().covering;
+            const point<exact_rational> p{exact_rational(q.at.x), exact_rational(q.at.y)};
+            for (std::size_t i = 0; i < cov.size(); ++i)
+                if (in_influence_area(cov, i, p)) out.push_back(static_cast<long>(i));
+            return;
+        }
+        case decision_kind::pairs:
+            for (const edge_pair& e : witnesses_.collide(q.placement).pairs) {
+                out.push_back(static_cast<long>(e.static_edge));
+                out.push_back(static_cast<long>(e.moving_edge));
             }
-            case decision_kind::pairs:
-                for (const edge_pair& e : witnesses_.collide(q.placement).pairs) {
-                    out.push_back(static_cast<long>(e.static_edge));
-                    out.push_back(static_cast<long>(e.moving_edge));
-                }
-                return;
-            case decision_kind::collides:
-            case decision_kind::collides_brute_force:
-                return out.push_back(collision_.collide(q.placement).collides ? 1 : 0);
-            default: return exact_.decide(k, q, out);
+            return;
+        case decision_kind::collides:
+        case decision_kind::collides_brute_force:
+            return out.push_back(collision_.collide(q.placement).collides ? 1 : 0);
+        default: return exact_.decide(k, q, out);
         }
     }
 
@@ -391,36 +390,36 @@ inline std::vector<point<double>> cone_query_points(const polygon& a, std::size_
     for (std::size_t k = 0; k < count; ++k) {
         const point<double>& v = a.vertex(index(a.size()));
         switch (k % 7) {
-            case 0:
-            case 1: {
-                const double t = 0.25 + 3.75 * unit();
-                const point<double> p{o.x + t * (v.x - o.x), o.y + t * (v.y - o.y)};
-                out.push_back(k % 7 == 0 ? p : ulp_off(p));
-                break;
-            }
-            case 2: out.push_back(v); break;
-            case 3: out.push_back(ulp_off(v)); break;
-            case 4: {
-                const std::size_t i = index(a.size());
-                const point<double> s = a.vertex(i), e = a.vertex(a.next(i));
-                const double t = unit(), h = std::ldexp(size, -4 - static_cast<int>(index(47)));
-                const double len = std::max(std::hypot(e.x - s.x, e.y - s.y), 1e-300);
-                const double side = (gen() & 1) ? h : -h;
-                out.push_back({s.x + t * (e.x - s.x) + side * (e.y - s.y) / len,
-                               s.y + t * (e.y - s.y) - side * (e.x - s.x) / len});
-                break;
-            }
-            case 5: {
-                const double t = std::pow(10.0, 1 + 5 * unit());
-                out.push_back({o.x + t * (v.x - o.x), o.y + t * (v.y - o.y)});
-                break;
-            }
-            default: {
-                const double r = size * std::pow(10.0, 1 + 8 * unit());
-                const double phi = 6.283185307179586 * unit();
-                out.push_back({o.x + r * std::cos(phi), o.y + r * std::sin(phi)});
-                break;
-            }
+        case 0:
+        case 1: {
+            const double t = 0.25 + 3.75 * unit();
+            const point<double> p{o.x + t * (v.x - o.x), o.y + t * (v.y - o.y)};
+            out.push_back(k % 7 == 0 ? p : ulp_off(p));
+            break;
+        }
+        case 2: out.push_back(v); break;
+        case 3: out.push_back(ulp_off(v)); break;
+        case 4: {
+            const std::size_t i = index(a.size());
+            const point<double> s = a.vertex(i), e = a.vertex(a.next(i));
+            const double t = unit(), h = std::ldexp(size, -4 - static_cast<int>(index(47)));
+            const double len = std::max(std::hypot(e.x - s.x, e.y - s.y), 1e-300);
+            const double side = (gen() & 1) ? h : -h;
+            out.push_back(
+                {s.x + t * (e.x - s.x) + side * (e.y - s.y) / len, s.y + t * (e.y - s.y) - side * (e.x - s.x) / len});
+            break;
+        }
+        case 5: {
+            const double t = std::pow(10.0, 1 + 5 * unit());
+            out.push_back({o.x + t * (v.x - o.x), o.y + t * (v.y - o.y)});
+            break;
+        }
+        default: {
+            const double r = size * std::pow(10.0, 1 + 8 * unit());
+            const double phi = 6.283185307179586 * unit();
+            out.push_back({o.x + r * std::cos(phi), o.y + r * std::sin(phi)});
+            break;
+        }
         }
     }
     return out;

@@ -40,8 +40,8 @@ namespace influence2d::verification {
 
 enum class family { convex, starred, irregular, contour, with_hole };
 
-inline constexpr family all_families[] = {family::convex, family::starred, family::irregular,
-                                          family::contour, family::with_hole};
+inline constexpr family all_families[] = {family::convex, family::starred, family::irregular, family::contour,
+                                          family::with_hole};
 
 /// The seed of the committed data/families files.
 inline constexpr std::uint64_t default_family_seed = 20040202;
@@ -56,11 +56,11 @@ inline std::vector<std::size_t> default_family_sizes() {
 /// The family's name in file names: convex, starred, irregular, contour, hole.
 inline std::string family_name(family f) {
     switch (f) {
-        case family::convex: return "convex";
-        case family::starred: return "starred";
-        case family::irregular: return "irregular";
-        case family::contour: return "contour";
-        case family::with_hole: return "hole";
+    case family::convex: return "convex";
+    case family::starred: return "starred";
+    case family::irregular: return "irregular";
+    case family::contour: return "contour";
+    case family::with_hole: return "hole";
     }
     throw std::invalid_argument("family_name: unknown family");
 }
@@ -81,8 +81,7 @@ inline double to_grid(double v) { return std::ldexp(std::trunc(std::ldexp(v, 20)
 /// The rings in polar form, scaled so that the farthest vertex is at 50,
 /// rotated so that it lies at angle 0 and made vertex 0 of its ring, then
 /// converted to grid coordinates.
-inline std::vector<ring_input> to_rings(std::vector<std::vector<polar>> rings,
-                                        const std::vector<ring_role>& roles) {
+inline std::vector<ring_input> to_rings(std::vector<std::vector<polar>> rings, const std::vector<ring_role>& roles) {
     std::size_t far_ring = 0, far_vertex = 0;
     for (std::size_t r = 0; r < rings.size(); ++r)
         for (std::size_t k = 0; k < rings[r].size(); ++k)
@@ -118,8 +117,8 @@ inline bool strictly_convex(const std::vector<point<double>>& vs) {
         const auto& a = vs[k];
         const auto& b = vs[(k + 1) % n];
         const auto& c = vs[(k + 2) % n];
-        const std::int64_t cross = (unit(b.x) - unit(a.x)) * (unit(c.y) - unit(a.y)) -
-                                   (unit(b.y) - unit(a.y)) * (unit(c.x) - unit(a.x));
+        const std::int64_t cross =
+            (unit(b.x) - unit(a.x)) * (unit(c.y) - unit(a.y)) - (unit(b.y) - unit(a.y)) * (unit(c.x) - unit(a.x));
         if (cross <= 0) return false;
     }
     return true;
@@ -199,52 +198,51 @@ inline std::vector<ring_input> make_family_rings(family f, std::size_t n, std::u
     if (n < 8) throw std::invalid_argument("make_family_rings: at least 8 vertices are needed");
     uniform_source u(mix(seed ^ mix((static_cast<std::uint64_t>(f) << 32) ^ n)));
     switch (f) {
-        case family::convex: {
-            const auto ring = star_ring(u, n, 0.5, [](std::size_t) { return enclosing_radius; });
-            return to_rings({ring}, {ring_role::outer});
+    case family::convex: {
+        const auto ring = star_ring(u, n, 0.5, [](std::size_t) { return enclosing_radius; });
+        return to_rings({ring}, {ring_role::outer});
+    }
+    case family::starred: {
+        const auto ring = star_ring(
+            u, n, 0.15, [&](std::size_t k) { return k % 2 == 0 ? u.between(47.5, 50) : u.between(22.5, 27.5); });
+        return to_rings({ring}, {ring_role::outer});
+    }
+    case family::irregular: {
+        for (;;) {
+            const auto ring = star_ring(u, n, 0.3, [&](std::size_t) { return u.between(20, 50); });
+            auto rings = to_rings({ring}, {ring_role::outer});
+            if (!strictly_convex(rings[0].vertices)) return rings;
         }
-        case family::starred: {
-            const auto ring = star_ring(u, n, 0.15, [&](std::size_t k) {
-                return k % 2 == 0 ? u.between(47.5, 50) : u.between(22.5, 27.5);
-            });
-            return to_rings({ring}, {ring_role::outer});
-        }
-        case family::irregular: {
-            for (;;) {
-                const auto ring = star_ring(u, n, 0.3, [&](std::size_t) { return u.between(20, 50); });
-                auto rings = to_rings({ring}, {ring_role::outer});
-                if (!strictly_convex(rings[0].vertices)) return rings;
-            }
-        }
-        case family::contour: {
-            const std::size_t inner = n / 2, outer = n - inner;
-            const double span = 300 * pi / 180;
-            for (;;) {
-                const std::vector<double> angles = jittered_angles(u, inner, pi - span / 2, span, 0.3, false);
-                const wobble w_out(u), w_in(u);
-                std::vector<polar> ring;
-                ring.reserve(n);
-                for (std::size_t k = 0; k < inner; ++k) {
-                    ring.push_back({angles[k], 45 + 3 * w_out(angles[k]) + 2 * u.between(-1, 1)});
-                    if (outer > inner && k == inner / 2 - 1) {
-                        const double mid = (angles[k] + angles[k + 1]) / 2;
-                        ring.push_back({mid, 45 + 3 * w_out(mid) + 2 * u.between(-1, 1)});
-                    }
+    }
+    case family::contour: {
+        const std::size_t inner = n / 2, outer = n - inner;
+        const double span = 300 * pi / 180;
+        for (;;) {
+            const std::vector<double> angles = jittered_angles(u, inner, pi - span / 2, span, 0.3, false);
+            const wobble w_out(u), w_in(u);
+            std::vector<polar> ring;
+            ring.reserve(n);
+            for (std::size_t k = 0; k < inner; ++k) {
+                ring.push_back({angles[k], 45 + 3 * w_out(angles[k]) + 2 * u.between(-1, 1)});
+                if (outer > inner && k == inner / 2 - 1) {
+                    const double mid = (angles[k] + angles[k + 1]) / 2;
+                    ring.push_back({mid, 45 + 3 * w_out(mid) + 2 * u.between(-1, 1)});
                 }
-                for (std::size_t k = inner; k-- > 0;)
-                    ring.push_back({angles[k], 25 + 3 * w_in(angles[k]) + 2 * u.between(-1, 1)});
-                auto rings = to_rings({ring}, {ring_role::outer});
-                if (centroid_clearly_outside(rings[0].vertices)) return rings;
             }
+            for (std::size_t k = inner; k-- > 0;)
+                ring.push_back({angles[k], 25 + 3 * w_in(angles[k]) + 2 * u.between(-1, 1)});
+            auto rings = to_rings({ring}, {ring_role::outer});
+            if (centroid_clearly_outside(rings[0].vertices)) return rings;
         }
-        case family::with_hole: {
-            const std::size_t hole = n / 2, outer = n - hole;
-            const auto out_ring = star_ring(u, outer, 0.15, [&](std::size_t) { return u.between(42, 50); });
-            const double shrink = std::fmin(1.0, 0.8 * inner_clearance(out_ring) / 25);
-            auto hole_ring = star_ring(u, hole, 0.15, [&](std::size_t) { return shrink * u.between(15, 25); });
-            std::reverse(hole_ring.begin() + 1, hole_ring.end());  // clockwise, as stored
-            return to_rings({out_ring, hole_ring}, {ring_role::outer, ring_role::hole});
-        }
+    }
+    case family::with_hole: {
+        const std::size_t hole = n / 2, outer = n - hole;
+        const auto out_ring = star_ring(u, outer, 0.15, [&](std::size_t) { return u.between(42, 50); });
+        const double shrink = std::fmin(1.0, 0.8 * inner_clearance(out_ring) / 25);
+        auto hole_ring = star_ring(u, hole, 0.15, [&](std::size_t) { return shrink * u.between(15, 25); });
+        std::reverse(hole_ring.begin() + 1, hole_ring.end());  // clockwise, as stored
+        return to_rings({out_ring, hole_ring}, {ring_role::outer, ring_role::hole});
+    }
     }
     throw std::invalid_argument("make_family_rings: unknown family");
 }

@@ -154,8 +154,7 @@ public:
     static bool applies(const polygon& A, const polygon& B) { return boost_geometry_peer::applies(A, B); }
 
     boost_geometry_one_shot(const polygon& A, const polygon& B)
-        : a_(peer_detail::bg_posed(peer_rings(A), rotation_pose(pose{}))),
-          b_rings_(peer_rings(B)) {}
+        : a_(peer_detail::bg_posed(peer_rings(A), rotation_pose(pose{}))), b_rings_(peer_rings(B)) {}
 
     bool collide(const pose& p) const {
         return boost::geometry::intersects(a_, peer_detail::bg_posed(b_rings_, rotation_pose(p)));
@@ -270,8 +269,7 @@ class geos_one_shot {
 public:
     static bool applies(const polygon&, const polygon&) { return true; }
 
-    geos_one_shot(const polygon& A, const polygon& B)
-        : a_rings_(peer_rings(A)), b_rings_(peer_rings(B)) {}
+    geos_one_shot(const polygon& A, const polygon& B) : a_rings_(peer_rings(A)), b_rings_(peer_rings(B)) {}
 
     bool collide(const pose& p) {
         GEOSGeometry* a = g_.make(a_rings_, rotation_pose(pose{}));
@@ -396,12 +394,9 @@ class box2d_one_shot {
 public:
     static bool applies(const polygon& A, const polygon& B) { return box2d_peer::applies(A, B); }
 
-    box2d_one_shot(const polygon& A, const polygon& B)
-        : a_(box2d_peer::vertices(A)), b_(box2d_peer::vertices(B)) {}
+    box2d_one_shot(const polygon& A, const polygon& B) : a_(box2d_peer::vertices(A)), b_(box2d_peer::vertices(B)) {}
 
-    bool collide(const pose& p) const {
-        return box2d_peer::overlap(box2d_peer::shape(a_), box2d_peer::shape(b_), p);
-    }
+    bool collide(const pose& p) const { return box2d_peer::overlap(box2d_peer::shape(a_), box2d_peer::shape(b_), p); }
 
 private:
     std::vector<b2Vec2> a_, b_;

@@ -40,18 +40,18 @@
 #include <utility>
 #include <vector>
 
-#include "influence2d/exact/certified_separation.hpp"
-#include "influence2d/exact/certified_first_contact.hpp"
+#include "influence2d/core/feature.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
-#include "influence2d/core/feature.hpp"
-#include "influence2d/scene/prepared.hpp"
 #include "influence2d/distance/separation.hpp"
-#include "influence2d/motion/first_contact.hpp"
+#include "influence2d/exact/certified_first_contact.hpp"
+#include "influence2d/exact/certified_separation.hpp"
 #include "influence2d/influence/bounds.hpp"
+#include "influence2d/motion/first_contact.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/number/traits.hpp"
 #include "influence2d/predicates/distance.hpp"
+#include "influence2d/scene/prepared.hpp"
 
 namespace influence2d::verification {
 
@@ -59,9 +59,7 @@ enum class query_kind : std::uint8_t { separation, first_contact };
 
 inline constexpr query_kind all_query_kinds[] = {query_kind::separation, query_kind::first_contact};
 
-inline const char* query_name(query_kind k) {
-    return k == query_kind::separation ? "separation" : "first_contact";
-}
+inline const char* query_name(query_kind k) { return k == query_kind::separation ? "separation" : "first_contact"; }
 
 inline std::optional<query_kind> query_from_name(std::string_view name) {
     for (query_kind k : all_query_kinds)
@@ -185,7 +183,7 @@ struct query_outcome {
 
 template <class NT>
 query_outcome compare_answer(const separation_result<NT>& got, const separation_result<exact_rational>& exact,
-                                 value_claim claim) {
+                             value_claim claim) {
     query_outcome o;
     o.meeting_differs = got.meet() != exact.meet();
     o.features_differ = !same_feature(got.static_feature, exact.static_feature) ||
@@ -195,9 +193,9 @@ query_outcome compare_answer(const separation_result<NT>& got, const separation_
         o.error = s ? relative_distance_error(*s, exact.squared_distance) : std::numeric_limits<double>::infinity();
     }
     if constexpr (std::is_same_v<NT, exact_rational>)
-        o.value_differs = claim == value_claim::exact && (got.squared_distance != exact.squared_distance ||
-                                                          !(got.static_point == exact.static_point) ||
-                                                          !(got.moving_point == exact.moving_point));
+        o.value_differs = claim == value_claim::exact &&
+                          (got.squared_distance != exact.squared_distance ||
+                           !(got.static_point == exact.static_point) || !(got.moving_point == exact.moving_point));
     return o;
 }
 
@@ -264,9 +262,7 @@ public:
     query_route(const polygon& a, const polygon& b) : a_(a), b_(b) {}
 
     certified_separation_result separation(const pose& q) { return certified_separation(a_, b_, q); }
-    contact_result<double> first_contact(const translation& m) {
-        return certified_first_contact(a_, b_, m.from, m.to);
-    }
+    contact_result<double> first_contact(const translation& m) { return certified_first_contact(a_, b_, m.from, m.to); }
 
 private:
     const polygon& a_;

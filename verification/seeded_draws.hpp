@@ -41,8 +41,8 @@ private:
 /// span * w_k / sum(w) with weights w_k uniform in [1 - spread, 1 + spread].
 /// With `closed` the gaps go once around (count gaps, last back to the first
 /// angle); otherwise count - 1 gaps run from `start` to `start + span`.
-inline std::vector<double> jittered_angles(uniform_source& u, std::size_t count, double start,
-                                           double span, double spread, bool closed) {
+inline std::vector<double> jittered_angles(uniform_source& u, std::size_t count, double start, double span,
+                                           double spread, bool closed) {
     const std::size_t gaps = closed ? count : count - 1;
     std::vector<double> w(gaps);
     double total = 0;
@@ -67,8 +67,7 @@ public:
         for (double& p : phase_) p = u.between(0, 2 * pi);
     }
     double operator()(double angle) const {
-        return (std::sin(angle + phase_[0]) + std::sin(2 * angle + phase_[1]) +
-                std::sin(3 * angle + phase_[2])) / 3;
+        return (std::sin(angle + phase_[0]) + std::sin(2 * angle + phase_[1]) + std::sin(3 * angle + phase_[2])) / 3;
     }
 
 private:

@@ -79,40 +79,41 @@ enum class stiff_family {
 /// The family's name in scene and file names: "near_collinear", "offset", ...
 inline std::string stiff_family_name(stiff_family f) {
     switch (f) {
-        case stiff_family::near_collinear: return "near_collinear";
-        case stiff_family::sliver: return "sliver";
-        case stiff_family::needle: return "needle";
-        case stiff_family::tiny_beside_huge: return "tiny_beside_huge";
-        case stiff_family::offset: return "offset";
-        case stiff_family::scaled: return "scaled";
-        case stiff_family::subnormal: return "subnormal";
-        case stiff_family::grazing: return "grazing";
-        case stiff_family::touching: return "touching";
-        case stiff_family::centroid_on_edge_line: return "centroid_on_edge_line";
-        case stiff_family::large: return "large";
-        case stiff_family::comb: return "comb";
-        case stiff_family::spiral: return "spiral";
+    case stiff_family::near_collinear: return "near_collinear";
+    case stiff_family::sliver: return "sliver";
+    case stiff_family::needle: return "needle";
+    case stiff_family::tiny_beside_huge: return "tiny_beside_huge";
+    case stiff_family::offset: return "offset";
+    case stiff_family::scaled: return "scaled";
+    case stiff_family::subnormal: return "subnormal";
+    case stiff_family::grazing: return "grazing";
+    case stiff_family::touching: return "touching";
+    case stiff_family::centroid_on_edge_line: return "centroid_on_edge_line";
+    case stiff_family::large: return "large";
+    case stiff_family::comb: return "comb";
+    case stiff_family::spiral: return "spiral";
     }
     throw std::invalid_argument("stiff_family_name: unknown family");
 }
 
 /// Every family, in declaration order.
 inline const std::vector<stiff_family>& all_stiff_families() {
-    static const std::vector<stiff_family> all{
-        stiff_family::near_collinear, stiff_family::sliver,    stiff_family::needle,
-        stiff_family::tiny_beside_huge, stiff_family::offset,  stiff_family::scaled,
-        stiff_family::subnormal,      stiff_family::grazing,   stiff_family::touching,
-        stiff_family::centroid_on_edge_line,                   stiff_family::large,
-        stiff_family::comb,           stiff_family::spiral};
+    static const std::vector<stiff_family> all{stiff_family::near_collinear, stiff_family::sliver,
+                                               stiff_family::needle,         stiff_family::tiny_beside_huge,
+                                               stiff_family::offset,         stiff_family::scaled,
+                                               stiff_family::subnormal,      stiff_family::grazing,
+                                               stiff_family::touching,       stiff_family::centroid_on_edge_line,
+                                               stiff_family::large,          stiff_family::comb,
+                                               stiff_family::spiral};
     return all;
 }
 
 /// One scene: a static polygon A, a moving polygon B (in its own frame) and
 /// the poses of B to test.
 struct stiff_scene {
-    std::string name;         ///< unique within one call, file-name safe: "offset_1e09_003"
+    std::string name;  ///< unique within one call, file-name safe: "offset_1e09_003"
     stiff_family family = stiff_family::near_collinear;
-    double magnitude = 0;     ///< the offset or the scale; 0 for the other families
+    double magnitude = 0;  ///< the offset or the scale; 0 for the other families
     polygon a, b;
     std::vector<pose> poses;
 };
@@ -138,8 +139,8 @@ using dpoint = point<double>;
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
 inline std::uint64_t scene_seed(std::uint64_t seed, stiff_family f, std::size_t index) {
-    return mix(seed ^ mix(0x5354494646000000ULL ^ (static_cast<std::uint64_t>(f) << 32) ^
-                          static_cast<std::uint64_t>(index)));
+    return mix(seed ^
+               mix(0x5354494646000000ULL ^ (static_cast<std::uint64_t>(f) << 32) ^ static_cast<std::uint64_t>(index)));
 }
 
 // ---------------------------------------------------------------- drawing
@@ -268,8 +269,7 @@ inline bool winds_once(const std::vector<lpoint>& ring) {
 inline std::vector<lpoint> lattice_star(uniform_source& u, std::size_t m, double rmin, double rmax,
                                         double spread = 0.3) {
     for (int attempt = 0; attempt < 10000; ++attempt) {
-        const std::vector<double> angles =
-            jittered_angles(u, m, u.between(0, 2 * pi), 2 * pi, spread, true);
+        const std::vector<double> angles = jittered_angles(u, m, u.between(0, 2 * pi), 2 * pi, spread, true);
         std::vector<lpoint> ring(m);
         for (std::size_t k = 0; k < m; ++k) {
             const double r = u.between(rmin, rmax);
@@ -311,8 +311,7 @@ inline std::vector<dpoint> from_lattice(const std::vector<lpoint>& ring, double 
 /// A star-shaped counter-clockwise ring of m >= 3 vertices about the origin
 /// in double: jittered angles (every gap below pi), radii in [0.6, 1] * radius.
 inline std::vector<dpoint> small_star(uniform_source& u, std::size_t m, double radius) {
-    const std::vector<double> angles =
-        jittered_angles(u, m, u.between(0, 2 * pi), 2 * pi, 0.2, true);
+    const std::vector<double> angles = jittered_angles(u, m, u.between(0, 2 * pi), 2 * pi, 0.2, true);
     std::vector<dpoint> ring(m);
     for (std::size_t k = 0; k < m; ++k) {
         const double r = radius * u.between(0.6, 1);
@@ -383,8 +382,7 @@ inline bool vertex_normal(const polygon& a, std::size_t i, dpoint& n) {
     // Outward bisector: rot(u1 + u2) by -90 degrees, or u1 - u2 at sharp tips
     // (the same direction for a convex turn; the larger is the more accurate).
     const dpoint sum{u1.x + u2.x, u1.y + u2.y}, diff{u1.x - u2.x, u1.y - u2.y};
-    n = std::hypot(sum.x, sum.y) >= std::hypot(diff.x, diff.y) ? direction(sum.y, -sum.x)
-                                                             : direction(diff.x, diff.y);
+    n = std::hypot(sum.x, sum.y) >= std::hypot(diff.x, diff.y) ? direction(sum.y, -sum.x) : direction(diff.x, diff.y);
     return true;
 }
 
@@ -465,13 +463,13 @@ inline double draw_theta(turn k, const site& st, const polygon& b, uniform_sourc
     const double any = u.between(-pi, pi);
     const std::size_t j = draw_index(u, b.size());
     switch (k) {
-        case turn::zero: return 0;
-        case turn::small: return sign * magnitude;
-        case turn::any: return any;
-        case turn::aligned: {
-            const dpoint d = edge_direction(b, b.vertex(j) == b.vertex(b.next(j)) ? b.next(j) : j);
-            return normalise_angle(std::atan2(st.dir.y, st.dir.x) - std::atan2(d.y, d.x) + pi);
-        }
+    case turn::zero: return 0;
+    case turn::small: return sign * magnitude;
+    case turn::any: return any;
+    case turn::aligned: {
+        const dpoint d = edge_direction(b, b.vertex(j) == b.vertex(b.next(j)) ? b.next(j) : j);
+        return normalise_angle(std::atan2(st.dir.y, st.dir.x) - std::atan2(d.y, d.x) + pi);
+    }
     }
     return 0;
 }
@@ -554,8 +552,10 @@ inline std::vector<dpoint> collinear_runs(uniform_source& u, const std::vector<l
             if (j > 0) {
                 const int k_abs = static_cast<int>(integer(u, 1, 4));
                 const int k_ulps = coin(u) ? k_abs : -k_abs;
-                if (coin(u)) p.x = step(p.x, k_ulps);
-                else p.y = step(p.y, k_ulps);
+                if (coin(u))
+                    p.x = step(p.x, k_ulps);
+                else
+                    p.y = step(p.y, k_ulps);
             }
             out.push_back(p);
         }
@@ -615,8 +615,7 @@ inline plan needle_plan(uniform_source& u) {
     const std::size_t body = static_cast<std::size_t>(integer(u, 5, 9));
     const std::size_t spikes = static_cast<std::size_t>(integer(u, 2, 5));
     const std::size_t slots = body + spikes, every = slots / spikes;
-    const std::vector<double> angles =
-        jittered_angles(u, slots, u.between(0, 2 * pi), 2 * pi, 0.2, true);
+    const std::vector<double> angles = jittered_angles(u, slots, u.between(0, 2 * pi), 2 * pi, 0.2, true);
     std::vector<dpoint> ring;
     std::size_t made = 0;
     for (std::size_t k = 0; k < slots; ++k) {
@@ -971,8 +970,10 @@ inline void touching_scene(uniform_source& u, std::size_t frames, polygon& a, po
         poses.push_back({t.x, t.y, 0});
         if (poses.size() >= frames) break;
         dpoint apart = t;
-        if (n.x != 0) apart.x = step(t.x, n.x > 0 ? 1 : -1);
-        else apart.y = step(t.y, n.y > 0 ? 1 : -1);
+        if (n.x != 0)
+            apart.x = step(t.x, n.x > 0 ? 1 : -1);
+        else
+            apart.y = step(t.y, n.y > 0 ? 1 : -1);
         poses.push_back({apart.x, apart.y, 0});
     }
 }
@@ -998,8 +999,10 @@ inline std::string magnitude_tag(double m) {
     std::snprintf(buf, sizeof buf, "%.6g", m);
     std::string s;
     for (const char* c = buf; *c; ++c) {
-        if (*c == '.') s += 'p';
-        else if (*c != '+') s += *c;
+        if (*c == '.')
+            s += 'p';
+        else if (*c != '+')
+            s += *c;
     }
     return s;
 }
@@ -1023,26 +1026,26 @@ inline stiff_scene make_scene(stiff_family f, double magnitude, std::size_t inde
     s.magnitude = magnitude;
     plan p;
     switch (f) {
-        case stiff_family::near_collinear: p = near_collinear_plan(u); break;
-        case stiff_family::sliver: p = sliver_plan(u); break;
-        case stiff_family::needle: p = needle_plan(u); break;
-        case stiff_family::tiny_beside_huge: p = tiny_beside_huge_plan(u); break;
-        case stiff_family::offset: p = offset_plan(u, magnitude); break;
-        case stiff_family::scaled: {
-            p = scaled_base_plan(u, index);
-            s.poses = plan_poses(p, frames, u);
-            for (pose& q : s.poses) q = {q.tx * magnitude, q.ty * magnitude, q.theta};
-            s.a = scaled_polygon(p.a, magnitude);
-            s.b = scaled_polygon(p.b, magnitude);
-            return s;
-        }
-        case stiff_family::subnormal: p = subnormal_plan(u); break;
-        case stiff_family::grazing: p = grazing_plan(u, index); break;
-        case stiff_family::touching: touching_scene(u, frames, s.a, s.b, s.poses); return s;
-        case stiff_family::centroid_on_edge_line: p = centroid_plan(u); break;
-        case stiff_family::large: p = large_plan(u); break;
-        case stiff_family::comb: p = comb_plan(u); break;
-        case stiff_family::spiral: p = spiral_plan(u); break;
+    case stiff_family::near_collinear: p = near_collinear_plan(u); break;
+    case stiff_family::sliver: p = sliver_plan(u); break;
+    case stiff_family::needle: p = needle_plan(u); break;
+    case stiff_family::tiny_beside_huge: p = tiny_beside_huge_plan(u); break;
+    case stiff_family::offset: p = offset_plan(u, magnitude); break;
+    case stiff_family::scaled: {
+        p = scaled_base_plan(u, index);
+        s.poses = plan_poses(p, frames, u);
+        for (pose& q : s.poses) q = {q.tx * magnitude, q.ty * magnitude, q.theta};
+        s.a = scaled_polygon(p.a, magnitude);
+        s.b = scaled_polygon(p.b, magnitude);
+        return s;
+    }
+    case stiff_family::subnormal: p = subnormal_plan(u); break;
+    case stiff_family::grazing: p = grazing_plan(u, index); break;
+    case stiff_family::touching: touching_scene(u, frames, s.a, s.b, s.poses); return s;
+    case stiff_family::centroid_on_edge_line: p = centroid_plan(u); break;
+    case stiff_family::large: p = large_plan(u); break;
+    case stiff_family::comb: p = comb_plan(u); break;
+    case stiff_family::spiral: p = spiral_plan(u); break;
     }
     s.poses = plan_poses(p, frames, u);
     s.a = std::move(p.a);
@@ -1156,8 +1159,8 @@ inline std::vector<stiff_scene> stiff_data_scenes(std::uint64_t seed = default_s
     std::vector<stiff_scene> scenes;
     for (stiff_family f : all_stiff_families()) {
         const bool large = f == stiff_family::large;
-        auto some = make_stiff_scenes(f, large ? std::min<std::size_t>(count, 1) : count, seed,
-                                      large ? large_data_frames : 64);
+        auto some =
+            make_stiff_scenes(f, large ? std::min<std::size_t>(count, 1) : count, seed, large ? large_data_frames : 64);
         for (auto& s : some) scenes.push_back(std::move(s));
     }
     return scenes;

@@ -360,9 +360,8 @@ inline std::string regression_head(const std::string& key, const std::string& as
 }
 
 /// The JSON text of a reproducible case (format: data/regressions/README.md).
-inline std::string regression_json(const polygon& a, const polygon& b, double distance, decision_kind k,
-                                   const query& q, const std::string& number_type, const answer& expected,
-                                   const answer& got) {
+inline std::string regression_json(const polygon& a, const polygon& b, double distance, decision_kind k, const query& q,
+                                   const std::string& number_type, const answer& expected, const answer& got) {
     const auto list = [](const answer& v) {
         std::string s = "[";
         for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + std::to_string(v[i]);
@@ -455,8 +454,8 @@ inline regression_case parse_regression(const std::string& text, const std::stri
 
 /// The outcome of answering a reproducible case again.
 struct replay_outcome {
-    bool reference_agrees = true;             ///< the reference still gives `expected`
-    std::vector<std::string> disagreeing;     ///< exact-claiming types whose answer differs
+    bool reference_agrees = true;          ///< the reference still gives `expected`
+    std::vector<std::string> disagreeing;  ///< exact-claiming types whose answer differs
 };
 
 /// Answers the case again with the reference and with every number type of
@@ -500,12 +499,12 @@ struct study_progress {
 
 struct study_options {
     std::vector<std::string> families = default_study_families();
-    std::vector<std::string> types;  ///< empty: every type of the list
+    std::vector<std::string> types;        ///< empty: every type of the list
     std::vector<decision_kind> decisions;  ///< empty: every decision kind
-    std::size_t cases = 2;           ///< scenes per family (per magnitude for a sweep)
-    std::size_t frames = 100;        ///< poses and query points per scene
+    std::size_t cases = 2;                 ///< scenes per family (per magnitude for a sweep)
+    std::size_t frames = 100;              ///< poses and query points per scene
     std::uint64_t seed = 20040202;
-    std::size_t examples = 3;        ///< disagreements kept per type and decision (or query)
+    std::size_t examples = 3;  ///< disagreements kept per type and decision (or query)
     /// The queries asked (separation, first contact); empty: none.
     std::vector<query_kind> queries{std::begin(all_query_kinds), std::end(all_query_kinds)};
     std::size_t query_frames = 128;  ///< questions per scene for each query (at most `frames`)
@@ -591,9 +590,9 @@ struct type_summary {
     bool claims_exact = false;
     bool has_fallback = false;
     std::size_t questions = 0;
-    std::size_t fallbacks = 0;        ///< questions answered by the fallback type
-    std::size_t setup_fallbacks = 0;  ///< scenes that could not be set up in the type itself
-    std::size_t refused_scenes = 0;   ///< scenes beyond the type's range (float): not asked
+    std::size_t fallbacks = 0;             ///< questions answered by the fallback type
+    std::size_t setup_fallbacks = 0;       ///< scenes that could not be set up in the type itself
+    std::size_t refused_scenes = 0;        ///< scenes beyond the type's range (float): not asked
     std::size_t refused_query_scenes = 0;  ///< the same for the queries
 };
 
@@ -662,8 +661,8 @@ private:
     bool only_per_frame_decisions() const {
         return std::all_of(asked_.begin(), asked_.end(), [](std::size_t d) {
             const decision_kind k = all_decision_kinds[d];
-            return k == decision_kind::cone_membership || k == decision_kind::mask ||
-                   k == decision_kind::containment || k == decision_kind::collides;
+            return k == decision_kind::cone_membership || k == decision_kind::mask || k == decision_kind::containment ||
+                   k == decision_kind::collides;
         });
     }
     static constexpr std::size_t chunk = 128;
@@ -720,8 +719,7 @@ private:
                     example_list_.push_back({Mode::name(), c.family, decision_name(kind), c.scene,
                                              question_text(kind, questions[k]), answer_text(got.get(k)),
                                              answer_text(expected[d].get(k))});
-                if (Mode::claims_exact && !o_.regressions_dir.empty())
-                    write_regression<Mode>(c, kind, questions[k]);
+                if (Mode::claims_exact && !o_.regressions_dir.empty()) write_regression<Mode>(c, kind, questions[k]);
             }
         }
     }
@@ -792,11 +790,9 @@ private:
             t.add(o);
             if (!o.differs()) continue;
             if (examples_[{m, kinds + static_cast<std::size_t>(k)}]++ < o_.examples)
-                example_list_.push_back({Mode::name(), c.family, query_name(k), c.scene,
-                                         question_text(k, questions[i]), answer_text(got[i]),
-                                         answer_text(expected[i])});
-            if (Mode::claims_exact && !o_.regressions_dir.empty())
-                write_query_regression<Mode>(c, k, questions[i]);
+                example_list_.push_back({Mode::name(), c.family, query_name(k), c.scene, question_text(k, questions[i]),
+                                         answer_text(got[i]), answer_text(expected[i])});
+            if (Mode::claims_exact && !o_.regressions_dir.empty()) write_query_regression<Mode>(c, k, questions[i]);
         }
     }
 

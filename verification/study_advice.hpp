@@ -25,9 +25,8 @@ inline std::string number_type_advice(const study_result& r) {
     for (const type_summary& t : r.summaries)
         if (collides.count(t.number_type) && collides.at(t.number_type).cases > 0) asked.push_back(&t);
     if (asked.empty()) return "No collision question was asked in this run.\n";
-    const type_summary* fastest = *std::min_element(asked.begin(), asked.end(), [&](auto* x, auto* y) {
-        return ns(x->number_type) < ns(y->number_type);
-    });
+    const type_summary* fastest = *std::min_element(
+        asked.begin(), asked.end(), [&](auto* x, auto* y) { return ns(x->number_type) < ns(y->number_type); });
     const auto times = [&](const std::string& t) {
         return general(ns(t) / std::max(ns(fastest->number_type), 1e-9), 3) + " times " + fastest->number_type;
     };
@@ -47,8 +46,8 @@ inline std::string number_type_advice(const study_result& r) {
     }
     if (!sound_floats.empty())
         s += " The floating types with no wrong final answer in this run are still not exact: their predicates "
-             "disagreed with the reference on a share of the questions: " + sound_floats +
-             "; more precision moves the cliff closer to contact, it does not remove it.";
+             "disagreed with the reference on a share of the questions: " +
+             sound_floats + "; more precision moves the cliff closer to contact, it does not remove it.";
     const type_summary* fastest_exact = nullptr;
     for (const type_summary* t : asked) {
         if (!t->claims_exact) continue;

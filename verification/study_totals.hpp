@@ -27,6 +27,8 @@ std::map<std::string, decision_tally> totals_by_type(const study_result& r, Keep
 /// Whether the row counts the final answer, collides.
 inline bool asks_collides(const study_row& row) { return row.decision == "collides"; }
 /// Whether the row counts one of the predicates (neither detector's final answer).
-inline bool asks_predicate(const study_row& row) { return row.decision != "collides" && row.decision != "collides_brute_force"; }
+inline bool asks_predicate(const study_row& row) {
+    return row.decision != "collides" && row.decision != "collides_brute_force";
+}
 
 }  // namespace influence2d::verification

@@ -66,15 +66,15 @@
 #include <type_traits>
 #include <vector>
 
-#include "influence2d/exact/certified_intersects.hpp"
 #include "influence2d/detect/brute_force.hpp"
-#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/query/intersects.hpp"
 #include "influence2d/detect/paper_detector.hpp"
-#include "influence2d/motion/trajectory.hpp"
+#include "influence2d/exact/certified_detector.hpp"
+#include "influence2d/exact/certified_intersects.hpp"
 #include "influence2d/influence/bounds.hpp"
+#include "influence2d/motion/trajectory.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "influence2d/query/intersects.hpp"
 #include "verification/families.hpp"
 #include "verification/heap_meter.hpp"
 #include "verification/peers.hpp"
@@ -157,13 +157,13 @@ private:
 /// What the time study knows of a method.
 struct method_info {
     const char* name;
-    bool own;            ///< influence2d's (else a peer)
-    bool available;      ///< its library was found when this was built
-    const char* needs;   ///< the macro telling whether it was ("" for none)
-    bool repeated;       ///< timed in repeated passes taking turns (else strided, one pass)
+    bool own;           ///< influence2d's (else a peer)
+    bool available;     ///< its library was found when this was built
+    const char* needs;  ///< the macro telling whether it was ("" for none)
+    bool repeated;      ///< timed in repeated passes taking turns (else strided, one pass)
     bool (*applies)(const polygon&, const polygon&);  ///< whether it can take the cell's pair
-    const char* frames;    ///< its frame form, for help and reports ("" if none)
-    const char* one_shot;  ///< its one-shot form ("" if none)
+    const char* frames;                               ///< its frame form, for help and reports ("" if none)
+    const char* one_shot;                             ///< its one-shot form ("" if none)
 };
 
 /// A method: its description and the types of its two forms (no_form where it
@@ -191,20 +191,19 @@ inline const auto& method_table() {
         method_entry<no_form, detector_per_query>{
             {"double-detector", true, true, "", true, any_pair, "", "detector<double> built, then one collide"}},
         method_entry<paper_detector<double>, no_form>{
-            {"paper", true, true, "", true, any_pair, "paper_detector<double> (the paper's algorithm as written)",
-             ""}},
+            {"paper", true, true, "", true, any_pair, "paper_detector<double> (the paper's algorithm as written)", ""}},
         method_entry<brute_force_detector<double>, no_form>{
             {"brute_force", true, true, "", false, any_pair,
              "brute_force_detector<double> (every edge pair, then containment)", ""}},
         method_entry<boost_geometry_peer, boost_geometry_one_shot>{
             {"boost_geometry", false, true, "", false, boost_geometry_peer::applies,
              "Boost.Geometry intersects, B's rings refilled", "Boost.Geometry intersects, posed B built"}},
-        method_entry<geos_peer, geos_one_shot>{
-            {"geos", false, have_geos, "INFLUENCE2D_HAVE_GEOS", false, geos_peer::applies,
-             "GEOS, A prepared, GEOSPreparedIntersects", "GEOS, both built, GEOSIntersects"}},
-        method_entry<cgal_peer, cgal_peer>{
-            {"cgal", false, true, "", false, cgal_peer::applies, "CGAL Boolean-set do_intersect, exact kernel",
-             "the same (B posed fresh every query)"}},
+        method_entry<geos_peer, geos_one_shot>{{"geos", false, have_geos, "INFLUENCE2D_HAVE_GEOS", false,
+                                                geos_peer::applies, "GEOS, A prepared, GEOSPreparedIntersects",
+                                                "GEOS, both built, GEOSIntersects"}},
+        method_entry<cgal_peer, cgal_peer>{{"cgal", false, true, "", false, cgal_peer::applies,
+                                            "CGAL Boolean-set do_intersect, exact kernel",
+                                            "the same (B posed fresh every query)"}},
         method_entry<box2d_peer, box2d_one_shot>{
             {"box2d", false, have_box2d, "INFLUENCE2D_HAVE_BOX2D", false, box2d_peer::applies,
              "Box2D b2TestOverlap (convex, at most 8 vertices)", "Box2D, both shapes built, b2TestOverlap"}});
@@ -298,10 +297,10 @@ struct time_row {
     std::size_t passes = 1;  ///< timed passes over the poses (the median counts)
     double seconds = 0;      ///< for the poses run (the median pass), set-up excluded
     std::size_t collisions = 0;
-    std::size_t disagreements = 0;  ///< with the reference, on the poses run
-    bool reference = false;         ///< this method's answers are the reference
-    double preparation_seconds = 0;       ///< building the method for A and B (the median build)
-    std::size_t preparation_builds = 0;   ///< builds timed
+    std::size_t disagreements = 0;       ///< with the reference, on the poses run
+    bool reference = false;              ///< this method's answers are the reference
+    double preparation_seconds = 0;      ///< building the method for A and B (the median build)
+    std::size_t preparation_builds = 0;  ///< builds timed
     double ns_per_frame() const { return frames ? 1e9 * seconds / static_cast<double>(frames) : 0; }
 };
 
@@ -326,11 +325,11 @@ struct time_study_options {
     std::size_t random_frames = 20000;  ///< poses of the random and one-shot workloads
     double gap = 9;
     double random_inner = 0.4, random_outer = 1.1;  ///< the annulus, in units of R_A + R_B
-    double budget = 0.25;              ///< seconds per strided method and cell
-    double repeat_seconds = 0.02;      ///< seconds of repeated passes per repeated method and cell
-    double preparation_seconds = 0.005;  ///< seconds of repeated builds per method and cell
-    std::size_t memory_frames = 1000;  ///< frames of the memory pass (evenly spaced)
-    std::uint64_t seed = default_family_seed;  ///< of the family polygons and the random poses
+    double budget = 0.25;                           ///< seconds per strided method and cell
+    double repeat_seconds = 0.02;                   ///< seconds of repeated passes per repeated method and cell
+    double preparation_seconds = 0.005;             ///< seconds of repeated builds per method and cell
+    std::size_t memory_frames = 1000;               ///< frames of the memory pass (evenly spaced)
+    std::uint64_t seed = default_family_seed;       ///< of the family polygons and the random poses
     std::function<void(const time_study_progress&)> progress;
 };
 
@@ -407,8 +406,7 @@ void with_method(const std::string& m, const std::string& trajectory, const poly
 }
 
 /// Seconds to build method m's form for A and B (destruction not counted).
-inline double build_seconds(const std::string& m, const std::string& trajectory, const polygon& a,
-                            const polygon& b) {
+inline double build_seconds(const std::string& m, const std::string& trajectory, const polygon& a, const polygon& b) {
     double seconds = 0;
     time_study_detail::with_form(m, trajectory, [&](auto tag) {
         std::optional<typename decltype(tag)::type> d;
@@ -466,8 +464,7 @@ inline double median(std::vector<double>& s) {
 
 /// Whether rounds of turns go on: until every method has at least 3 samples
 /// (an odd number) and `seconds` of them, or 101.
-inline bool more_rounds(std::size_t round, const std::map<std::string, std::vector<double>>& samples,
-                        double seconds) {
+inline bool more_rounds(std::size_t round, const std::map<std::string, std::vector<double>>& samples, double seconds) {
     if (round < 3 || round % 2 == 0) return true;
     if (round >= 101) return false;
     for (const auto& [m, s] : samples) {
@@ -536,7 +533,8 @@ inline std::map<std::string, timed_passes> time_repeated(const time_study_option
     for (const std::string& m : modes) {
         seconds[m];
         if (is_one_shot(trajectory))
-            with_method(m, trajectory, a, b, [&](auto& probe) { out[m].stride = stride_for(probe, poses, o.budget / 3); });
+            with_method(m, trajectory, a, b,
+                        [&](auto& probe) { out[m].stride = stride_for(probe, poses, o.budget / 3); });
     }
     std::vector<char> repeated;
     for (std::size_t round = 0; !modes.empty() && more_rounds(round, seconds, o.repeat_seconds); ++round)
@@ -601,7 +599,8 @@ inline time_study_result run_time_study(const time_study_options& o) {
         // The reference: the certified detector on every pose, in order (not
         // timed: the certified method's row is a run of its own, like every
         // other method's, after this pass has brought the poses into cache).
-        with_method(reference_method, reference_workload, a, b, [&](auto& d) { (void)run_frames(d, poses, 1, reference); });
+        with_method(reference_method, reference_workload, a, b,
+                    [&](auto& d) { (void)run_frames(d, poses, 1, reference); });
         if (!is_one_shot(c.trajectory) && std::find(methods.begin(), methods.end(), "double") != methods.end()) {
             detector<double> d(a, b);
             for (const pose& p : poses) (void)d.collide(p);

@@ -81,15 +81,17 @@ inline std::string workloads_paragraph(const time_study_options& o) {
     std::string s = "Workloads (the `trajectory` column of bench.csv):";
     for (const std::string& j : o.trajectories) {
         if (j == "circular")
-            s += "\n- circular: the paper's orbit, " + std::to_string(o.circular_frames) + " poses, never colliding (gap " +
-                 general(o.gap) + ");";
+            s += "\n- circular: the paper's orbit, " + std::to_string(o.circular_frames) +
+                 " poses, never colliding (gap " + general(o.gap) + ");";
         if (j == "linear")
-            s += "\n- linear: the paper's approach, " + std::to_string(o.linear_frames) + " poses, ending in collision;";
+            s +=
+                "\n- linear: the paper's approach, " + std::to_string(o.linear_frames) + " poses, ending in collision;";
         if (j == "random")
             s += "\n- random: " + std::to_string(o.random_frames) +
                  " independent poses near contact (influence2d::random_poses, seed " + std::to_string(o.seed) +
                  "): B's centroid uniform in area in the annulus " + general(o.random_inner) + " to " +
-                 general(o.random_outer) + " times R_A + R_B about A's centroid (R: bounding radii about the "
+                 general(o.random_outer) +
+                 " times R_A + R_B about A's centroid (R: bounding radii about the "
                  "centroids; about 40 to 110 for the families), B's angle uniform; each method built once for the pair "
                  "and asked every pose;";
         if (j == "one-shot")
@@ -114,11 +116,14 @@ inline std::string frame_work_section(const time_study_result& r, const cell_tab
         "\n## What a double frame does\n\nCounters of a `detector<double>` run over every pose of the cell "
         "(untimed; bench_work.csv has them all). Per workload, the cells where double is below " +
         fixed(peer_target, 0) +
-        "x the fastest peer, and what a frame did there on average: edge pairs handed to the pair tests by the trees or the box test, exact segment-pair tests (after "
+        "x the fastest peer, and what a frame did there on average: edge pairs handed to the pair tests by the trees "
+        "or the box test, exact segment-pair tests (after "
         "the double filter), containment "
         "tests (a vertex of each ring located in the other polygon), frames answered by the bounding circles "
         "alone, frames with no coherence to use (both edge trees traversed).\n\n"
-        "| workload | cells below " + fixed(peer_target, 0) + "x | median speed-up there | candidate pairs per frame | segment tests per frame | "
+        "| workload | cells below " +
+        fixed(peer_target, 0) +
+        "x | median speed-up there | candidate pairs per frame | segment tests per frame | "
         "containment tests per frame | circle rejections | jump frames | double ns per pose (median) | "
         "fastest peer ns per pose (median) |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const std::string& j : o.trajectories) {
@@ -144,14 +149,14 @@ inline std::string frame_work_section(const time_study_result& r, const cell_tab
         if (all == 0) continue;
         s += "| " + j + " | " + std::to_string(below) + " of " + std::to_string(all) + " | " +
              (below ? fixed(median_of(speedup), 1) + "x" : "-") + " | " + (below ? fixed(median_of(pairs), 1) : "-") +
-             " | " + (below ? fixed(median_of(tests), 1) : "-") +
-             " | " + (below ? fixed(median_of(located), 2) : "-") + " | " +
-             (below ? fixed(100 * median_of(circles), 0) + "%" : "-") + " | " +
+             " | " + (below ? fixed(median_of(tests), 1) : "-") + " | " + (below ? fixed(median_of(located), 2) : "-") +
+             " | " + (below ? fixed(100 * median_of(circles), 0) + "%" : "-") + " | " +
              (below ? fixed(100 * median_of(jumps), 0) + "%" : "-") + " | " + (below ? fixed(median_of(ns), 0) : "-") +
              " | " + (below ? fixed(median_of(peer_ns), 0) : "-") + " |\n";
     }
     if (has_name(o.trajectories, "random")) {
-        s += "\nPer random cell: candidate pairs per frame / segment tests per frame / containment tests per frame / share of frames the "
+        s += "\nPer random cell: candidate pairs per frame / segment tests per frame / containment tests per frame / "
+             "share of frames the "
              "bounding circles answered.\n";
         s += grid_tables(cells, o, "random", [&](const cell_rows& rows) {
             const work_row* w = work_on_cell(r, rows.begin()->second->cell);
@@ -178,10 +183,15 @@ inline std::string time_study_markdown(const time_study_result& r, const time_st
     s += workloads_paragraph(o);
     s += "Timing: influence2d's double, certified and paper detectors (and on one-shot its double, certified and "
          "double-detector queries) run in repeated passes on fresh objects, taking turns pass by pass (at least 3, "
-         "until " + general(o.repeat_seconds) + " s; bench.csv: passes), of which the median pass counts; a "
+         "until " +
+         general(o.repeat_seconds) +
+         " s; bench.csv: passes), of which the median pass counts; a "
          "detector's pass is every pose in order, a one-shot pass every k-th pose (a pass about " +
-         general(o.budget / 3) + " s). The exact mode, the all-pairs test and the peers run every k-th pose, k "
-         "chosen so that a run takes about " + general(o.budget) + " s (bench.csv: stride). Preparation: building "
+         general(o.budget / 3) +
+         " s). The exact mode, the all-pairs test and the peers run every k-th pose, k "
+         "chosen so that a run takes about " +
+         general(o.budget) +
+         " s (bench.csv: stride). Preparation: building "
          "the method for the pair (the detector's constructor, GEOS's prepared geometry, Boost's and CGAL's "
          "polygons, ...; a one-shot form keeps only its input), the methods taking turns, the median of at least 3 "
          "builds (bench.csv: preparation_seconds, preparation_builds). Every answer is compared with the "
@@ -194,7 +204,8 @@ inline std::string time_study_markdown(const time_study_result& r, const time_st
     // Per workload and method: cells, poses, disagreements, geometric means.
     s += "## Methods\n";
     for (const std::string& j : o.trajectories) {
-        s += "\n### " + j + "\n\n| method | form | cells | poses run | disagreements | geometric mean ns per pose | "
+        s += "\n### " + j +
+             "\n\n| method | form | cells | poses run | disagreements | geometric mean ns per pose | "
              "geometric mean preparation us |\n|---|---|---:|---:|---:|---:|---:|\n";
         for (const std::string& m : o.methods) {
             std::size_t n = 0, frames = 0, wrong = 0;
@@ -211,10 +222,9 @@ inline std::string time_study_markdown(const time_study_result& r, const time_st
                 }
             if (n == 0) continue;
             const method_info& info = method_of(m);
-            s += "| " + m + " | " + (is_one_shot(j) ? info.one_shot : info.frames) + " | " + std::to_string(n) +
-                 " | " + std::to_string(frames) + " | " +
-                 (reference ? std::string("reference") : std::to_string(wrong)) + " | " +
-                 fixed(std::exp(log_ns / static_cast<double>(n)), 0) + " | " +
+            s += "| " + m + " | " + (is_one_shot(j) ? info.one_shot : info.frames) + " | " + std::to_string(n) + " | " +
+                 std::to_string(frames) + " | " + (reference ? std::string("reference") : std::to_string(wrong)) +
+                 " | " + fixed(std::exp(log_ns / static_cast<double>(n)), 0) + " | " +
                  micros(std::exp(log_prep / static_cast<double>(n))) + " |\n";
         }
     }
@@ -226,21 +236,22 @@ inline std::string time_study_markdown(const time_study_result& r, const time_st
         if (peer.n > 0)
             s += "- " + j + ": double against the fastest peer of each cell: geometric mean speed-up " +
                  fixed(peer.mean(), 1) + "x over " + std::to_string(peer.n) + " cells; slowest cell " + peer.lo_cell +
-                 ": " + fixed(peer.lo, 2) + "x; cells where double is not faster: " +
-                 std::to_string(peer.at_most_one) + ".\n";
-        const ratio_stats cert = ratios_over_cells(cells, j, [](const cell_rows& rows) { return ns_ratio(rows, "certified", "double"); });
+                 ": " + fixed(peer.lo, 2) + "x; cells where double is not faster: " + std::to_string(peer.at_most_one) +
+                 ".\n";
+        const ratio_stats cert =
+            ratios_over_cells(cells, j, [](const cell_rows& rows) { return ns_ratio(rows, "certified", "double"); });
         if (cert.n > 0)
             s += "- " + j + ": certified against double: at most " + fixed(cert.hi, 2) + "x (" + cert.hi_cell +
                  "), geometric mean " + fixed(cert.mean(), 2) + "x.\n";
         if (is_one_shot(j)) {
-            const ratio_stats boost =
-                ratios_over_cells(cells, j, [](const cell_rows& rows) { return ns_ratio(rows, "boost_geometry", "double"); });
+            const ratio_stats boost = ratios_over_cells(
+                cells, j, [](const cell_rows& rows) { return ns_ratio(rows, "boost_geometry", "double"); });
             if (boost.n > 0)
                 s += "- one-shot: intersects<double> against Boost.Geometry intersects: geometric mean speed-up " +
                      fixed(boost.mean(), 1) + "x; slowest cell " + boost.lo_cell + ": " + fixed(boost.lo, 2) +
                      "x; cells where it is not faster: " + std::to_string(boost.at_most_one) + ".\n";
-            const ratio_stats built =
-                ratios_over_cells(cells, j, [](const cell_rows& rows) { return ns_ratio(rows, "double-detector", "double"); });
+            const ratio_stats built = ratios_over_cells(
+                cells, j, [](const cell_rows& rows) { return ns_ratio(rows, "double-detector", "double"); });
             if (built.n > 0)
                 s += "- one-shot: a detector<double> built for one query costs " + fixed(built.mean(), 1) +
                      " times intersects<double> in the geometric mean (" + fixed(built.lo, 2) + " to " +
@@ -259,8 +270,8 @@ inline std::string time_study_markdown(const time_study_result& r, const time_st
                 }
             if (small && corner)
                 s += "- Weak corner, " + t + " " + j + ": double " + std::to_string(hi) + "x" + std::to_string(lo) +
-                     " costs " + fixed(corner->ns_per_frame() / std::max(small->ns_per_frame(), 1e-3), 2) +
-                     " times " + std::to_string(lo) + "x" + std::to_string(lo) + " per pose.\n";
+                     " costs " + fixed(corner->ns_per_frame() / std::max(small->ns_per_frame(), 1e-3), 2) + " times " +
+                     std::to_string(lo) + "x" + std::to_string(lo) + " per pose.\n";
         }
     }
 
@@ -339,7 +350,8 @@ inline std::string time_study_markdown(const time_study_result& r, const time_st
         // preparation / (one-shot ns - detector's ns per pose), random poses.
         s += "\nQueries of one pair after which a detector<double> built once beats intersects<double> on the random "
              "poses (its preparation / (one-shot ns per query - the detector's ns per pose); the median over "
-             "types):\n\n" + table_head("| |", 1, o.sizes, square) + "| queries |";
+             "types):\n\n" +
+             table_head("| |", 1, o.sizes, square) + "| queries |";
         for (std::size_t n : o.sizes) {
             std::vector<double> v;
             for (const std::string& t : o.types) {
@@ -351,7 +363,8 @@ inline std::string time_study_markdown(const time_study_result& r, const time_st
                     }
                 if (frames && once)
                     v.push_back(once->ns_per_frame() > frames->ns_per_frame()
-                                    ? frames->preparation_seconds * 1e9 / (once->ns_per_frame() - frames->ns_per_frame())
+                                    ? frames->preparation_seconds * 1e9 /
+                                          (once->ns_per_frame() - frames->ns_per_frame())
                                     : HUGE_VAL);
             }
             const double q = median_of(v);
@@ -362,8 +375,10 @@ inline std::string time_study_markdown(const time_study_result& r, const time_st
 
     if (!r.memory.empty()) {
         const time_cell& c = r.memory.front().cell;
-        s += "\n## Peak heap memory, " + cell_name(c) + "\n\nHeap bytes live at the peak, from building the method "
-             "(A prepared, B read) to its last pose, over " + std::to_string(r.memory.front().frames) +
+        s += "\n## Peak heap memory, " + cell_name(c) +
+             "\n\nHeap bytes live at the peak, from building the method "
+             "(A prepared, B read) to its last pose, over " +
+             std::to_string(r.memory.front().frames) +
              " evenly spaced poses (operator new and GMP counted; Box2D's malloc is not).\n\n| method | peak heap |\n"
              "|---|---:|\n";
         for (const memory_row& m : r.memory)

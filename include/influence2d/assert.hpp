@@ -30,8 +30,8 @@ namespace influence2d::assert_detail {
 /// false, prints the file, the line, `cond` and `message` (a C string) to
 /// stderr and aborts. Without INFLUENCE2D_ENABLE_ASSERTS, `cond` is neither
 /// evaluated nor costs anything, but must still compile.
-#define INFLUENCE2D_ASSERT(cond, message)                                                                   \
-    (static_cast<bool>(cond) ? static_cast<void>(0)                                                         \
+#define INFLUENCE2D_ASSERT(cond, message)           \
+    (static_cast<bool>(cond) ? static_cast<void>(0) \
                              : ::influence2d::assert_detail::assertion_failed(#cond, message, __FILE__, __LINE__))
 #else
 /// Checks the invariant `cond` when INFLUENCE2D_ENABLE_ASSERTS is defined;

@@ -220,8 +220,8 @@ TEST_CASE("adapters: CGAL polygons of any kernel give the hand-built polygon", "
     require_same(make_polygon(cgal_square_with_hole<epeck>()), want);
     require_same(make_polygon(cgal_square_with_hole<exact_kernel>()), want);
 
-    std::vector<CGAL::Polygon_with_holes_2<epeck>> parts{cgal_square_with_hole<epeck>(),
-                                                         CGAL::Polygon_with_holes_2<epeck>(cgal_ring<epeck>(side_triangle))};
+    std::vector<CGAL::Polygon_with_holes_2<epeck>> parts{
+        cgal_square_with_hole<epeck>(), CGAL::Polygon_with_holes_2<epeck>(cgal_ring<epeck>(side_triangle))};
     require_same(make_polygon(parts), hand_built({{outer_square, ring_role::outer},
                                                   {square_hole, ring_role::hole},
                                                   {side_triangle, ring_role::outer}}));

@@ -159,28 +159,28 @@ TEST_CASE("audit: the centroid on an edge's line, and number ranges", "[audit]")
     CHECK(huge.accepted);
 }
 
-TEST_CASE("audit: the detector on the degenerate inputs it accepts equals the references",
-          "[audit][detector]") {
+TEST_CASE("audit: the detector on the degenerate inputs it accepts equals the references", "[audit][detector]") {
     // Each accepted degeneracy of the table in the README, as static and as
     // moving polygon, swept across a unit square in exact arithmetic: the
     // sound detector answers (and names witness edges) as the all-pairs test
     // and as the independent CGAL reference.
     const char* cases[] = {
-        "POLYGON((0 0, 4 0, 4 0, 4 4, 0 4, 0 0))",                      // repeated vertex
-        "POLYGON((0 0, 4 0, 4 1e-13, 4 4, 0 4, 0 0))",                  // near-repeated vertex
-        "POLYGON((0 0, 2 0, 4 0, 4 4, 0 4, 0 0))",                      // collinear run
-        "POLYGON((0 0, 4 0, 6 0, 4 0, 4 4, 0 4, 0 0))",                 // spike
-        "POLYGON((0 0, 4 4, 4 0, 0 4, 0 0))",                           // self-intersection
-        "POLYGON((0 0, 0 4, 4 4, 4 0, 0 0), (1 1, 2 1, 2 2, 1 2, 1 1))",  // reversed rings
-        "POLYGON((0 0, 4 0, 4 4, 0 4, 0 0), (5 5, 5 6, 6 6, 6 5, 5 5))",  // hole outside its shell
-        "POLYGON((0 0, 4 0, 4 4, 0 4, 0 0), (0 0, 1 2, 2 1, 0 0))",       // hole touching its shell
-        "POLYGON((0 0, 2 0, 2 2, 4 2, 4 4, 2 4, 2 2, 0 2, 0 0))",       // non-manifold vertex
-        "POLYGON((0 0, 2 0, 4 0, 2 0, 0 0))",                           // zero area
-        "POLYGON((0 0, 4 0, 2 1e-14, 0 0))",                            // near-zero area
-        "POLYGON((-2 -1, 0 0, 2 -1, 1 0, 2 1, 0 0, -2 1, -1 0, -2 -1))",  // centroid on edges' lines
-        "MULTIPOLYGON(((0 0, 4 0, 4 4, 0 4, 0 0)), ((1 1, 3 1, 3 3, 1 3, 1 1)))",          // nested shells
-        "POLYGON((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 3 1, 3 3, 1 3, 1 1), (1.5 1.5, 2.5 1.5, 2.5 2.5, 1.5 2.5, 1.5 1.5))",  // nested holes
-        "POLYGON((0 0, 4 0, 4 4, 0 4, 0 0), EMPTY)",                    // empty ring
+        "POLYGON((0 0, 4 0, 4 0, 4 4, 0 4, 0 0))",                                 // repeated vertex
+        "POLYGON((0 0, 4 0, 4 1e-13, 4 4, 0 4, 0 0))",                             // near-repeated vertex
+        "POLYGON((0 0, 2 0, 4 0, 4 4, 0 4, 0 0))",                                 // collinear run
+        "POLYGON((0 0, 4 0, 6 0, 4 0, 4 4, 0 4, 0 0))",                            // spike
+        "POLYGON((0 0, 4 4, 4 0, 0 4, 0 0))",                                      // self-intersection
+        "POLYGON((0 0, 0 4, 4 4, 4 0, 0 0), (1 1, 2 1, 2 2, 1 2, 1 1))",           // reversed rings
+        "POLYGON((0 0, 4 0, 4 4, 0 4, 0 0), (5 5, 5 6, 6 6, 6 5, 5 5))",           // hole outside its shell
+        "POLYGON((0 0, 4 0, 4 4, 0 4, 0 0), (0 0, 1 2, 2 1, 0 0))",                // hole touching its shell
+        "POLYGON((0 0, 2 0, 2 2, 4 2, 4 4, 2 4, 2 2, 0 2, 0 0))",                  // non-manifold vertex
+        "POLYGON((0 0, 2 0, 4 0, 2 0, 0 0))",                                      // zero area
+        "POLYGON((0 0, 4 0, 2 1e-14, 0 0))",                                       // near-zero area
+        "POLYGON((-2 -1, 0 0, 2 -1, 1 0, 2 1, 0 0, -2 1, -1 0, -2 -1))",           // centroid on edges' lines
+        "MULTIPOLYGON(((0 0, 4 0, 4 4, 0 4, 0 0)), ((1 1, 3 1, 3 3, 1 3, 1 1)))",  // nested shells
+        "POLYGON((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 3 1, 3 3, 1 3, 1 1), (1.5 1.5, 2.5 1.5, 2.5 2.5, 1.5 2.5, 1.5 "
+        "1.5))",                                      // nested holes
+        "POLYGON((0 0, 4 0, 4 4, 0 4, 0 0), EMPTY)",  // empty ring
     };
     const polygon unit = read_wkt("POLYGON((0 0, 1 0, 1 1, 0 1, 0 0))");
     detector_options o;
@@ -231,8 +231,8 @@ TEST_CASE("audit: its words agree with what the detector does", "[audit][region]
         CHECK(says(f[0], "each lobe has winding number +1 or -1 and is region"));
         CHECK_FALSE(says(f[0], "bounds no region"));
         const polygon p = read_wkt(text);
-        CHECK(probe(p, 0.2, 0.95));   // left lobe
-        CHECK(probe(p, 1.7, 0.95));   // right lobe
+        CHECK(probe(p, 0.2, 0.95));  // left lobe
+        CHECK(probe(p, 1.7, 0.95));  // right lobe
         CHECK_FALSE(probe(p, 0.95, 0.2));
     }
     SECTION("a ring on one line bounds no region") {
@@ -246,13 +246,14 @@ TEST_CASE("audit: its words agree with what the detector does", "[audit][region]
         REQUIRE(stray.size() == 1);
         CHECK(says(stray[0], "the hole's inside counts as region"));
         CHECK(probe(read_wkt("POLYGON((0 0, 10 0, 10 10, 0 10, 0 0), (20 4, 22 4, 22 6, 20 6, 20 4))"), 21, 5));
-        const char* nested = "POLYGON((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 8 2, 8 8, 2 8, 2 2), (4 4, 6 4, 6 6, 4 6, 4 4))";
+        const char* nested =
+            "POLYGON((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 8 2, 8 8, 2 8, 2 2), (4 4, 6 4, 6 6, 4 6, 4 4))";
         const audit_report r = audit_wkt(nested);
         const auto inner = of(r, finding_kind::hole_outside_shell);
         REQUIRE(inner.size() == 1);
         CHECK(inner[0].ring == 2);
         const polygon p = read_wkt(nested);
-        CHECK(probe(p, 5, 5));       // inside the inner hole: winding -1
+        CHECK(probe(p, 5, 5));        // inside the inner hole: winding -1
         CHECK_FALSE(probe(p, 3, 3));  // inside the outer hole only: winding 0
         CHECK(probe(p, 1, 1));
     }
@@ -268,7 +269,8 @@ TEST_CASE("audit: its words agree with what the detector does", "[audit][region]
         // A stray hole (winding -1 inside) with a shell in it: winding 0 there;
         // a hole in the stray hole: winding -2, region.
         const char* cut =
-            "MULTIPOLYGON(((0 0, 1 0, 1 1, 0 1, 0 0), (20 0, 30 0, 30 10, 20 10, 20 0)), ((24 4, 26 4, 26 6, 24 6, 24 4)))";
+            "MULTIPOLYGON(((0 0, 1 0, 1 1, 0 1, 0 0), (20 0, 30 0, 30 10, 20 10, 20 0)), ((24 4, 26 4, 26 6, 24 6, 24 "
+            "4)))";
         const polygon q = read_wkt(cut);
         const auto g = of(audit_wkt(cut), finding_kind::nested_ring);
         REQUIRE(g.size() == 1);
@@ -276,7 +278,8 @@ TEST_CASE("audit: its words agree with what the detector does", "[audit][region]
         CHECK(says(g[0], "not region"));
         CHECK_FALSE(probe(q, 25, 5));
         CHECK(probe(q, 21, 1));
-        const char* hole_in_stray = "POLYGON((0 0, 1 0, 1 1, 0 1, 0 0), (20 0, 30 0, 30 10, 20 10, 20 0), (24 4, 26 4, 26 6, 24 6, 24 4))";
+        const char* hole_in_stray =
+            "POLYGON((0 0, 1 0, 1 1, 0 1, 0 0), (20 0, 30 0, 30 10, 20 10, 20 0), (24 4, 26 4, 26 6, 24 6, 24 4))";
         const auto h = of(audit_wkt(hole_in_stray), finding_kind::nested_ring);
         REQUIRE(h.size() == 1);
         CHECK(says(h[0], "winding number is -2, region as around it"));
@@ -285,11 +288,12 @@ TEST_CASE("audit: its words agree with what the detector does", "[audit][region]
     SECTION("size means extent: a short edge far from the origin") {
         // An edge of 1e-9 on a polygon of extent 4 placed at 1e6: not near
         // (2^-40 * 4 ~ 3.6e-12); it would be against the largest coordinate.
-        const audit_report far =
-            audit_wkt("POLYGON((1000000 1000000, 1000004 1000000, 1000004 1000000.000000001, 1000004 1000004, "
-                      "1000000 1000004, 1000000 1000000))");
+        const audit_report far = audit_wkt(
+            "POLYGON((1000000 1000000, 1000004 1000000, 1000004 1000000.000000001, 1000004 1000004, "
+            "1000000 1000004, 1000000 1000000))");
         CHECK(of(far, finding_kind::near_repeated_vertex).empty());
-        const auto near = of(audit_wkt("POLYGON((0 0, 4 0, 4 1e-13, 4 4, 0 4, 0 0))"), finding_kind::near_repeated_vertex);
+        const auto near =
+            of(audit_wkt("POLYGON((0 0, 4 0, 4 1e-13, 4 4, 0 4, 0 0))"), finding_kind::near_repeated_vertex);
         REQUIRE(near.size() == 1);
         CHECK(says(near[0], "of the polygon's extent (the longer side of its bounding box)"));
     }

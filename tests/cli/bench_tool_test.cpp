@@ -28,8 +28,10 @@ std::set<std::string> options_in(const std::string& text) {
 
 TEST_CASE("cli bench: influence2d-bench runs the time study and writes its tables", "[cli]") {
     const temp_dir dir;
-    const auto r = run_bench(dir, "--types convex --sizes 8 --trajectories linear --methods double "
-                                  "--linear-frames 16 --budget 0.001 --out " + quote((dir / "out").string()));
+    const auto r = run_bench(dir,
+                             "--types convex --sizes 8 --trajectories linear --methods double "
+                             "--linear-frames 16 --budget 0.001 --out " +
+                                 quote((dir / "out").string()));
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     // The targets on standard output (gnuplot, when it runs, may write there too).

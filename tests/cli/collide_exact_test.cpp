@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "influence2d/detect/result.hpp"
-#include "influence2d/io/wkt.hpp"
 #include "influence2d/influence/bounds.hpp"
+#include "influence2d/io/wkt.hpp"
 #include "support/process.hpp"
 #include "verification/cgal_reference.hpp"
 
@@ -66,8 +66,10 @@ std::vector<pose> scene_poses(const polygon& a, const polygon& b, std::uint64_t 
 
 TEST_CASE("cli collide: exact answers equal the CGAL reference on every frame", "[cli][exact]") {
     const std::string data = INFLUENCE2D_DATA_DIR;
-    const std::vector<std::pair<std::string, std::string>> scenes{
-        {"contour_16", "irregular_8"}, {"hole_32", "starred_16"}, {"convex_8", "contour_32"}, {"starred_64", "hole_16"}};
+    const std::vector<std::pair<std::string, std::string>> scenes{{"contour_16", "irregular_8"},
+                                                                  {"hole_32", "starred_16"},
+                                                                  {"convex_8", "contour_32"},
+                                                                  {"starred_64", "hole_16"}};
     temp_dir dir;
     std::size_t frames = 0, collisions = 0, separated_by_an_ulp = 0;
     for (std::size_t s = 0; s < scenes.size(); ++s) {
@@ -99,8 +101,8 @@ TEST_CASE("cli collide: exact answers equal the CGAL reference on every frame", 
                 if (d == 0 && k >= 60 && k % 2 == 1 && previous && !expected.collides) ++separated_by_an_ulp;
                 previous = expected.collides;
                 INFO("frame " << k);
-                CHECK(rows[k + 1] == std::to_string(k) + "," + (expected.collides ? "1" : "0") + "," +
-                                         edges_field(expected.pairs));
+                CHECK(rows[k + 1] ==
+                      std::to_string(k) + "," + (expected.collides ? "1" : "0") + "," + edges_field(expected.pairs));
                 ++frames;
                 collisions += expected.collides;
             }

@@ -38,8 +38,8 @@ TEST_CASE("cli collide: poses file gives a frames file with header and one row p
     const auto poses = dir.file("poses.csv", three_poses);
     const auto frames = dir / "frames.csv";
 
-    const auto r = run_cli(dir, scene_args(a, a) + " --poses " + quote(poses.string()) +
-                                    " --out " + quote(frames.string()));
+    const auto r =
+        run_cli(dir, scene_args(a, a) + " --poses " + quote(poses.string()) + " --out " + quote(frames.string()));
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     CHECK(r.err.empty());
@@ -71,8 +71,8 @@ TEST_CASE("cli collide: trajectories give the requested number of frames", "[cli
     auto lines = lines_of(slurp(frames));
     REQUIRE(lines.size() == 41);
     CHECK(lines[0] == "frame,collides,edges");
-    CHECK(lines[1] == "0,0,");                      // starts apart
-    CHECK(lines[40].rfind("39,1", 0) == 0);          // ends in collision
+    CHECK(lines[1] == "0,0,");               // starts apart
+    CHECK(lines[40].rfind("39,1", 0) == 0);  // ends in collision
 
     r = run_cli(dir, scene_args(a, b) + " --trajectory circular --trajectory-frames 64 --gap 1 --out " +
                          quote(frames.string()));
@@ -93,16 +93,13 @@ TEST_CASE("cli collide: the tiny scene for every number type with sound and brut
         for (const char* algorithm : {"sound", "brute-force"}) {
             for (const bool witness : {false, true}) {
                 INFO(type << " " << algorithm << (witness ? " --witness" : ""));
-                const auto r = run_cli(dir, scene_args(a, a) + " --poses " + quote(poses.string()) +
-                                                " --number-type " + type + " --algorithm " +
-                                                algorithm + (witness ? " --witness" : "") +
+                const auto r = run_cli(dir, scene_args(a, a) + " --poses " + quote(poses.string()) + " --number-type " +
+                                                type + " --algorithm " + algorithm + (witness ? " --witness" : "") +
                                                 " --out " + quote(frames.string()));
                 INFO(r.err);
                 REQUIRE(r.exit_code == 0);
-                CHECK(r.out.find(std::string("number type:     ") + type + "\n") !=
-                      std::string::npos);
-                CHECK(r.out.find(std::string("algorithm:       ") + algorithm + "\n") !=
-                      std::string::npos);
+                CHECK(r.out.find(std::string("number type:     ") + type + "\n") != std::string::npos);
+                CHECK(r.out.find(std::string("algorithm:       ") + algorithm + "\n") != std::string::npos);
                 // Only the filtered types report their exact fallbacks.
                 const bool filtered = std::string(type) == "certified" || std::string(type) == "interval";
                 CHECK((r.out.find("exact fallbacks: ") != std::string::npos) == filtered);
@@ -148,9 +145,9 @@ TEST_CASE("cli collide: certified counts its exact fallbacks, and the paper's al
     const std::regex fallbacks(R"(exact fallbacks: (\d+) frames\n)");
     for (const char* algorithm : {"sound", "brute-force"}) {
         INFO(algorithm);
-        auto r = run_cli(dir, scene_args(a, a) + " --poses " + quote(poses.string()) +
-                                  " --number-type certified --algorithm " + algorithm + " --out " +
-                                  quote(frames.string()));
+        auto r =
+            run_cli(dir, scene_args(a, a) + " --poses " + quote(poses.string()) +
+                             " --number-type certified --algorithm " + algorithm + " --out " + quote(frames.string()));
         INFO(r.err);
         REQUIRE(r.exit_code == 0);
         std::smatch m;
@@ -173,12 +170,11 @@ TEST_CASE("cli collide: certified counts its exact fallbacks, and the paper's al
     }
 
     for (const char* type : {"certified", "interval"}) {
-        const auto r = run_cli(dir, scene_args(a, a) + " --poses " + quote(poses.string()) +
-                                        " --number-type " + type + " --algorithm paper --out " +
-                                        quote(frames.string()));
+        const auto r = run_cli(dir, scene_args(a, a) + " --poses " + quote(poses.string()) + " --number-type " + type +
+                                        " --algorithm paper --out " + quote(frames.string()));
         CHECK(r.exit_code == 2);
-        CHECK(r.err.find(std::string("influence2d: error: --number-type ") + type +
-                         " cannot run --algorithm paper") != std::string::npos);
+        CHECK(r.err.find(std::string("influence2d: error: --number-type ") + type + " cannot run --algorithm paper") !=
+              std::string::npos);
         CHECK(r.out.empty());
     }
     CHECK(!fs::exists(frames.string() + ".tmp"));
@@ -190,44 +186,39 @@ TEST_CASE("cli collide: bad WKT exits 2 naming the place and writes no output fi
     const auto bad = dir.file("bad.wkt", "POLYGON((0 0,1 0,1 1,0 1))");
     const auto poses = dir.file("poses.csv", three_poses);
     const auto frames = dir / "frames.csv";
-    const auto r = run_cli(dir, scene_args(a, bad) + " --poses " + quote(poses.string()) +
-                                    " --out " + quote(frames.string()));
+    const auto r =
+        run_cli(dir, scene_args(a, bad) + " --poses " + quote(poses.string()) + " --out " + quote(frames.string()));
     CHECK(r.exit_code == 2);
-    CHECK(r.err.find("influence2d: error: " + bad.string() + ": ring 0 is not closed") !=
-          std::string::npos);
+    CHECK(r.err.find("influence2d: error: " + bad.string() + ": ring 0 is not closed") != std::string::npos);
     CHECK(r.out.empty());
     CHECK(!fs::exists(frames));
     CHECK(!fs::exists(frames.string() + ".tmp"));
 }
 
-TEST_CASE("cli collide: bad CSV exits 2 leaving the output untouched and reports every error",
-          "[cli]") {
+TEST_CASE("cli collide: bad CSV exits 2 leaving the output untouched and reports every error", "[cli]") {
     const temp_dir dir;
     const auto a = dir.file("A.wkt", unit_square);
     const auto bad_wkt = dir.file("bad.wkt", "POLYGON((0 0,1 0,nan 1,0 0))");
     const auto poses = dir.file("poses.csv", "tx,ty,theta\n1,2,3\n1,2,abc\n");
     const auto frames = dir.file("frames.csv", "previous content\n");
 
-    auto r = run_cli(dir, scene_args(a, a) + " --poses " + quote(poses.string()) + " --out " +
-                              quote(frames.string()));
+    auto r = run_cli(dir, scene_args(a, a) + " --poses " + quote(poses.string()) + " --out " + quote(frames.string()));
     CHECK(r.exit_code == 2);
-    CHECK(r.err.find("influence2d: error: " + poses.string() +
-                     ": line 3, column theta: \"abc\" is not a number") != std::string::npos);
+    CHECK(r.err.find("influence2d: error: " + poses.string() + ": line 3, column theta: \"abc\" is not a number") !=
+          std::string::npos);
     CHECK(slurp(frames) == "previous content\n");
     CHECK(!fs::exists(frames.string() + ".tmp"));
 
     // Every bad input is reported in one run.
-    r = run_cli(dir, scene_args(bad_wkt, a) + " --poses " + quote(poses.string()) + " --out " +
-                         quote(frames.string()));
+    r = run_cli(dir, scene_args(bad_wkt, a) + " --poses " + quote(poses.string()) + " --out " + quote(frames.string()));
     CHECK(r.exit_code == 2);
-    CHECK(r.err.find(bad_wkt.string() + ": ring 0, vertex 2: coordinate is not a finite number") !=
-          std::string::npos);
+    CHECK(r.err.find(bad_wkt.string() + ": ring 0, vertex 2: coordinate is not a finite number") != std::string::npos);
     CHECK(r.err.find(poses.string() + ": line 3") != std::string::npos);
     CHECK(slurp(frames) == "previous content\n");
 
     // A missing poses file and an output directory that does not exist.
-    r = run_cli(dir, scene_args(a, a) + " --poses " + quote((dir / "none.csv").string()) +
-                         " --out " + quote((dir / "no_dir" / "f.csv").string()));
+    r = run_cli(dir, scene_args(a, a) + " --poses " + quote((dir / "none.csv").string()) + " --out " +
+                         quote((dir / "no_dir" / "f.csv").string()));
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("none.csv: cannot open file") != std::string::npos);
     CHECK(r.err.find("does not exist") != std::string::npos);
@@ -240,10 +231,10 @@ TEST_CASE("cli collide: usage errors exit 2", "[cli]") {
     const auto poses = dir.file("poses.csv", three_poses);
     const std::string base = scene_args(a, a);
     const std::string p = " --poses " + quote(poses.string());
-    CHECK(run_cli(dir, "").exit_code == 2);                                     // no subcommand
-    CHECK(run_cli(dir, base).exit_code == 2);                                   // no poses
-    CHECK(run_cli(dir, base + p + " --trajectory linear").exit_code == 2);      // both
-    CHECK(run_cli(dir, base + p + " --trajectory-frames 10").exit_code == 2);   // frames w/o trajectory
+    CHECK(run_cli(dir, "").exit_code == 2);                                    // no subcommand
+    CHECK(run_cli(dir, base).exit_code == 2);                                  // no poses
+    CHECK(run_cli(dir, base + p + " --trajectory linear").exit_code == 2);     // both
+    CHECK(run_cli(dir, base + p + " --trajectory-frames 10").exit_code == 2);  // frames w/o trajectory
     CHECK(run_cli(dir, base + " --trajectory spiral").exit_code == 2);
     CHECK(run_cli(dir, base + " --trajectory linear --trajectory-frames 0").exit_code == 2);
     CHECK(run_cli(dir, base + p + " --distance -1").exit_code == 2);
@@ -262,10 +253,11 @@ TEST_CASE("cli collide: --help exits 0 and documents every option", "[cli]") {
     const auto r = run_cli(dir, "collide --help");
     CHECK(r.exit_code == 0);
     for (const char* option :
-         {"--static", "--moving", "--poses", "--trajectory", "--trajectory-frames", "--gap", "--number-type",
-          "--algorithm", "--extended-area", "--distance", "--witness", "--out", "circular",
-          "linear", "float", "long-double", "quad", "exact", "certified", "interval", "exact fallbacks",
-          "brute-force", "paper", "capsule", "band"}) {
+         {"--static",        "--moving",      "--poses",     "--trajectory",    "--trajectory-frames",
+          "--gap",           "--number-type", "--algorithm", "--extended-area", "--distance",
+          "--witness",       "--out",         "circular",    "linear",          "float",
+          "long-double",     "quad",          "exact",       "certified",       "interval",
+          "exact fallbacks", "brute-force",   "paper",       "capsule",         "band"}) {
         INFO(option);
         CHECK(r.out.find(option) != std::string::npos);
     }
@@ -291,8 +283,7 @@ TEST_CASE("cli collide: --frames, the old name of --trajectory-frames, still wor
     CHECK(new_name.out.find("frames:          40\n") != std::string::npos);
     // Not both, not without a trajectory, and out of the help.
     CHECK(run_cli(dir, scene_args(a, b) + " --trajectory linear --frames 40 --trajectory-frames 40").exit_code == 2);
-    CHECK(run_cli(dir, scene_args(a, b) + " --poses " + quote(dir.file("p.csv", three_poses).string()) +
-                           " --frames 3")
+    CHECK(run_cli(dir, scene_args(a, b) + " --poses " + quote(dir.file("p.csv", three_poses).string()) + " --frames 3")
               .exit_code == 2);
     CHECK(run_cli(dir, "collide --help").out.find("--frames") == std::string::npos);
 }

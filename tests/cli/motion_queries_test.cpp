@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "influence2d/exact/certified_separation.hpp"
 #include "influence2d/distance/separation.hpp"
-#include "influence2d/motion/trajectory.hpp"
+#include "influence2d/exact/certified_separation.hpp"
 #include "influence2d/io/csv.hpp"
 #include "influence2d/io/wkt.hpp"
+#include "influence2d/motion/trajectory.hpp"
 #include "support/process.hpp"
 
 using namespace influence2d;
@@ -74,18 +74,19 @@ TEST_CASE("cli: sweep writes the first contact of every motion", "[cli][sweep]")
     const temp_dir dir;
     const auto wall = dir.file("wall.wkt", wall_wkt), square = dir.file("square.wkt", square_wkt);
     const auto poses = dir.file("poses.csv", jump_csv);
-    const std::string common =
-        "sweep --static " + quote(wall.string()) + " --moving " + quote(square.string()) + " --poses " + quote(poses.string());
+    const std::string common = "sweep --static " + quote(wall.string()) + " --moving " + quote(square.string()) +
+                               " --poses " + quote(poses.string());
     for (const char* type : {"double", "exact", "certified", "interval", "quad"}) {
         INFO(type);
-        const run_result r = run_cli(dir, common + " --number-type " + type + " --out " + quote((dir / "c.csv").string()));
+        const run_result r =
+            run_cli(dir, common + " --number-type " + type + " --out " + quote((dir / "c.csv").string()));
         REQUIRE(r.exit_code == 0);
         CHECK(r.out.find("motions:         2\ncontacts:        1\nfirst contact:   motion 0 at t = " +
                          seventeen(13.0 / 40)) != std::string::npos);
         // The square's right side reaches the wall's left edge (e3) with both
         // its ends at once; the lower one (v1) is reported.
-        CHECK(slurp(dir / "c.csv") == "motion,contact,t,static_feature,moving_feature\n0,1," + seventeen(13.0 / 40) +
-                                          ",e3,v1\n1,0,,,\n");
+        CHECK(slurp(dir / "c.csv") ==
+              "motion,contact,t,static_feature,moving_feature\n0,1," + seventeen(13.0 / 40) + ",e3,v1\n1,0,,,\n");
     }
     const run_result to_stdout = run_cli(dir, common + " --out -");
     REQUIRE(to_stdout.exit_code == 0);
@@ -186,7 +187,8 @@ TEST_CASE("cli: collide --static-poses moves both polygons", "[cli][static-poses
     const auto a_file = dir.file("a_poses.csv", poses_csv(a_poses));
     const auto b_file = dir.file("b_poses.csv", poses_csv(b_poses));
     std::vector<pose> rel;
-    for (const pose& p : b_poses) rel.push_back({p.tx - a_poses[rel.size()].tx, p.ty - a_poses[rel.size()].ty, p.theta});
+    for (const pose& p : b_poses)
+        rel.push_back({p.tx - a_poses[rel.size()].tx, p.ty - a_poses[rel.size()].ty, p.theta});
     const auto rel_file = dir.file("rel.csv", poses_csv(rel));
     const std::string scene = "collide --static " + quote(a) + " --moving " + quote(b) + " --threads 1";
     const run_result reference =
@@ -198,9 +200,9 @@ TEST_CASE("cli: collide --static-poses moves both polygons", "[cli][static-poses
     CHECK(expected.find(",0\n") != std::string::npos);
     for (const char* type : {"exact", "certified", "interval", "double"}) {
         INFO(type);
-        const run_result both = run_cli(dir, scene + " --poses " + quote(b_file.string()) + " --static-poses " +
-                                                 quote(a_file.string()) + " --number-type " + type + " --out " +
-                                                 quote((dir / "both.csv").string()));
+        const run_result both =
+            run_cli(dir, scene + " --poses " + quote(b_file.string()) + " --static-poses " + quote(a_file.string()) +
+                             " --number-type " + type + " --out " + quote((dir / "both.csv").string()));
         REQUIRE(both.exit_code == 0);
         CHECK(slurp(dir / "both.csv") == expected);
     }
@@ -212,9 +214,9 @@ TEST_CASE("cli: collide --static-poses moves both polygons", "[cli][static-poses
                                                   quote(fewer_file.string()) + " --out " + quote(out.string()));
     CHECK(short_run.exit_code == 2);
     CHECK(short_run.err.find("fewer.csv: 79 poses of the static polygon for 80") != std::string::npos);
-    const run_result witness = run_cli(dir, scene + " --poses " + quote(b_file.string()) + " --static-poses " +
-                                                quote(a_file.string()) + " --number-type exact --witness --out " +
-                                                quote(out.string()));
+    const run_result witness =
+        run_cli(dir, scene + " --poses " + quote(b_file.string()) + " --static-poses " + quote(a_file.string()) +
+                         " --number-type exact --witness --out " + quote(out.string()));
     CHECK(witness.exit_code == 2);
     CHECK(witness.err.find("answers yes or no only") != std::string::npos);
     CHECK(!fs::exists(out));

@@ -32,8 +32,8 @@ TEST_CASE("cli output directory: generate writes the families into --out only", 
     const auto r = run_cli(dir, "generate --sizes 8,16 --out " + quote(out.string()));
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
-    CHECK(r.out == "generate: wrote 10 files (5 families x 2 sizes, 120 vertices, seed 20040202) to " +
-                       out.string() + "\n");
+    CHECK(r.out ==
+          "generate: wrote 10 files (5 families x 2 sizes, 120 vertices, seed 20040202) to " + out.string() + "\n");
     std::size_t files = 0;
     for (const auto& entry : fs::directory_iterator(out)) {
         CHECK(entry.path().extension() == ".wkt");

@@ -75,7 +75,8 @@ std::set<std::string> options_of_help(const std::string& help) {
         std::string names = line.substr(first, line.find(' ', first) - first);
         for (std::size_t start = 0; start < names.size();) {
             const std::size_t comma = names.find(',', start);
-            const std::string name = names.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+            const std::string name =
+                names.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
             if (name.rfind("--", 0) == 0 && name != "--help") found.insert(name);
             if (comma == std::string::npos) break;
             start = comma + 1;
@@ -113,8 +114,7 @@ std::vector<std::string> split(const std::string& s, char by) {
 
 }  // namespace
 
-TEST_CASE("cli readme: the tool's synopsis names every subcommand and option the tool has, and no other",
-          "[cli]") {
+TEST_CASE("cli readme: the tool's synopsis names every subcommand and option the tool has, and no other", "[cli]") {
     const std::string readme = slurp(readme_path);
     REQUIRE(!readme.empty());
     std::map<std::string, std::string> entries;

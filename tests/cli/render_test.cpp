@@ -179,7 +179,8 @@ std::vector<xml_element> parse_svg(const fs::path& file) {
 }
 
 /// The elements of class `cls`, for frame `frame` when given.
-std::vector<xml_element> of_class(const std::vector<xml_element>& all, const std::string& cls, const std::string& frame = "") {
+std::vector<xml_element> of_class(const std::vector<xml_element>& all, const std::string& cls,
+                                  const std::string& frame = "") {
     std::vector<xml_element> found;
     for (const xml_element& e : all)
         if (e.has_class(cls) && (frame.empty() || e.attribute("data-frame") == frame)) found.push_back(e);
@@ -227,8 +228,8 @@ struct squares {
 
     /// `render` on them, writing `out`, with `more` options.
     run_result render(const fs::path& out, const std::string& more) const {
-        return run_cli(dir, scene_args(a, b) + " --poses " + quote(poses.string()) + " " + more + " --out " +
-                                quote(out.string()));
+        return run_cli(
+            dir, scene_args(a, b) + " --poses " + quote(poses.string()) + " " + more + " --out " + quote(out.string()));
     }
 };
 
@@ -256,9 +257,9 @@ TEST_CASE("render: each frame shows the exact detector's answer and witness pair
 
     // The reference: `collide` in exact arithmetic with witnesses.
     const auto frames_csv = dir / "frames.csv";
-    const auto c = run_cli(dir, "collide --static " + quote(a.string()) + " --moving " + quote(b.string()) + " --poses " +
-                                    quote(poses.string()) + " --number-type exact --witness --out " +
-                                    quote(frames_csv.string()));
+    const auto c =
+        run_cli(dir, "collide --static " + quote(a.string()) + " --moving " + quote(b.string()) + " --poses " +
+                         quote(poses.string()) + " --number-type exact --witness --out " + quote(frames_csv.string()));
     REQUIRE(c.exit_code == 0);
     const auto lines = lines_of(slurp(frames_csv));
     REQUIRE(lines.size() == 6);
@@ -287,7 +288,8 @@ TEST_CASE("render: each frame shows the exact detector's answer and witness pair
     // The answers themselves, as the catalogue gives them.
     CHECK(pair_set(of_class(all, "moving-polygon", "1")[0].attribute("data-pairs")) ==
           std::set<std::string>{"1:0", "1:3", "2:0", "2:3"});
-    CHECK(pair_set(of_class(all, "moving-polygon", "2")[0].attribute("data-pairs")) == std::set<std::string>{"2:0", "2:1", "2:3"});
+    CHECK(pair_set(of_class(all, "moving-polygon", "2")[0].attribute("data-pairs")) ==
+          std::set<std::string>{"2:0", "2:1", "2:3"});
     // Apart: nothing highlighted; containment alone: B marked, no pair.
     CHECK(of_class(all, "moving-polygon", "0")[0].attribute("data-collides") == "0");
     CHECK(of_class(all, "witness", "0").empty());
@@ -328,7 +330,8 @@ TEST_CASE("render: one covering triangle per edge of A, classed by its sign", "[
         const auto b = dir.file("B.wkt", square2);
         const auto poses = dir.file("poses.csv", "tx,ty,theta\n20,0,0\n");
         const auto svg = dir / "a.svg";
-        const auto r = run_cli(dir, scene_args(a, b) + " --poses " + quote(poses.string()) + " --out " + quote(svg.string()));
+        const auto r =
+            run_cli(dir, scene_args(a, b) + " --poses " + quote(poses.string()) + " --out " + quote(svg.string()));
         INFO(r.err);
         REQUIRE(r.exit_code == 0);
         const auto all = parse_svg(svg);
@@ -344,9 +347,10 @@ TEST_CASE("render: one covering triangle per edge of A, classed by its sign", "[
         }
         std::map<std::string, std::string> drawn;
         for (const xml_element& t : of_class(all, "triangle")) {
-            const std::string cls = t.has_class("positive") ? "positive" : t.has_class("negative") ? "negative"
-                                    : t.has_class("flat")   ? "flat"
-                                                            : "none";
+            const std::string cls = t.has_class("positive")   ? "positive"
+                                    : t.has_class("negative") ? "negative"
+                                    : t.has_class("flat")     ? "flat"
+                                                              : "none";
             CHECK(drawn.emplace(t.attribute("data-edge"), cls).second);
         }
         CHECK(of_class(all, "triangle").size() == shape.size());
@@ -367,7 +371,8 @@ TEST_CASE("render: default frames are spread over the trajectory and include the
     const auto a = dir.file("A.wkt", "POLYGON((0 0,10 0,10 10,0 10,0 0))");
     const auto b = dir.file("B.wkt", "POLYGON((0 0,2 0,1 2,0 0))");
     const auto svg = dir / "linear.svg";
-    const auto r = run_cli(dir, scene_args(a, b) + " --trajectory linear --trajectory-frames 40 --out " + quote(svg.string()));
+    const auto r =
+        run_cli(dir, scene_args(a, b) + " --trajectory linear --trajectory-frames 40 --out " + quote(svg.string()));
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     const auto all = parse_svg(svg);
@@ -418,7 +423,8 @@ TEST_CASE("render: file names are escaped in the title", "[render]") {
     const auto b = dir.file("B.wkt", square2);
     const auto poses = dir.file("poses.csv", five_poses);
     const auto svg = dir / "escaped.svg";
-    const auto r = run_cli(dir, scene_args(a, b) + " --poses " + quote(poses.string()) + " --out " + quote(svg.string()));
+    const auto r =
+        run_cli(dir, scene_args(a, b) + " --poses " + quote(poses.string()) + " --out " + quote(svg.string()));
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     const auto all = parse_svg(svg);
@@ -436,7 +442,8 @@ TEST_CASE("render: bad input exits 2 and leaves no file", "[render]") {
         CHECK(!fs::exists(svg.string() + ".tmp"));
     };
 
-    auto r = run_cli(dir, scene_args(broken, b) + " --poses " + quote(poses.string()) + " --out " + quote(svg.string()));
+    auto r =
+        run_cli(dir, scene_args(broken, b) + " --poses " + quote(poses.string()) + " --out " + quote(svg.string()));
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("broken.wkt") != std::string::npos);
     no_file();
@@ -463,7 +470,8 @@ TEST_CASE("render: bad input exits 2 and leaves no file", "[render]") {
         no_file();
     }
 
-    r = run_cli(dir, scene_args(a, b) + " --trajectory linear --trajectory-frames 10 --frames 10 --out " + quote(svg.string()));
+    r = run_cli(
+        dir, scene_args(a, b) + " --trajectory linear --trajectory-frames 10 --frames 10 --out " + quote(svg.string()));
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("frame 10") != std::string::npos);
     CHECK(r.err.find("10 frames") != std::string::npos);

@@ -38,8 +38,7 @@ TEST_CASE("cli '-': collide reads either polygon or the poses from standard inpu
     const auto poses = dir.file("poses.csv", three_poses);
     const std::string file_a = quote(a.string()), file_poses = " --poses " + quote(poses.string());
 
-    for (const auto& [what, args, input] :
-         std::vector<std::tuple<std::string, std::string, fs::path>>{
+    for (const auto& [what, args, input] : std::vector<std::tuple<std::string, std::string, fs::path>>{
              {"static", collide("-", file_a) + file_poses, a},
              {"moving", collide(file_a, "-") + file_poses, a},
              {"poses", collide(file_a, file_a) + " --poses -", poses}}) {
@@ -53,13 +52,12 @@ TEST_CASE("cli '-': collide reads either polygon or the poses from standard inpu
     }
 }
 
-TEST_CASE("cli '-': collide --out - writes the frames to standard output, the summary to standard error",
-          "[cli]") {
+TEST_CASE("cli '-': collide --out - writes the frames to standard output, the summary to standard error", "[cli]") {
     const temp_dir dir;
     const auto a = dir.file("A.wkt", unit_square);
     const auto poses = dir.file("poses.csv", three_poses);
-    const auto r = run_cli(dir, collide(quote(a.string()), quote(a.string())) + " --poses " +
-                                    quote(poses.string()) + " --out -");
+    const auto r =
+        run_cli(dir, collide(quote(a.string()), quote(a.string())) + " --poses " + quote(poses.string()) + " --out -");
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     CHECK(lines_of(r.out) == three_frames);
@@ -80,9 +78,9 @@ TEST_CASE("cli '-': bad input on standard input is named, exit code 2, nothing w
     const auto bad_poses = dir.file("bad.csv", "tx,ty,theta\n1,2,3\n1,2,abc\n");
     const auto frames = dir / "frames.csv";
 
-    auto r = run_cli(dir, from(unclosed, collide("-", quote(a.string())) + " --poses " +
-                                             quote(dir.file("p.csv", three_poses).string()) + " --out " +
-                                             quote(frames.string())));
+    auto r = run_cli(
+        dir, from(unclosed, collide("-", quote(a.string())) + " --poses " +
+                                quote(dir.file("p.csv", three_poses).string()) + " --out " + quote(frames.string())));
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("influence2d: error: standard input: ring 0 is not closed") != std::string::npos);
     CHECK(r.out.empty());
@@ -110,10 +108,11 @@ TEST_CASE("cli '-': two inputs from standard input are refused before anything i
              {collide("-", "-") + " --poses -", "--static, --moving and --poses"}}) {
         INFO(args);
         for (const std::string& command : {args, "render" + args.substr(std::string("collide").size())}) {
-            const auto r = run_cli(dir, from(a, command + " --out " +
-                                                    quote((dir / (command[0] == 'r' ? "x.svg" : "x.csv")).string())));
+            const auto r = run_cli(
+                dir, from(a, command + " --out " + quote((dir / (command[0] == 'r' ? "x.svg" : "x.csv")).string())));
             CHECK(r.exit_code == 2);
-            CHECK(r.err.find("influence2d: error: " + named + (named.find(',') == std::string::npos ? " both" : " all") +
+            CHECK(r.err.find("influence2d: error: " + named +
+                             (named.find(',') == std::string::npos ? " both" : " all") +
                              " name '-', standard input, which can be read only once") != std::string::npos);
             CHECK(r.out.empty());
         }

@@ -9,9 +9,9 @@
 #include <sstream>
 #include <string>
 
-#include "influence2d/motion/trajectory.hpp"
 #include "influence2d/io/csv.hpp"
 #include "influence2d/io/wkt.hpp"
+#include "influence2d/motion/trajectory.hpp"
 #include "support/process.hpp"
 
 using namespace influence2d;
@@ -35,7 +35,8 @@ TEST_CASE("cli: collide --threads writes the frames of one thread", "[cli][threa
     const polygon pa = read_wkt_file(a), pb = read_wkt_file(b);
     const auto poses = dir.file("poses.csv", poses_csv(random_poses(pa, pb, 400, 40, 110, 17)));
     for (const char* type : {"double", "exact", "certified"})
-        for (const std::string& scene : {"--poses " + quote(poses.string()), std::string("--trajectory linear --trajectory-frames 900")}) {
+        for (const std::string& scene :
+             {"--poses " + quote(poses.string()), std::string("--trajectory linear --trajectory-frames 900")}) {
             INFO(type << " " << scene);
             const std::string common = "collide --static " + quote(a) + " --moving " + quote(b) + " " + scene +
                                        " --witness --number-type " + type;
@@ -52,8 +53,8 @@ TEST_CASE("cli: collide --threads writes the frames of one thread", "[cli][threa
                 CHECK(slurp(dir / "many.csv") == frames);
             }
         }
-    const run_result bad = run_cli(dir, "collide --static " + quote(a) + " --moving " + quote(b) +
-                                            " --trajectory linear --threads -2");
+    const run_result bad =
+        run_cli(dir, "collide --static " + quote(a) + " --moving " + quote(b) + " --trajectory linear --threads -2");
     CHECK(bad.exit_code != 0);
     CHECK(bad.err.find("--threads") != std::string::npos);
 }

@@ -11,8 +11,7 @@ using test_shapes::ring;
 
 TEST_CASE("polygon: outer rings are stored counter-clockwise, holes clockwise", "[polygon]") {
     // Outer given clockwise, hole given counter-clockwise: both are reversed.
-    polygon p({ring({{0, 0}, {0, 4}, {4, 4}, {4, 0}}),
-               ring({{1, 1}, {2, 1}, {2, 2}, {1, 2}}, ring_role::hole)});
+    polygon p({ring({{0, 0}, {0, 4}, {4, 4}, {4, 0}}), ring({{1, 1}, {2, 1}, {2, 2}, {1, 2}}, ring_role::hole)});
     REQUIRE(p.ring_count() == 2);
     CHECK(p.area() == Approx(15.0));
     CHECK(p.vertex(0) == point<double>{4, 0});  // reversed: input vertex 3 first
@@ -31,8 +30,7 @@ TEST_CASE("polygon: ring orientation is decided exactly for a sliver", "[polygon
     // double is 0 here, the exact one is negative (clockwise), so the ring is
     // reversed and its last vertex comes first.
     //   a (1e8+0.5, 1e8) --- b (1e8+3750.5, 1e8+1250) --- c (1e8+7500.5+2^-26, 1e8+2500)
-    const point<double> a{100000000.5, 100000000.0}, b{100003750.5, 100001250.0},
-        c{100007500.5 + 0x1p-26, 100002500.0};
+    const point<double> a{100000000.5, 100000000.0}, b{100003750.5, 100001250.0}, c{100007500.5 + 0x1p-26, 100002500.0};
     polygon p({ring({a, b, c})});
     CHECK(p.vertex(0) == c);
     polygon q({ring({c, b, a})});
@@ -42,8 +40,7 @@ TEST_CASE("polygon: ring orientation is decided exactly for a sliver", "[polygon
 TEST_CASE("polygon: rejects what it cannot interpret", "[polygon]") {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     CHECK_THROWS_WITH(polygon({ring({{0, 0}, {1, nan}, {1, 1}})}), Catch::Contains("ring 0, vertex 1"));
-    CHECK_THROWS_WITH(polygon({ring({{0, 0}, {1, 0}, {0, 0}, {1, 0}})}),
-                      Catch::Contains("fewer than three distinct"));
+    CHECK_THROWS_WITH(polygon({ring({{0, 0}, {1, 0}, {0, 0}, {1, 0}})}), Catch::Contains("fewer than three distinct"));
     CHECK_THROWS_AS(polygon(std::vector<ring_input>{}), invalid_input);
 }
 

@@ -43,7 +43,7 @@ TEMPLATE_TEST_CASE("inclusion: points on the sides O-V_i count half in each tria
     const triangle_covering<TestType> cov(sq, sq.centroid());
     CHECK(where(cov, 1, 1) == location::inside);
     CHECK(where(cov, 3, 3) == location::inside);
-    CHECK(where(cov, 2, 2) == location::inside);  // the origin: summed from a vertex instead
+    CHECK(where(cov, 2, 2) == location::inside);   // the origin: summed from a vertex instead
     CHECK(where(cov, 5, 5) == location::outside);  // on the diagonal's extension
 }
 

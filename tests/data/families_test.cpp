@@ -6,8 +6,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <cstdlib>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -69,8 +69,8 @@ bool segments_meet(const grid_point& a, const grid_point& b, const grid_point& c
     const int o1 = orientation(a, b, c), o2 = orientation(a, b, d);
     const int o3 = orientation(c, d, a), o4 = orientation(c, d, b);
     if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-    return (o1 == 0 && within_box(a, b, c)) || (o2 == 0 && within_box(a, b, d)) ||
-           (o3 == 0 && within_box(c, d, a)) || (o4 == 0 && within_box(c, d, b));
+    return (o1 == 0 && within_box(a, b, c)) || (o2 == 0 && within_box(a, b, d)) || (o3 == 0 && within_box(c, d, a)) ||
+           (o4 == 0 && within_box(c, d, b));
 }
 
 struct edge {
@@ -150,7 +150,8 @@ bool inside(const polygon& p, long double px, long double py) {
         const point<double>& a = p.vertex(i);
         const point<double>& b = p.vertex(p.next(i));
         if ((a.y > py) != (b.y > py)) {
-            const long double x = a.x + (py - a.y) * (static_cast<long double>(b.x) - a.x) / (static_cast<long double>(b.y) - a.y);
+            const long double x =
+                a.x + (py - a.y) * (static_cast<long double>(b.x) - a.x) / (static_cast<long double>(b.y) - a.y);
             if (x > px) in = !in;
         }
     }
@@ -228,7 +229,8 @@ TEST_CASE("family polygons have the promised size, shape and simplicity", "[data
                 for (const auto& vertex : p.vertices()) {
                     all_on_grid = all_on_grid && on_grid(vertex.x) && on_grid(vertex.y);
                     const grid_point g = to_grid_point(vertex);
-                    all_within = all_within && g.x * g.x + g.y * g.y <= (std::int64_t{50} << 20) * (std::int64_t{50} << 20);
+                    all_within =
+                        all_within && g.x * g.x + g.y * g.y <= (std::int64_t{50} << 20) * (std::int64_t{50} << 20);
                 }
                 REQUIRE(all_on_grid);
                 CHECK(all_within);
@@ -249,35 +251,35 @@ TEST_CASE("family polygons have the promised size, shape and simplicity", "[data
 
                 const point<double> c = p.centroid();
                 switch (f) {
-                    case v::family::convex: CHECK(strictly_convex(p)); break;
-                    case v::family::starred:
-                    case v::family::irregular: CHECK_FALSE(strictly_convex(p)); break;
-                    case v::family::contour: {
-                        // The hard case of the paper: the centroid is outside the
-                        // polygon, by a margin that no rounding of the test reaches.
-                        CHECK_FALSE(inside(p, c.x, c.y));
-                        long double nearest = 1e9L;
-                        for (std::size_t i = 0; i < p.size(); ++i)
-                            nearest = std::fmin(nearest, distance_to_segment(c.x, c.y, p.vertex(i), p.vertex(p.next(i))));
-                        CHECK(nearest > 1);
-                        break;
-                    }
-                    case v::family::with_hole: {
-                        // The hole keeps clear of the outer ring (the distance of two
-                        // segments is attained at an end of one of them).
-                        long double gap = 1e9L;
-                        auto clearance = [&](std::size_t from, std::size_t to) {
-                            for (std::size_t i = p.ring_begin(from); i < p.ring_end(from); ++i)
-                                for (std::size_t j = p.ring_begin(to); j < p.ring_end(to); ++j)
-                                    gap = std::fmin(gap, distance_to_segment(p.vertex(i).x, p.vertex(i).y,
-                                                                             p.vertex(j), p.vertex(p.next(j))));
-                        };
-                        clearance(1, 0);
-                        clearance(0, 1);
-                        CHECK(gap > 1);
-                        CHECK_FALSE(inside(p, 0, 0));
-                        break;
-                    }
+                case v::family::convex: CHECK(strictly_convex(p)); break;
+                case v::family::starred:
+                case v::family::irregular: CHECK_FALSE(strictly_convex(p)); break;
+                case v::family::contour: {
+                    // The hard case of the paper: the centroid is outside the
+                    // polygon, by a margin that no rounding of the test reaches.
+                    CHECK_FALSE(inside(p, c.x, c.y));
+                    long double nearest = 1e9L;
+                    for (std::size_t i = 0; i < p.size(); ++i)
+                        nearest = std::fmin(nearest, distance_to_segment(c.x, c.y, p.vertex(i), p.vertex(p.next(i))));
+                    CHECK(nearest > 1);
+                    break;
+                }
+                case v::family::with_hole: {
+                    // The hole keeps clear of the outer ring (the distance of two
+                    // segments is attained at an end of one of them).
+                    long double gap = 1e9L;
+                    auto clearance = [&](std::size_t from, std::size_t to) {
+                        for (std::size_t i = p.ring_begin(from); i < p.ring_end(from); ++i)
+                            for (std::size_t j = p.ring_begin(to); j < p.ring_end(to); ++j)
+                                gap = std::fmin(gap, distance_to_segment(p.vertex(i).x, p.vertex(i).y, p.vertex(j),
+                                                                         p.vertex(p.next(j))));
+                    };
+                    clearance(1, 0);
+                    clearance(0, 1);
+                    CHECK(gap > 1);
+                    CHECK_FALSE(inside(p, 0, 0));
+                    break;
+                }
                 }
             }
         }

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "influence2d/detect/brute_force.hpp"
-#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
 #include "influence2d/detect/paper_detector.hpp"
+#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "support/random.hpp"
@@ -234,8 +234,7 @@ TEST_CASE("detector: exact when the moving polygon's own coordinates are far fro
     }
 }
 
-TEST_CASE("detector: a large moving polygon passing close by, and one holding A, equal the reference",
-          "[detector]") {
+TEST_CASE("detector: a large moving polygon passing close by, and one holding A, equal the reference", "[detector]") {
     // B is a long thin bar as long as A is wide: its bounding circle covers
     // most of A while its edges keep clear of A's circle (the filter of step
     // 3), or reach into it; then B grown into a frame around A (a square with
@@ -247,8 +246,9 @@ TEST_CASE("detector: a large moving polygon passing close by, and one holding A,
     const polygon a({test_shapes::ring(disc)});
     const polygon bar = read_wkt("POLYGON((-20 -0.5, 20 -0.5, 20 0.5, -20 0.5, -20 -0.5))");
     const polygon big = test_shapes::square(-30, -30, 60);
-    const polygon frame = read_wkt("POLYGON((-30 -30, 30 -30, 30 30, -30 30, -30 -30),"
-                                   "(-12 -12, -12 12, 12 12, 12 -12, -12 -12))");
+    const polygon frame = read_wkt(
+        "POLYGON((-30 -30, 30 -30, 30 30, -30 30, -30 -30),"
+        "(-12 -12, -12 12, 12 12, 12 -12, -12 -12))");
     for (const polygon* b : {&bar, &big, &frame}) {
         detector_options o;
         o.witness = true;
@@ -268,7 +268,7 @@ TEST_CASE("detector: a large moving polygon passing close by, and one holding A,
             CHECK(fast.collide(p).collides == want.collides);
         }
         if (b == &bar) CHECK(exact.statistics().disc_rejections > 0);
-        if (b == &big) CHECK(exact.collide({0, 0, 0}).collides);     // A inside B: the regions meet
+        if (b == &big) CHECK(exact.collide({0, 0, 0}).collides);          // A inside B: the regions meet
         if (b == &frame) CHECK_FALSE(exact.collide({0, 0, 0}).collides);  // A in B's hole: they do not
     }
 }

@@ -13,8 +13,8 @@
 
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/motion/trajectory.hpp"
 #include "influence2d/io/wkt.hpp"
+#include "influence2d/motion/trajectory.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "support/effort.hpp"
 
@@ -32,7 +32,8 @@ polygon family_polygon(const std::string& id) {
 std::vector<pose> frames_near(const polygon& a, const polygon& b, std::uint64_t seed, int count) {
     std::vector<pose> out;
     const std::vector<pose> line = linear_trajectory(a, b, 9000);
-    for (int k = 0; k < count / 2; ++k) out.push_back(line[line.size() - 1 - static_cast<std::size_t>(k) * 700 / count]);
+    for (int k = 0; k < count / 2; ++k)
+        out.push_back(line[line.size() - 1 - static_cast<std::size_t>(k) * 700 / count]);
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> unit(-1, 1);
     const point<double> cb = b.centroid();
@@ -48,7 +49,8 @@ std::vector<pose> frames_near(const polygon& a, const polygon& b, std::uint64_t 
 }
 
 template <class NT>
-void check_frames(const polygon& a, const polygon& b, const std::vector<pose>& poses, double d, const std::string& what) {
+void check_frames(const polygon& a, const polygon& b, const std::vector<pose>& poses, double d,
+                  const std::string& what) {
     detector_options o;
     o.witness = true;
     o.distance = d;
@@ -112,7 +114,9 @@ TEST_CASE("edge tree frames: a small A and a large B answer as the reference", "
 }
 
 TEST_CASE("edge tree frames: two small polygons test every pair's boxes, as the reference", "[detect][tree]") {
-    check_scenes({{"convex_8", "convex_8"}, {"starred_8", "starred_8"}, {"contour_8", "irregular_8"},
+    check_scenes({{"convex_8", "convex_8"},
+                  {"starred_8", "starred_8"},
+                  {"contour_8", "irregular_8"},
                   {"irregular_8", "convex_8"}},
                  test_effort::scaled(60), 241);
 }

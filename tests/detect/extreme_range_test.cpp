@@ -7,8 +7,8 @@
 #include <catch2/catch.hpp>
 
 #include "influence2d/detect/brute_force.hpp"
-#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
+#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "verification/cgal_reference.hpp"
 
@@ -30,8 +30,10 @@ struct scene {
 //  |  +-------+  |
 //  +-------------+
 const scene scenes[] = {
-    {"1e200", "POLYGON((0 0,1e200 0,1e200 1e200,0 1e200,0 0),(2e199 2e199,2e199 8e199,8e199 8e199,8e199 2e199,2e199 2e199))",
-     "POLYGON((0 0,1e199 0,0 1e199,0 0))", {4.0000000000000004e+199, 4.0000000000000004e+199, 0}},
+    {"1e200",
+     "POLYGON((0 0,1e200 0,1e200 1e200,0 1e200,0 0),(2e199 2e199,2e199 8e199,8e199 8e199,8e199 2e199,2e199 2e199))",
+     "POLYGON((0 0,1e199 0,0 1e199,0 0))",
+     {4.0000000000000004e+199, 4.0000000000000004e+199, 0}},
     {"subnormal, both rings clockwise",
      "POLYGON((0 0,0 4.9406564584124654e-322,4.9406564584124654e-322 4.9406564584124654e-322,"
      "4.9406564584124654e-322 0,0 0),(9.8813129168249309e-323 9.8813129168249309e-323,9.8813129168249309e-323 "
@@ -40,9 +42,11 @@ const scene scenes[] = {
      "POLYGON((0 0,4.9406564584124654e-323 0,0 4.9406564584124654e-323,0 0))",
      {1.9762625833649862e-322, 1.9762625833649862e-322, 0}},
     {"1e-170, clockwise outer ring",
-     "POLYGON((0 0,0 1e-170,1e-170 1e-170,1e-170 0,0 0),(2e-171 2e-171,2e-171 8e-171,8e-171 8e-171,8e-171 2e-171,2e-171 "
+     "POLYGON((0 0,0 1e-170,1e-170 1e-170,1e-170 0,0 0),(2e-171 2e-171,2e-171 8e-171,8e-171 8e-171,8e-171 "
+     "2e-171,2e-171 "
      "2e-171))",
-     "POLYGON((0 0,1e-171 0,0 1e-171,0 0))", {3.9999999999999999e-171, 3.9999999999999999e-171, 0}},
+     "POLYGON((0 0,1e-171 0,0 1e-171,0 0))",
+     {3.9999999999999999e-171, 3.9999999999999999e-171, 0}},
 };
 
 }  // namespace

@@ -63,9 +63,7 @@ int check_walk(const polygon& a, const polygon& b, const detector_options& o, co
     return collisions;
 }
 
-polygon small_b() {
-    return polygon({test_shapes::ring({{0, 0}, {0.5, 0}, {0.5, 0.25}, {0.25, 0.5}, {0, 0.25}})});
-}
+polygon small_b() { return polygon({test_shapes::ring({{0, 0}, {0.5, 0}, {0.5, 0.25}, {0.25, 0.5}, {0, 0.25}})}); }
 
 }  // namespace
 

@@ -50,8 +50,8 @@ TEMPLATE_TEST_CASE("paper-literal: the length-r gate misses a contact on a non-c
     CHECK_FALSE(paper_detector<NT>(a, b).collide(p).collides);
 }
 
-TEMPLATE_TEST_CASE("paper-literal: straddling an edge's line beyond its end is a false collision", "[paper]",
-                   double, influence2d::exact_rational) {
+TEMPLATE_TEST_CASE("paper-literal: straddling an edge's line beyond its end is a false collision", "[paper]", double,
+                   influence2d::exact_rational) {
     using NT = TestType;
     //          [B]  B = [4.3,4.5] x [3.5,4.5] crosses the line y = 4 at x > 4
     //   +------+ ....

@@ -139,9 +139,11 @@ std::vector<frame> make_frames(const family_pair& fp, frame_counts counts) {
 
 std::string describe(const family_pair& fp, std::size_t index, const frame& f, double d) {
     std::ostringstream o;
-    o << std::setprecision(17) << "A = " << fp.a.name << ", B = " << fp.b.name << ", d = " << d << ", frame "
-      << index << " ("
-      << (f.kind == frame_kind::random ? "random" : f.kind == frame_kind::contact ? "contact" : "hair apart")
+    o << std::setprecision(17) << "A = " << fp.a.name << ", B = " << fp.b.name << ", d = " << d << ", frame " << index
+      << " ("
+      << (f.kind == frame_kind::random    ? "random"
+          : f.kind == frame_kind::contact ? "contact"
+                                          : "hair apart")
       << "), pose tx = " << f.p.tx << ", ty = " << f.p.ty << ", theta = " << f.p.theta;
     return o.str();
 }
@@ -214,8 +216,7 @@ tally run_all(double d, frame_counts counts) {
                 if (d == 0 && expected.collides && !ref_touch.collide(frames[k + 1].p).collides) ++t.touching;
             }
             const bool ok = same(got, expected) && same(steady, expected) && same(brute, expected) &&
-                            got_plain == expected.collides &&
-                            same(got_double, brute_double);
+                            got_plain == expected.collides && same(got_double, brute_double);
             if (ok) continue;
             ++t.mismatches;
             if (++reported > 3) continue;  // enough to reproduce; the count says the rest

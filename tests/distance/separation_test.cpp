@@ -43,8 +43,8 @@
 
 #include <CGAL/squared_distance_2.h>
 
-#include "influence2d/exact/certified_separation.hpp"
 #include "influence2d/distance/separation.hpp"
+#include "influence2d/exact/certified_separation.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/number/multiprecision.hpp"
 
@@ -78,7 +78,7 @@ struct reference_answer {
     ER boundary_squared;  ///< the least squared distance over every edge pair
     bool meet = false;
     bool boundary_meet = false;
-    placed_shape a, b;    ///< A, and B posed exactly
+    placed_shape a, b;  ///< A, and B posed exactly
 };
 
 /// The reference answer: every edge pair's squared distance, their least;
@@ -217,8 +217,7 @@ enum class floating { none, double_only, all };
 
 /// Every mode on one frame: exact_rational, certified_separation, and the
 /// floating types asked.
-void check_frame(const polygon& a, const polygon& b, const pose& q, tally& t,
-                 floating types = floating::double_only) {
+void check_frame(const polygon& a, const polygon& b, const pose& q, tally& t, floating types = floating::double_only) {
     INFO(describe(a, b, q));
     const reference_answer ref = reference(a, b, q);
     const separation_result<ER> e = separation<ER>(a, b, q);
@@ -371,7 +370,9 @@ TEST_CASE("separation: closest points of two segments on a small grid, degenerat
     // CGAL: the squared distance, each point on its segment at its part, the
     // points' squared distance; both evaluations give the same answer.
     test_random::rng g(0x5e9d);
-    const auto grid_point = [&] { return point<double>{static_cast<double>(g.index(5)), static_cast<double>(g.index(5))}; };
+    const auto grid_point = [&] {
+        return point<double>{static_cast<double>(g.index(5)), static_cast<double>(g.index(5))};
+    };
     const auto exact = [](const point<double>& p) { return point<ER>{ER(p.x), ER(p.y)}; };
     const auto on_part = [](const P& x, const P& a, const P& b, segment_part part) {
         if (part == segment_part::start) return x == a;
@@ -383,8 +384,10 @@ TEST_CASE("separation: closest points of two segments on a small grid, degenerat
         const point<double> a = grid_point(), b = grid_point(), u = grid_point(), v = grid_point();
         INFO(a.x << ',' << a.y << ' ' << b.x << ',' << b.y << " / " << u.x << ',' << u.y << ' ' << v.x << ',' << v.y);
         const P pa(a.x, a.y), pb(b.x, b.y), pu(u.x, u.y), pv(v.x, v.y);
-        const FT expected = pa == pb ? (pu == pv ? CGAL::squared_distance(pa, pu) : CGAL::squared_distance(pa, S(pu, pv)))
-                                     : (pu == pv ? CGAL::squared_distance(pu, S(pa, pb)) : CGAL::squared_distance(S(pa, pb), S(pu, pv)));
+        const FT expected =
+            pa == pb
+                ? (pu == pv ? CGAL::squared_distance(pa, pu) : CGAL::squared_distance(pa, S(pu, pv)))
+                : (pu == pv ? CGAL::squared_distance(pu, S(pa, pb)) : CGAL::squared_distance(S(pa, pb), S(pu, pv)));
         const segment_pair_closest<ER> plain = closest_between_segments(exact(a), exact(b), exact(u), exact(v));
         const segment_pair_closest<ER> filtered =
             closest_between_segments(a, b, u, v, 0.0, exact(a), exact(b), exact(u), exact(v));
@@ -424,7 +427,8 @@ TEST_CASE("separation: the families under random, touching, grazing, sliding and
         const polygon& b = test_families::load(k.fb, k.m);
         const std::size_t frames = static_cast<std::size_t>(test_effort::scaled(30));
         for (double inner : {0.4, 0.9})
-            for (const pose& q : test_poses::near_contact(a, b, frames, inner, 0, k.n * 7 + k.m)) check_frame(a, b, q, t);
+            for (const pose& q : test_poses::near_contact(a, b, frames, inner, 0, k.n * 7 + k.m))
+                check_frame(a, b, q, t);
         // Touching (exact on the families' grid) and one ulp away: grazes.
         for (const pose& q : test_poses::touching(a, b, g, static_cast<std::size_t>(test_effort::scaled(6))))
             check_frame(a, b, q, t);
@@ -439,7 +443,8 @@ TEST_CASE("separation: the families under random, touching, grazing, sliding and
         const point<double> dir{(v1.x - v0.x) / len, (v1.y - v0.y) / len}, out{dir.y, -dir.x};
         std::size_t lead = 0;
         for (std::size_t j = 1; j < b.size(); ++j)
-            if (b.vertex(j).x * out.x + b.vertex(j).y * out.y < b.vertex(lead).x * out.x + b.vertex(lead).y * out.y) lead = j;
+            if (b.vertex(j).x * out.x + b.vertex(j).y * out.y < b.vertex(lead).x * out.x + b.vertex(lead).y * out.y)
+                lead = j;
         for (int s = 0; s <= 4; ++s) {
             const double along = len * s / 4, gap = 0x1p-30;
             const pose q{v0.x + dir.x * along + out.x * gap - b.vertex(lead).x,
@@ -479,9 +484,11 @@ TEST_CASE("separation: random multipolygons with parts inside the other, and rin
             const point<double> near{pa.center.x + off * std::cos(spin), pa.center.y + off * std::sin(spin)};
             const pose q = f % 3 == 1 ? test_scenes::aimed(vb, va, theta) : test_scenes::aimed(pb.center, near, theta);
             check_frame(a, b, q, t);
-            const point<double> wa = messy_a.vertex(g.index(messy_a.size())), wb = messy_b.vertex(g.index(messy_b.size()));
+            const point<double> wa = messy_a.vertex(g.index(messy_a.size())),
+                                wb = messy_b.vertex(g.index(messy_b.size()));
             const double far = g.uniform(0, 16);
-            check_frame(messy_a, messy_b, test_scenes::aimed(wb, {wa.x + far * std::cos(spin), wa.y + far * std::sin(spin)}, theta), t);
+            check_frame(messy_a, messy_b,
+                        test_scenes::aimed(wb, {wa.x + far * std::cos(spin), wa.y + far * std::sin(spin)}, theta), t);
         }
     }
     CHECK(t.meet > t.frames / 5);
@@ -506,7 +513,8 @@ TEST_CASE("separation: far from 1 in scale, the exact modes stay exact", "[separ
         };
         const polygon a = scaled(a0), b = scaled(b0);
         test_random::rng g(static_cast<std::uint64_t>(e + 1000));
-        std::vector<pose> poses = test_poses::near_contact(a0, b0, static_cast<std::size_t>(test_effort::scaled(20)), 0.9, 0, 17);
+        std::vector<pose> poses =
+            test_poses::near_contact(a0, b0, static_cast<std::size_t>(test_effort::scaled(20)), 0.9, 0, 17);
         for (const pose& q : test_poses::touching(a0, b0, g, 2)) poses.push_back(q);
         for (pose q : poses) {
             q.tx = std::ldexp(q.tx, e);
@@ -535,7 +543,8 @@ TEST_CASE("separation: prepared polygons and separation_query answer as the one-
     std::size_t meet = 0;
     for (const pose& q : poses) {
         INFO(describe(a, b, q));
-        const separation_result<ER> once = separation<ER>(a, b, q), prepared = separation<ER>(*A, *B, q), seeded = query(q);
+        const separation_result<ER> once = separation<ER>(a, b, q), prepared = separation<ER>(*A, *B, q),
+                                    seeded = query(q);
         for (const separation_result<ER>* r : {&prepared, &seeded}) {
             CHECK(r->squared_distance == once.squared_distance);
             CHECK(r->static_feature.kind == once.static_feature.kind);

@@ -21,15 +21,15 @@
 
 #include <array>
 #include <cmath>
-#include <iterator>
 #include <cstdint>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "influence2d/detect/brute_force.hpp"
-#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
+#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "support/families.hpp"
@@ -67,8 +67,8 @@ std::vector<family_pair> family_pairs() {
         for (std::size_t fb = 0; fb < families; ++fb, ++k)
             for (std::size_t r = 0; r < 2; ++r) {
                 const std::size_t combo = (2 * k + r + 5) % 16;
-                out.push_back({family(fa, combo % 4), family(fb, (combo / 4 + fb) % 4),
-                               0xce271f1edULL + 104729 * (2 * k + r)});
+                out.push_back(
+                    {family(fa, combo % 4), family(fb, (combo / 4 + fb) % 4), 0xce271f1edULL + 104729 * (2 * k + r)});
             }
     return out;
 }

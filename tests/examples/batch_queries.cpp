@@ -4,11 +4,11 @@
 #include <cstdio>
 #include <vector>
 
-#include <influence2d/exact/certified_intersects.hpp>
-#include <influence2d/query/batch.hpp>
-#include <influence2d/exact/certified_detector.hpp>
 #include <influence2d/detect/detector.hpp>
+#include <influence2d/exact/certified_detector.hpp>
+#include <influence2d/exact/certified_intersects.hpp>
 #include <influence2d/motion/trajectory.hpp>
+#include <influence2d/query/batch.hpp>
 
 using namespace influence2d;
 

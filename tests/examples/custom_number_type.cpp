@@ -31,8 +31,8 @@ struct influence2d::number_traits<float50> {
 int main() {
     using namespace influence2d;
     // A star-shaped static polygon and a triangle orbiting it, turning as it goes.
-    const polygon star({ring_input{{{4, 0}, {1, 1}, {0, 4}, {-1, 1}, {-4, 0}, {-1, -1}, {0, -4}, {1, -1}},
-                                   ring_role::outer}});
+    const polygon star(
+        {ring_input{{{4, 0}, {1, 1}, {0, 4}, {-1, 1}, {-4, 0}, {-1, -1}, {0, -4}, {1, -1}}, ring_role::outer}});
     const polygon triangle({ring_input{{{0, 0}, {1.5, 0}, {0, 1.5}}, ring_role::outer}});
     detector_options options;
     options.witness = true;

@@ -42,8 +42,8 @@ int main() {
             break;
         }
     }
-    std::printf("%zu rings, %zu vertices; the boat runs aground at step %d\n", courtyard.ring_count(),
-                courtyard.size(), aground);
+    std::printf("%zu rings, %zu vertices; the boat runs aground at step %d\n", courtyard.ring_count(), courtyard.size(),
+                aground);
 
     // A ring the polygon cannot take (two distinct points) is refused, named.
     try {

@@ -15,7 +15,7 @@ int main() {
     const polygon b({ring_input{{{0, 0}, {1, 0}, {0, 1}}, ring_role::outer}});
     detector<exact_rational> d(a, b);
     int collisions = 0;
-    for (int k = 50; k >= 0; --k) {  // 4 + 2^-50 is the double after 4
+    for (int k = 50; k >= 0; --k) {                             // 4 + 2^-50 is the double after 4
         const double y = k == 0 ? 4 : 4 + std::ldexp(1.0, -k);  // 4 + 2^-k, then 4 itself
         if (d.collide(pose{2, y, 0}).collides) ++collisions;
     }

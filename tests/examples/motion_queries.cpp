@@ -5,14 +5,14 @@
 // the README's "Distance, closest features, first contact".
 #include <cstdio>
 
-#include <influence2d/exact/certified_separation.hpp>
-#include <influence2d/exact/certified_first_contact.hpp>
+#include <influence2d/distance/separation.hpp>
 #include <influence2d/exact/certified_both_posed.hpp>
 #include <influence2d/exact/certified_detector.hpp>
-#include <influence2d/query/both_posed.hpp>
-#include <influence2d/distance/separation.hpp>
-#include <influence2d/motion/first_contact.hpp>
+#include <influence2d/exact/certified_first_contact.hpp>
+#include <influence2d/exact/certified_separation.hpp>
 #include <influence2d/motion/exit_distance.hpp>
+#include <influence2d/motion/first_contact.hpp>
+#include <influence2d/query/both_posed.hpp>
 
 using namespace influence2d;
 
@@ -28,7 +28,8 @@ int main() {
     const double d_next = distance_of<double>(near(pose{-2.5, 0, 0}).squared_distance);
 
     // The square jumps from x = -3 to x = 3: no pose meets the wall, the motion does.
-    const bool at_poses = intersects<double>(wall, square, pose{-3, 0, 0}) || intersects<double>(wall, square, pose{3, 0, 0});
+    const bool at_poses =
+        intersects<double>(wall, square, pose{-3, 0, 0}) || intersects<double>(wall, square, pose{3, 0, 0});
     const contact_result<double> hit = certified_first_contact(wall, square, pose{-3, 0, 0}, pose{3, 0, 0});
     const contact_result<exact_rational> exact_hit =
         first_contact<exact_rational>(wall, square, pose{-3, 0, 0}, pose{3, 0, 0});
@@ -39,14 +40,16 @@ int main() {
     // Both moving: the wall shifted by 2, the square at 2.5: they meet, exactly posed in the world.
     const bool both = certified_intersects(wall, pose{2, 0, 0}, square, pose{2.5, 0, 0});
 
-    std::printf("distance %.4f (certified %.4f, next pose %.4f) between wall %s%zu and square %s%zu; "
-                "at the poses: %d; first contact t = %.4f (exact %s); exit distance %s; both moving: %d\n",
-                distance_of<double>(s.squared_distance), c.distance, d_next,
-                s.static_feature.kind == feature_kind::edge ? "edge " : "vertex ", s.static_feature.index,
-                s.moving_feature.kind == feature_kind::edge ? "edge " : "vertex ", s.moving_feature.index,
-                at_poses ? 1 : 0, hit.time, exact_hit.time == exact_rational(13) / 40 ? "13/40" : "?",
-                out == exact_rational(11) / 20 ? "11/20" : "?", both ? 1 : 0);
-    return hit.contact && !at_poses && exact_hit.time == exact_rational(13) / 40 && out == exact_rational(11) / 20 && both
+    std::printf(
+        "distance %.4f (certified %.4f, next pose %.4f) between wall %s%zu and square %s%zu; "
+        "at the poses: %d; first contact t = %.4f (exact %s); exit distance %s; both moving: %d\n",
+        distance_of<double>(s.squared_distance), c.distance, d_next,
+        s.static_feature.kind == feature_kind::edge ? "edge " : "vertex ", s.static_feature.index,
+        s.moving_feature.kind == feature_kind::edge ? "edge " : "vertex ", s.moving_feature.index, at_poses ? 1 : 0,
+        hit.time, exact_hit.time == exact_rational(13) / 40 ? "13/40" : "?",
+        out == exact_rational(11) / 20 ? "11/20" : "?", both ? 1 : 0);
+    return hit.contact && !at_poses && exact_hit.time == exact_rational(13) / 40 && out == exact_rational(11) / 20 &&
+                   both
                ? 0
                : 1;
 }

@@ -35,12 +35,13 @@ polygon random_star(test_random::rng& rng, std::size_t n, double scale, double c
 /// Whether the segments [a, b] and [u, v] lie within g of each other:
 /// exactly when they meet, else by the four end-to-segment distances in
 /// double (the test leaves a relative margin for their rounding).
-bool within(const point<double>& a, const point<double>& b, const point<double>& u, const point<double>& v,
-            double g) {
-    const auto ex = [](const point<double>& p) { return point<exact_rational>{exact_rational(p.x), exact_rational(p.y)}; };
+bool within(const point<double>& a, const point<double>& b, const point<double>& u, const point<double>& v, double g) {
+    const auto ex = [](const point<double>& p) {
+        return point<exact_rational>{exact_rational(p.x), exact_rational(p.y)};
+    };
     if (segments_intersect(ex(a), ex(b), ex(u), ex(v))) return true;
-    const double d = std::min({segment_distance(a, u, v), segment_distance(b, u, v), segment_distance(u, a, b),
-                               segment_distance(v, a, b)});
+    const double d = std::min(
+        {segment_distance(a, u, v), segment_distance(b, u, v), segment_distance(u, a, b), segment_distance(v, a, b)});
     return d <= g * (1 - 1e-9);
 }
 
@@ -80,8 +81,8 @@ TEST_CASE("edge tree: every edge within the reach of a segment is visited, once"
             for (std::size_t e = 0; e < p.size(); ++e) {
                 if (!within(p.vertex(e), p.vertex(p.next(e)), u, v, g)) continue;
                 ++near_total;
-                INFO("shape " << s << " edge " << e << " segment (" << u.x << ", " << u.y << ") (" << v.x << ", "
-                              << v.y << ") g " << g);
+                INFO("shape " << s << " edge " << e << " segment (" << u.x << ", " << u.y << ") (" << v.x << ", " << v.y
+                              << ") g " << g);
                 CHECK(std::binary_search(got.begin(), got.end(), static_cast<std::uint32_t>(e)));
             }
             visited_total += got.size();

@@ -57,8 +57,8 @@ TEST_CASE("extended area outline: the band's corners and sides bound in_band's p
         point<double> c{0, 0};
         for (const auto& q : out.corners) c = {c.x + q.x / 4, c.y + q.y / 4};
         for (const auto& q : outline_points(out.corners)) {
-            INFO("edge (" << a.x << ", " << a.y << ") - (" << b.x << ", " << b.y << "), n = " << n << ", point ("
-                          << q.x << ", " << q.y << ")");
+            INFO("edge (" << a.x << ", " << a.y << ") - (" << b.x << ", " << b.y << "), n = " << n << ", point (" << q.x
+                          << ", " << q.y << ")");
             CHECK(in_band(scaled_about(c, q, 1 - 1e-6), a, b, n, n * n));
             CHECK_FALSE(in_band(scaled_about(c, q, 1 + 1e-6), a, b, n, n * n));
             CHECK(in_extended_area(extended_area::band, scaled_about(c, q, 1 - 1e-6), a, b, n));
@@ -126,7 +126,8 @@ TEST_CASE("candidate edges: the edges whose extended area holds the point", "[ex
     // (4.5, -0.5): within 0.75 of the right and the bottom edges' corner.
     const std::vector<std::size_t> corner =
         edges_whose_extended_area_holds(extended_area::capsule, point<double>{4.5, -0.5}, cov, 0.75);
-    CHECK(corner == (right < bottom ? std::vector<std::size_t>{right, bottom} : std::vector<std::size_t>{bottom, right}));
+    CHECK(corner ==
+          (right < bottom ? std::vector<std::size_t>{right, bottom} : std::vector<std::size_t>{bottom, right}));
     // (5.4, 5.4): outside every capsule of length 1.5 (1.98 from the corner), inside two bands' corners.
     CHECK(edges_whose_extended_area_holds(extended_area::capsule, point<double>{5.4, 5.4}, cov, 1.5).empty());
     CHECK(edges_whose_extended_area_holds(extended_area::band, point<double>{5.4, 5.4}, cov, 1.5).size() == 2);

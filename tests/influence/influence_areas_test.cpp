@@ -28,8 +28,7 @@ std::set<std::size_t> by_scan(const triangle_covering<NT>& cov, const point<NT>&
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("influence areas: the square's four cones tile the plane", "[influence]",
-                   INFLUENCE2D_NUMBER_TYPES) {
+TEMPLATE_TEST_CASE("influence areas: the square's four cones tile the plane", "[influence]", INFLUENCE2D_NUMBER_TYPES) {
     using NT = TestType;
     const polygon sq = test_shapes::square(0, 0, 4);
     const triangle_covering<NT> cov(sq, sq.centroid());
@@ -37,7 +36,7 @@ TEMPLATE_TEST_CASE("influence areas: the square's four cones tile the plane", "[
     auto P = [](double x, double y) { return point<NT>{NT(x), NT(y)}; };
     CHECK(by_index(areas, P(2, -10)) == std::set<std::size_t>{0});  // below: edge 0's cone
     CHECK(by_index(areas, P(10, 2)) == std::set<std::size_t>{1});
-    CHECK(by_index(areas, P(7, 7)) == std::set<std::size_t>{1, 2});  // on the shared side
+    CHECK(by_index(areas, P(7, 7)) == std::set<std::size_t>{1, 2});        // on the shared side
     CHECK(by_index(areas, P(2, 2)) == std::set<std::size_t>{0, 1, 2, 3});  // the origin
 }
 

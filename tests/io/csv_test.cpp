@@ -25,8 +25,7 @@ public:
         static std::atomic<int> counter{0};
         const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
         path_ = std::filesystem::temp_directory_path() /
-                ("influence2d_csv_" + std::to_string(stamp) + "_" + std::to_string(counter++) +
-                 ".csv");
+                ("influence2d_csv_" + std::to_string(stamp) + "_" + std::to_string(counter++) + ".csv");
         std::ofstream(path_, std::ios::binary) << content;
     }
     ~temp_csv() {
@@ -77,8 +76,7 @@ TEST_CASE("csv: header only gives no poses", "[io][csv]") {
 }
 
 TEST_CASE("csv: missing and extra columns", "[io][csv]") {
-    CHECK(csv_error("tx,ty,theta\n1,2,3\n4,5\n") ==
-          "line 3: 2 columns, expected 3; missing column theta");
+    CHECK(csv_error("tx,ty,theta\n1,2,3\n4,5\n") == "line 3: 2 columns, expected 3; missing column theta");
     CHECK(csv_error("tx,ty,theta\n1\n") == "line 2: 1 column, expected 3; missing column ty");
     CHECK(csv_error("tx,ty,theta\n1,2,3,4\n") == "line 2: 4 columns, expected 3 (tx,ty,theta)");
     CHECK(csv_error("tx,ty,theta\n1,,3\n") == "line 2, column ty: empty value");
@@ -88,8 +86,7 @@ TEST_CASE("csv: values that are not finite numbers", "[io][csv]") {
     CHECK(csv_error("tx,ty,theta\n1,2,3\n1,2,3\n1,2,3\n1,2,3\n1,2,3\n1,2,abc\n") ==
           "line 7, column theta: \"abc\" is not a number");
     CHECK(csv_error("tx,ty,theta\nnan,2,3\n") == "line 2, column tx: \"nan\" is not a finite number");
-    CHECK(csv_error("tx,ty,theta\n1,-inf,3\n") ==
-          "line 2, column ty: \"-inf\" is not a finite number");
+    CHECK(csv_error("tx,ty,theta\n1,-inf,3\n") == "line 2, column ty: \"-inf\" is not a finite number");
     CHECK(csv_error("tx,ty,theta\n1,2,1e999\n") == "line 2, column theta: \"1e999\" is out of range");
     CHECK(csv_error("tx,ty,theta\n1x,2,3\n") == "line 2, column tx: \"1x\" is not a number");
     CHECK(csv_error("tx,ty,theta\n1 2,2,3\n") == "line 2, column tx: \"1 2\" is not a number");
@@ -97,8 +94,7 @@ TEST_CASE("csv: values that are not finite numbers", "[io][csv]") {
 }
 
 TEST_CASE("csv: wrong or missing header and empty or blank files", "[io][csv]") {
-    CHECK(csv_error("x,y,theta\n1,2,3\n") ==
-          "line 1: expected the header \"tx,ty,theta\", found \"x,y,theta\"");
+    CHECK(csv_error("x,y,theta\n1,2,3\n") == "line 1: expected the header \"tx,ty,theta\", found \"x,y,theta\"");
     CHECK(csv_error("1,2,3\n") == "line 1: expected the header \"tx,ty,theta\", found \"1,2,3\"");
     CHECK(csv_error("tx,ty,theta,extra\n") ==
           "line 1: expected the header \"tx,ty,theta\", found \"tx,ty,theta,extra\"");
@@ -108,8 +104,7 @@ TEST_CASE("csv: wrong or missing header and empty or blank files", "[io][csv]") 
 }
 
 TEST_CASE("csv: a missing file", "[io][csv]") {
-    const auto path =
-        (std::filesystem::temp_directory_path() / "influence2d_no_such_poses.csv").string();
+    const auto path = (std::filesystem::temp_directory_path() / "influence2d_no_such_poses.csv").string();
     try {
         (void)read_poses_csv(path);
         FAIL("no exception");

@@ -34,8 +34,7 @@ std::filesystem::path temp_file(const std::string& name, const std::string& cont
     static std::atomic<int> counter{0};
     const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
     const auto path = std::filesystem::temp_directory_path() /
-                      ("influence2d_wkt_" + std::to_string(stamp) + "_" +
-                       std::to_string(counter++) + "_" + name);
+                      ("influence2d_wkt_" + std::to_string(stamp) + "_" + std::to_string(counter++) + "_" + name);
     std::ofstream(path, std::ios::binary) << content;
     return path;
 }
@@ -61,8 +60,7 @@ TEST_CASE("wkt: keywords in any case with surrounding and inner white space", "[
     CHECK(m.size() == 3);
 }
 
-TEST_CASE("wkt: MULTIPOLYGON rings in text order with exteriors outer and interiors holes",
-          "[io][wkt]") {
+TEST_CASE("wkt: MULTIPOLYGON rings in text order with exteriors outer and interiors holes", "[io][wkt]") {
     const polygon p = read_wkt(
         "MULTIPOLYGON(((0 0,10 0,10 10,0 10,0 0),(2 2,2 4,4 4,4 2,2 2)),"
         "((20 0,30 0,30 10,20 0)))");
@@ -74,8 +72,7 @@ TEST_CASE("wkt: MULTIPOLYGON rings in text order with exteriors outer and interi
     CHECK(p.vertex(p.ring_begin(2)).x == 20.0);
 }
 
-TEST_CASE("wkt: a clockwise outer ring is stored counter-clockwise and source_edge maps back",
-          "[io][wkt]") {
+TEST_CASE("wkt: a clockwise outer ring is stored counter-clockwise and source_edge maps back", "[io][wkt]") {
     // Input edges: 0 (0 0)-(0 1), 1 (0 1)-(1 1), 2 (1 1)-(1 0), 3 (1 0)-(0 0): clockwise.
     const std::vector<point<double>> in{{0, 0}, {0, 1}, {1, 1}, {1, 0}};
     const polygon p = read_wkt("POLYGON((0 0,0 1,1 1,1 0,0 0))");
@@ -111,31 +108,25 @@ TEST_CASE("wkt: rejects an unclosed ring and names it", "[io][wkt]") {
 }
 
 TEST_CASE("wkt: rejects nan and inf and names ring and vertex", "[io][wkt]") {
-    CHECK(wkt_error("POLYGON((0 0,1 0,1 nan,0 0))") ==
-          "<text>: ring 0, vertex 2: coordinate is not a finite number");
+    CHECK(wkt_error("POLYGON((0 0,1 0,1 nan,0 0))") == "<text>: ring 0, vertex 2: coordinate is not a finite number");
     CHECK(wkt_error("POLYGON((0 0,9 0,9 9,0 0),(1 1,inf 1,2 2,1 1))") ==
           "<text>: ring 1, vertex 1: coordinate is not a finite number");
     // A non-finite first point is reported as such, not as an unclosed ring.
-    CHECK(wkt_error("POLYGON((nan 0,1 0,1 1,nan 0))") ==
-          "<text>: ring 0, vertex 0: coordinate is not a finite number");
+    CHECK(wkt_error("POLYGON((nan 0,1 0,1 1,nan 0))") == "<text>: ring 0, vertex 0: coordinate is not a finite number");
     CHECK(wkt_error("POLYGON((0 0,1 0,1 1e999,0 0))").find("<text>: parse error") == 0);
 }
 
 TEST_CASE("wkt: rejects a ring with fewer than three distinct vertices", "[io][wkt]") {
-    CHECK(wkt_error("POLYGON((0 0,1 0,0 0))") ==
-          "<text>: ring 0: fewer than three distinct vertices");
-    CHECK(wkt_error("POLYGON((0 0,1 1,1 1,0 0,0 0))") ==
-          "<text>: ring 0: fewer than three distinct vertices");
-    CHECK(wkt_error("POLYGON((0 0,9 0,9 9,0 0),(1 1))") ==
-          "<text>: ring 1: fewer than three distinct vertices");
+    CHECK(wkt_error("POLYGON((0 0,1 0,0 0))") == "<text>: ring 0: fewer than three distinct vertices");
+    CHECK(wkt_error("POLYGON((0 0,1 1,1 1,0 0,0 0))") == "<text>: ring 0: fewer than three distinct vertices");
+    CHECK(wkt_error("POLYGON((0 0,9 0,9 9,0 0),(1 1))") == "<text>: ring 1: fewer than three distinct vertices");
 }
 
 TEST_CASE("wkt: rejects other geometry types and empty input", "[io][wkt]") {
-    CHECK(wkt_error("LINESTRING(0 0,1 1)") ==
-          "<text>: expected POLYGON or MULTIPOLYGON, found 'LINESTRING'");
+    CHECK(wkt_error("LINESTRING(0 0,1 1)") == "<text>: expected POLYGON or MULTIPOLYGON, found 'LINESTRING'");
     CHECK(wkt_error("POINT(1 2)").find("found 'POINT'") != std::string::npos);
-    CHECK(wkt_error("GEOMETRYCOLLECTION(POLYGON((0 0,1 0,1 1,0 0)))")
-              .find("found 'GEOMETRYCOLLECTION'") != std::string::npos);
+    CHECK(wkt_error("GEOMETRYCOLLECTION(POLYGON((0 0,1 0,1 1,0 0)))").find("found 'GEOMETRYCOLLECTION'") !=
+          std::string::npos);
     CHECK(wkt_error("") == "<text>: empty input: expected POLYGON or MULTIPOLYGON");
     CHECK(wkt_error(" \n\t ") == "<text>: empty input: expected POLYGON or MULTIPOLYGON");
     CHECK(wkt_error("POLYGON EMPTY") == "<text>: POLYGON is empty");
@@ -151,13 +142,11 @@ TEST_CASE("wkt: rejects truncated text and trailing garbage", "[io][wkt]") {
     CHECK(wkt_error("POLYGON((0 0,1 0,1 1,0 0)) garbage").find("<text>: parse error: ") == 0);
     CHECK(wkt_error("POLYGON((0 0,1 0,1 1,0 0)))").find("<text>: parse error: ") == 0);
     CHECK(wkt_error("POLYGON((0 0,1 0,1 1,0 0));").find("<text>: parse error: ") == 0);
-    CHECK(wkt_error("POLYGON((0 0,1 0,1 1,0 0))POLYGON((0 0,1 0,1 1,0 0))")
-              .find("<text>: parse error: ") == 0);
+    CHECK(wkt_error("POLYGON((0 0,1 0,1 1,0 0))POLYGON((0 0,1 0,1 1,0 0))").find("<text>: parse error: ") == 0);
     CHECK(wkt_error("POLYGON((0 0,1 0,1 x,0 0))").find("<text>: parse error: ") == 0);
 }
 
-TEST_CASE("wkt: rejects points without exactly two coordinates and empty elements",
-          "[io][wkt]") {
+TEST_CASE("wkt: rejects points without exactly two coordinates and empty elements", "[io][wkt]") {
     // Boost's reader would zero-fill, split into extra points or skip these.
     CHECK(wkt_error("POLYGON((0 0,1 0,1 1 5,0 0))") ==
           "<text>: ring 0, vertex 2: 3 coordinates, expected 2 (only x y is supported)");
@@ -168,8 +157,7 @@ TEST_CASE("wkt: rejects points without exactly two coordinates and empty element
     CHECK(wkt_error("POLYGON((0 0,1 0,1 1,0 0),)") == "<text>: empty element after ','");
     CHECK(wkt_error("MULTIPOLYGON(((0 0,1 0,1 1,0 0)),((5 5,6 5,6 6 6,5 5)))") ==
           "<text>: ring 1, vertex 2: 3 coordinates, expected 2 (only x y is supported)");
-    CHECK(wkt_error("POLYGON M((0 0 1,1 0 1,1 1 1,0 0 1))").find("3 coordinates") !=
-          std::string::npos);
+    CHECK(wkt_error("POLYGON M((0 0 1,1 0 1,1 1 1,0 0 1))").find("3 coordinates") != std::string::npos);
 }
 
 TEST_CASE("wkt: files name the source and missing files are reported", "[io][wkt]") {
@@ -179,20 +167,19 @@ TEST_CASE("wkt: files name the source and missing files are reported", "[io][wkt
     CHECK(error_of([&] { (void)read_wkt_file(bad.string()); }) ==
           bad.string() + ": ring 1, vertex 2: coordinate is not a finite number");
     const auto missing = std::filesystem::temp_directory_path() / "influence2d_no_such_file.wkt";
-    CHECK(error_of([&] { (void)read_wkt_file(missing.string()); }) ==
-          missing.string() + ": cannot open file");
+    CHECK(error_of([&] { (void)read_wkt_file(missing.string()); }) == missing.string() + ": cannot open file");
     std::filesystem::remove(good);
     std::filesystem::remove(bad);
-    CHECK(error_of([] { (void)read_wkt_file(std::filesystem::temp_directory_path().string()); })
-              .find(": is a directory") != std::string::npos);
+    CHECK(error_of([] {
+              (void)read_wkt_file(std::filesystem::temp_directory_path().string());
+          }).find(": is a directory") != std::string::npos);
 }
 
 TEST_CASE("wkt: files over the size cap are refused before reading", "[io][wkt]") {
     // A sparse file: no disk space used, refused on its size alone.
     const auto huge = temp_file("huge.wkt", "POLYGON((0 0,1 0,1 1,0 0))");
     std::filesystem::resize_file(huge, max_wkt_file_bytes + 1);
-    CHECK(error_of([&] { (void)read_wkt_file(huge.string()); }) ==
-          huge.string() + ": file is larger than 512 MiB");
+    CHECK(error_of([&] { (void)read_wkt_file(huge.string()); }) == huge.string() + ": file is larger than 512 MiB");
     std::filesystem::remove(huge);
 }
 
@@ -210,11 +197,12 @@ TEST_CASE("wkt: to_wkt round-trips exactly with closed rings in stored orientati
     for (std::size_t i = 0; i < p.size(); ++i) CHECK(q.vertex(i) == p.vertex(i));
     CHECK(q.role(1) == ring_role::hole);
 
-    const polygon m = read_wkt(
-        "MULTIPOLYGON(((0 0,10 0,10 10,0 0),(1 0.5,9 8,9 0.5,1 0.5)),((20 0,30 0,30 1e-300,20 0)))");
+    const polygon m =
+        read_wkt("MULTIPOLYGON(((0 0,10 0,10 10,0 0),(1 0.5,9 8,9 0.5,1 0.5)),((20 0,30 0,30 1e-300,20 0)))");
     const std::string mt = to_wkt(m);
-    CHECK(mt == "MULTIPOLYGON(((0 0,10 0,10 10,0 0),(1 0.5,9 8,9 0.5,1 0.5)),"
-                "((20 0,30 0,30 1e-300,20 0)))");
+    CHECK(mt ==
+          "MULTIPOLYGON(((0 0,10 0,10 10,0 0),(1 0.5,9 8,9 0.5,1 0.5)),"
+          "((20 0,30 0,30 1e-300,20 0)))");
     const polygon m2 = read_wkt(mt);
     REQUIRE(m2.ring_count() == 3);
     CHECK(m2.role(2) == ring_role::outer);
@@ -238,7 +226,8 @@ TEST_CASE("wkt: an empty ring is no ring, as GEOS and JTS read it", "[io][wkt]")
         CHECK(p.ring_count() == 1);
         CHECK(p.size() == 4);
     }
-    const influence2d::polygon two = influence2d::read_wkt("MULTIPOLYGON(((0 0,4 0,4 4,0 4,0 0),EMPTY),((8 0,9 0,9 1,8 0)))");
+    const influence2d::polygon two =
+        influence2d::read_wkt("MULTIPOLYGON(((0 0,4 0,4 4,0 4,0 0),EMPTY),((8 0,9 0,9 1,8 0)))");
     CHECK(two.ring_count() == 2);
     CHECK(two.size() == 7);
 }

@@ -24,11 +24,11 @@
 #include <string>
 #include <vector>
 
-#include "influence2d/exact/certified_separation.hpp"
 #include "influence2d/exact/certified_first_contact.hpp"
 #include "influence2d/exact/certified_intersects.hpp"
-#include "influence2d/motion/first_contact.hpp"
+#include "influence2d/exact/certified_separation.hpp"
 #include "influence2d/motion/exit_distance.hpp"
+#include "influence2d/motion/first_contact.hpp"
 #include "influence2d/motion/trajectory.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/predicates/contact_time.hpp"
@@ -82,11 +82,16 @@ struct exact_scene {
 /// numbering for the polygons of these tests).
 bool features_touch(const exact_scene& s, const FT& t, const feature& fa, const feature& fb) {
     const placed_shape b = s.b_at(t);
-    if (fa.kind == feature_kind::edge && fb.kind == feature_kind::vertex) return test_exact::on_edge(s.a, fa.index, b.v[fb.index]);
-    if (fa.kind == feature_kind::vertex && fb.kind == feature_kind::edge) return test_exact::on_edge(b, fb.index, s.a.v[fa.index]);
-    if (fa.kind == feature_kind::edge && fb.kind == feature_kind::edge) return test_exact::edges_meet(s.a, fa.index, b, fb.index);
-    if (fa.kind == feature_kind::interior && fb.kind == feature_kind::vertex) return test_exact::in_region(s.a, b.v[fb.index]);
-    if (fa.kind == feature_kind::vertex && fb.kind == feature_kind::interior) return test_exact::in_region(b, s.a.v[fa.index]);
+    if (fa.kind == feature_kind::edge && fb.kind == feature_kind::vertex)
+        return test_exact::on_edge(s.a, fa.index, b.v[fb.index]);
+    if (fa.kind == feature_kind::vertex && fb.kind == feature_kind::edge)
+        return test_exact::on_edge(b, fb.index, s.a.v[fa.index]);
+    if (fa.kind == feature_kind::edge && fb.kind == feature_kind::edge)
+        return test_exact::edges_meet(s.a, fa.index, b, fb.index);
+    if (fa.kind == feature_kind::interior && fb.kind == feature_kind::vertex)
+        return test_exact::in_region(s.a, b.v[fb.index]);
+    if (fa.kind == feature_kind::vertex && fb.kind == feature_kind::interior)
+        return test_exact::in_region(b, s.a.v[fa.index]);
     return false;
 }
 
@@ -129,7 +134,8 @@ void check_translation(const polygon& a, const polygon& b, const pose& from, con
     CHECK(test_exact::regions_meet(s.a, s.b_at(ex.time)));
     CHECK(features_touch(s, ex.time, ex.static_feature, ex.moving_feature));
     if (ex.time > 0)
-        for (const FT& before : std::vector<FT>{FT(0), ex.time / 2, ex.time * FT(1023) / FT(1024), ex.time * (FT(1) - FT(std::ldexp(1.0, -40)))})
+        for (const FT& before : std::vector<FT>{FT(0), ex.time / 2, ex.time * FT(1023) / FT(1024),
+                                                ex.time * (FT(1) - FT(std::ldexp(1.0, -40)))})
             CHECK_FALSE(test_exact::regions_meet(s.a, s.b_at(before)));
     if (ce.contact) {
         CHECK(ce.time == test_exact::nearest_double(ex.time));
@@ -224,11 +230,13 @@ TEST_CASE("sweep: touching at the start, sliding, grazing and parallel edges", "
         // Vertex 0 moves along y = 4 from x = -3 to x = 2: it reaches A's
         // corner (0, 4) at t = 3 / 5 and then slides along the top edge.
         check_translation(a, tri, {-3, 4, 0}, {2, 4, 0}, t);
-        CHECK(first_contact<exact_rational>(a, tri, {-3, 4, 0}, {2, 4, 0}).time == exact_rational(3) / exact_rational(5));
+        CHECK(first_contact<exact_rational>(a, tri, {-3, 4, 0}, {2, 4, 0}).time ==
+              exact_rational(3) / exact_rational(5));
         // Collinear edges end to end: B's top edge on y = 0 slides into A's bottom edge's end.
         const polygon under = square(0, -1, 1, 0);
         check_translation(a, under, {7, 0, 0}, {-1, 0, 0}, t);
-        CHECK(first_contact<exact_rational>(a, under, {7, 0, 0}, {-1, 0, 0}).time == exact_rational(3) / exact_rational(8));
+        CHECK(first_contact<exact_rational>(a, under, {7, 0, 0}, {-1, 0, 0}).time ==
+              exact_rational(3) / exact_rational(8));
     }
     SECTION("grazing: a vertex passing exactly through a vertex") {
         // B's tip moves along y = x - 1, which meets A = [0, 1]^2 only at its
@@ -279,7 +287,8 @@ TEST_CASE("sweep: holes let B through, multipolygons are found part by part", "[
     const polygon two({ring_input{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, ring_role::outer},
                        ring_input{{{5, 0}, {6, 0}, {6, 1}, {5, 1}}, ring_role::outer}});
     check_translation(two, small, {5, 4, 0}, {5, -4, 0}, t);
-    CHECK(first_contact<exact_rational>(two, small, {5, 4, 0}, {5, -4, 0}).time == exact_rational(3) / exact_rational(8));
+    CHECK(first_contact<exact_rational>(two, small, {5, 4, 0}, {5, -4, 0}).time ==
+          exact_rational(3) / exact_rational(8));
     CHECK(t.none == 3);
 }
 
@@ -314,7 +323,8 @@ TEST_CASE("sweep: random translations of the families against the reference", "[
                    });
     INFO("worst error of the double time: " << t.worst_double);
     WARN("random translations of the families: " << t.motions << " motions, " << t.at_start << " meeting at the start, "
-         << t.later << " later, " << t.none << " never; worst error of the double time " << t.worst_double);
+                                                 << t.later << " later, " << t.none
+                                                 << " never; worst error of the double time " << t.worst_double);
     CHECK(t.at_start > t.motions / 10);
     CHECK(t.later > t.motions / 5);
     CHECK(t.none > t.motions / 20);
@@ -332,11 +342,13 @@ TEST_CASE("sweep: random multipolygons and swallowing polygons, both roles", "[s
             const test_scenes::part& pa = ma.parts[g.index(ma.parts.size())];
             const test_scenes::part& pb = mb.parts[g.index(mb.parts.size())];
             const double theta = g.chance(0.5) ? 0 : g.uniform(-3.2, 3.2);
-            const double phi = g.uniform(0, 6.283185307179586), far = 1.5 * (pa.radius + pb.radius) * g.uniform(0.2, 1.5);
+            const double phi = g.uniform(0, 6.283185307179586),
+                         far = 1.5 * (pa.radius + pb.radius) * g.uniform(0.2, 1.5);
             const point<double> start{pa.center.x + far * std::cos(phi), pa.center.y + far * std::sin(phi)};
             const point<double> end{pa.center.x - far * std::cos(phi + g.uniform(-0.5, 0.5)),
                                     pa.center.y - far * std::sin(phi + g.uniform(-0.5, 0.5))};
-            check_translation(a, b, test_scenes::aimed(pb.center, start, theta), test_scenes::aimed(pb.center, end, theta), t);
+            check_translation(a, b, test_scenes::aimed(pb.center, start, theta),
+                              test_scenes::aimed(pb.center, end, theta), t);
         }
     }
     CHECK(t.later > t.motions / 5);
@@ -419,7 +431,8 @@ void check_exit(const polygon& a, const polygon& b, const pose& q, double dx, do
         return;
     }
     CHECK(s >= 0);
-    for (const FT& k : std::vector<FT>{FT(1), FT(1) / FT(3), FT(3) / FT(4)}) CHECK(test_exact::regions_meet(pa, test_exact::moved(pb, d * (s * k))));
+    for (const FT& k : std::vector<FT>{FT(1), FT(1) / FT(3), FT(3) / FT(4)})
+        CHECK(test_exact::regions_meet(pa, test_exact::moved(pb, d * (s * k))));
     CHECK_FALSE(test_exact::regions_meet(pa, test_exact::moved(pb, d * (s + FT(std::ldexp(1.0, -40))))));
     if (s > 0) ++deep;
     const double sd = exit_distance<double>(a, b, q, dx, dy);
@@ -438,7 +451,7 @@ TEST_CASE("exit distance: through, out of the solid into a hole, touching, apart
     CHECK(exit_distance<exact_rational>(a, unit, {4, 0, 0}, 1, 0) == 0);   // touching, moving away
     CHECK(exit_distance<exact_rational>(a, unit, {4, 0, 0}, -1, 0) == 5);  // touching, moving through
     CHECK(exit_distance<exact_rational>(a, unit, {4, 0, 0}, 0, 1) == 4);   // sliding along A's side
-    CHECK(exit_distance<double>(a, unit, {6, 0, 0}, -1, 0) == 0);           // apart
+    CHECK(exit_distance<double>(a, unit, {6, 0, 0}, -1, 0) == 0);          // apart
     // From A's solid band into its hole: the interval ends there, although
     // B meets A again at the hole's far side.
     const polygon holed({ring_input{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, ring_role::outer},
@@ -479,8 +492,8 @@ TEST_CASE("exit distance: the families overlapping, any direction", "[sweep][exi
         for (std::size_t n : {8u, 64u}) {
             const polygon& a = test_families::load(f, n);
             const polygon& b = test_families::load(f, 8);
-            for (const pose& q : influence2d::random_poses(a, b, static_cast<std::size_t>(test_effort::scaled(8)), 0, 80,
-                                                           n + static_cast<std::size_t>(f) * 7)) {
+            for (const pose& q : influence2d::random_poses(a, b, static_cast<std::size_t>(test_effort::scaled(8)), 0,
+                                                           80, n + static_cast<std::size_t>(f) * 7)) {
                 const double heading = g.uniform(0, 6.283185307179586);
                 check_exit(a, b, q, std::cos(heading), std::sin(heading), deep);
                 ++poses;

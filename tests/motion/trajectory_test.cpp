@@ -7,8 +7,7 @@
 
 using namespace influence2d;
 
-TEST_CASE("trajectory: circular orbit stays gap-close without colliding, and returns to the start",
-          "[trajectory]") {
+TEST_CASE("trajectory: circular orbit stays gap-close without colliding, and returns to the start", "[trajectory]") {
     const polygon a = test_shapes::c_shape(), b = test_shapes::square(0, 0, 1);
     const double gap = 0.5;
     const auto poses = circular_trajectory(a, b, 3600, gap);

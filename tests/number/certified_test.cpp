@@ -100,12 +100,12 @@ constexpr int scales[] = {-997, -498, -66, 0, 66, 498, 997};
 double random_double(rng& r, int scale) {
     const double sgn = r.index(2) == 0 ? 1.0 : -1.0;
     switch (r.index(16)) {
-        case 0: return 0.0;
-        case 1: return sgn * static_cast<double>(1 + r.index(16));
-        case 2: return sgn * std::ldexp(static_cast<double>(1 + r.index(std::size_t{1} << 20)), -1074);
-        case 3: return sgn * std::ldexp(static_cast<double>(r.gen() >> 12), -1074);  // up to 2^52 ulps
-        case 4: return sgn * std::ldexp(static_cast<double>(1 + r.index(1024)), scale - 5);
-        default: return sgn * std::ldexp(1 + r.unit(), scale + static_cast<int>(r.index(13)) - 6);
+    case 0: return 0.0;
+    case 1: return sgn * static_cast<double>(1 + r.index(16));
+    case 2: return sgn * std::ldexp(static_cast<double>(1 + r.index(std::size_t{1} << 20)), -1074);
+    case 3: return sgn * std::ldexp(static_cast<double>(r.gen() >> 12), -1074);  // up to 2^52 ulps
+    case 4: return sgn * std::ldexp(static_cast<double>(1 + r.index(1024)), scale - 5);
+    default: return sgn * std::ldexp(1 + r.unit(), scale + static_cast<int>(r.index(13)) - 6);
     }
 }
 
@@ -129,9 +129,9 @@ private:
         const tracked b = (!pool_.empty() && r_.index(3) == 0) ? pool_[r_.index(pool_.size())] : build(depth - 1);
         tracked v;
         switch (r_.index(3)) {
-            case 0: v = a + b; break;
-            case 1: v = a - b; break;
-            default: v = a * b; break;
+        case 0: v = a + b; break;
+        case 1: v = a - b; break;
+        default: v = a * b; break;
         }
         if (r_.index(2) == 0) v = v - (r_.index(2) == 0 ? a : b);  // cancel one operand again
         t_.check(v);
@@ -294,12 +294,15 @@ TEST_CASE("certified: an exactly zero determinant of input doubles is 0", "[cert
     rng r(0x0ddba11ULL);
     for (int k = 0; k < 2000; ++k) {
         const double g = std::ldexp(1.0, -20);
-        const double ax = g * static_cast<double>(r.index(1u << 26)) - 32, ay = g * static_cast<double>(r.index(1u << 26)) - 32;
-        const double dx = g * static_cast<double>(r.index(1u << 12)), dy = g * static_cast<double>(r.index(1u << 12)) - 0.001953125;
+        const double ax = g * static_cast<double>(r.index(1u << 26)) - 32,
+                     ay = g * static_cast<double>(r.index(1u << 26)) - 32;
+        const double dx = g * static_cast<double>(r.index(1u << 12)),
+                     dy = g * static_cast<double>(r.index(1u << 12)) - 0.001953125;
         const double m = static_cast<double>(2 + r.index(14));
         const point<double> A{ax, ay}, B{ax + dx, ay + dy}, C{ax + m * dx, ay + m * dy};
         const int got = orientation(pt<certified>(A.x, A.y), pt<certified>(B.x, B.y), pt<certified>(C.x, C.y));
-        REQUIRE(got == orientation(pt<exact_rational>(A.x, A.y), pt<exact_rational>(B.x, B.y), pt<exact_rational>(C.x, C.y)));
+        REQUIRE(got ==
+                orientation(pt<exact_rational>(A.x, A.y), pt<exact_rational>(B.x, B.y), pt<exact_rational>(C.x, C.y)));
         REQUIRE(got == 0);
         const double cy = std::nextafter(C.y, 1e9);
         const int moved = orientation(pt<certified>(A.x, A.y), pt<certified>(B.x, B.y), pt<certified>(C.x, cy));
@@ -338,7 +341,7 @@ TEST_CASE("certified: orientation of input doubles at the ends of double's range
         double ax, ay, bx, by, cx, cy;
     };
     const triple cases[] = {
-        {-1e300, -1e300, 0, 0, 1e300, 1e300},                       // collinear, products overflow
+        {-1e300, -1e300, 0, 0, 1e300, 1e300},                              // collinear, products overflow
         {1e-300, 1e-300, 2e-300, 2e-300, 3e-300, 3e-300 * (1 + 0x1p-52)},  // products underflow
         {0x1p-1074, 0, 0x1p-1073, 0x1p-1074, 0, 0x1p-1074},
         {1e200, 1e-200, 1e-200, 1e200, 0, 0},
@@ -349,8 +352,7 @@ TEST_CASE("certified: orientation of input doubles at the ends of double's range
         int got = 2;  // uncertain: acceptable, the exact fallback answers it
         try {
             got = orientation(pt<certified>(c.ax, c.ay), pt<certified>(c.bx, c.by), pt<certified>(c.cx, c.cy));
-        } catch (const uncertain_sign&) {
-        }
+        } catch (const uncertain_sign&) {}
         INFO("points (" << c.ax << ", " << c.ay << "), (" << c.bx << ", " << c.by << "), (" << c.cx << ", " << c.cy
                         << "): exact " << want << ", certified " << got);
         CHECK((got == want || got == 2));

@@ -8,8 +8,8 @@
 
 #include <limits>
 
-#include "influence2d/number/cgal.hpp"
 #include "influence2d/number/certified.hpp"
+#include "influence2d/number/cgal.hpp"
 #include "influence2d/predicates/orientation.hpp"
 #include "influence2d/predicates/segments.hpp"
 #include "support/shapes.hpp"

@@ -49,7 +49,8 @@ std::size_t at_least(int n) { return static_cast<std::size_t>(count(n)); }
 /// point_segment_estimate, scaled back by a power of two, underflow to 0
 /// while the value is rounded, and the bounds built on them no longer hold.
 int random_exponent(test_random::rng& r) {
-    if (r.chance(0.1)) return r.chance(0.5) ? 900 + static_cast<int>(r.index(60)) : -980 - static_cast<int>(r.index(21));
+    if (r.chance(0.1))
+        return r.chance(0.5) ? 900 + static_cast<int>(r.index(60)) : -980 - static_cast<int>(r.index(21));
     return static_cast<int>(r.index(1201)) - 600;
 }
 
@@ -227,7 +228,8 @@ TEST_CASE("distance bounds: segment_distance_range brackets the exact distance",
         const double delta = std::ldexp(r.unit(), e - 2 - static_cast<int>(r.index(20)));
         const point<double> a{at_scale(r, e), at_scale(r, e)}, b{at_scale(r, e), at_scale(r, e)};
         const double f = r.uniform(-0.2, 1.2);
-        const point<double> u{a.x + f * (b.x - a.x) + r.uniform(-3, 3) * delta, a.y + f * (b.y - a.y) + r.uniform(-3, 3) * delta};
+        const point<double> u{a.x + f * (b.x - a.x) + r.uniform(-3, 3) * delta,
+                              a.y + f * (b.y - a.y) + r.uniform(-3, 3) * delta};
         const point<double> v{u.x + at_scale(r, e), u.y + at_scale(r, e)};
         const posed_edge s = perturbed_edge(r, u, v, delta);
         const distance_range d = segment_distance_range(a, b, s.u, s.v, s.delta);
@@ -262,8 +264,7 @@ TEST_CASE("distance bounds: segment_distance_range brackets the exact distance",
     CHECK(unknown.upper == inf);
 }
 
-TEST_CASE("distance bounds: segments_must_cross only when the exact segments cross inside both",
-          "[distance][bounds]") {
+TEST_CASE("distance bounds: segments_must_cross only when the exact segments cross inside both", "[distance][bounds]") {
     test_random::rng r(14);
     std::size_t certain = 0;
     for (int k = 0; k < count(20000); ++k) {
@@ -274,7 +275,8 @@ TEST_CASE("distance bounds: segments_must_cross only when the exact segments cro
         const point<double> m{a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)};
         const point<double> w{at_scale(r, e - static_cast<int>(r.index(60))), at_scale(r, e)};
         const point<double> q0{m.x - w.x, m.y - w.y}, q1{m.x + w.x, m.y + w.y};
-        const pose p = r.chance(0.5) ? pose{0, 0, 0} : pose{at_scale(r, e - 40), at_scale(r, e - 40), r.uniform(-1e-9, 1e-9)};
+        const pose p =
+            r.chance(0.5) ? pose{0, 0, 0} : pose{at_scale(r, e - 40), at_scale(r, e - 40), r.uniform(-1e-9, 1e-9)};
         const posed_edge s = pose_edge(q0, q1, p);
         if (!segments_must_cross(a, b, s.u, s.v, s.delta)) continue;
         ++certain;
@@ -331,7 +333,8 @@ TEST_CASE("distance bounds: the filtered closest_between_segments is the exact c
     test_random::rng r(15);
     for (int k = 0; k < count(10000); ++k) {
         const int e = random_exponent(r);
-        const point<double> a{at_scale(r, e), at_scale(r, e)}, b = r.chance(0.1) ? a : point<double>{at_scale(r, e), at_scale(r, e)};
+        const point<double> a{at_scale(r, e), at_scale(r, e)},
+            b = r.chance(0.1) ? a : point<double>{at_scale(r, e), at_scale(r, e)};
         const point<double> q0{at_scale(r, e), at_scale(r, e)}, q1{at_scale(r, e), at_scale(r, e)};
         const pose p{at_scale(r, e), at_scale(r, e), r.uniform(-4, 4)};
         // B's edge posed (delta from posing_error), or the exact ends

@@ -14,11 +14,11 @@ TEMPLATE_TEST_CASE("extended areas: capsule and band", "[extended]", INFLUENCE2D
     const NT n(1), n2(1);
     auto P = [](double x, double y) { return point<NT>{NT(x), NT(y)}; };
     CHECK(in_capsule(P(2, 1), a, b, n2));
-    CHECK(in_capsule(P(-1, 0), a, b, n2));        // exactly n from the end
+    CHECK(in_capsule(P(-1, 0), a, b, n2));               // exactly n from the end
     CHECK_FALSE(in_capsule(P(-0.75, -0.75), a, b, n2));  // 1.06 from the end
-    CHECK(in_band(P(-0.75, -0.75), a, b, n, n2));         // but inside the band's corner
-    CHECK_FALSE(in_band(P(-1.25, -0.25), a, b, n, n2));   // beyond the vertical cap
-    CHECK_FALSE(in_band(P(2, 3), a, b, n, n2));           // beyond the parallel
+    CHECK(in_band(P(-0.75, -0.75), a, b, n, n2));        // but inside the band's corner
+    CHECK_FALSE(in_band(P(-1.25, -0.25), a, b, n, n2));  // beyond the vertical cap
+    CHECK_FALSE(in_band(P(2, 3), a, b, n, n2));          // beyond the parallel
 }
 
 TEST_CASE("extended areas: the band contains the capsule", "[extended]") {

@@ -82,8 +82,8 @@ TEST_CASE("filters: square_safe_low and square_safe_high keep squares and their 
     const Q low(square_safe_low), high(square_safe_high);
     CHECK(low * low == pow2(-800));
     CHECK(high * high == pow2(800));
-    CHECK(low * low > Q(DBL_MIN));            // far from the subnormals
-    CHECK(Q(8) * high * high < Q(DBL_MAX));   // a sum of eight squares: below 2^803
+    CHECK(low * low > Q(DBL_MIN));           // far from the subnormals
+    CHECK(Q(8) * high * high < Q(DBL_MAX));  // a sum of eight squares: below 2^803
     CHECK(Q(8) * high * high <= pow2(803));
 
     // filter_length within about an ulp of the exact length at every
@@ -182,8 +182,7 @@ TEST_CASE("filters: atan2_widening covers std::atan2's error on doubles", "[filt
     CHECK(worst < 1e-15);  // "within a few ulps (below 1e-15 rad)"
 }
 
-TEST_CASE("filters: direction_trust_factor keeps a trusted offset's direction within about 1e-3 rad",
-          "[filters]") {
+TEST_CASE("filters: direction_trust_factor keeps a trusted offset's direction within about 1e-3 rad", "[filters]") {
     // An offset o of the cone index, computed with an error below
     // filter_slack * scale per coordinate, is trusted when |o|_1 exceeds
     // direction_trust_factor * filter_slack * scale; its direction is then
@@ -199,7 +198,8 @@ TEST_CASE("filters: direction_trust_factor keeps a trusted offset's direction wi
         const double bound = slack * scale;
         // At the threshold, in a random direction.
         const double phi = r.uniform(-3.14159, 3.14159);
-        const double l1 = direction_trust_factor * bound * (1 + 1e-9) / (std::fabs(std::cos(phi)) + std::fabs(std::sin(phi)));
+        const double l1 =
+            direction_trust_factor * bound * (1 + 1e-9) / (std::fabs(std::cos(phi)) + std::fabs(std::sin(phi)));
         const double ox = l1 * std::cos(phi), oy = l1 * std::sin(phi);
         if (!(std::fabs(ox) + std::fabs(oy) > direction_trust_factor * bound)) continue;
         // The exact offset: the worst corners of the error box, and a random one.
@@ -257,8 +257,9 @@ TEST_CASE("filters: may_be_within never drops a point within reach", "[filters]"
         for (int s = static_cast<int>(r.index(7)) - 3; s != 0; s += s > 0 ? -1 : 1)
             reach = std::nextafter(reach, s > 0 ? inf : 0.0);
         if (r.chance(0.2)) reach *= r.uniform(0, 2);
-        const double margin = 0x1p-45 * (std::fabs(b.x - a.x) + std::fabs(b.y - a.y) + std::fabs(p.x - a.x) +
-                                         std::fabs(p.y - a.y)) + 0x1p-1074;
+        const double margin =
+            0x1p-45 * (std::fabs(b.x - a.x) + std::fabs(b.y - a.y) + std::fabs(p.x - a.x) + std::fabs(p.y - a.y)) +
+            0x1p-1074;
         const bool within = at_least_root(Q(reach), d2);
         const bool answer = may_be_within(p, a, b, reach + margin);
         if (within) {
@@ -281,8 +282,7 @@ TEST_CASE("filters: may_be_within never drops a point within reach", "[filters]"
     CHECK(may_be_within({0, 0}, {-DBL_MAX, 0}, {DBL_MAX, 0}, 0));
 }
 
-TEST_CASE("filters: certain_side answers only sides that exact arithmetic confirms, beyond the slack",
-          "[filters]") {
+TEST_CASE("filters: certain_side answers only sides that exact arithmetic confirms, beyond the slack", "[filters]") {
     // Callers pass the direction as the rounded difference b - a; the answer
     // must hold for the exact line through a and b: the exact (b - a) x
     // (q - a) has the answered sign and exceeds the slack. Random triples at
@@ -333,8 +333,7 @@ TEST_CASE("filters: certain_side answers only sides that exact arithmetic confir
     CHECK(certain_side({0, 0}, 1, 0, {0, nan_value}, 0) == 0);
 }
 
-TEST_CASE("filters: segments_may_meet never drops segments that meet, with or without an error e",
-          "[filters]") {
+TEST_CASE("filters: segments_may_meet never drops segments that meet, with or without an error e", "[filters]") {
     test_random::rng r(9);
     using test_exact::exact_segment;
     std::size_t meeting = 0, apart = 0;
@@ -344,8 +343,8 @@ TEST_CASE("filters: segments_may_meet never drops segments that meet, with or wi
         const int e = static_cast<int>(r.index(1200)) - 600;
         const point<double> a{at_scale(r, e), at_scale(r, e)}, b{at_scale(r, e), at_scale(r, e)};
         point<double> u{at_scale(r, e), at_scale(r, e)}, v{at_scale(r, e), at_scale(r, e)};
-        if (r.chance(0.5)) u = near_line(r, a, b);  // u at the line of [a, b], often on it
-        if (r.chance(0.2)) v = near_line(r, a, b);  // both: nearly collinear
+        if (r.chance(0.5)) u = near_line(r, a, b);     // u at the line of [a, b], often on it
+        if (r.chance(0.2)) v = near_line(r, a, b);     // both: nearly collinear
         if (r.chance(0.1)) u = r.chance(0.5) ? a : b;  // a shared end
         const bool meet = CGAL::do_intersect(exact_segment(exact(a), exact(b)), exact_segment(exact(u), exact(v)));
         const bool answer = segments_may_meet(a, b, u, v, 0);
@@ -436,8 +435,8 @@ TEST_CASE("filters: box_may_be_near_line never drops a box within g of the line"
         const double g = r.chance(0.2) ? 0.0 : std::ldexp(r.unit(), s - static_cast<int>(r.index(20)));
         // Exact: the box is within g of the line when the corners are not all
         // strictly on one side, or the nearest corner is within g.
-        const point<double> corners[4] = {{bx.min_x, bx.min_y}, {bx.max_x, bx.min_y}, {bx.min_x, bx.max_y},
-                                          {bx.max_x, bx.max_y}};
+        const point<double> corners[4] = {
+            {bx.min_x, bx.min_y}, {bx.max_x, bx.min_y}, {bx.min_x, bx.max_y}, {bx.max_x, bx.max_y}};
         int side = 0;
         bool crossed = false;
         Q nearest = -1;
@@ -492,7 +491,8 @@ void check_posing_margin(int lowest, int highest, std::uint64_t seed) {
     test_random::rng r(seed);
     for (int k = 0; k < count(5000); ++k) {
         const int e = lowest + static_cast<int>(r.index(static_cast<std::size_t>(highest - lowest + 1)));
-        const int t = r.chance(0.5) ? e : lowest + static_cast<int>(r.index(static_cast<std::size_t>(highest - lowest + 1)));
+        const int t =
+            r.chance(0.5) ? e : lowest + static_cast<int>(r.index(static_cast<std::size_t>(highest - lowest + 1)));
         const point<double> q{at_scale(r, e), at_scale(r, e)};
         const pose p{at_scale(r, t), at_scale(r, t), r.uniform(-10, 10)};
         const rotation_pose rp(p);

@@ -84,8 +84,7 @@ TEST_CASE("orientation: the precision cliff, exact type against double", "[orien
         int interval_sign = 2;  // 2: uncertain_sign thrown
         try {
             interval_sign = both(ax, ay, 12.0, 12.0, 24.0, 24.0, interval{});
-        } catch (const uncertain_sign&) {
-        }
+        } catch (const uncertain_sign&) {}
         CHECK((interval_sign == exact || interval_sign == 2));
         // double gets the sign of its rounded determinant: the cliff is real
         // here, which is what makes this case a test of the exact types.
@@ -93,8 +92,7 @@ TEST_CASE("orientation: the precision cliff, exact type against double", "[orien
     }
 }
 
-TEST_CASE("orientation<double> agrees with the exact sign wherever the determinant is far from 0",
-          "[orientation]") {
+TEST_CASE("orientation<double> agrees with the exact sign wherever the determinant is far from 0", "[orientation]") {
     // The rounded determinant (b.x - a.x)(c.y - a.y) - (b.y - a.y)(c.x - a.x)
     // of doubles errs by less than 4u (|l| + |r|) + O(u^2) (u = 2^-53; l, r
     // the exact products: a rounded difference, a rounded product per term,
@@ -131,8 +129,7 @@ TEST_CASE("orientation<double> agrees with the exact sign wherever the determina
         } else {
             ++near;
         }
-        CHECK(orientation(pt<exact_rational>(ax, ay), pt<exact_rational>(bx, by), pt<exact_rational>(cx, cy)) ==
-              exact);
+        CHECK(orientation(pt<exact_rational>(ax, ay), pt<exact_rational>(bx, by), pt<exact_rational>(cx, cy)) == exact);
     }
     // Both regimes were visited.
     CHECK(far > 5000);

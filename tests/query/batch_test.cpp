@@ -10,13 +10,13 @@
 #include <cmath>
 #include <vector>
 
-#include "influence2d/exact/certified_intersects.hpp"
-#include "influence2d/query/batch.hpp"
 #include "influence2d/detect/brute_force.hpp"
-#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
+#include "influence2d/exact/certified_detector.hpp"
+#include "influence2d/exact/certified_intersects.hpp"
 #include "influence2d/motion/trajectory.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "influence2d/query/batch.hpp"
 #include "verification/families.hpp"
 
 namespace {
@@ -68,12 +68,12 @@ TEST_CASE("batch: many poses of one pair answer as the serial loop, on every thr
         CHECK(collisions < poses.size());
         for (unsigned threads : {1u, 2u, 3u, 7u, 0u}) {
             INFO(family_name(f) << ", threads " << threads);
-            const auto got_double =
-                collide_batch(poses, [&] { return detector<double>(a_double, b_double, witness); }, threads);
-            const auto got_exact =
-                collide_batch(poses, [&] { return detector<exact_rational>(a_exact, b_exact, witness); }, threads);
-            const auto got_certified =
-                collide_batch(poses, [&] { return certified_detector<detector>(a, b, witness); }, threads);
+            const auto got_double = collide_batch(
+                poses, [&] { return detector<double>(a_double, b_double, witness); }, threads);
+            const auto got_exact = collide_batch(
+                poses, [&] { return detector<exact_rational>(a_exact, b_exact, witness); }, threads);
+            const auto got_certified = collide_batch(
+                poses, [&] { return certified_detector<detector>(a, b, witness); }, threads);
             REQUIRE(got_double.size() == poses.size());
             for (std::size_t k = 0; k < poses.size(); ++k) {
                 INFO("frame " << k);
@@ -96,13 +96,15 @@ TEST_CASE("batch: one prepared A serves many B and one B many A", "[batch]") {
         const auto bs = prepare_moving<exact_rational>(b);
         const std::vector<pose> poses = random_poses(a->shape, b, 60, 40, 110, b.size());
         brute_force_detector<exact_rational> r(a->shape, b);
-        const auto got = collide_batch(poses, [&] { return detector<exact_rational>(a, bs); }, 2);
+        const auto got = collide_batch(
+            poses, [&] { return detector<exact_rational>(a, bs); }, 2);
         for (std::size_t k = 0; k < poses.size(); ++k) CHECK(got[k].collides == r.collide(poses[k]).collides);
         // B prepared once, as the moving polygon of another A.
         const polygon a2 = make_family_polygon(family::starred, 64, default_family_seed);
         brute_force_detector<exact_rational> r2(a2, b);
         detector<exact_rational> d2(prepare_static<exact_rational>(a2), bs);
-        for (const pose& p : random_poses(a2, b, 40, 40, 110, 3)) CHECK(d2.collide(p).collides == r2.collide(p).collides);
+        for (const pose& p : random_poses(a2, b, 40, 40, 110, 3))
+            CHECK(d2.collide(p).collides == r2.collide(p).collides);
     }
 }
 

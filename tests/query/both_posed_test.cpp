@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "influence2d/exact/certified_both_posed.hpp"
-#include "influence2d/query/both_posed.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "influence2d/query/both_posed.hpp"
 #include "verification/cgal_reference.hpp"
 
 namespace {
@@ -131,11 +131,11 @@ TEST_CASE("regions_meet: vertices given in double and in exact rationals", "[pos
         for (const point<double>& x : p.vertices()) v.push_back({x.x + dx, x.y + dy});
         return v;
     };
-    CHECK(regions_meet(a, a.vertices(), a, moved(a, 4, 4)));          // corner to corner
-    CHECK_FALSE(regions_meet(a, a.vertices(), a, moved(a, 4.5, 0)));  // apart
-    CHECK(regions_meet(holed, holed.vertices(), a, moved(a, 1, 1)));  // overlapping
+    CHECK(regions_meet(a, a.vertices(), a, moved(a, 4, 4)));                // corner to corner
+    CHECK_FALSE(regions_meet(a, a.vertices(), a, moved(a, 4.5, 0)));        // apart
+    CHECK(regions_meet(holed, holed.vertices(), a, moved(a, 1, 1)));        // overlapping
     CHECK_FALSE(regions_meet(holed, holed.vertices(), a, moved(a, 3, 3)));  // in the hole
-    CHECK(regions_meet(a, moved(a, 7, 7), holed, holed.vertices()));       // across the hole's corner
+    CHECK(regions_meet(a, moved(a, 7, 7), holed, holed.vertices()));        // across the hole's corner
     // Scaled by 3 in exact rationals (1/3 is no double): scaling changes no answer.
     const auto thirds = [](const std::vector<point<double>>& v) {
         std::vector<point<exact_rational>> out;

@@ -15,11 +15,11 @@
 #include <string>
 #include <vector>
 
-#include "influence2d/exact/certified_intersects.hpp"
 #include "influence2d/exact/certified_detector.hpp"
-#include "influence2d/query/intersects.hpp"
+#include "influence2d/exact/certified_intersects.hpp"
 #include "influence2d/motion/trajectory.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "influence2d/query/intersects.hpp"
 #include "verification/cgal_reference.hpp"
 #include "verification/families.hpp"
 

@@ -49,8 +49,8 @@ public:
     temp_dir() {
         static std::atomic<int> counter{0};
         const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-        path_ = fs::temp_directory_path() /
-                ("influence2d_cli_" + std::to_string(stamp) + "_" + std::to_string(counter++));
+        path_ =
+            fs::temp_directory_path() / ("influence2d_cli_" + std::to_string(stamp) + "_" + std::to_string(counter++));
         fs::create_directories(path_);
     }
     ~temp_dir() {
@@ -81,8 +81,7 @@ struct run_result {
 inline run_result run_program(const std::string& program, const temp_dir& dir, const std::string& args) {
     REQUIRE(!program.empty());
     const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-    const std::string command =
-        quote(program) + " " + args + " >" + quote(out.string()) + " 2>" + quote(err.string());
+    const std::string command = quote(program) + " " + args + " >" + quote(out.string()) + " 2>" + quote(err.string());
     const int status = std::system(command.c_str());
     run_result r;
     REQUIRE(status != -1);
@@ -97,8 +96,6 @@ inline run_result run_program(const std::string& program, const temp_dir& dir, c
 inline run_result run_cli(const temp_dir& dir, const std::string& args) { return run_program(cli_path, dir, args); }
 
 /// Runs influence2d-bench with `args` (already quoted), capturing stdout and stderr.
-inline run_result run_bench(const temp_dir& dir, const std::string& args) {
-    return run_program(bench_path, dir, args);
-}
+inline run_result run_bench(const temp_dir& dir, const std::string& args) { return run_program(bench_path, dir, args); }
 
 }  // namespace test_process

@@ -35,9 +35,7 @@ inline ring_input square_ring(double x, double y, double s, ring_role role = rin
 inline polygon square(double x, double y, double s) { return polygon({square_ring(x, y, s)}); }
 
 /// A square [0,8]^2 with the square hole [2,6]^2.
-inline polygon square_with_hole() {
-    return polygon({square_ring(0, 0, 8), square_ring(2, 2, 4, ring_role::hole)});
-}
+inline polygon square_with_hole() { return polygon({square_ring(0, 0, 8), square_ring(2, 2, 4, ring_role::hole)}); }
 
 /// A C shape whose centroid lies in its opening:
 ///   (0,6)+------+(6,6)
@@ -46,8 +44,6 @@ inline polygon square_with_hole() {
 ///        | |(1,1)
 ///        | +----+(6,1)
 ///   (0,0)+------+(6,0)
-inline polygon c_shape() {
-    return polygon({ring({{0, 0}, {6, 0}, {6, 1}, {1, 1}, {1, 5}, {6, 5}, {6, 6}, {0, 6}})});
-}
+inline polygon c_shape() { return polygon({ring({{0, 0}, {6, 0}, {6, 1}, {1, 1}, {1, 5}, {6, 5}, {6, 6}, {0, 6}})}); }
 
 }  // namespace test_shapes

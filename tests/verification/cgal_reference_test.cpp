@@ -33,9 +33,7 @@ using pts = std::vector<point<double>>;
 ring_input ring(pts vs, ring_role role = ring_role::outer) { return ring_input{std::move(vs), role}; }
 
 /// Axis-parallel rectangle, input counter-clockwise from (x0, y0).
-pts rect(double x0, double y0, double x1, double y1) {
-    return pts{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
+pts rect(double x0, double y0, double x1, double y1) { return pts{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
 
 polygon unit_square() { return polygon({ring(rect(0, 0, 1, 1))}); }
 
@@ -258,7 +256,7 @@ TEST_CASE("reference: regions by winding number, a hole outside its shell and ne
     //   +--+
     const polygon stray({ring(rect(0, 0, 1, 1)), ring(rect(4, 4, 5, 5), ring_role::hole)});
     const polygon dot({ring(rect(0, 0, 0.25, 0.25))});
-    CHECK(run(stray, dot, pose{4.5, 4.5, 0}).collides);   // inside the stray hole
+    CHECK(run(stray, dot, pose{4.5, 4.5, 0}).collides);  // inside the stray hole
     CHECK_FALSE(run(stray, dot, pose{2.5, 2.5, 0}).collides);
     CHECK(run(dot, stray, pose{-4.5, -4.5, 0}).collides);  // roles swapped: the stray hole holds A
     // Nested outer rings: winding 2 inside the inner one, 1 between: all region.
@@ -266,7 +264,8 @@ TEST_CASE("reference: regions by winding number, a hole outside its shell and ne
     CHECK(run(nested, dot, pose{1, 1, 0}).collides);
     CHECK(run(nested, dot, pose{5, 5, 0}).collides);
     // A hole inside an inner shell: winding 2 - 1 = 1, still region.
-    const polygon shell_hole({ring(rect(0, 0, 10, 10)), ring(rect(3, 3, 7, 7)), ring(rect(4, 4, 6, 6), ring_role::hole)});
+    const polygon shell_hole(
+        {ring(rect(0, 0, 10, 10)), ring(rect(3, 3, 7, 7)), ring(rect(4, 4, 6, 6), ring_role::hole)});
     CHECK(run(shell_hole, dot, pose{4.9, 4.9, 0}).collides);
     // An island inside a hole: region again; the hole around it is not.
     const polygon island({ring(rect(0, 0, 10, 10)), ring(rect(2, 2, 8, 8), ring_role::hole), ring(rect(4, 4, 6, 6))});
@@ -281,7 +280,7 @@ TEST_CASE("reference: a figure eight bounds both lobes", "[reference][region]") 
     //      /\.
     const polygon bowtie({ring(pts{{0, 0}, {2, 2}, {2, 0}, {0, 2}})});
     const polygon dot({ring(rect(0, 0, 0.1, 0.1))});
-    CHECK(run(bowtie, dot, pose{0.15, 0.95, 0}).collides);  // left lobe
-    CHECK(run(bowtie, dot, pose{1.75, 0.95, 0}).collides);  // right lobe
+    CHECK(run(bowtie, dot, pose{0.15, 0.95, 0}).collides);        // left lobe
+    CHECK(run(bowtie, dot, pose{1.75, 0.95, 0}).collides);        // right lobe
     CHECK_FALSE(run(bowtie, dot, pose{0.95, 0.15, 0}).collides);  // below the crossing
 }

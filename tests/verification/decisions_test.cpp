@@ -21,7 +21,7 @@ using interval_evaluator = evaluator<interval, exact_rational>;
 
 polygon make(std::vector<point<double>> v) { return polygon({ring_input{std::move(v), ring_role::outer}}); }
 
-const double m = 1e8;                        // magnitude of the cliff cases
+const double m = 1e8;                                // magnitude of the cliff cases
 const double below_half_ulp = std::ldexp(1.0, -28);  // lost when added to m in double (ulp 2^-26)
 
 /// A: the rectangle [m - 2, m] x [-1, 1]; its right edge (edge 1) lies on x = m.
@@ -178,8 +178,8 @@ TEST_CASE("decisions: edges collinear with the centroid: the filtered types answ
     //   +====+  O  +====+     covering signs are exactly 0
     //        |     +----+
     //        +-----+
-    const polygon a = make({{0, 0}, {4, 0}, {4, 1}, {6, 1}, {6, 2}, {4, 2}, {4, 4}, {0, 4}, {0, 3},
-                            {-2, 3}, {-2, 2}, {0, 2}});
+    const polygon a =
+        make({{0, 0}, {4, 0}, {4, 1}, {6, 1}, {6, 2}, {4, 2}, {4, 4}, {0, 4}, {0, 3}, {-2, 3}, {-2, 2}, {0, 2}});
     const polygon b = make({{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}});
     reference_decisions ref(a, b, 0);
     certified_evaluator in_certified(a, b, 0);

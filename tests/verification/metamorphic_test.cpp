@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
-#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
+#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"
 
@@ -205,7 +205,8 @@ std::size_t check_metamorphic(const std::string& label, const polygon& A, const 
     }
     {
         // The same dyadic offset for A's vertices and B's translation.
-        const point<double> o{0x1p-3 * static_cast<double>(1 + g.index(64)), -0x1p-5 * static_cast<double>(g.index(4096))};
+        const point<double> o{0x1p-3 * static_cast<double>(1 + g.index(64)),
+                              -0x1p-5 * static_cast<double>(g.index(4096))};
         const auto a_moved = translated(a, o);
         if (a_moved) {
             exact_detector d(a_moved->build(), B, with_witness());

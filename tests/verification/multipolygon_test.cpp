@@ -29,8 +29,8 @@
 #endif
 
 #include "influence2d/detect/brute_force.hpp"
-#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
+#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/exact/interval_detector.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"
@@ -62,18 +62,18 @@ scene make_scene(std::uint64_t seed, std::size_t frames, bool translations_only)
     rng g(seed);
     scene s;
     switch (seed % 3) {
-        case 0:
-            s.a = test_scenes::random_multi(g, 40);
-            s.b = test_scenes::random_swallower(g);
-            break;
-        case 1:
-            s.a = test_scenes::random_swallower(g);
-            s.b = test_scenes::random_multi(g, 40);
-            break;
-        default:
-            s.a = test_scenes::random_multi(g, 30);
-            s.b = test_scenes::random_multi(g, 12, 8);
-            break;
+    case 0:
+        s.a = test_scenes::random_multi(g, 40);
+        s.b = test_scenes::random_swallower(g);
+        break;
+    case 1:
+        s.a = test_scenes::random_swallower(g);
+        s.b = test_scenes::random_multi(g, 40);
+        break;
+    default:
+        s.a = test_scenes::random_multi(g, 30);
+        s.b = test_scenes::random_multi(g, 12, 8);
+        break;
     }
     for (std::size_t k = 0; k < frames; ++k) {
         const test_scenes::part& pa = s.a.parts[g.index(s.a.parts.size())];
@@ -232,7 +232,8 @@ TEST_CASE("random multipolygons: the exact answer equals GEOS's on valid transla
 }
 #endif  // INFLUENCE2D_HAVE_GEOS
 
-TEST_CASE("random rings under the winding rule: exact modes agree with the reference", "[multipolygon][reference][winding]") {
+TEST_CASE("random rings under the winding rule: exact modes agree with the reference",
+          "[multipolygon][reference][winding]") {
     // Overlapping and nested shells, holes outside every shell, self-crossing
     // rings, repeated vertices: the region is the winding rule's, and the
     // reference decides it on its own ray-crossing count.
@@ -262,8 +263,8 @@ TEST_CASE("random rings under the winding rule: exact modes agree with the refer
             const frame_result expected = reference.collide(p);
             std::ostringstream where;
             where.precision(17);
-            where << "static " << to_wkt(A) << "\nmoving " << to_wkt(B) << "\npose " << p.tx << ','
-                  << p.ty << ',' << p.theta;
+            where << "static " << to_wkt(A) << "\nmoving " << to_wkt(B) << "\npose " << p.tx << ',' << p.ty << ','
+                  << p.theta;
             INFO("scene " << k << ", frame " << f << "\n" << where.str());
             tally.add(expected);
             check_witnessed(exact.collide(p), expected);

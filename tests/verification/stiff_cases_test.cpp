@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "influence2d/detect/brute_force.hpp"
-#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
+#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/io/csv.hpp"
 #include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"
@@ -307,7 +307,8 @@ TEST_CASE("stiff scenes: valid, simple, counter-clockwise polygons and finite po
             CHECK(is_simple);
         }
         bool finite = true;
-        for (const pose& q : s.poses) finite = finite && std::isfinite(q.tx) && std::isfinite(q.ty) && std::isfinite(q.theta);
+        for (const pose& q : s.poses)
+            finite = finite && std::isfinite(q.tx) && std::isfinite(q.ty) && std::isfinite(q.theta);
         CHECK(finite);
     }
 }
@@ -371,7 +372,8 @@ TEST_CASE("stiff families have their promised shapes", "[verification][stiff]") 
             INFO(s.name);
             const dpoint c = s.a.centroid();
             const double spacing = std::ldexp(1.0, std::ilogb(s.magnitude) - 52);
-            const double diameter = std::max(s.a.bounds().max_x - s.a.bounds().min_x, s.a.bounds().max_y - s.a.bounds().min_y);
+            const double diameter =
+                std::max(s.a.bounds().max_x - s.a.bounds().min_x, s.a.bounds().max_y - s.a.bounds().min_y);
             CHECK(std::fabs(std::hypot(c.x, c.y) / s.magnitude - 1) < 1e-5);
             CHECK(diameter < std::max(1.2e-3, 160 * spacing));
             CHECK(diameter > 2e-4);
@@ -522,7 +524,8 @@ TEST_CASE("stiff scenes: exact answers both ways, and a change within a few ulps
         for (std::size_t i = 0; i < answers.size() && !flip; ++i)
             for (std::size_t j = i + 1; j < answers.size() && !flip; ++j)
                 flip = answers[i] != answers[j] && s.poses[i].theta == s.poses[j].theta &&
-                       ulps_apart(s.poses[i].tx, s.poses[j].tx, 8) <= 8 && ulps_apart(s.poses[i].ty, s.poses[j].ty, 8) <= 8;
+                       ulps_apart(s.poses[i].tx, s.poses[j].tx, 8) <= 8 &&
+                       ulps_apart(s.poses[i].ty, s.poses[j].ty, 8) <= 8;
         CHECK(flip);
     }
 }

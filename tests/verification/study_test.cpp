@@ -41,9 +41,9 @@ polygon make(std::vector<point<double>> v) { return polygon({ring_input{std::mov
 
 TEST_CASE("study: a tiny run writes the tables, the summary and the plots", "[verification][study][cli]") {
     const temp_dir dir;
-    const auto r = run_cli(dir, "study --families convex,touching,offset_sweep --cases 1 --frames 12 --out " +
-                                    quote((dir / "out").string()) + " --regressions " +
-                                    quote((dir / "regressions").string()));
+    const auto r =
+        run_cli(dir, "study --families convex,touching,offset_sweep --cases 1 --frames 12 --out " +
+                         quote((dir / "out").string()) + " --regressions " + quote((dir / "regressions").string()));
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     CHECK(r.out.find("collides per number type") != std::string::npos);
@@ -105,8 +105,9 @@ TEST_CASE("study: the queries' section, and no disagreement of the types that cl
 
     const std::vector<std::string> rows = lines_of(slurp(dir / "out" / "queries.csv"));
     REQUIRE(!rows.empty());
-    CHECK(rows.front() == "number_type,family,query,questions,differing,meeting_differs,features_differ,"
-                          "values_differ,measured,largest_error,median_error,ns_per_question");
+    CHECK(rows.front() ==
+          "number_type,family,query,questions,differing,meeting_differs,features_differ,"
+          "values_differ,measured,largest_error,median_error,ns_per_question");
     std::map<std::string, std::size_t> questions, differing;  // per "type query"
     for (std::size_t i = 1; i < rows.size(); ++i) {
         const std::vector<std::string> f = fields(rows[i]);
@@ -118,8 +119,7 @@ TEST_CASE("study: the queries' section, and no disagreement of the types that cl
         for (const char* query : {"separation", "first_contact"}) {
             INFO(type << " " << query);
             CHECK(questions[type + " " + query] > 0);
-            if (type == "certified" || type == "interval" || type == "exact")
-                CHECK(differing[type + " " + query] == 0);
+            if (type == "certified" || type == "interval" || type == "exact") CHECK(differing[type + " " + query] == 0);
         }
     CHECK(differing["float separation"] > 0);  // the cliff is there
     CHECK(!fs::exists(dir / "regressions"));

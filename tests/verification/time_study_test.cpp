@@ -39,8 +39,7 @@ std::string cell_of(const time_row& row) {
 }
 
 /// A tiny grid: two types, the workloads given, two sizes, short budgets.
-time_study_options tiny_grid(const std::string& type, const std::vector<std::string>& trajectories,
-                             std::size_t size) {
+time_study_options tiny_grid(const std::string& type, const std::vector<std::string>& trajectories, std::size_t size) {
     time_study_options o;
     o.types = {"convex", type};
     o.trajectories = trajectories;
@@ -122,8 +121,7 @@ TEST_CASE("time study: the registry names, parses and builds every method", "[ve
         CHECK(what.find("unknown method 'pivot2d'") != std::string::npos);
         for (const std::string& m : known_methods()) CHECK(what.find(m) != std::string::npos);
     }
-    CHECK_THROWS_AS(with_method("double-detector", "linear", a, b, [](auto&) {}),
-                    std::invalid_argument);
+    CHECK_THROWS_AS(with_method("double-detector", "linear", a, b, [](auto&) {}), std::invalid_argument);
     time_study_options o;
     o.methods = {"double", "pivot2d"};
     CHECK_THROWS_AS(run_time_study(o), std::invalid_argument);
@@ -152,7 +150,8 @@ template <bool as_bool>
 void check_run_frames() {
     std::vector<pose> poses;
     for (int k = 0; k < 10; ++k) poses.push_back({k % 3 == 0 ? 1.0 + k : -1.0 - k, static_cast<double>(k), 0});
-    for (const std::size_t stride : {std::size_t{1}, std::size_t{3}, std::size_t{4}, std::size_t{10}, std::size_t{11}}) {
+    for (const std::size_t stride :
+         {std::size_t{1}, std::size_t{3}, std::size_t{4}, std::size_t{10}, std::size_t{11}}) {
         INFO("stride " << stride);
         recording_form<as_bool> d;
         std::vector<char> answers{1, 1, 1};  // cleared by the run
@@ -258,8 +257,8 @@ TEST_CASE("time study: every method on the same frames, answers against the refe
     for (const auto& [cell, methods] : methods_per_cell) {
         INFO(cell);
         // Box2D takes only the convex 8-gons; every other method every cell.
-        const bool box2d = method_available("box2d") && cell.rfind("convex/", 0) == 0 &&
-                           cell.find("/8x8") != std::string::npos;
+        const bool box2d =
+            method_available("box2d") && cell.rfind("convex/", 0) == 0 && cell.find("/8x8") != std::string::npos;
         CHECK(methods.size() == methods_on("circular") - (box2d || !method_available("box2d") ? 0 : 1));
         CHECK(methods.count("box2d") == (box2d ? 1u : 0u));
     }
@@ -315,8 +314,8 @@ TEST_CASE("time study: random and one-shot rows, no disagreement, the preparatio
     for (const auto& [cell, methods] : methods_per_cell) {
         INFO(cell);
         const std::string workload = cell.find("/one-shot/") != std::string::npos ? "one-shot" : "random";
-        const bool box2d = method_available("box2d") && cell.rfind("convex/", 0) == 0 &&
-                           cell.find("/8x8") != std::string::npos;
+        const bool box2d =
+            method_available("box2d") && cell.rfind("convex/", 0) == 0 && cell.find("/8x8") != std::string::npos;
         CHECK(methods.size() == methods_on(workload) - (box2d || !method_available("box2d") ? 0 : 1));
         CHECK(methods.count("double") == 1);
         CHECK(methods.count("certified") == 1);
@@ -328,9 +327,10 @@ TEST_CASE("time study: random and one-shot rows, no disagreement, the preparatio
 TEST_CASE("time study: the command writes the table, the summary and the heat maps",
           "[verification][bench][cli][time_study]") {
     const temp_dir dir;
-    const auto r = run_bench(dir, "--quick --types convex --sizes 8,16 --trajectories linear,one-shot "
-                                  "--random-frames 200 --out " +
-                                      quote((dir / "out").string()));
+    const auto r = run_bench(dir,
+                             "--quick --types convex --sizes 8,16 --trajectories linear,one-shot "
+                             "--random-frames 200 --out " +
+                                 quote((dir / "out").string()));
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     CHECK(r.out.find("## Targets") != std::string::npos);

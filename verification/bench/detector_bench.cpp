@@ -23,8 +23,8 @@
 #include <vector>
 
 #include "bench_common.hpp"
-#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/detect/detector.hpp"
+#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/exact/interval_detector.hpp"
 #include "influence2d/motion/trajectory.hpp"
 
@@ -47,8 +47,8 @@ struct scene {
 };
 
 const std::vector<scene>& scenes() {
-    static const std::vector<scene> all = {{"circular", 64, 64},  {"linear", 64, 64},  {"circular", 1024, 8},
-                                           {"linear", 1024, 8},   {"circular", 8, 1024}, {"linear", 8, 1024}};
+    static const std::vector<scene> all = {{"circular", 64, 64}, {"linear", 64, 64},    {"circular", 1024, 8},
+                                           {"linear", 1024, 8},  {"circular", 8, 1024}, {"linear", 8, 1024}};
     return all;
 }
 
@@ -93,8 +93,8 @@ void bench_scene(benchmark::State& state, const scene& s) {
     const double frames = static_cast<double>(poses.size());
     state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(poses.size()));
     state.counters["frames"] = frames;
-    state.counters["time_per_frame"] = benchmark::Counter(
-        frames, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+    state.counters["time_per_frame"] =
+        benchmark::Counter(frames, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
     state.counters["collisions"] = static_cast<double>(collisions) / passes;
     state.counters["exact_frames"] = static_cast<double>(exact_frames_of(det)) / passes;
 }

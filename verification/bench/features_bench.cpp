@@ -58,16 +58,14 @@ void register_scene(const features_scene& s) {
     };
     detector_options witness;
     witness.witness = true;
-    add("minimal", [](benchmark::State& st, const features_scene& sc) {
-        run_passes<detector<NT, minimal_features>>(st, sc, {});
-    });
+    add("minimal",
+        [](benchmark::State& st, const features_scene& sc) { run_passes<detector<NT, minimal_features>>(st, sc, {}); });
     add("coherence", [](benchmark::State& st, const features_scene& sc) {
         run_passes<detector<NT, feature_set<features::coherence>>>(st, sc, {});
     });
     add("all_unused", [](benchmark::State& st, const features_scene& sc) { run_passes<detector<NT>>(st, sc, {}); });
-    add("all_witness", [witness](benchmark::State& st, const features_scene& sc) {
-        run_passes<detector<NT>>(st, sc, witness);
-    });
+    add("all_witness",
+        [witness](benchmark::State& st, const features_scene& sc) { run_passes<detector<NT>>(st, sc, witness); });
 }
 
 }  // namespace

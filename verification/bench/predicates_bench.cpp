@@ -25,10 +25,10 @@
 
 #include "bench_common.hpp"
 #include "influence2d/core/pose.hpp"
-#include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/influence_areas.hpp"
 #include "influence2d/predicates/orientation.hpp"
 #include "influence2d/predicates/segments.hpp"
+#include "influence2d/scene/prepared.hpp"
 
 namespace influence2d::bench {
 namespace {
@@ -51,7 +51,8 @@ struct predicate_inputs {
         auto unit = [&] { return std::ldexp(static_cast<double>(gen() >> 11), -53); };
         const box& ab = a.bounds();
         auto random_pose = [&] {
-            return rotation_pose(pose{ab.min_x + (ab.max_x - ab.min_x) * unit(), ab.min_y + (ab.max_y - ab.min_y) * unit(),
+            return rotation_pose(pose{ab.min_x + (ab.max_x - ab.min_x) * unit(),
+                                      ab.min_y + (ab.max_y - ab.min_y) * unit(),
                                       6.283185307179586 * unit() - 3.141592653589793});
         };
         const auto& cov = scene->covering;
@@ -102,9 +103,8 @@ void run_inputs(benchmark::State& state, Body&& body) {
         }
     }
     state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * input_count));
-    state.counters["per_call"] =
-        benchmark::Counter(static_cast<double>(input_count), benchmark::Counter::kIsIterationInvariantRate |
-                                                                 benchmark::Counter::kInvert);
+    state.counters["per_call"] = benchmark::Counter(
+        static_cast<double>(input_count), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
     state.counters["uncertain"] = static_cast<double>(uncertain);
 }
 

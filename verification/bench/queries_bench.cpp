@@ -30,12 +30,12 @@
 #include <vector>
 
 #include "bench_common.hpp"
-#include "influence2d/exact/certified_separation.hpp"
-#include "influence2d/exact/certified_first_contact.hpp"
 #include "influence2d/distance/separation.hpp"
+#include "influence2d/exact/certified_first_contact.hpp"
+#include "influence2d/exact/certified_separation.hpp"
+#include "influence2d/influence/bounds.hpp"
 #include "influence2d/motion/first_contact.hpp"
 #include "influence2d/motion/trajectory.hpp"
-#include "influence2d/influence/bounds.hpp"
 #include "verification/peers.hpp"
 
 #if INFLUENCE2D_HAVE_BOX2D
@@ -54,8 +54,8 @@ struct cell {
 };
 
 const std::vector<cell>& cells() {
-    static const std::vector<cell> all = {{"convex", 8, 8},       {"contour", 64, 64},      {"contour", 1024, 8},
-                                          {"hole", 1024, 64},     {"starred", 256, 256},    {"irregular", 1024, 1024}};
+    static const std::vector<cell> all = {{"convex", 8, 8},   {"contour", 64, 64},   {"contour", 1024, 8},
+                                          {"hole", 1024, 64}, {"starred", 256, 256}, {"irregular", 1024, 1024}};
     return all;
 }
 

@@ -5,6 +5,7 @@
 
 #include <type_traits>
 
+#include <boost/geometry/core/access.hpp>
 #include <boost/geometry/core/coordinate_dimension.hpp>
 #include <boost/geometry/core/coordinate_system.hpp>
 #include <boost/geometry/core/coordinate_type.hpp>
@@ -13,7 +14,6 @@
 #include <boost/geometry/core/interior_rings.hpp>
 #include <boost/geometry/core/tag.hpp>
 #include <boost/geometry/core/tags.hpp>
-#include <boost/geometry/core/access.hpp>
 
 #include "influence2d/adapters/traits.hpp"
 
@@ -26,10 +26,10 @@ struct has_bg_tag : std::is_same<typename boost::geometry::traits::tag<std::remo
 
 template <class P>
 struct is_bg_plane_point
-    : std::bool_constant<boost::geometry::dimension<P>::value == 2 &&
-                         std::is_same_v<typename boost::geometry::coordinate_system<P>::type,
-                                        boost::geometry::cs::cartesian> &&
-                         std::is_arithmetic_v<typename boost::geometry::coordinate_type<P>::type>> {};
+    : std::bool_constant<
+          boost::geometry::dimension<P>::value == 2 &&
+          std::is_same_v<typename boost::geometry::coordinate_system<P>::type, boost::geometry::cs::cartesian> &&
+          std::is_arithmetic_v<typename boost::geometry::coordinate_type<P>::type>> {};
 
 /// A Boost.Geometry point model this adapter reads: two Cartesian
 /// coordinates of an arithmetic type, and not one of the types traits.hpp

@@ -23,9 +23,13 @@ namespace cgal_adapter_detail {
 /// The exact value behind a CGAL number: the number itself, or for a lazy
 /// number (Epeck's field type) its exact value, computed if need be.
 template <class FT>
-const FT& exact_value(const FT& v) { return v; }
+const FT& exact_value(const FT& v) {
+    return v;
+}
 template <class ET>
-const ET& exact_value(const CGAL::Lazy_exact_nt<ET>& v) { return v.exact(); }
+const ET& exact_value(const CGAL::Lazy_exact_nt<ET>& v) {
+    return v.exact();
+}
 
 /// The double equal to a kernel coordinate, or invalid_input when there is
 /// none. A floating-point field type (Epick's double, float) converts as is,
@@ -112,9 +116,8 @@ polygon make_polygon(const CGAL::Polygon_with_holes_2<K, C>& poly) {
 /// range of them, as CGAL's Boolean operations output): each part's outer
 /// boundary, then its holes, numbered on across the parts. Parts may touch.
 /// An empty range is refused with invalid_input.
-template <class Range, std::enable_if_t<cgal_adapter_detail::is_cgal_polygon_with_holes<
-                                            adapters::element_t<Range>>::value,
-                                        int> = 0>
+template <class Range,
+          std::enable_if_t<cgal_adapter_detail::is_cgal_polygon_with_holes<adapters::element_t<Range>>::value, int> = 0>
 polygon make_polygon(const Range& parts) {
     return adapters::build_from_parts(parts);
 }

@@ -242,10 +242,14 @@ public:
     }
     /// Adds an outer boundary.
     template <class Ring>
-    polygon_builder& add_outer(const Ring& ring) { return add_ring(ring, ring_role::outer); }
+    polygon_builder& add_outer(const Ring& ring) {
+        return add_ring(ring, ring_role::outer);
+    }
     /// Adds a hole.
     template <class Ring>
-    polygon_builder& add_hole(const Ring& ring) { return add_ring(ring, ring_role::hole); }
+    polygon_builder& add_hole(const Ring& ring) {
+        return add_ring(ring, ring_role::hole);
+    }
     /// Adds every ring of a range of rings as a hole.
     template <class Rings>
     polygon_builder& add_holes(const Rings& rings) {
@@ -319,8 +323,7 @@ polygon make_polygon(const Ring& outer) {
 /// (rings 1, 2, ... in range order). Holes are meant to lie inside the outer
 /// ring; nothing checks it. See polygon_builder for numbering and errors.
 template <class Ring, class Holes,
-          std::enable_if_t<adapters::is_ring_candidate<Ring>::value && adapters::is_range<Holes>::value,
-                           int> = 0>
+          std::enable_if_t<adapters::is_ring_candidate<Ring>::value && adapters::is_range<Holes>::value, int> = 0>
 polygon make_polygon(const Ring& outer, const Holes& holes) {
     static_assert(adapters::ring_check<Ring>::value && adapters::ring_range_check<Holes>::value);
     return polygon_builder().add_outer(outer).add_holes(holes).build();

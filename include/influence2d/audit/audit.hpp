@@ -16,8 +16,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
-#include <tuple>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -34,17 +34,17 @@ namespace influence2d {
 /// followed by holes; the library keeps the others as they are
 /// (reversed_orientation: reversed; an empty ring: ignored).
 enum class finding_kind {
-    empty_ring,             ///< a ring without points (WKT `EMPTY` or `()`)
-    unclosed_ring,          ///< the last point differs from the first (or the ring has one point)
-    non_finite,             ///< a coordinate is NaN or infinite
-    too_few_vertices,       ///< a ring with fewer than three distinct vertices
-    repeated_vertex,        ///< a vertex equals the next: a zero-length edge
-    near_repeated_vertex,   ///< an edge shorter than the tolerance (audit_options)
-    collinear_run,          ///< a vertex on the line between its neighbours, going on straight
-    spike,                  ///< the ring turns back at a vertex: a spike of zero width
-    self_intersection,      ///< two edges of one ring, not adjacent, meet (touching counts)
-    rings_meet,             ///< edges of two rings meet (touching counts)
-    reversed_orientation,   ///< a clockwise outer ring or a counter-clockwise hole
+    empty_ring,            ///< a ring without points (WKT `EMPTY` or `()`)
+    unclosed_ring,         ///< the last point differs from the first (or the ring has one point)
+    non_finite,            ///< a coordinate is NaN or infinite
+    too_few_vertices,      ///< a ring with fewer than three distinct vertices
+    repeated_vertex,       ///< a vertex equals the next: a zero-length edge
+    near_repeated_vertex,  ///< an edge shorter than the tolerance (audit_options)
+    collinear_run,         ///< a vertex on the line between its neighbours, going on straight
+    spike,                 ///< the ring turns back at a vertex: a spike of zero width
+    self_intersection,     ///< two edges of one ring, not adjacent, meet (touching counts)
+    rings_meet,            ///< edges of two rings meet (touching counts)
+    reversed_orientation,  ///< a clockwise outer ring or a counter-clockwise hole
     /// A hole that no outer ring winds around (the other rings' winding
     /// number there is 0): inside it the winding number is -1, so its inside
     /// belongs to the region (see polygon). A hole inside another hole is one.
@@ -67,26 +67,26 @@ enum class finding_kind {
 /// a string literal, never freed.
 inline const char* finding_name(finding_kind k) {
     switch (k) {
-        case finding_kind::empty_ring: return "empty_ring";
-        case finding_kind::unclosed_ring: return "unclosed_ring";
-        case finding_kind::non_finite: return "non_finite";
-        case finding_kind::too_few_vertices: return "too_few_vertices";
-        case finding_kind::repeated_vertex: return "repeated_vertex";
-        case finding_kind::near_repeated_vertex: return "near_repeated_vertex";
-        case finding_kind::collinear_run: return "collinear_run";
-        case finding_kind::spike: return "spike";
-        case finding_kind::self_intersection: return "self_intersection";
-        case finding_kind::rings_meet: return "rings_meet";
-        case finding_kind::reversed_orientation: return "reversed_orientation";
-        case finding_kind::hole_outside_shell: return "hole_outside_shell";
-        case finding_kind::nested_ring: return "nested_ring";
-        case finding_kind::non_manifold_vertex: return "non_manifold_vertex";
-        case finding_kind::zero_area: return "zero_area";
-        case finding_kind::near_zero_area: return "near_zero_area";
-        case finding_kind::centroid_on_edge_line: return "centroid_on_edge_line";
-        case finding_kind::inexact_in_float: return "inexact_in_float";
-        case finding_kind::beyond_float: return "beyond_float";
-        case finding_kind::beyond_double_products: return "beyond_double_products";
+    case finding_kind::empty_ring: return "empty_ring";
+    case finding_kind::unclosed_ring: return "unclosed_ring";
+    case finding_kind::non_finite: return "non_finite";
+    case finding_kind::too_few_vertices: return "too_few_vertices";
+    case finding_kind::repeated_vertex: return "repeated_vertex";
+    case finding_kind::near_repeated_vertex: return "near_repeated_vertex";
+    case finding_kind::collinear_run: return "collinear_run";
+    case finding_kind::spike: return "spike";
+    case finding_kind::self_intersection: return "self_intersection";
+    case finding_kind::rings_meet: return "rings_meet";
+    case finding_kind::reversed_orientation: return "reversed_orientation";
+    case finding_kind::hole_outside_shell: return "hole_outside_shell";
+    case finding_kind::nested_ring: return "nested_ring";
+    case finding_kind::non_manifold_vertex: return "non_manifold_vertex";
+    case finding_kind::zero_area: return "zero_area";
+    case finding_kind::near_zero_area: return "near_zero_area";
+    case finding_kind::centroid_on_edge_line: return "centroid_on_edge_line";
+    case finding_kind::inexact_in_float: return "inexact_in_float";
+    case finding_kind::beyond_float: return "beyond_float";
+    case finding_kind::beyond_double_products: return "beyond_double_products";
     }
     return "unknown";
 }
@@ -97,23 +97,23 @@ inline const char* finding_name(finding_kind k) {
 struct finding {
     /// A finding of kind k at ring 0, everything else empty.
     explicit finding(finding_kind k) : kind(k) {}
-    finding_kind kind;                       ///< what it is
-    std::size_t ring = 0;                    ///< the ring, numbered in input order from 0
-    std::optional<std::size_t> vertex;       ///< or the edge, for edge findings; none for ring findings
-    std::optional<std::size_t> other_ring;   ///< for findings between two places
-    std::optional<std::size_t> other_vertex; ///< the other place's vertex or edge
-    point<double> at{};                      ///< a point of the finding
-    std::string what;                        ///< one line
-    std::string effect;                      ///< what the library does
-    bool rejects = false;                    ///< the library refuses the input for it
+    finding_kind kind;                        ///< what it is
+    std::size_t ring = 0;                     ///< the ring, numbered in input order from 0
+    std::optional<std::size_t> vertex;        ///< or the edge, for edge findings; none for ring findings
+    std::optional<std::size_t> other_ring;    ///< for findings between two places
+    std::optional<std::size_t> other_vertex;  ///< the other place's vertex or edge
+    point<double> at{};                       ///< a point of the finding
+    std::string what;                         ///< one line
+    std::string effect;                       ///< what the library does
+    bool rejects = false;                     ///< the library refuses the input for it
 };
 
 /// What audit_rings found, and whether the library accepts the rings.
 struct audit_report {
     std::vector<finding> findings;  ///< at most audit_options::max_per_kind of each kind
     std::size_t total = 0;          ///< findings of every kind, listed or not
-    bool accepted = true;    ///< polygon(...) accepts the rings
-    std::string rejection;   ///< its message when it does not
+    bool accepted = true;           ///< polygon(...) accepts the rings
+    std::string rejection;          ///< its message when it does not
     /// The number of rings.
     std::size_t rings = 0, vertices = 0;  ///< the number of vertices of all rings, closing points not counted
 };
@@ -184,10 +184,12 @@ void meeting_edges(const std::vector<std::vector<point<double>>>& rings, Visit v
     std::sort(edges.begin(), edges.end(), [](const edge_ref& p, const edge_ref& q) { return p.min_x < q.min_x; });
     std::vector<const edge_ref*> active;
     for (const edge_ref& e : edges) {
-        active.erase(std::remove_if(active.begin(), active.end(), [&](const edge_ref* f) { return f->max_x < e.min_x; }),
-                     active.end());
+        active.erase(
+            std::remove_if(active.begin(), active.end(), [&](const edge_ref* f) { return f->max_x < e.min_x; }),
+            active.end());
         for (const edge_ref* f : active) {
-            if (f->ring == e.ring && (adjacent(rings[e.ring], f->index, e.index) || adjacent(rings[e.ring], e.index, f->index)))
+            if (f->ring == e.ring &&
+                (adjacent(rings[e.ring], f->index, e.index) || adjacent(rings[e.ring], e.index, f->index)))
                 continue;
             if (std::max(f->a.y, f->b.y) < std::min(e.a.y, e.b.y) || std::max(e.a.y, e.b.y) < std::min(f->a.y, f->b.y))
                 continue;
@@ -216,7 +218,8 @@ public:
     void add(finding f) {
         if (f.rejects && report.accepted) refuse(f.what);
         ++report.total;
-        if (per_kind_[static_cast<std::size_t>(f.kind)]++ < options.max_per_kind) report.findings.push_back(std::move(f));
+        if (per_kind_[static_cast<std::size_t>(f.kind)]++ < options.max_per_kind)
+            report.findings.push_back(std::move(f));
     }
     /// Marks the input refused with this message.
     void refuse(std::string message) {
@@ -287,8 +290,8 @@ inline ring_set read_rings(collector& c, const std::vector<wkt_ring>& input) {
         }
         for (std::size_t v = 0; v < pts.size(); ++v)
             if (!std::isfinite(pts[v].x) || !std::isfinite(pts[v].y)) {
-                c.add_at_vertex(finding_kind::non_finite, k, v, pts[v], "coordinate is not a finite number",
-                                "refused", true);
+                c.add_at_vertex(finding_kind::non_finite, k, v, pts[v], "coordinate is not a finite number", "refused",
+                                true);
                 ok = false;
             }
         const bool closed = pts.front() == pts.back() && pts.size() > 1;
@@ -375,8 +378,7 @@ inline int check_area_and_orientation(collector& c, std::size_t k, const std::ve
                       "the ring's signed area is zero: lobes of opposite turn cancel (a figure eight)",
                       "kept in its input orientation: each lobe has winding number +1 or -1 and is region; only "
                       "the signed sum is zero");
-    } else if (std::fabs(area) / 2 <=
-               tolerance * (static_cast<long double>(w) * w + static_cast<long double>(h) * h)) {
+    } else if (std::fabs(area) / 2 <= tolerance * (static_cast<long double>(w) * w + static_cast<long double>(h) * h)) {
         c.add_at_ring(finding_kind::near_zero_area, k, ring[0],
                       "the ring's area is almost zero against its size (the square of its box's diagonal)",
                       "kept as it is; its orientation is decided exactly");
@@ -413,13 +415,15 @@ inline meetings check_meeting_edges(collector& c, const ring_set& set) {
         g.at = f.a;
         if (f.ring == e.ring) {
             g.what = "edges " + std::to_string(f.index) + " and " + std::to_string(e.index) + " meet";
-            g.effect = "kept: the region is where the rings' winding numbers (outer +1, hole -1) do not sum to "
-                       "0, and every edge is boundary";
+            g.effect =
+                "kept: the region is where the rings' winding numbers (outer +1, hole -1) do not sum to "
+                "0, and every edge is boundary";
         } else {
             g.what = "edge " + std::to_string(f.index) + " of ring " + std::to_string(live_index[f.ring]) +
                      " meets edge " + std::to_string(e.index) + " of ring " + std::to_string(live_index[e.ring]);
-            g.effect = "kept: rings may touch or cross; the region is where the rings' winding numbers (outer +1, "
-                       "hole -1) do not sum to 0, and every edge is boundary";
+            g.effect =
+                "kept: rings may touch or cross; the region is where the rings' winding numbers (outer +1, "
+                "hole -1) do not sum to 0, and every edge is boundary";
         }
         c.add(g);
     });
@@ -600,7 +604,8 @@ inline audit_report audit_rings(const std::vector<wkt_ring>& input, const audit_
     const meetings m = check_meeting_edges(c, set);
     check_nesting(c, input, set, stored_turn, m);
     check_non_manifold_vertices(c, set);
-    if (const std::optional<polygon> whole = library_polygon(c, input, set)) check_centroid_on_edge_lines(c, *whole, set);
+    if (const std::optional<polygon> whole = library_polygon(c, input, set))
+        check_centroid_on_edge_lines(c, *whole, set);
     check_number_ranges(c, set);
     return c.report;
 }

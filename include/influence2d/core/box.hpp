@@ -32,14 +32,10 @@ struct box {
 
     /// The box grown by `margin` on every side (shrunk when it is negative);
     /// a default box stays empty.
-    box inflated(double margin) const {
-        return box{min_x - margin, min_y - margin, max_x + margin, max_y + margin};
-    }
+    box inflated(double margin) const { return box{min_x - margin, min_y - margin, max_x + margin, max_y + margin}; }
 
     /// Whether p lies in the closed box (on a side counts); false for NaN.
-    bool contains(const point<double>& p) const {
-        return p.x >= min_x && p.x <= max_x && p.y >= min_y && p.y <= max_y;
-    }
+    bool contains(const point<double>& p) const { return p.x >= min_x && p.x <= max_x && p.y >= min_y && p.y <= max_y; }
 
     /// Whether b lies within this box (an empty b does).
     bool contains(const box& b) const {

@@ -20,11 +20,15 @@ struct point {
 /// for floating T, +0 equals -0 and a NaN coordinate equals nothing; for
 /// `certified` and `interval` it throws when the comparison is undecided.
 template <class T>
-bool operator==(const point<T>& a, const point<T>& b) { return a.x == b.x && a.y == b.y; }
+bool operator==(const point<T>& a, const point<T>& b) {
+    return a.x == b.x && a.y == b.y;
+}
 
 /// The negation of `a == b`.
 template <class T>
-bool operator!=(const point<T>& a, const point<T>& b) { return !(a == b); }
+bool operator!=(const point<T>& a, const point<T>& b) {
+    return !(a == b);
+}
 
 /// The point of doubles p in NT, coordinate by coordinate
 /// (number_traits::from_double: exact in every number type of the library

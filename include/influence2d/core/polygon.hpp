@@ -178,8 +178,7 @@ private:
         const long double n = static_cast<long double>(vertices_.size());
         if (a2 == 0 || !std::isfinite(static_cast<double>(cx / (3 * a2))))
             return point<double>{static_cast<double>(o.x + mx / n), static_cast<double>(o.y + my / n)};
-        return point<double>{static_cast<double>(o.x + cx / (3 * a2)),
-                             static_cast<double>(o.y + cy / (3 * a2))};
+        return point<double>{static_cast<double>(o.x + cx / (3 * a2)), static_cast<double>(o.y + cy / (3 * a2))};
     }
 
     std::vector<point<double>> vertices_;

@@ -39,8 +39,7 @@ struct rotation_pose {
     /// the check is one comparison: x - x is 0 for every finite x and NaN
     /// otherwise, so the sum of the three differences is 0 exactly when all
     /// three are finite.
-    explicit rotation_pose(const pose& p)
-        : c(std::cos(p.theta)), s(std::sin(p.theta)), tx(p.tx), ty(p.ty) {
+    explicit rotation_pose(const pose& p) : c(std::cos(p.theta)), s(std::sin(p.theta)), tx(p.tx), ty(p.ty) {
         if (!((p.tx - p.tx) + (p.ty - p.ty) + (p.theta - p.theta) == 0)) refuse(p);
     }
 
@@ -53,15 +52,17 @@ struct rotation_pose {
         using tr = number_traits<NT>;
         const NT cx = tr::from_double(c), sx = tr::from_double(s);
         const NT qx = tr::from_double(q.x), qy = tr::from_double(q.y);
-        return point<NT>{cx * qx - sx * qy + tr::from_double(tx),
-                         sx * qx + cx * qy + tr::from_double(ty)};
+        return point<NT>{cx * qx - sx * qy + tr::from_double(tx), sx * qx + cx * qy + tr::from_double(ty)};
     }
 
 private:
     [[noreturn]] static void refuse(const pose& p) {
         const char* name = !std::isfinite(p.tx) ? "tx" : !std::isfinite(p.ty) ? "ty" : "theta";
         const double value = !std::isfinite(p.tx) ? p.tx : !std::isfinite(p.ty) ? p.ty : p.theta;
-        throw invalid_input(std::string("pose: ") + name + " is " + (std::isnan(value) ? "NaN" : value > 0 ? "+infinity" : "-infinity") +
+        throw invalid_input(std::string("pose: ") + name + " is " +
+                            (std::isnan(value) ? "NaN"
+                             : value > 0       ? "+infinity"
+                                               : "-infinity") +
                             ", not a finite number");
     }
 };

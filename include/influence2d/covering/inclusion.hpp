@@ -31,8 +31,7 @@ enum class location {
 /// count is the mean of the counts on the two sides of a shared side), and P is
 /// inside when it is not zero. Precondition: P != O.
 template <class NT>
-location feito_locate(const polygon& shape, const std::vector<point<NT>>& v, const point<NT>& o,
-                      const point<NT>& p) {
+location feito_locate(const polygon& shape, const std::vector<point<NT>>& v, const point<NT>& o, const point<NT>& p) {
     INFLUENCE2D_ASSERT(v.size() == shape.size(), "the vertices in NT are not the polygon's");
     long long doubled = 0;
     for (std::size_t i = 0; i < shape.size(); ++i) {
@@ -59,8 +58,7 @@ location feito_locate(const polygon& shape, const std::vector<point<NT>>& v, con
 /// is outside). Signs of orientations only: exact when NT is. Time linear in
 /// the number of edges; influence_areas::locate visits only nearby cones.
 template <class NT>
-location locate(const polygon& shape, const std::vector<point<NT>>& v, const point<NT>& o,
-                const point<NT>& p) {
+location locate(const polygon& shape, const std::vector<point<NT>>& v, const point<NT>& o, const point<NT>& p) {
     return feito_locate(shape, v, same_point(p, o) ? v.front() : o, p);
 }
 

@@ -9,9 +9,9 @@
 #include "influence2d/detect/containment.hpp"
 #include "influence2d/detect/pairs.hpp"
 #include "influence2d/detect/result.hpp"
+#include "influence2d/predicates/segments.hpp"
 #include "influence2d/scene/posed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
-#include "influence2d/predicates/segments.hpp"
 
 namespace influence2d {
 
@@ -30,8 +30,7 @@ public:
     /// `options.distance` (finite and >= 0; not checked here) and
     /// `options.witness`; the other options concern filters and are ignored.
     /// A filtered NT may throw uncertain_sign here.
-    brute_force_detector(const polygon& static_polygon, const polygon& moving_polygon,
-                         detector_options options = {})
+    brute_force_detector(const polygon& static_polygon, const polygon& moving_polygon, detector_options options = {})
         : a_(std::make_shared<const static_scene<NT>>(static_polygon)), b_(moving_polygon), options_(options) {}
 
     /// collides = some static edge and moving edge are within d (meet, for

@@ -15,27 +15,27 @@
 #include "influence2d/detect/features.hpp"
 #include "influence2d/detect/pairs.hpp"
 #include "influence2d/detect/result.hpp"
-#include "influence2d/scene/posed_polygon.hpp"
-#include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/edge_grid.hpp"
 #include "influence2d/influence/edge_tree.hpp"
 #include "influence2d/predicates/extended_area.hpp"
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/predicates/segments.hpp"
+#include "influence2d/scene/posed_polygon.hpp"
+#include "influence2d/scene/prepared.hpp"
 
 namespace influence2d {
 
 /// Counters of the work a detector did, for studies of its filters.
 struct detector_statistics {
-    std::size_t frames = 0;             ///< frames asked (calls of collide)
-    std::size_t circle_rejections = 0;  ///< frames answered by the bounding circles
-    std::size_t candidate_rebuilds = 0; ///< frames that gathered candidates anew
-    std::size_t candidate_edges = 0;    ///< static edges inside their extended area
-    std::size_t disc_rejections = 0;    ///< frames whose moving edges all keep off A's circle
-    std::size_t segment_tests = 0;      ///< exact segment-pair tests
-    std::size_t containment_tests = 0;  ///< frames that ran the inclusion tests
-    std::size_t tree_frames = 0;        ///< frames whose pairs came from A's edge tree
-    std::size_t jump_frames = 0;        ///< frames with no coherence to use (both edge trees, or every pair)
+    std::size_t frames = 0;              ///< frames asked (calls of collide)
+    std::size_t circle_rejections = 0;   ///< frames answered by the bounding circles
+    std::size_t candidate_rebuilds = 0;  ///< frames that gathered candidates anew
+    std::size_t candidate_edges = 0;     ///< static edges inside their extended area
+    std::size_t disc_rejections = 0;     ///< frames whose moving edges all keep off A's circle
+    std::size_t segment_tests = 0;       ///< exact segment-pair tests
+    std::size_t containment_tests = 0;   ///< frames that ran the inclusion tests
+    std::size_t tree_frames = 0;         ///< frames whose pairs came from A's edge tree
+    std::size_t jump_frames = 0;         ///< frames with no coherence to use (both edge trees, or every pair)
 };
 
 namespace detector_detail {
@@ -121,10 +121,11 @@ struct distance_state {
 /// frame is a jump; without `holes` the ring bookkeeping
 /// is gone (one ring each); without `statistics` nothing is counted.
 template <class NT, class Features = all_features>
-class detector : detector_detail::feature_state<detector_statistics, Features::has(features::statistics), 0>,
-                 detector_detail::feature_state<detector_detail::coherence_state, Features::has(features::coherence), 1>,
-                 detector_detail::feature_state<pair_collector, Features::has(features::witness), 2>,
-                 detector_detail::feature_state<detector_detail::distance_state<NT>, Features::has(features::distance), 3> {
+class detector
+    : detector_detail::feature_state<detector_statistics, Features::has(features::statistics), 0>,
+      detector_detail::feature_state<detector_detail::coherence_state, Features::has(features::coherence), 1>,
+      detector_detail::feature_state<pair_collector, Features::has(features::witness), 2>,
+      detector_detail::feature_state<detector_detail::distance_state<NT>, Features::has(features::distance), 3> {
     static constexpr bool with_statistics = Features::has(features::statistics);
     static constexpr bool with_coherence = Features::has(features::coherence);
     static constexpr bool with_witness = Features::has(features::witness);
@@ -157,7 +158,8 @@ public:
     /// Throws as the constructor from polygons.
     detector(std::shared_ptr<const static_scene<NT>> static_polygon,
              std::shared_ptr<const moving_scene<NT>> moving_polygon, detector_options options = {})
-        : a_(checked(std::move(static_polygon), "static")), b_(checked(std::move(moving_polygon), "moving")),
+        : a_(checked(std::move(static_polygon), "static")),
+          b_(checked(std::move(moving_polygon), "moving")),
           options_(options) {
         using tr = number_traits<NT>;
         if (!(options_.distance >= 0) || !std::isfinite(options_.distance))
@@ -204,7 +206,8 @@ public:
         }
         if (!coherent_step(f)) return every_pair_pays() ? every_pair(f) : pairs_through_trees(f);
         refresh_candidates(f);
-        if (circle_test_pays() && edges_clear_of(f.t, a_->shape.centroid(), a_->radius + distance() + 2 * f.margin, f.margin))
+        if (circle_test_pays() &&
+            edges_clear_of(f.t, a_->shape.centroid(), a_->radius + distance() + 2 * f.margin, f.margin))
             return clear_of_a(f);
         if (tree_pays()) return pairs_through_tree(f);
         return pairs_through_candidates(f);
@@ -235,7 +238,8 @@ public:
     /// same for every feature set, see static_scene and moving_scene): its own
     /// size and the capacities of its arrays.
     std::size_t state_bytes() const {
-        const std::size_t grid = grid_built_ ? (grid_.cell_count() + 1 + grid_.entry_count()) * sizeof(std::uint32_t) : 0;
+        const std::size_t grid =
+            grid_built_ ? (grid_.cell_count() + 1 + grid_.entry_count()) * sizeof(std::uint32_t) : 0;
         std::size_t bytes = sizeof(*this) + grid + chunks_.capacity() * sizeof(chunk) +
                             chunk_centers_.capacity() * sizeof(point<double>) +
                             (cache_.capacity() + candidates_.capacity()) * sizeof(std::uint32_t) + b_.heap_bytes() +
@@ -262,7 +266,8 @@ private:
         frame f{rotation_pose(q), {}, 0, 0};
         b_.place(f.t);
         f.p = b_.approximate_centroid();
-        f.margin = margin_ + tr::filter_slack * (std::fabs(f.p.x) + std::fabs(f.p.y) + std::fabs(q.tx) + std::fabs(q.ty));
+        f.margin =
+            margin_ + tr::filter_slack * (std::fabs(f.p.x) + std::fabs(f.p.y) + std::fabs(q.tx) + std::fabs(q.ty));
         f.n = reach_ + f.margin;
         return f;
     }
@@ -396,9 +401,10 @@ private:
         box bb;
         bb.add({c.x - r, c.y - r});
         bb.add({c.x + r, c.y + r});
-        const bool finite = std::isfinite(bb.min_x) && std::isfinite(bb.min_y) && std::isfinite(bb.max_x) &&
-                            std::isfinite(bb.max_y);
-        return {contains_within(bb, finite, f.n, f.margin, true, [&](std::size_t j) { return b_.approximate_now(j); }), {}};
+        const bool finite =
+            std::isfinite(bb.min_x) && std::isfinite(bb.min_y) && std::isfinite(bb.max_x) && std::isfinite(bb.max_y);
+        return {contains_within(bb, finite, f.n, f.margin, true, [&](std::size_t j) { return b_.approximate_now(j); }),
+                {}};
     }
 
     /// The pair search for a jump of two small polygons: B posed in double,
@@ -439,10 +445,11 @@ private:
         const polygon& bs = b_.shape();
         for (std::size_t j = 0; j < bs.size(); ++j) {
             const point<double>&u = b_.approximate(j), &v = b_.approximate(next_b(j));
-            const bool met = a_tree().query(u, v, distance() + f.margin, distance() + 2 * f.margin, [&](std::uint32_t e) {
-                tally(&detector_statistics::candidate_edges);
-                return test_pair(e, j, u, v, f.margin) && !witnessing();
-            });
+            const bool met =
+                a_tree().query(u, v, distance() + f.margin, distance() + 2 * f.margin, [&](std::uint32_t e) {
+                    tally(&detector_statistics::candidate_edges);
+                    return test_pair(e, j, u, v, f.margin) && !witnessing();
+                });
             if (met) return {true, {}};
         }
         return finish(f.n, f.margin);
@@ -469,8 +476,9 @@ private:
             // Only edges whose box meets B's can meet B.
             for (std::uint32_t e : cache_) {
                 const point<double>&u = as.vertex(e), &v = as.vertex(as.next(e));
-                if (std::max(u.x, v.x) >= bb.min_x && std::min(u.x, v.x) <= bb.max_x && std::max(u.y, v.y) >= bb.min_y &&
-                    std::min(u.y, v.y) <= bb.max_y && may_be_in_extended_area(options_.shape, f.p, u, v, f.n + f.margin))
+                if (std::max(u.x, v.x) >= bb.min_x && std::min(u.x, v.x) <= bb.max_x &&
+                    std::max(u.y, v.y) >= bb.min_y && std::min(u.y, v.y) <= bb.max_y &&
+                    may_be_in_extended_area(options_.shape, f.p, u, v, f.n + f.margin))
                     candidates_.push_back(e);
             }
             tally(&detector_statistics::candidate_edges, candidates_.size());
@@ -510,8 +518,8 @@ private:
     static const polygon& checked(const polygon& p, const char* which) {
         accepted_polygon<NT>(p, which);
         if (!with_holes && p.ring_count() != 1)
-            throw invalid_input(std::string("detector built without features::holes: the ") + which +
-                                " polygon has " + std::to_string(p.ring_count()) + " rings");
+            throw invalid_input(std::string("detector built without features::holes: the ") + which + " polygon has " +
+                                std::to_string(p.ring_count()) + " rings");
         return p;
     }
     /// A prepared polygon, checked as above (and refused when null).

@@ -10,12 +10,12 @@
 
 #include "influence2d/detect/pairs.hpp"
 #include "influence2d/detect/result.hpp"
+#include "influence2d/influence/edge_grid.hpp"
+#include "influence2d/influence/influence_areas.hpp"
 #include "influence2d/predicates/distance.hpp"
+#include "influence2d/predicates/extended_area.hpp"
 #include "influence2d/scene/posed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
-#include "influence2d/influence/edge_grid.hpp"
-#include "influence2d/predicates/extended_area.hpp"
-#include "influence2d/influence/influence_areas.hpp"
 
 namespace influence2d {
 

@@ -25,8 +25,7 @@ inline bool operator==(const edge_pair& a, const edge_pair& b) {
 /// Lexicographic order: static edge first, then moving edge (the order of
 /// frame_result::pairs).
 inline bool operator<(const edge_pair& a, const edge_pair& b) {
-    return a.static_edge != b.static_edge ? a.static_edge < b.static_edge
-                                          : a.moving_edge < b.moving_edge;
+    return a.static_edge != b.static_edge ? a.static_edge < b.static_edge : a.moving_edge < b.moving_edge;
 }
 
 /// What a detector is asked per frame. Every option changes only the cost of
@@ -52,8 +51,8 @@ struct detector_options {
 /// only when witnesses were asked for; a collision by containment alone (no
 /// boundary pair within d) has collides == true and no pairs.
 struct frame_result {
-    bool collides = false;          ///< whether the closed regions are at distance <= d
-    std::vector<edge_pair> pairs;   ///< with witnesses: every edge pair at distance <= d
+    bool collides = false;         ///< whether the closed regions are at distance <= d
+    std::vector<edge_pair> pairs;  ///< with witnesses: every edge pair at distance <= d
 };
 
 }  // namespace influence2d

@@ -21,19 +21,19 @@
 
 #include "influence2d/assert.hpp"
 #include "influence2d/core/box.hpp"
+#include "influence2d/core/feature.hpp"
 #include "influence2d/core/invalid_input.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/covering/inclusion.hpp"
-#include "influence2d/core/feature.hpp"
-#include "influence2d/scene/posed_polygon.hpp"
-#include "influence2d/scene/prepared.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/influence/edge_tree.hpp"
 #include "influence2d/number/certified.hpp"
 #include "influence2d/number/fallback.hpp"
 #include "influence2d/predicates/distance.hpp"
+#include "influence2d/scene/posed_polygon.hpp"
+#include "influence2d/scene/prepared.hpp"
 
 namespace influence2d {
 
@@ -85,7 +85,7 @@ struct search_space {
         double lower;        ///< a lower bound of the distance between their edges
     };
     std::vector<entry> stack;
-    std::vector<candidate> candidates;  ///< phase 1's candidates, or
+    std::vector<candidate> candidates;                                ///< phase 1's candidates, or
     std::optional<std::pair<std::uint32_t, std::uint32_t>> crossing;  ///< the first pair that certainly crosses
 };
 
@@ -143,7 +143,8 @@ double search_pairs(const search_input& in, Approx& approx, double upper, search
     if (ta.node_count() == 0 || tb.node_count() == 0) return upper;
     const double spread = posing_spread * in.delta * (1 + bound_rounding);
     const auto posed = [&](const edge_tree::node& m) { return in.t.apply<double>(m.center); };
-    space.stack.push_back({0, 0, node_gap_lower(ta.node_at(0).bounds, posed(tb.node_at(0)), tb.node_at(0).radius, in.delta)});
+    space.stack.push_back(
+        {0, 0, node_gap_lower(ta.node_at(0).bounds, posed(tb.node_at(0)), tb.node_at(0).radius, in.delta)});
     while (!space.stack.empty()) {
         const search_space::entry p = space.stack.back();
         space.stack.pop_back();
@@ -189,7 +190,8 @@ double search_pairs(const search_input& in, Approx& approx, double upper, search
         if (near.lower <= upper) space.stack.push_back(near);
     }
     auto& cs = space.candidates;
-    cs.erase(std::remove_if(cs.begin(), cs.end(), [upper](const candidate& c) { return !(c.lower <= upper); }), cs.end());
+    cs.erase(std::remove_if(cs.begin(), cs.end(), [upper](const candidate& c) { return !(c.lower <= upper); }),
+             cs.end());
     std::sort(cs.begin(), cs.end(), evaluated_before);
     return upper;
 }
@@ -313,7 +315,8 @@ std::optional<inside_vertex> ring_vertex_inside(const polygon& a, const polygon&
 /// centre is not finite.
 inline box posed_window(const search_input& in) {
     const point<double> c = in.t.apply<double>(in.b_tree.root_center());
-    const double r = in.b_tree.root_radius() * (1 + node_gap_rounding) + posing_spread * in.delta * (1 + bound_rounding);
+    const double r =
+        in.b_tree.root_radius() * (1 + node_gap_rounding) + posing_spread * in.delta * (1 + bound_rounding);
     if (!std::isfinite(c.x + c.y + r)) return box{-HUGE_VAL, -HUGE_VAL, HUGE_VAL, HUGE_VAL};
     return box{c.x - r, c.y - r, c.x + r, c.y + r};
 }
@@ -327,12 +330,9 @@ inline box static_window(const search_input& in) {
 /// The feature of the point at `part` of the stored edge e.
 inline feature edge_feature(const polygon& shape, std::size_t e, segment_part part) {
     switch (part) {
-    case segment_part::start:
-        return {feature_kind::vertex, input_vertex(shape, e)};
-    case segment_part::end:
-        return {feature_kind::vertex, input_vertex(shape, shape.next(e))};
-    default:
-        return {feature_kind::edge, shape.source_edge(e)};
+    case segment_part::start: return {feature_kind::vertex, input_vertex(shape, e)};
+    case segment_part::end: return {feature_kind::vertex, input_vertex(shape, shape.next(e))};
+    default: return {feature_kind::edge, shape.source_edge(e)};
     }
 }
 
@@ -393,7 +393,7 @@ struct workspace {
     posed_doubles<NT> approx;  ///< b_posed's vertices in double
     search_space space;
     std::optional<std::pair<std::uint32_t, std::uint32_t>> last;  ///< the last frame's chosen pair
-    std::size_t evaluated = 0;  ///< pairs evaluated in NT by the last query
+    std::size_t evaluated = 0;                                    ///< pairs evaluated in NT by the last query
 
     /// A new frame posed by t.
     void place(const rotation_pose& t) { b_posed.place(t); }
@@ -508,7 +508,8 @@ separation_result<NT> separate(static_side<NT>& side, const search_input& in, wo
     search_pairs(in, w.approx, pair_upper(in, w.approx, w.last), w.space);
     w.evaluated = 0;
     const chosen_pair<NT> best = closest_candidate<NT>(
-        w.space, [&](std::uint32_t e, std::uint32_t f) { return pair_closest<NT>(in, w.approx, a_vertex, b_vertex, e, f); },
+        w.space,
+        [&](std::uint32_t e, std::uint32_t f) { return pair_closest<NT>(in, w.approx, a_vertex, b_vertex, e, f); },
         w.evaluated);
     INFLUENCE2D_ASSERT(best.found, "phase 1 left no candidate");
     w.last = std::make_pair(best.static_edge, best.moving_edge);
@@ -518,9 +519,10 @@ separation_result<NT> separate(static_side<NT>& side, const search_input& in, wo
         return r;
     }
     const std::optional<inside_vertex> inside = phase_3(side, in, w);
-    separation_result<NT> r = inside ? inside_result<NT>(in.a, in.b, *inside,
-                                                         inside->moving ? b_vertex(inside->vertex) : a_vertex(inside->vertex))
-                                     : pair_result(in.a, in.b, best);
+    separation_result<NT> r =
+        inside ? inside_result<NT>(in.a, in.b, *inside,
+                                   inside->moving ? b_vertex(inside->vertex) : a_vertex(inside->vertex))
+               : pair_result(in.a, in.b, best);
     r.evaluated_pairs = w.evaluated;
     return r;
 }
@@ -564,8 +566,8 @@ separation_result<NT> separation(const static_scene<NT>& a, const moving_scene<N
     // (b outlives the query: a pointer that does not own it.)
     separation_detail::workspace<NT> w(std::shared_ptr<const moving_scene<NT>>(std::shared_ptr<void>(), &b));
     separation_detail::static_side<NT> side(a);
-    const separation_detail::search_input in{a.shape, a.tree(), b.shape, b.tree(), t,
-                                             posing_error(b.scale, q.tx, q.ty)};
+    const separation_detail::search_input in{a.shape,  a.tree(), b.shape,
+                                             b.tree(), t,        posing_error(b.scale, q.tx, q.ty)};
     return separation_detail::separate(side, in, w);
 }
 
@@ -614,8 +616,8 @@ public:
     /// pose with a NaN or infinite component.
     separation_result<NT> operator()(const pose& q) {
         const rotation_pose t(q);
-        const separation_detail::search_input in{a_->shape, a_->tree(), b_->shape, b_->tree(), t,
-                                                 posing_error(b_->scale, q.tx, q.ty)};
+        const separation_detail::search_input in{a_->shape,  a_->tree(), b_->shape,
+                                                 b_->tree(), t,          posing_error(b_->scale, q.tx, q.ty)};
         return separation_detail::separate(side_, in, w_);
     }
 
@@ -625,7 +627,8 @@ public:
 private:
     template <class Scene>
     static std::shared_ptr<const Scene> checked(std::shared_ptr<const Scene> s, const char* which) {
-        if (!s) throw invalid_input(std::string("separation_query: no prepared ") + which + " polygon (a null pointer)");
+        if (!s)
+            throw invalid_input(std::string("separation_query: no prepared ") + which + " polygon (a null pointer)");
         return s;
     }
 

@@ -15,8 +15,8 @@
 #include "influence2d/core/pose.hpp"
 #include "influence2d/detect/result.hpp"
 #include "influence2d/number/certified.hpp"
-#include "influence2d/number/fallback.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "influence2d/number/fallback.hpp"
 
 namespace influence2d {
 

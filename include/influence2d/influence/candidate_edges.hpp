@@ -21,7 +21,7 @@ namespace influence2d {
 /// Exact when NT is.
 template <class NT>
 std::vector<std::size_t> edges_whose_extended_area_holds(extended_area shape, const point<NT>& p,
-                                                        const triangle_covering<NT>& covering, const NT& n) {
+                                                         const triangle_covering<NT>& covering, const NT& n) {
     std::vector<std::size_t> edges;
     for (std::size_t i = 0; i < covering.size(); ++i)
         if (in_extended_area(shape, p, covering.start(i), covering.end(i), n)) edges.push_back(i);

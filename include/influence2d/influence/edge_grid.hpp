@@ -91,12 +91,10 @@ public:
                     const point<double> c{area_.min_x + (static_cast<double>(x) + 0.5) * cw,
                                           area_.min_y + (static_cast<double>(y) + 0.5) * ch};
                     // Points of the cell are within half a diagonal of its centre.
-                    if (may_be_within(c, a, b, r + half_diagonal * (1 + sqrt_widening) + slack))
-                        visit(y * nx_ + x);
+                    if (may_be_within(c, a, b, r + half_diagonal * (1 + sqrt_widening) + slack)) visit(y * nx_ + x);
                 }
         };
-        for (std::size_t e = 0; e < shape.size(); ++e)
-            for_each_cell(e, [&](std::size_t c) { ++count[c + 1]; });
+        for (std::size_t e = 0; e < shape.size(); ++e) for_each_cell(e, [&](std::size_t c) { ++count[c + 1]; });
         for (std::size_t c = 0; c < nx_ * ny_; ++c) count[c + 1] += count[c];
         offsets_ = count;
         edges_.resize(offsets_.back());

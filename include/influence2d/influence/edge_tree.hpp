@@ -143,9 +143,9 @@ public:
     /// One node of the tree, read-only, for traversals of one's own (the
     /// separation query's branch and bound, distance/separation.hpp).
     struct node {
-        box bounds;            ///< holds the boxes of the node's edges
-        point<double> center;  ///< the centre of bounds
-        double radius = 0;     ///< bounds every point of bounds from center
+        box bounds;               ///< holds the boxes of the node's edges
+        point<double> center;     ///< the centre of bounds
+        double radius = 0;        ///< bounds every point of bounds from center
         std::uint32_t first = 0;  ///< leaf: first position in the tree order; inner: left child (right is first + 1)
         std::uint32_t count = 0;  ///< leaf: number of edges; inner: 0
     };
@@ -175,8 +175,8 @@ private:
     /// query() on the subtree of node `start`. When an end or the grown box
     /// is not finite, nothing is pruned.
     template <class Visit>
-    bool query_below(std::uint32_t start, const point<double>& u, const point<double>& v, double grow,
-                     double line_grow, Visit&& visit) const {
+    bool query_below(std::uint32_t start, const point<double>& u, const point<double>& v, double grow, double line_grow,
+                     Visit&& visit) const {
         if (nodes_.empty()) return false;
         box q;
         q.add(u);
@@ -192,8 +192,7 @@ private:
         stack[top++] = start;
         while (top > 0) {
             const node& k = nodes_[stack[--top]];
-            if (prune && (!meets(k.bounds, q) || (lines && !box_may_be_near_line(k.bounds, u, v, line_grow))))
-                continue;
+            if (prune && (!meets(k.bounds, q) || (lines && !box_may_be_near_line(k.bounds, u, v, line_grow)))) continue;
             if (k.count == 0) {
                 stack[top++] = k.first + 1;
                 stack[top++] = k.first;
@@ -224,10 +223,9 @@ private:
         }
         const bool along_x = centres.max_x - centres.min_x >= centres.max_y - centres.min_y;
         const std::uint32_t half = first + (last - first) / 2;
-        std::nth_element(order_.begin() + first, order_.begin() + half, order_.begin() + last,
-                         [&](std::uint32_t a, std::uint32_t b) {
-                             return along_x ? mid[a].x < mid[b].x : mid[a].y < mid[b].y;
-                         });
+        std::nth_element(
+            order_.begin() + first, order_.begin() + half, order_.begin() + last,
+            [&](std::uint32_t a, std::uint32_t b) { return along_x ? mid[a].x < mid[b].x : mid[a].y < mid[b].y; });
         const auto left = static_cast<std::uint32_t>(nodes_.size());
         nodes_.emplace_back();
         nodes_.emplace_back();
@@ -238,7 +236,7 @@ private:
     }
 
     std::vector<node> nodes_;
-    std::vector<box> boxes_;  ///< edges' boxes, in tree order
+    std::vector<box> boxes_;            ///< edges' boxes, in tree order
     std::vector<std::uint32_t> order_;  ///< edge indices, in tree order
 };
 

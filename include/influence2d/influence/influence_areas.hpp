@@ -4,8 +4,8 @@
 /// Influence areas (the cones from the covering origin through each edge) and
 /// the influence mask of a point (docs/method.md section 4).
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -27,8 +27,7 @@ template <class NT>
 bool in_influence_area(const triangle_covering<NT>& cov, std::size_t i, const point<NT>& p) {
     const int s = cov.sigma(i);
     if (s == 0) return false;
-    return orientation(cov.origin(), p, cov.end(i)) * s >= 0 &&
-           orientation(cov.origin(), cov.start(i), p) * s >= 0;
+    return orientation(cov.origin(), p, cov.end(i)) * s >= 0 && orientation(cov.origin(), cov.start(i), p) * s >= 0;
 }
 
 /// One bit per edge of the static polygon: the influence areas that contain
@@ -54,7 +53,8 @@ public:
     }
     /// Whether some bit is set.
     bool any() const {
-        for (auto w : words_) if (w) return true;
+        for (auto w : words_)
+            if (w) return true;
         return false;
     }
     /// Whether some area of `before` is not in this mask: the point left it.
@@ -162,12 +162,14 @@ public:
         const double dy = tr::to_double(p.y - cov_->origin().y);
         const double scale = origin_scale_ + std::fabs(tr::to_double(p.x)) + std::fabs(tr::to_double(p.y));
         const bool direction_known =
-            std::fabs(dx) + std::fabs(dy) > direction_trust_factor * tr::filter_slack * scale && std::isfinite(dx + dy + scale);
+            std::fabs(dx) + std::fabs(dy) > direction_trust_factor * tr::filter_slack * scale &&
+            std::isfinite(dx + dy + scale);
         const std::uint32_t* first = all_.data();
         const std::uint32_t* last = all_.data() + all_.size();
         if (direction_known) {
             constexpr double two_pi = 6.283185307179586;
-            const double f = std::floor((std::atan2(dy, dx) + 3.141592653589793) * static_cast<double>(buckets_) / two_pi);
+            const double f =
+                std::floor((std::atan2(dy, dx) + 3.141592653589793) * static_cast<double>(buckets_) / two_pi);
             const std::size_t b = static_cast<std::size_t>(std::clamp(f, 0.0, static_cast<double>(buckets_ - 1)));
             first = cones_.data() + offsets_[b];
             last = cones_.data() + offsets_[b + 1];

@@ -38,8 +38,7 @@ inline constexpr std::array<const char*, 3> pose_columns{"tx", "ty", "theta"};
 
 inline std::string_view trim(std::string_view s) {
     while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
-        s.remove_suffix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
     return s;
 }
 
@@ -48,9 +47,8 @@ inline std::vector<std::string_view> split(std::string_view line) {
     std::size_t start = 0;
     for (;;) {
         const std::size_t comma = line.find(',', start);
-        fields.push_back(trim(line.substr(start, comma == std::string_view::npos
-                                                     ? std::string_view::npos
-                                                     : comma - start)));
+        fields.push_back(
+            trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
         if (comma == std::string_view::npos) return fields;
         start = comma + 1;
     }
@@ -67,8 +65,7 @@ inline std::string quoted(std::string_view s) {
 inline std::string parse_number(std::string_view field, double& value) {
     if (field.empty()) return "empty value";
     std::string_view digits = field;
-    if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-' && digits[1] != '+')
-        digits.remove_prefix(1);
+    if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-' && digits[1] != '+') digits.remove_prefix(1);
     const char* first = digits.data();
     const char* last = digits.data() + digits.size();
     const auto res = std::from_chars(first, last, value);
@@ -98,8 +95,7 @@ inline std::vector<pose> read_poses_csv(std::istream& in, const std::string& pat
     auto fail = [&](const std::string& what) -> void { throw invalid_input(path + ": " + what); };
     std::vector<std::string> bad_rows;
     const auto bad = [&](const std::string& what) { bad_rows.push_back(path + ": " + what); };
-    const std::string too_large =
-        "file is larger than " + std::to_string(max_csv_file_bytes >> 20) + " MiB";
+    const std::string too_large = "file is larger than " + std::to_string(max_csv_file_bytes >> 20) + " MiB";
     std::vector<pose> poses;
     std::string line;
     std::size_t line_no = 0, bytes = 0, blank_line = 0;
@@ -116,14 +112,11 @@ inline std::vector<pose> read_poses_csv(std::istream& in, const std::string& pat
             continue;
         }
         if (!header_seen) {
-            if (blank_line != 0)
-                fail("line " + std::to_string(blank_line) + ": blank line before the header");
+            if (blank_line != 0) fail("line " + std::to_string(blank_line) + ": blank line before the header");
             const auto fields = split(text);
             bool ok = fields.size() == pose_columns.size();
             for (std::size_t c = 0; ok && c < fields.size(); ++c) ok = fields[c] == pose_columns[c];
-            if (!ok)
-                fail(place + ": expected the header \"tx,ty,theta\", found " +
-                     quoted(trim(text)));
+            if (!ok) fail(place + ": expected the header \"tx,ty,theta\", found " + quoted(trim(text)));
             header_seen = true;
             continue;
         }
@@ -152,15 +145,14 @@ inline std::vector<pose> read_poses_csv(std::istream& in, const std::string& pat
     }
     if (in.bad()) fail("read error");
     if (!header_seen)
-        fail(line_no == 0 ? "empty file: expected the header \"tx,ty,theta\""
-                           : "no header: expected \"tx,ty,theta\"");
+        fail(line_no == 0 ? "empty file: expected the header \"tx,ty,theta\"" : "no header: expected \"tx,ty,theta\"");
     if (!bad_rows.empty()) {
         std::string message;
         for (std::size_t k = 0; k < bad_rows.size() && k < max_reported_csv_errors; ++k)
             message += (k ? "\n" : "") + bad_rows[k];
         if (bad_rows.size() > max_reported_csv_errors)
-            message += "\n" + path + ": and " + std::to_string(bad_rows.size() - max_reported_csv_errors) +
-                       " more bad lines";
+            message +=
+                "\n" + path + ": and " + std::to_string(bad_rows.size() - max_reported_csv_errors) + " more bad lines";
         throw invalid_input(message);
     }
     return poses;
@@ -193,8 +185,7 @@ inline void write_poses_csv(std::ostream& out, const std::vector<pose>& poses) {
     using csv_detail::format_number;
     out << "tx,ty,theta\n";
     for (const auto& p : poses)
-        out << format_number(p.tx) << ',' << format_number(p.ty) << ',' << format_number(p.theta)
-            << '\n';
+        out << format_number(p.tx) << ',' << format_number(p.ty) << ',' << format_number(p.theta) << '\n';
 }
 
 /// Writes poses to a file; throws invalid_input when it cannot be written.

@@ -72,7 +72,6 @@ inline std::string vertex_place(std::size_t ring, std::size_t vertex) {
     return ring_place(ring) + ", vertex " + std::to_string(vertex);
 }
 
-
 /// Boost's tokenizer separates on the space character only: other white space
 /// would end up inside number tokens. Every white-space character becomes a
 /// space, a UTF-8 byte-order mark is dropped, and the ends are trimmed.
@@ -122,8 +121,7 @@ inline std::string empty_elements_as_lists(const std::string& text, int ring_dep
 /// This pass, run on text Boost has accepted, checks that every point at
 /// the ring level has exactly two coordinates and that no list ends in ','.
 /// Rings are numbered in text order, as the polygon numbers them.
-inline void check_coordinate_tuples(std::string_view source, const std::string& text,
-                                    int ring_depth) {
+inline void check_coordinate_tuples(std::string_view source, const std::string& text, int ring_depth) {
     int depth = 0;
     std::size_t ring = 0, vertex = 0, words = 0;
     bool any_ring = false;
@@ -136,9 +134,7 @@ inline void check_coordinate_tuples(std::string_view source, const std::string& 
             continue;
         }
         if (c != '(' && c != ')' && c != ',') {
-            while (i < text.size() && text[i] != ' ' && text[i] != '(' && text[i] != ')' &&
-                   text[i] != ',')
-                ++i;
+            while (i < text.size() && text[i] != ' ' && text[i] != '(' && text[i] != ')' && text[i] != ',') ++i;
             ++words;
             continue;
         }
@@ -153,8 +149,7 @@ inline void check_coordinate_tuples(std::string_view source, const std::string& 
         } else {
             const bool in_ring = depth == ring_depth && any_ring;
             if (c == ')' && prev == ',' && words == 0)
-                fail(source, (in_ring ? ring_place(ring) + ": " : std::string()) +
-                                 "empty element after ','");
+                fail(source, (in_ring ? ring_place(ring) + ": " : std::string()) + "empty element after ','");
             if (in_ring && !(c == ')' && prev == '(' && words == 0)) {
                 if (words == 0) fail(source, vertex_place(ring, vertex) + ": missing coordinates");
                 if (words != 2)
@@ -168,7 +163,6 @@ inline void check_coordinate_tuples(std::string_view source, const std::string& 
         prev = c;
     }
 }
-
 
 /// Appends ring `index` of the text as a ring_input after checking it:
 /// finite coordinates, closed (first point repeated at the end, which is
@@ -193,7 +187,8 @@ inline void append_ring(std::string_view source, const std::vector<wkt_ring>& re
     ring_input in;
     in.role = r.role;
     in.vertices.assign(pts.begin(), pts.end() - 1);
-    if (polygon::count_distinct(in.vertices) < 3) fail(source, ring_place(index) + ": fewer than three distinct vertices");
+    if (polygon::count_distinct(in.vertices) < 3)
+        fail(source, ring_place(index) + ": fewer than three distinct vertices");
     rings.push_back(std::move(in));
 }
 
@@ -283,8 +278,7 @@ inline polygon read_wkt(std::string_view text, std::string_view source = "<text>
 /// refused. Throws invalid_input starting with `path` for that, a file that
 /// cannot be opened or read, or a directory.
 inline std::string read_wkt_text_file(const std::string& path) {
-    const std::string too_large =
-        "file is larger than " + std::to_string(max_wkt_file_bytes >> 20) + " MiB";
+    const std::string too_large = "file is larger than " + std::to_string(max_wkt_file_bytes >> 20) + " MiB";
     std::ifstream in(path, std::ios::binary);
     if (!in) wkt_detail::fail(path, "cannot open file");
     std::error_code ec;

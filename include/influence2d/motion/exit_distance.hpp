@@ -16,22 +16,22 @@
 #include <utility>
 #include <vector>
 
+#include "influence2d/core/feature.hpp"
 #include "influence2d/core/invalid_input.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/distance/separation.hpp"
+#include "influence2d/influence/bounds.hpp"
 #include "influence2d/number/certified.hpp"
 #include "influence2d/number/fallback.hpp"
-#include "influence2d/core/feature.hpp"
+#include "influence2d/predicates/contact_time.hpp"
+#include "influence2d/predicates/orientation.hpp"
 #include "influence2d/query/intersects.hpp"
 #include "influence2d/query/placed_meet.hpp"
 #include "influence2d/scene/edge_boxes.hpp"
 #include "influence2d/scene/placed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
-#include "influence2d/distance/separation.hpp"
-#include "influence2d/influence/bounds.hpp"
-#include "influence2d/predicates/contact_time.hpp"
-#include "influence2d/predicates/orientation.hpp"
 
 #include "influence2d/motion/translation_events.hpp"
 
@@ -47,7 +47,10 @@ inline void check_direction(double dx, double dy) {
     for (const auto& [name, v] : {std::pair<const char*, double>{"dx", dx}, {"dy", dy}})
         if (!std::isfinite(v))
             throw invalid_input(std::string("direction: ") + name + " is " +
-                                (std::isnan(v) ? "NaN" : v > 0 ? "+infinity" : "-infinity") + ", not a finite number");
+                                (std::isnan(v) ? "NaN"
+                                 : v > 0       ? "+infinity"
+                                               : "-infinity") +
+                                ", not a finite number");
     if (dx == 0 && dy == 0) throw invalid_input("direction: (0, 0) has no direction");
 }
 
@@ -94,15 +97,12 @@ meeting meeting_between(translation_frame<NT>& f, const time_fraction<NT>& s0, c
 /// one reaches the other (an event of the pair).
 inline bool touches(const meeting& w, const contact_site& s, const polygon& a, const polygon& b) {
     switch (w.how) {
-    case meeting::kind::b_vertex_in_a:
-        return s.moving_vertex && s.vertex == w.b_index;
-    case meeting::kind::a_vertex_in_b:
-        return !s.moving_vertex && s.vertex == w.a_index;
+    case meeting::kind::b_vertex_in_a: return s.moving_vertex && s.vertex == w.b_index;
+    case meeting::kind::a_vertex_in_b: return !s.moving_vertex && s.vertex == w.a_index;
     case meeting::kind::edges:
         if (s.moving_vertex) return s.edge == w.a_index && (s.vertex == w.b_index || s.vertex == b.next(w.b_index));
         return s.edge == w.b_index && (s.vertex == w.a_index || s.vertex == a.next(w.a_index));
-    default:
-        return true;
+    default: return true;
     }
 }
 
@@ -190,21 +190,20 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
         events.clear();
         candidate_sites(a, b, f.b.approx(), f.b.bounds(), {std::max(w_low, 0.0) * dx, std::max(w_low, 0.0) * dy},
                         {w * dx, w * dy}, e, [&](const contact_site& site) {
-            if constexpr (exact) {
-                try {
-                    time_fraction<certified> none[2];
-                    if (fast->times(site, false, none) == 0) return;
-                } catch (const uncertain_sign&) {
-                }
-            }
-            time_fraction<NT> out[2];
-            const int k = f.times(site, false, out);
-            for (int i = 0; i < k; ++i)
-                if ((w_low < 0 || beyond(out[i], w_low)) && !beyond(out[i], w)) events.push_back({std::move(out[i]), site});
-        });
-        std::sort(events.begin(), events.end(), [](const timed_site<NT>& l, const timed_site<NT>& r) {
-            return compare_times(l.time, r.time) < 0;
-        });
+                            if constexpr (exact) {
+                                try {
+                                    time_fraction<certified> none[2];
+                                    if (fast->times(site, false, none) == 0) return;
+                                } catch (const uncertain_sign&) {}
+                            }
+                            time_fraction<NT> out[2];
+                            const int k = f.times(site, false, out);
+                            for (int i = 0; i < k; ++i)
+                                if ((w_low < 0 || beyond(out[i], w_low)) && !beyond(out[i], w))
+                                    events.push_back({std::move(out[i]), site});
+                        });
+        std::sort(events.begin(), events.end(),
+                  [](const timed_site<NT>& l, const timed_site<NT>& r) { return compare_times(l.time, r.time) < 0; });
     };
     double w_low = -1, w = std::min(s_max, s_max * first_window);
     load(w_low, w);

@@ -17,22 +17,22 @@
 #include <utility>
 #include <vector>
 
+#include "influence2d/core/feature.hpp"
 #include "influence2d/core/invalid_input.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/distance/separation.hpp"
+#include "influence2d/influence/bounds.hpp"
 #include "influence2d/number/certified.hpp"
 #include "influence2d/number/fallback.hpp"
-#include "influence2d/core/feature.hpp"
+#include "influence2d/predicates/contact_time.hpp"
+#include "influence2d/predicates/orientation.hpp"
 #include "influence2d/query/intersects.hpp"
 #include "influence2d/query/placed_meet.hpp"
 #include "influence2d/scene/edge_boxes.hpp"
 #include "influence2d/scene/placed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
-#include "influence2d/distance/separation.hpp"
-#include "influence2d/influence/bounds.hpp"
-#include "influence2d/predicates/contact_time.hpp"
-#include "influence2d/predicates/orientation.hpp"
 
 #include "influence2d/motion/motion.hpp"
 #include "influence2d/motion/translation_events.hpp"

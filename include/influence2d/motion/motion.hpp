@@ -42,8 +42,7 @@ struct sweep_options {
 /// first_contact computes it for a motion that turns: each component
 /// from + t (to - from), in double.
 inline pose motion_pose(const pose& from, const pose& to, double t) {
-    return {from.tx + t * (to.tx - from.tx), from.ty + t * (to.ty - from.ty),
-            from.theta + t * (to.theta - from.theta)};
+    return {from.tx + t * (to.tx - from.tx), from.ty + t * (to.ty - from.ty), from.theta + t * (to.theta - from.theta)};
 }
 
 }  // namespace influence2d

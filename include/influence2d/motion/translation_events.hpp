@@ -18,22 +18,22 @@
 #include <utility>
 #include <vector>
 
+#include "influence2d/core/feature.hpp"
 #include "influence2d/core/invalid_input.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/distance/separation.hpp"
+#include "influence2d/influence/bounds.hpp"
 #include "influence2d/number/certified.hpp"
 #include "influence2d/number/fallback.hpp"
-#include "influence2d/core/feature.hpp"
+#include "influence2d/predicates/contact_time.hpp"
+#include "influence2d/predicates/orientation.hpp"
 #include "influence2d/query/intersects.hpp"
 #include "influence2d/query/placed_meet.hpp"
 #include "influence2d/scene/edge_boxes.hpp"
 #include "influence2d/scene/placed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
-#include "influence2d/distance/separation.hpp"
-#include "influence2d/influence/bounds.hpp"
-#include "influence2d/predicates/contact_time.hpp"
-#include "influence2d/predicates/orientation.hpp"
 
 #include "influence2d/motion/motion.hpp"
 
@@ -62,7 +62,6 @@ inline bool site_before(const contact_site& l, const contact_site& r) {
     if (l.vertex != r.vertex) return l.vertex < r.vertex;
     return l.edge < r.edge;
 }
-
 
 /// The site's features in input numbering: (A's, B's).
 inline std::pair<feature, feature> site_features(const polygon& a, const polygon& b, const contact_site& s) {
@@ -115,9 +114,7 @@ std::optional<std::pair<feature, feature>> meeting_at_start(const polygon& a, co
                                                             const rotation_pose& start) {
     placed_polygon<NT> pa(a), pb(b, start);
     const meeting met = placed_meet(
-        pa, pb,
-        posing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) +
-                                           std::fabs(from.ty)));
+        pa, pb, posing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) + std::fabs(from.ty)));
     if (!met) return std::nullopt;
     return meeting_features(pa, pb, met);
 }
@@ -157,9 +154,12 @@ inline double box_entry(const box& ab, const box& bb, point<double> sweep, doubl
     double t = 0;
     const auto axis = [&](double a_min, double a_max, double b_min, double b_max, double d) {
         if (b_max + 4 * e >= a_min && b_min - 4 * e <= a_max) return;  // overlapping already
-        if (d == 0) t = std::numeric_limits<double>::infinity();
-        else if (b_max < a_min) t = std::max(t, d > 0 ? (a_min - b_max - 4 * e) / d : std::numeric_limits<double>::infinity());
-        else t = std::max(t, d < 0 ? (a_max - b_min + 4 * e) / d : std::numeric_limits<double>::infinity());
+        if (d == 0)
+            t = std::numeric_limits<double>::infinity();
+        else if (b_max < a_min)
+            t = std::max(t, d > 0 ? (a_min - b_max - 4 * e) / d : std::numeric_limits<double>::infinity());
+        else
+            t = std::max(t, d < 0 ? (a_max - b_min + 4 * e) / d : std::numeric_limits<double>::infinity());
     };
     axis(ab.min_x, ab.max_x, bb.min_x, bb.max_x, sweep.x);
     axis(ab.min_y, ab.max_y, bb.min_y, bb.max_y, sweep.y);
@@ -223,10 +223,10 @@ double time_above(const time_fraction<NT>& t) {
 /// displacement d (and -d, A's motion relative to B).
 template <class NT>
 struct translation_frame {
-    placed_polygon<NT> a;    ///< A where it stands
-    placed_polygon<NT> b;    ///< B posed at the start
-    point<NT> d;             ///< B's displacement over the motion
-    point<NT> minus_d;       ///< A's displacement relative to B
+    placed_polygon<NT> a;  ///< A where it stands
+    placed_polygon<NT> b;  ///< B posed at the start
+    point<NT> d;           ///< B's displacement over the motion
+    point<NT> minus_d;     ///< A's displacement relative to B
 
     /// A and B placed for the translation of B by dd from `start`.
     translation_frame(const polygon& as, const polygon& bs, const rotation_pose& start, point<NT> dd)
@@ -235,8 +235,7 @@ struct translation_frame {
     /// The site's contact times in range (t in [0, 1] when bounded, t >= 0
     /// otherwise): at most two (contact_times).
     int times(const contact_site& s, bool bounded, time_fraction<NT> out[2]) {
-        if (s.moving_vertex)
-            return contact_times(b[s.vertex], d, a[s.edge], a[a.shape().next(s.edge)], bounded, out);
+        if (s.moving_vertex) return contact_times(b[s.vertex], d, a[s.edge], a[a.shape().next(s.edge)], bounded, out);
         return contact_times(a[s.vertex], minus_d, b[s.edge], b[b.shape().next(s.edge)], bounded, out);
     }
 
@@ -296,8 +295,8 @@ private:
 /// double at any time of the motion are within it of their NT values).
 template <class NT>
 double translation_margin(const polygon& a, const polygon& b, const pose& from, const pose& to) {
-    return posing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) +
-                                              std::fabs(from.ty) + std::fabs(to.tx) + std::fabs(to.ty));
+    return posing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) + std::fabs(from.ty) +
+                             std::fabs(to.tx) + std::fabs(to.ty));
 }
 
 /// The displacement of a translation in NT: to - from on the input doubles.
@@ -346,12 +345,12 @@ std::optional<earliest_event<NT>> earliest_translation_event(const polygon& a, c
 /// asked, with two doubles around it.
 template <class Exact>
 struct filtered_event {
-    contact_site site;  ///< where the event happens
-    std::optional<time_fraction<certified>> fast;        ///< the time in certified, when certain
-    std::optional<time_fraction<Exact>> exact;  ///< the exact time, once asked
-    double rounded = 0;                                  ///< the exact time's nearest double, with exact
-    double below = 0;  ///< a double at most the exact time, with exact
-    double above = 0;  ///< a double at least the exact time, with exact
+    contact_site site;                             ///< where the event happens
+    std::optional<time_fraction<certified>> fast;  ///< the time in certified, when certain
+    std::optional<time_fraction<Exact>> exact;     ///< the exact time, once asked
+    double rounded = 0;                            ///< the exact time's nearest double, with exact
+    double below = 0;                              ///< a double at most the exact time, with exact
+    double above = 0;                              ///< a double at least the exact time, with exact
 
     /// A double above the time: from the exact time's neighbours, else from
     /// the certified time's bounds (num at most its value plus its error,
@@ -388,15 +387,13 @@ int order(filtered_event<Exact>& c, filtered_event<Exact>& e, ExactTime&& exact_
     if (c.fast && e.fast) {
         try {
             return compare_times(*c.fast, *e.fast);
-        } catch (const uncertain_sign&) {
-        }
+        } catch (const uncertain_sign&) {}
     }
     if (c.fast && e.exact) {
         try {
             if (compare_time_with(*c.fast, e.above) > 0) return 1;
             if (compare_time_with(*c.fast, e.below) < 0) return -1;
-        } catch (const uncertain_sign&) {
-        }
+        } catch (const uncertain_sign&) {}
     }
     for (filtered_event<Exact>* x : {&c, &e})
         if (!x->exact) x->set_exact(*exact_time(x->site));

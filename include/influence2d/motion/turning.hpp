@@ -16,22 +16,22 @@
 #include <utility>
 #include <vector>
 
+#include "influence2d/core/feature.hpp"
 #include "influence2d/core/invalid_input.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/distance/separation.hpp"
+#include "influence2d/influence/bounds.hpp"
 #include "influence2d/number/certified.hpp"
 #include "influence2d/number/fallback.hpp"
-#include "influence2d/core/feature.hpp"
+#include "influence2d/predicates/contact_time.hpp"
+#include "influence2d/predicates/orientation.hpp"
 #include "influence2d/query/intersects.hpp"
 #include "influence2d/query/placed_meet.hpp"
 #include "influence2d/scene/edge_boxes.hpp"
 #include "influence2d/scene/placed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
-#include "influence2d/distance/separation.hpp"
-#include "influence2d/influence/bounds.hpp"
-#include "influence2d/predicates/contact_time.hpp"
-#include "influence2d/predicates/orientation.hpp"
 
 #include "influence2d/motion/motion.hpp"
 
@@ -81,7 +81,7 @@ double separation_error(double scale) {
 /// The distance at one time of a turning motion, with the features that
 /// realise it (separation's).
 struct probe_result {
-    double distance = 0;  ///< within one ulp of the separation's distance
+    double distance = 0;       ///< within one ulp of the separation's distance
     feature static_feature{};  ///< A's feature at that distance
     feature moving_feature{};  ///< B's feature at that distance
 };
@@ -117,9 +117,8 @@ std::optional<std::pair<double, probe_result>> advance(const polygon& b, const p
     const double r = bounding_radius(b, {0, 0});
     const double turn = std::fabs(to.theta - from.theta);
     const double v = (std::hypot(to.tx - from.tx, to.ty - from.ty) + turn * r) * (1 + speed_widening);
-    const double delta =
-        motion_rounding * (r * (std::fabs(from.theta) + std::fabs(to.theta) + 1) + std::fabs(from.tx) +
-                           std::fabs(from.ty) + std::fabs(to.tx) + std::fabs(to.ty));
+    const double delta = motion_rounding * (r * (std::fabs(from.theta) + std::fabs(to.theta) + 1) + std::fabs(from.tx) +
+                                            std::fabs(from.ty) + std::fabs(to.tx) + std::fabs(to.ty));
     const double resolution = 4 * (delta + v * 0x1p-52) + 2 * (refine ? fine_error : coarse_error);
     const double tol = std::max(tolerance, resolution);
     bool fine_stage = false;
@@ -188,7 +187,8 @@ contact_result<NT> turning_first_contact(const polygon& a, const polygon& b, con
         std::optional<separation_query<NT>> fine;
         return turning_result<NT>(advance(
             b, from, to, options.tolerance, separation_error<double>(scale),
-            [&](const pose& p) { return probe_of(coarse, p); }, true, 0, [&](const pose& p) {
+            [&](const pose& p) { return probe_of(coarse, p); }, true, 0,
+            [&](const pose& p) {
                 if (!fine) fine.emplace(a, b);
                 return probe_of(*fine, p);
             }));
@@ -205,7 +205,8 @@ contact_result<double> filtered_turning_first_contact(const polygon& a, const po
     separation_query<double> coarse(a, b);
     return turning_result<double>(advance(
         b, from, to, options.tolerance, separation_error<double>(motion_scale(a, b, from, to)),
-        [&](const pose& p) { return probe_of(coarse, p); }, true, 0, [&](const pose& p) {
+        [&](const pose& p) { return probe_of(coarse, p); }, true, 0,
+        [&](const pose& p) {
             const separation_result<Exact> s = separation<Exact>(a, b, p);
             return probe_result{distance_of<Exact>(s.squared_distance), s.static_feature, s.moving_feature};
         }));

@@ -142,7 +142,7 @@ private:
 template <>
 struct number_traits<certified> {
     static constexpr number_category category = number_category::filtered;  ///< exact signs or none
-    static constexpr const char* name = "certified";  ///< "certified"
+    static constexpr const char* name = "certified";                        ///< "certified"
     /// x exactly, with bound 0.
     static certified from_double(double x) { return certified(x); }
     /// The computed value, within error() of the exact one.

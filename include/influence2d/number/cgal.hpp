@@ -24,7 +24,7 @@ using exact_rational = CGAL::Exact_rational;
 template <>
 struct number_traits<exact_rational> {
     static constexpr number_category category = number_category::exact;  ///< exact
-    static constexpr const char* name = "exact";  ///< "exact"
+    static constexpr const char* name = "exact";                         ///< "exact"
     /// x exactly (x must be finite).
     static exact_rational from_double(double x) { return exact_rational(x); }
     /// A double near x (CGAL::to_double, not necessarily the nearest).
@@ -42,7 +42,7 @@ struct number_traits<exact_rational> {
 template <class ET>
 struct number_traits<CGAL::Lazy_exact_nt<ET>> {
     static constexpr number_category category = number_category::filtered;  ///< filtered
-    static constexpr const char* name = "lazy exact";  ///< "lazy exact"
+    static constexpr const char* name = "lazy exact";                       ///< "lazy exact"
     /// x exactly.
     static CGAL::Lazy_exact_nt<ET> from_double(double x) { return CGAL::Lazy_exact_nt<ET>(x); }
     /// A double near x, from its interval.
@@ -71,7 +71,7 @@ using interval = CGAL::Interval_nt<true>;
 template <>
 struct number_traits<interval> {
     static constexpr number_category category = number_category::filtered;  ///< exact signs or none
-    static constexpr const char* name = "interval";  ///< "interval"
+    static constexpr const char* name = "interval";                         ///< "interval"
     /// The point interval [x, x]: exact.
     static interval from_double(double x) { return interval(x); }  // a point: exact
     /// The interval's midpoint (CGAL::to_double).

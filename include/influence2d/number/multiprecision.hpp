@@ -29,7 +29,7 @@ using quad = boost::multiprecision::cpp_bin_float_quad;
 template <>
 struct number_traits<quad> {
     static constexpr number_category category = number_category::floating;  ///< rounded
-    static constexpr const char* name = "quad";  ///< "quad"
+    static constexpr const char* name = "quad";                             ///< "quad"
     /// x exactly.
     static quad from_double(double x) { return quad(x); }
     /// x rounded to double.
@@ -54,7 +54,7 @@ __extension__ typedef __float128 float128;
 template <>
 struct number_traits<float128> {
     static constexpr number_category category = number_category::floating;  ///< rounded
-    static constexpr const char* name = "float128";  ///< "float128"
+    static constexpr const char* name = "float128";                         ///< "float128"
     /// x exactly.
     static float128 from_double(double x) { return static_cast<float128>(x); }
     /// x rounded to double.

@@ -87,8 +87,7 @@ struct number_traits<NT, std::enable_if_t<std::is_floating_point_v<NT>>> {
     /// 1e-4 for float, 1e-9 for double and long double. Filters run in
     /// double; decisions made in a coarser type can be wrong by a few of its
     /// ulps, so its filters widen by a margin well above that.
-    static constexpr double filter_slack =
-        std::numeric_limits<NT>::epsilon() > 1e-12 ? 1e-4 : 1e-9;
+    static constexpr double filter_slack = std::numeric_limits<NT>::epsilon() > 1e-12 ? 1e-4 : 1e-9;
 };
 
 /// The sign of a - b (-1, 0 or +1), taken by number_traits<NT>::sign: the

@@ -39,8 +39,8 @@ enum class segment_part : std::uint8_t {
 /// distance.
 template <class NT>
 struct segment_point {
-    NT squared{};             ///< the squared distance
-    point<NT> at;             ///< the nearest point of the segment
+    NT squared{};                             ///< the squared distance
+    point<NT> at;                             ///< the nearest point of the segment
     segment_part part = segment_part::start;  ///< where `at` lies on the segment
 };
 
@@ -106,9 +106,9 @@ segment_part part_of(const point<NT>& x, const point<NT>& a, const point<NT>& b)
 /// The closest points of two closed segments and their squared distance.
 template <class NT>
 struct segment_pair_closest {
-    NT squared{};        ///< the squared distance; 0 when the segments meet
-    point<NT> on_first;  ///< the point of the first segment (the common point when they meet)
-    point<NT> on_second; ///< the point of the second segment (equal to on_first when they meet)
+    NT squared{};         ///< the squared distance; 0 when the segments meet
+    point<NT> on_first;   ///< the point of the first segment (the common point when they meet)
+    point<NT> on_second;  ///< the point of the second segment (equal to on_first when they meet)
     segment_part first_part = segment_part::start;   ///< where on_first lies on the first segment
     segment_part second_part = segment_part::start;  ///< where on_second lies on the second segment
 };
@@ -130,8 +130,8 @@ point<NT> crossing(const point<NT>& a, const point<NT>& b, const point<NT>& u, c
 /// The common point of [a, b] and [u, v], which meet (ou, ov: the
 /// orientations of u and v against [a, b]); see closest_between_segments.
 template <class NT>
-segment_pair_closest<NT> meeting_point(const point<NT>& a, const point<NT>& b, const point<NT>& u,
-                                       const point<NT>& v, int ou, int ov) {
+segment_pair_closest<NT> meeting_point(const point<NT>& a, const point<NT>& b, const point<NT>& u, const point<NT>& v,
+                                       int ou, int ov) {
     point<NT> x;
     if (ou == 0 && ov == 0) {
         // Collinear (or a == b): one of the four ends lies on the other segment.
@@ -412,8 +412,10 @@ inline distance_range segment_distance_range(const point<double>& a, const point
     if (!segments_may_meet(a, b, u, v, 0)) {
         lower = least * (1 - bound_rounding) - error * (1 + bound_rounding);
     } else {
-        const double gx = std::max({0.0, std::min(u.x, v.x) - std::max(a.x, b.x), std::min(a.x, b.x) - std::max(u.x, v.x)});
-        const double gy = std::max({0.0, std::min(u.y, v.y) - std::max(a.y, b.y), std::min(a.y, b.y) - std::max(u.y, v.y)});
+        const double gx =
+            std::max({0.0, std::min(u.x, v.x) - std::max(a.x, b.x), std::min(a.x, b.x) - std::max(u.x, v.x)});
+        const double gy =
+            std::max({0.0, std::min(u.y, v.y) - std::max(a.y, b.y), std::min(a.y, b.y) - std::max(u.y, v.y)});
         lower = std::max(gx, gy) * (1 - bound_rounding);
     }
     lower -= spread;

@@ -49,8 +49,7 @@ bool in_band(const point<NT>& p, const point<NT>& a, const point<NT>& b, const N
 /// Membership in the chosen shape of extended area of length n >= 0 (closed:
 /// the boundary counts). Exact when NT is.
 template <class NT>
-bool in_extended_area(extended_area shape, const point<NT>& p, const point<NT>& a, const point<NT>& b,
-                      const NT& n) {
+bool in_extended_area(extended_area shape, const point<NT>& p, const point<NT>& a, const point<NT>& b, const NT& n) {
     const NT n2 = n * n;
     return shape == extended_area::capsule ? in_capsule(p, a, b, n2) : in_band(p, a, b, n, n2);
 }
@@ -62,8 +61,8 @@ bool in_extended_area(extended_area shape, const point<NT>& p, const point<NT>& 
 /// with n == 0. Rounded: callers widen n by their rounding margin.
 inline bool may_be_in_extended_area(extended_area shape, const point<double>& p, const point<double>& a,
                                     const point<double>& b, double n) {
-    const double big = std::max({std::fabs(b.x - a.x), std::fabs(b.y - a.y), std::fabs(p.x - a.x),
-                                 std::fabs(p.y - a.y), n});
+    const double big =
+        std::max({std::fabs(b.x - a.x), std::fabs(b.y - a.y), std::fabs(p.x - a.x), std::fabs(p.y - a.y), n});
     if (!std::isfinite(big)) return true;
     if (big == 0) return true;
     // Within this range no square over- or underflows: no scaling needed.

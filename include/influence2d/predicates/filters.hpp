@@ -94,7 +94,8 @@ inline double segment_distance(const point<double>& p, const point<double>& a, c
     if (big == 0) return 0;
     if (!std::isfinite(big)) return std::numeric_limits<double>::infinity();
     const int e = big > square_safe_low && big < square_safe_high ? 0 : std::ilogb(big);
-    if (e != 0) abx = std::ldexp(abx, -e), aby = std::ldexp(aby, -e), apx = std::ldexp(apx, -e), apy = std::ldexp(apy, -e);
+    if (e != 0)
+        abx = std::ldexp(abx, -e), aby = std::ldexp(aby, -e), apx = std::ldexp(apx, -e), apy = std::ldexp(apy, -e);
     const double ab2 = abx * abx + aby * aby;
     double t = ab2 > 0 ? (abx * apx + aby * apy) / ab2 : 0;
     t = std::min(1.0, std::max(0.0, t));

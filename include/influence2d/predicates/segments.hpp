@@ -20,8 +20,8 @@ namespace influence2d {
 /// endpoint, an endpoint on the other segment, or a collinear overlap.
 /// Degenerate segments (a == b or c == d: points) are allowed.
 template <class NT>
-bool segments_intersect(int o_c, int o_d, const point<NT>& a, const point<NT>& b,
-                        const point<NT>& c, const point<NT>& d) {
+bool segments_intersect(int o_c, int o_d, const point<NT>& a, const point<NT>& b, const point<NT>& c,
+                        const point<NT>& d) {
     INFLUENCE2D_ASSERT(o_c == orientation(a, b, c) && o_d == orientation(a, b, d),
                        "the orientations given are not those of c and d against [a, b]");
     if (o_c * o_d > 0) return false;
@@ -45,8 +45,7 @@ bool segments_intersect(int o_c, int o_d, const point<NT>& a, const point<NT>& b
 /// Whether the closed segments [a, b] and [c, d] share a point (touching
 /// counts; degenerate segments allowed).
 template <class NT>
-bool segments_intersect(const point<NT>& a, const point<NT>& b, const point<NT>& c,
-                        const point<NT>& d) {
+bool segments_intersect(const point<NT>& a, const point<NT>& b, const point<NT>& c, const point<NT>& d) {
     return segments_intersect(orientation(a, b, c), orientation(a, b, d), a, b, c, d);
 }
 
@@ -83,11 +82,9 @@ bool point_segment_within(const point<NT>& p, const point<NT>& a, const point<NT
 /// segments meet, or an endpoint of one is within the distance of the other.
 /// Degenerate segments allowed.
 template <class NT>
-bool segments_within(const point<NT>& a, const point<NT>& b, const point<NT>& c,
-                     const point<NT>& d, const NT& d2) {
-    return segments_intersect(a, b, c, d) || point_segment_within(a, c, d, d2) ||
-           point_segment_within(b, c, d, d2) || point_segment_within(c, a, b, d2) ||
-           point_segment_within(d, a, b, d2);
+bool segments_within(const point<NT>& a, const point<NT>& b, const point<NT>& c, const point<NT>& d, const NT& d2) {
+    return segments_intersect(a, b, c, d) || point_segment_within(a, c, d, d2) || point_segment_within(b, c, d, d2) ||
+           point_segment_within(c, a, b, d2) || point_segment_within(d, a, b, d2);
 }
 
 }  // namespace influence2d

@@ -15,8 +15,8 @@
 
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
-#include "influence2d/query/intersects.hpp"
 #include "influence2d/detect/result.hpp"
+#include "influence2d/query/intersects.hpp"
 
 namespace influence2d {
 

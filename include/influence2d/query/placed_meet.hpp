@@ -25,13 +25,13 @@ namespace influence2d {
 struct meeting {
     /// Which test answered.
     enum class kind : std::uint8_t {
-        none,         ///< they do not meet
-        a_vertex_in_b,  ///< A's vertex `a_index` lies in B (`where`: inside or on the boundary)
-        b_vertex_in_a,  ///< B's vertex `b_index` lies in A
-        edges         ///< A's edge `a_index` meets B's edge `b_index`
-    } how = kind::none;  ///< which test answered
-    std::size_t a_index = 0;  ///< A's vertex or edge (stored numbering)
-    std::size_t b_index = 0;  ///< B's vertex or edge (stored numbering)
+        none,                            ///< they do not meet
+        a_vertex_in_b,                   ///< A's vertex `a_index` lies in B (`where`: inside or on the boundary)
+        b_vertex_in_a,                   ///< B's vertex `b_index` lies in A
+        edges                            ///< A's edge `a_index` meets B's edge `b_index`
+    } how = kind::none;                  ///< which test answered
+    std::size_t a_index = 0;             ///< A's vertex or edge (stored numbering)
+    std::size_t b_index = 0;             ///< B's vertex or edge (stored numbering)
     location where = location::outside;  ///< for a located vertex
 
     /// Whether the regions meet.

@@ -57,7 +57,8 @@ public:
         } else {
             using tr = number_traits<NT>;
             approx_own_.resize(shape.size());
-            for (std::size_t j = 0; j < shape.size(); ++j) approx_own_[j] = {tr::to_double(given[j].x), tr::to_double(given[j].y)};
+            for (std::size_t j = 0; j < shape.size(); ++j)
+                approx_own_[j] = {tr::to_double(given[j].x), tr::to_double(given[j].y)};
             approx_ = &approx_own_;
         }
         for (const point<double>& v : *approx_) {
@@ -115,10 +116,8 @@ public:
     point<NT> origin() const {
         using tr = number_traits<NT>;
         switch (how_) {
-        case how::own:
-            return to_point<NT>(shape_.centroid());
-        case how::posed:
-            return pose_.apply<NT>(shape_.centroid());
+        case how::own: return to_point<NT>(shape_.centroid());
+        case how::posed: return pose_.apply<NT>(shape_.centroid());
         default: {
             const double x = bounds_.min_x / 2 + bounds_.max_x / 2, y = bounds_.min_y / 2 + bounds_.max_y / 2;
             if (std::isfinite(x) && std::isfinite(y)) return {tr::from_double(x), tr::from_double(y)};

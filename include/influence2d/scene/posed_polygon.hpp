@@ -170,7 +170,8 @@ private:
 /// bound of r_B + d, the distance from B's centroid within which an edge of A
 /// must lie to come within d of B.
 inline double moving_reach(double moving_radius, double distance) {
-    return std::nextafter((moving_radius + distance) * (1 + pose_scale_widening), std::numeric_limits<double>::infinity());
+    return std::nextafter((moving_radius + distance) * (1 + pose_scale_widening),
+                          std::numeric_limits<double>::infinity());
 }
 
 }  // namespace influence2d

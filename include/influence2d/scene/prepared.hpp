@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -100,9 +100,13 @@ struct static_scene {
 
     /// A's influence areas, which index `covering` (built on first use, O(n)
     /// with n edges; thread-safe).
-    const influence_areas<NT>& areas() const { return areas_.get([this] { return influence_areas<NT>(covering); }); }
+    const influence_areas<NT>& areas() const {
+        return areas_.get([this] { return influence_areas<NT>(covering); });
+    }
     /// A's edge tree in A's frame (built on first use, O(n log n); thread-safe).
-    const edge_tree& tree() const { return tree_.get([this] { return edge_tree(shape); }); }
+    const edge_tree& tree() const {
+        return tree_.get([this] { return edge_tree(shape); });
+    }
     /// Bytes of the heap blocks held by the parts built so far (for an exact
     /// NT, the numbers' own limbs are not counted).
     std::size_t heap_bytes() const {
@@ -139,7 +143,9 @@ struct moving_scene {
     double scale;            ///< largest absolute coordinate of B
 
     /// B's edge tree in B's own frame (built on first use; thread-safe).
-    const edge_tree& tree() const { return tree_.get([this] { return edge_tree(shape); }); }
+    const edge_tree& tree() const {
+        return tree_.get([this] { return edge_tree(shape); });
+    }
     /// Bytes of the heap blocks held by the parts built so far.
     std::size_t heap_bytes() const {
         const edge_tree* t = tree_.if_built();
