@@ -96,11 +96,18 @@ struct number_traits<NT, std::enable_if_t<std::is_floating_point_v<NT>>> {
 /// (uncertain_sign). Exact when NT's ring operations are; for a floating NT,
 /// whose differences are rounded but keep their sign (gradual underflow), it
 /// agrees with the built-in comparisons on finite values, and gives 0 when
-/// either value is NaN. For an NT with expression templates (GMP's, Boost's)
-/// name NT when an argument is an expression: `compare_values<NT>(a * b, c)`.
+/// either value is NaN. A built-in floating type is compared with its own
+/// operators, which give the same answer on every input (two infinities of
+/// one sign: 0 either way) without the subtraction. For an NT with expression
+/// templates (GMP's, Boost's) name NT when an argument is an expression:
+/// `compare_values<NT>(a * b, c)`.
 template <class NT>
 int compare_values(const NT& a, const NT& b) {
-    return number_traits<NT>::sign(a - b);
+    if constexpr (std::is_floating_point_v<NT>) {
+        return a > b ? 1 : (a < b ? -1 : 0);
+    } else {
+        return number_traits<NT>::sign(a - b);
+    }
 }
 
 /// Whether NT's answers are the exact ones: true unless its category is

@@ -34,8 +34,8 @@ bool in_capsule(const point<NT>& p, const point<NT>& a, const point<NT>& b, cons
 /// Exact when NT is.
 template <class NT>
 bool in_band(const point<NT>& p, const point<NT>& a, const point<NT>& b, const NT& n, const NT& n2) {
-    if (!point_line_within(p, a, b, n2)) return false;
     const NT abx = b.x - a.x, aby = b.y - a.y;
+    if (!point_line_within(p, a, abx, aby, n2)) return false;
     const bool vertical_caps = compare_values<NT>(aby * aby, abx * abx) <= 0;
     const NT& pa = vertical_caps ? a.x : a.y;
     const NT& pb = vertical_caps ? b.x : b.y;

@@ -49,14 +49,21 @@ bool segments_intersect(const point<NT>& a, const point<NT>& b, const point<NT>&
     return segments_intersect(orientation(a, b, c), orientation(a, b, d), a, b, c, d);
 }
 
-/// Whether p is within sqrt(d2) of the line through a and b (d2 >= 0;
-/// equality counts): |ab x ap|^2 <= d2 |ab|^2, ring operations only. For
-/// a == b every p is (the line is not defined: 0 <= 0).
+/// Whether p is within sqrt(d2) of the line through a with direction
+/// (abx, aby) (d2 >= 0; equality counts): |ab x ap|^2 <= d2 |ab|^2, ring
+/// operations only. For a direction (0, 0) every p is.
 template <class NT>
-bool point_line_within(const point<NT>& p, const point<NT>& a, const point<NT>& b, const NT& d2) {
-    const NT abx = b.x - a.x, aby = b.y - a.y;
+bool point_line_within(const point<NT>& p, const point<NT>& a, const NT& abx, const NT& aby, const NT& d2) {
     const NT cross = abx * (p.y - a.y) - aby * (p.x - a.x);
     return compare_values<NT>(cross * cross, d2 * (abx * abx + aby * aby)) <= 0;
+}
+
+/// Whether p is within sqrt(d2) of the line through a and b (d2 >= 0;
+/// equality counts), b - a taken as the direction. For a == b every p is
+/// (the line is not defined: 0 <= 0).
+template <class NT>
+bool point_line_within(const point<NT>& p, const point<NT>& a, const point<NT>& b, const NT& d2) {
+    return point_line_within(p, a, NT(b.x - a.x), NT(b.y - a.y), d2);
 }
 
 /// Whether dist(p, [a, b])^2 <= d2, for the closed segment and d2 >= 0 the
@@ -75,7 +82,7 @@ bool point_segment_within(const point<NT>& p, const point<NT>& a, const point<NT
         const NT bpx = p.x - b.x, bpy = p.y - b.y;
         return compare_values<NT>(bpx * bpx + bpy * bpy, d2) <= 0;
     }
-    return point_line_within(p, a, b, d2);
+    return point_line_within(p, a, abx, aby, d2);
 }
 
 /// Whether dist([a, b], [c, d])^2 <= d2 (d2 >= 0; equality counts): the
