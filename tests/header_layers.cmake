@@ -25,8 +25,8 @@
 # as a script, it is the test itself:
 #   cmake -DSOURCE_DIR=... -P header_layers.cmake
 if(CMAKE_SCRIPT_MODE_FILE)
-    set(layer_names "assert;version;number;core;predicates;covering;influence;scene;detect;query;distance;motion;exact;io;adapters;audit;influence2d")
-    set(layer_ranks "0;0;1;2;3;4;5;6;7;8;9;10;11;12;12;13;14")
+    set(layer_names "assert;version;number;core;predicates;covering;influence;scene;detect;query;distance;motion;world;exact;io;adapters;audit;influence2d")
+    set(layer_ranks "0;0;1;2;3;4;5;6;7;8;9;10;11;12;13;13;14;15")
     # The layer of a header path relative to include/influence2d/: its
     # directory, or its stem for the top-level headers.
     function(layer_of path out)

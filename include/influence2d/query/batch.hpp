@@ -35,11 +35,14 @@ struct no_op {
     void operator()(T&&...) const {}
 };
 
+}  // namespace batch_detail
+
 /// Runs block(first, last) over [0, count) cut into one contiguous block per
-/// thread (the calling thread takes the first), and waits for all. The first
+/// thread, `threads` of them (0: every hardware thread; never more than
+/// count), the calling thread taking the first, and waits for all. The first
 /// exception thrown, in block order, is rethrown after every thread ended.
 template <class Block>
-void in_blocks(std::size_t count, unsigned threads, Block&& block) {
+void run_in_blocks(std::size_t count, unsigned threads, Block&& block) {
     const std::size_t t = std::min<std::size_t>(batch_threads(threads), std::max<std::size_t>(count, 1));
     std::vector<std::exception_ptr> failed(t);
     const auto run = [&](std::size_t k) {
@@ -57,8 +60,6 @@ void in_blocks(std::size_t count, unsigned threads, Block&& block) {
     for (const std::exception_ptr& e : failed)
         if (e) std::rethrow_exception(e);
 }
-
-}  // namespace batch_detail
 
 /// The answers for every pose, in order, from detectors made by
 /// `make_detector()` (one per thread, each answering a contiguous run of the
@@ -81,7 +82,7 @@ template <class MakeDetector, class Done = batch_detail::no_op>
 std::vector<frame_result> collide_batch(const std::vector<pose>& poses, MakeDetector&& make_detector,
                                         unsigned threads = 0, Done&& done = {}) {
     std::vector<frame_result> out(poses.size());
-    batch_detail::in_blocks(poses.size(), threads, [&](std::size_t first, std::size_t last) {
+    run_in_blocks(poses.size(), threads, [&](std::size_t first, std::size_t last) {
         if (first == last) return;
         auto d = make_detector();
         for (std::size_t k = first; k < last; ++k) out[k] = d.collide(poses[k]);
@@ -108,7 +109,7 @@ struct pair_query {
 template <class Ask>
 std::vector<char> intersects_batch(const std::vector<pair_query>& queries, Ask&& ask, unsigned threads = 0) {
     std::vector<char> out(queries.size(), 0);
-    batch_detail::in_blocks(queries.size(), threads, [&](std::size_t first, std::size_t last) {
+    run_in_blocks(queries.size(), threads, [&](std::size_t first, std::size_t last) {
         for (std::size_t k = first; k < last; ++k) {
             const pair_query& q = queries[k];
             if (q.static_polygon == nullptr || q.moving_polygon == nullptr)

@@ -99,4 +99,52 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e) {
     return found;
 }
 
+/// Whether the closed regions of the two placed polygons come within
+/// distance d of each other (d = 0: whether they meet, placed_meet), and
+/// what showed it; `d2` is d * d in NT (exact when NT is and d is a double
+/// whose square NT holds exactly), `e` the filters' margin as for
+/// placed_meet. Exact when NT is.
+///
+///   the boxes (grown by d and e) apart:                        not within d
+///   placed_meet (the regions meet):                            within d
+///   the edges of each whose box (grown by d and e) meets the other's box;
+///   each pair of those whose boxes overlap: exact distance test in NT
+///   (segments_within):                                         within d
+///   not within d
+///
+/// (Regions that do not meet are within d exactly when their boundaries
+/// are: a point of one within d of the other's region is within d of its
+/// boundary when outside it.)
+template <class NT>
+meeting placed_within(placed_polygon<NT>& a, placed_polygon<NT>& b, double e, double d, const NT& d2) {
+    if (!(d > 0)) return placed_meet(a, b, e);
+    // (d's own share widened by 2^-50: the sums below round relative to d.)
+    const double reach = d * (1 + 0x1p-50) + 2 * e;
+    box b_window = b.bounds().inflated(reach), a_window = a.bounds().inflated(reach);
+    if (!a.finite() || !b.finite()) {
+        const double inf = std::numeric_limits<double>::infinity();
+        b_window = box{-inf, -inf, inf, inf};
+        a_window = b_window;
+    }
+    const box& ab = a.bounds();
+    if (b_window.max_x < ab.min_x || b_window.min_x > ab.max_x || b_window.max_y < ab.min_y ||
+        b_window.min_y > ab.max_y)
+        return {};
+    if (meeting m = placed_meet(a, b, e)) return m;
+    // Each edge's box grown by reach / 2 + e on its side: two edges within d
+    // have boxes within d (exactly), within d + 2e in double.
+    const double grow = reach / 2 + e;
+    std::vector<edge_box> a_edges, b_edges;
+    const polygon &as = a.shape(), &bs = b.shape();
+    edges_meeting(as, a.approx(), b_window, grow, a_edges);
+    edges_meeting(bs, b.approx(), a_window, grow, b_edges);
+    meeting found;
+    overlapping_pairs(a_edges, b_edges, [&](std::uint32_t i, std::uint32_t j) {
+        if (!segments_within(a[i], a[as.next(i)], b[j], b[bs.next(j)], d2)) return false;
+        found = {meeting::kind::edges, i, j, location::boundary};
+        return true;
+    });
+    return found;
+}
+
 }  // namespace influence2d

@@ -1,0 +1,194 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// Which boxes of a set meet a given box: a packed tree over boxes kept in
+/// the order of their centres along a Z-order curve, rebuilt bottom-up in
+/// linear time when the boxes move (docs/world.md, "Broad phase").
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "influence2d/core/box.hpp"
+
+namespace influence2d {
+
+/// Whether two closed boxes share a point (false when either is empty or
+/// has a NaN side).
+inline bool boxes_overlap(const box& l, const box& r) {
+    return l.min_x <= r.max_x && r.min_x <= l.max_x && l.min_y <= r.max_y && r.min_y <= l.max_y;
+}
+
+/// A set of boxes, each with an id, answering which of them meet a query box.
+///
+///   rebuild(boxes):
+///     key <- each box's centre on a Z-order curve over the centres' box
+///            (16 bits per axis)
+///     sort the entries by key: insertion sort while the entries moved
+///       little since the last rebuild (coherent scenes: linear), else a
+///       full sort
+///     leaves <- runs of `fan_out` consecutive entries; each level above
+///       groups `fan_out` consecutive nodes of the level below, bottom-up,
+///       each node's box the union of its children's
+///   query(q): descend from the root into the nodes whose box meets q
+///
+/// Consecutive entries along the curve are near each other, so the nodes'
+/// boxes stay small; a query visits O(log n + k) nodes for k boxes that meet
+/// q when the boxes are of similar sizes (a box much larger than its
+/// neighbours widens the nodes above it). No box is ever missed: a node's
+/// box holds its children's.
+class box_tree {
+public:
+    /// The boxes and their ids; `boxes[k]` has id `ids[k]`. Keeps the order of
+    /// the last rebuild as the start of this one. Boxes that are empty are
+    /// kept and never met.
+    void rebuild(const std::vector<box>& boxes, const std::vector<std::uint32_t>& ids) {
+        const std::size_t n = boxes.size();
+        box centres;
+        for (const box& b : boxes) centres.add(centre(b));
+        const double sx = scale_of(centres.min_x, centres.max_x), sy = scale_of(centres.min_y, centres.max_y);
+        // Entries carried over from the last rebuild first (in their order),
+        // then the new ones: a scene that changed little stays nearly sorted.
+        std::vector<std::uint32_t> where(n_slots(ids), absent);
+        for (std::size_t k = 0; k < n; ++k) where[ids[k]] = static_cast<std::uint32_t>(k);
+        std::vector<entry> next;
+        next.reserve(n);
+        for (const entry& e : entries_)
+            if (e.id < where.size() && where[e.id] != absent) {
+                next.push_back({boxes[where[e.id]], e.id, 0});
+                where[e.id] = absent;
+            }
+        for (std::size_t k = 0; k < n; ++k)
+            if (where[ids[k]] != absent) next.push_back({boxes[k], ids[k], 0});
+        for (entry& e : next) {
+            const point<double> c = centre(e.bounds);
+            e.key = z_order(quantized(c.x, centres.min_x, sx), quantized(c.y, centres.min_y, sy));
+        }
+        sort_by_key(next);
+        entries_ = std::move(next);
+        build_levels();
+    }
+
+    /// Calls found(id) for every box that meets q (closed boxes: touching
+    /// counts), in no particular order.
+    template <class Found>
+    void query(const box& q, Found&& found) const {
+        if (levels_.empty()) return;
+        visit(levels_.size() - 1, 0, q, found);
+    }
+
+    /// The number of boxes.
+    std::size_t size() const { return entries_.size(); }
+
+private:
+    static constexpr std::size_t fan_out = 8;
+    static constexpr std::uint32_t absent = 0xffffffffu;
+
+    struct entry {
+        box bounds;
+        std::uint32_t id;
+        std::uint32_t key;
+    };
+
+    static point<double> centre(const box& b) { return {b.min_x / 2 + b.max_x / 2, b.min_y / 2 + b.max_y / 2}; }
+    static std::size_t n_slots(const std::vector<std::uint32_t>& ids) {
+        std::uint32_t top = 0;
+        for (std::uint32_t id : ids) top = std::max(top, id + 1);
+        return top;
+    }
+    // The width of one of 2^16 cells along an axis spanning [lo, hi]
+    // (1 for a point or an axis that is not finite).
+    static double scale_of(double lo, double hi) {
+        const double w = hi / 65536 - lo / 65536;
+        return std::isfinite(w) && w > 0 ? w : 1;
+    }
+    static std::uint32_t quantized(double v, double lo, double cell) {
+        const double q = (v / cell - lo / cell);
+        if (!(q > 0)) return 0;  // (NaN too)
+        return q >= 65535 ? 65535u : static_cast<std::uint32_t>(q);
+    }
+    // The bits of x and y interleaved (x in the even bits).
+    static std::uint32_t z_order(std::uint32_t x, std::uint32_t y) {
+        const auto spread = [](std::uint32_t v) {
+            v = (v | (v << 8)) & 0x00ff00ffu;
+            v = (v | (v << 4)) & 0x0f0f0f0fu;
+            v = (v | (v << 2)) & 0x33333333u;
+            v = (v | (v << 1)) & 0x55555555u;
+            return v;
+        };
+        return spread(x) | (spread(y) << 1);
+    }
+
+    // Insertion sort while it stays cheap (at most 8 moves per entry on
+    // average: the entries were nearly in order), else std::sort.
+    static void sort_by_key(std::vector<entry>& v) {
+        const std::size_t budget = 8 * v.size() + 64;
+        std::size_t moves = 0;
+        for (std::size_t k = 1; k < v.size(); ++k) {
+            entry e = v[k];
+            std::size_t j = k;
+            while (j > 0 && v[j - 1].key > e.key) {
+                v[j] = v[j - 1];
+                --j;
+                if (++moves > budget) {
+                    v[j] = e;
+                    std::sort(v.begin(), v.end(), [](const entry& l, const entry& r) { return l.key < r.key; });
+                    return;
+                }
+            }
+            v[j] = e;
+        }
+    }
+
+    void build_levels() {
+        levels_.clear();
+        if (entries_.empty()) return;
+        std::vector<box> level;
+        level.reserve((entries_.size() + fan_out - 1) / fan_out);
+        for (std::size_t k = 0; k < entries_.size(); k += fan_out) {
+            box b;
+            for (std::size_t j = k; j < std::min(k + fan_out, entries_.size()); ++j) grow(b, entries_[j].bounds);
+            level.push_back(b);
+        }
+        levels_.push_back(std::move(level));
+        while (levels_.back().size() > 1) {
+            const std::vector<box>& below = levels_.back();
+            std::vector<box> above;
+            above.reserve((below.size() + fan_out - 1) / fan_out);
+            for (std::size_t k = 0; k < below.size(); k += fan_out) {
+                box b;
+                for (std::size_t j = k; j < std::min(k + fan_out, below.size()); ++j) grow(b, below[j]);
+                above.push_back(b);
+            }
+            levels_.push_back(std::move(above));
+        }
+    }
+    static void grow(box& b, const box& c) {
+        if (c.empty()) return;
+        b.min_x = std::min(b.min_x, c.min_x);
+        b.min_y = std::min(b.min_y, c.min_y);
+        b.max_x = std::max(b.max_x, c.max_x);
+        b.max_y = std::max(b.max_y, c.max_y);
+    }
+
+    // Node `node` of level `level` (level 0: the leaves, whose children are
+    // entries).
+    template <class Found>
+    void visit(std::size_t level, std::size_t node, const box& q, Found& found) const {
+        if (!boxes_overlap(levels_[level][node], q)) return;
+        const std::size_t first = node * fan_out;
+        if (level == 0) {
+            for (std::size_t j = first; j < std::min(first + fan_out, entries_.size()); ++j)
+                if (boxes_overlap(entries_[j].bounds, q)) found(entries_[j].id);
+            return;
+        }
+        for (std::size_t j = first; j < std::min(first + fan_out, levels_[level - 1].size()); ++j)
+            visit(level - 1, j, q, found);
+    }
+
+    std::vector<entry> entries_;
+    std::vector<std::vector<box>> levels_;  // levels_[0]: one box per leaf of fan_out entries
+};
+
+}  // namespace influence2d

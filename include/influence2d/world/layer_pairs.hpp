@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// Which polygons of a layer meet, or which of one layer meet which of
+/// another, all at their own coordinates: the spatial join of an audit or a
+/// GIS check (docs/world.md, "Layers").
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "influence2d/core/invalid_input.hpp"
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/core/pose.hpp"
+#include "influence2d/influence/bounds.hpp"
+#include "influence2d/predicates/filters.hpp"
+#include "influence2d/query/batch.hpp"
+#include "influence2d/scene/placed_polygon.hpp"
+#include "influence2d/scene/prepared.hpp"
+#include "influence2d/world/box_tree.hpp"
+#include "influence2d/world/narrow_phase.hpp"
+#include "influence2d/world/world.hpp"
+
+namespace influence2d {
+
+namespace layer_pairs_detail {
+
+/// The layer's boxes (each polygon's own box grown by half the distance,
+/// with room for the rounding of that sum) and their ids; throws
+/// invalid_input naming an empty polygon or one beyond NT's range.
+template <class NT>
+void boxes_of(const std::vector<polygon>& layer, const char* which, double within, std::vector<box>& boxes,
+              std::vector<std::uint32_t>& ids) {
+    if (layer.size() >= 0xffffffffu)
+        throw invalid_input(std::string("layer_pairs: the ") + which + " layer is too large");
+    for (std::size_t k = 0; k < layer.size(); ++k) {
+        if (layer[k].size() == 0)
+            throw invalid_input(std::string("layer_pairs: polygon ") + std::to_string(k) + " of the " + which +
+                                " layer is empty (it has no ring)");
+        accepted_polygon<NT>(layer[k], which);
+        boxes.push_back(
+            layer[k].bounds().inflated(posing_margin<NT>(coordinate_scale(layer[k])) + within / 2 * (1 + 0x1p-50)));
+        ids.push_back(static_cast<std::uint32_t>(k));
+    }
+}
+
+/// The candidates' answers (in parallel blocks) and the pairs within d.
+template <class NT, class Exact>
+std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::vector<polygon>& second,
+                                 const std::vector<body_pair>& candidates, double within, unsigned threads) {
+    std::vector<char> meets(candidates.size(), 0);
+    run_in_blocks(candidates.size(), candidates.size() < 128 ? 1u : threads, [&](std::size_t lo, std::size_t hi) {
+        const rotation_pose here(pose{});
+        for (std::size_t k = lo; k < hi; ++k) {
+            const polygon &a = first[candidates[k].first], &b = second[candidates[k].second];
+            placed_polygon<NT> pa(a), pb(b);
+            const body_view<NT> va{&a, here, coordinate_scale(a), &pa}, vb{&b, here, coordinate_scale(b), &pb};
+            meets[k] = bodies_within<NT, Exact>(meeting{}, va, vb, within) ? 1 : 0;
+        }
+    });
+    std::vector<body_pair> out;
+    for (std::size_t k = 0; k < candidates.size(); ++k)
+        if (meets[k]) out.push_back(candidates[k]);
+    return out;
+}
+
+/// The distance, checked.
+inline double checked_distance(double within) {
+    if (!(within >= 0) || !std::isfinite(within))
+        throw invalid_input("layer_pairs: the distance " + std::to_string(within) + " is not a finite number >= 0");
+    return within;
+}
+
+}  // namespace layer_pairs_detail
+
+/// Every pair (i, j), i < j, of the layer's polygons whose closed regions
+/// come within `within` of each other (0: meet; touching counts), sorted.
+/// Exact when NT is, or with Exact not void (certified_layer_pairs in
+/// exact/certified_world.hpp): the answers of intersects on each pair.
+///
+///   boxes <- each polygon's box, grown by within / 2 (and the filters'
+///            margin); a box tree over them (box_tree)
+///   candidates <- for each polygon i, the polygons j > i whose box meets
+///                 its own
+///   each candidate, in parallel blocks of `threads` (0: every hardware
+///   thread): bodies_within at the polygons' own coordinates
+///
+/// Throws invalid_input for an empty polygon (naming it), one beyond NT's
+/// range, or a distance that is negative, NaN or infinite.
+template <class NT, class Exact = void>
+std::vector<body_pair> layer_pairs(const std::vector<polygon>& layer, double within = 0, unsigned threads = 1) {
+    within = layer_pairs_detail::checked_distance(within);
+    std::vector<box> boxes;
+    std::vector<std::uint32_t> ids;
+    layer_pairs_detail::boxes_of<NT>(layer, "first", within, boxes, ids);
+    box_tree tree;
+    tree.rebuild(boxes, ids);
+    std::vector<body_pair> candidates;
+    for (std::uint32_t i = 0; i < layer.size(); ++i)
+        tree.query(boxes[i], [&](std::uint32_t j) {
+            if (j > i) candidates.push_back({i, j});
+        });
+    std::sort(candidates.begin(), candidates.end());
+    return layer_pairs_detail::within_of<NT, Exact>(layer, layer, candidates, within, threads);
+}
+
+/// Every pair (i, j) of a polygon i of `first` and a polygon j of `second`
+/// whose closed regions come within `within` of each other, sorted; as the
+/// one-layer form otherwise (the box tree over `second`).
+template <class NT, class Exact = void>
+std::vector<body_pair> layer_pairs(const std::vector<polygon>& first, const std::vector<polygon>& second,
+                                   double within = 0, unsigned threads = 1) {
+    within = layer_pairs_detail::checked_distance(within);
+    std::vector<box> a_boxes, b_boxes;
+    std::vector<std::uint32_t> a_ids, b_ids;
+    layer_pairs_detail::boxes_of<NT>(first, "first", within, a_boxes, a_ids);
+    layer_pairs_detail::boxes_of<NT>(second, "second", within, b_boxes, b_ids);
+    box_tree tree;
+    tree.rebuild(b_boxes, b_ids);
+    std::vector<body_pair> candidates;
+    for (std::uint32_t i = 0; i < first.size(); ++i)
+        tree.query(a_boxes[i], [&](std::uint32_t j) { candidates.push_back({i, j}); });
+    std::sort(candidates.begin(), candidates.end());
+    return layer_pairs_detail::within_of<NT, Exact>(first, second, candidates, within, threads);
+}
+
+}  // namespace influence2d

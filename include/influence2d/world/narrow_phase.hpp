@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// Whether two bodies, each a polygon at its own pose, come within a
+/// distance of each other: tried first on what showed it at the last step
+/// (docs/world.md, "Narrow phase and coherence").
+
+#include <cmath>
+#include <memory>
+#include <type_traits>
+
+#include "influence2d/core/feature.hpp"
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/core/pose.hpp"
+#include "influence2d/covering/inclusion.hpp"
+#include "influence2d/number/fallback.hpp"
+#include "influence2d/number/traits.hpp"
+#include "influence2d/predicates/filters.hpp"
+#include "influence2d/predicates/segments.hpp"
+#include "influence2d/query/placed_meet.hpp"
+#include "influence2d/scene/placed_polygon.hpp"
+
+namespace influence2d {
+
+/// The features that show two bodies in contact, in each polygon's input
+/// numbering: an edge of each (they meet, or are within the distance), or a
+/// vertex of one and the other's region (feature_kind::interior: the vertex
+/// lies in its closed region).
+struct contact_witness {
+    feature first;   ///< of the body of the smaller id
+    feature second;  ///< of the other body
+};
+
+/// The witness of a meeting between placed polygons a and b, in input
+/// numbering (meeting holds stored numbers).
+inline contact_witness witness_of(const meeting& m, const polygon& a, const polygon& b) {
+    const feature region{feature_kind::interior, 0};
+    switch (m.how) {
+    case meeting::kind::edges:
+        return {{feature_kind::edge, a.source_edge(m.a_index)}, {feature_kind::edge, b.source_edge(m.b_index)}};
+    case meeting::kind::a_vertex_in_b: return {{feature_kind::vertex, input_vertex(a, m.a_index)}, region};
+    case meeting::kind::b_vertex_in_a: return {region, {feature_kind::vertex, input_vertex(b, m.b_index)}};
+    default: return {region, region};
+    }
+}
+
+/// One body of a pair test: its polygon, its pose, and the polygon placed at
+/// that pose (vertices in double; in NT, every one of them already made when
+/// NT is not double, so that several threads may read it at once).
+template <class NT>
+struct body_view {
+    const polygon* shape;        ///< the body's polygon
+    rotation_pose pose;          ///< where it stands
+    double scale;                ///< shape's largest coordinate plus |tx| + |ty|
+    placed_polygon<NT>* placed;  ///< shape placed by pose, shared between the body's pairs
+};
+
+/// Whether what showed bodies a and b within d at the last step (`last`,
+/// stored numbering) still does at their present poses, decided exactly in
+/// NT: for two edges, the exact segment test (d = 0) or distance test on the
+/// four vertices posed in NT; for a located vertex, its location in the
+/// other polygon.
+template <class NT>
+bool witness_holds(const meeting& last, const body_view<NT>& a, const body_view<NT>& b, double d, const NT& d2) {
+    const polygon &as = *a.shape, &bs = *b.shape;
+    switch (last.how) {
+    case meeting::kind::edges: {
+        const std::size_t i = last.a_index, j = last.b_index;
+        const point<NT> p = a.pose.template apply<NT>(as.vertex(i)),
+                        q = a.pose.template apply<NT>(as.vertex(as.next(i)));
+        const point<NT> u = b.pose.template apply<NT>(bs.vertex(j)),
+                        v = b.pose.template apply<NT>(bs.vertex(bs.next(j)));
+        return d > 0 ? segments_within(p, q, u, v, d2) : segments_intersect(p, q, u, v);
+    }
+    case meeting::kind::b_vertex_in_a:
+        return locate(as, a.placed->all(), a.placed->origin(), (*b.placed)[last.b_index]) != location::outside;
+    case meeting::kind::a_vertex_in_b:
+        return locate(bs, b.placed->all(), b.placed->origin(), (*a.placed)[last.a_index]) != location::outside;
+    default: return false;
+    }
+}
+
+/// Whether bodies a and b come within d of each other (d = 0: their closed
+/// regions meet), and what shows it, in stored numbering. `last` is what
+/// showed it at the last step (kind none when they were apart or the pair
+/// is new): it is tried first, then the one-shot test (placed_within);
+/// `*by_witness`, when given, says whether `last` answered. Exact
+/// when NT is. With Exact not void, a sign NT cannot settle (uncertain_sign)
+/// makes the pair answered again in Exact, both bodies posed anew in it.
+///
+///   last still holds (witness_holds):    last
+///   else placed_within on the placed bodies, with the margin of their
+///   posing (posing_margin of the sum of their scales)
+template <class NT, class Exact = void>
+meeting bodies_within(const meeting& last, const body_view<NT>& a, const body_view<NT>& b, double d,
+                      bool* by_witness = nullptr) {
+    if (by_witness != nullptr) *by_witness = false;
+    const auto in = [&](auto tag, placed_polygon<decltype(tag)>& pa, placed_polygon<decltype(tag)>& pb,
+                        const meeting& witness, const body_view<decltype(tag)>* va,
+                        const body_view<decltype(tag)>* vb) -> meeting {
+        using T = decltype(tag);
+        using tr = number_traits<T>;
+        const T dt = tr::from_double(d);
+        const T d2 = dt * dt;
+        if (va != nullptr && witness && witness_holds(witness, *va, *vb, d, d2)) {
+            if (by_witness != nullptr) *by_witness = true;
+            return witness;
+        }
+        return placed_within(pa, pb, posing_margin<T>(a.scale + b.scale), d, d2);
+    };
+    const auto fast = [&] { return in(NT{}, *a.placed, *b.placed, last, &a, &b); };
+    if constexpr (std::is_void_v<Exact>) {
+        return fast();
+    } else {
+        return fallback<>::run(fast, [&] {
+            placed_polygon<Exact> pa(*a.shape, a.pose), pb(*b.shape, b.pose);
+            return in(Exact{}, pa, pb, meeting{}, static_cast<const body_view<Exact>*>(nullptr),
+                      static_cast<const body_view<Exact>*>(nullptr));
+        });
+    }
+}
+
+}  // namespace influence2d

@@ -1,0 +1,387 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// Many bodies, each a polygon at its own pose, moved step by step: which
+/// pairs are in contact after each step (docs/world.md).
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "influence2d/core/box.hpp"
+#include "influence2d/core/invalid_input.hpp"
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/core/pose.hpp"
+#include "influence2d/influence/bounds.hpp"
+#include "influence2d/predicates/filters.hpp"
+#include "influence2d/query/batch.hpp"
+#include "influence2d/scene/placed_polygon.hpp"
+#include "influence2d/scene/prepared.hpp"
+#include "influence2d/world/box_tree.hpp"
+#include "influence2d/world/narrow_phase.hpp"
+
+namespace influence2d {
+
+/// Two bodies (or two polygons of a layer) by id, `first < second` within
+/// one set; ordered by first, then second.
+struct body_pair {
+    std::uint32_t first = 0;   ///< the smaller id (or the id in the first layer)
+    std::uint32_t second = 0;  ///< the larger id (or the id in the second layer)
+
+    /// Lexicographic order.
+    friend bool operator<(const body_pair& l, const body_pair& r) {
+        return l.first != r.first ? l.first < r.first : l.second < r.second;
+    }
+    /// Same ids.
+    friend bool operator==(const body_pair& l, const body_pair& r) {
+        return l.first == r.first && l.second == r.second;
+    }
+};
+
+/// A pair whose contact began or ended at a step.
+struct contact_event {
+    body_pair bodies;     ///< the pair
+    bool begins = false;  ///< true: in contact now and not at the last step; false: the reverse
+};
+
+/// How a world answers.
+struct world_options {
+    /// Pairs within this distance count as in contact (0: their closed
+    /// regions meet). Finite and >= 0.
+    double within = 0;
+    /// Keep the witness of each contact (witnesses()).
+    bool witness = false;
+    /// Keep what showed each contact and try it first at the next step. Off,
+    /// every pair with a moved body is tested afresh (same answers).
+    bool coherence = true;
+    /// Threads of the narrow phase: 1 serial, 0 every hardware thread.
+    /// The answers and their order are the serial run's.
+    unsigned threads = 1;
+};
+
+/// Counters of a world's work since its construction.
+struct world_statistics {
+    std::size_t steps = 0;         ///< calls of step()
+    std::size_t moved = 0;         ///< bodies moved, added or removed, summed over the steps
+    std::size_t candidates = 0;    ///< pairs whose boxes met and had a moved body
+    std::size_t carried = 0;       ///< pairs whose boxes met and neither body moved (answer kept)
+    std::size_t witness_hits = 0;  ///< candidates answered by the last step's witness
+    std::size_t contacts = 0;      ///< contacts reported, summed over the steps
+};
+
+/// Bodies in the plane, each an arbitrary polygon (non-convex, holes,
+/// several outer rings) at its own pose, moved step by step; after each
+/// step, every pair of bodies within `within` of each other (by default:
+/// whose closed regions meet). Fixed bodies are never tested against each
+/// other. Bodies of one shape share it (added once with add_shape).
+///
+/// Each body's region is its polygon posed exactly by its pose (c and s the
+/// doubles of rotation_pose): exact when NT is, the answers those of
+/// intersects(a, pose_a, b, pose_b) for every pair (query/both_posed.hpp);
+/// with Exact not void (certified_world in exact/certified_world.hpp) a
+/// pair whose signs NT cannot settle is answered again in Exact.
+///
+///   step():
+///     each body moved since the last step: its box, from the four corners
+///       of its polygon's box posed in double (the posed polygon lies in
+///       their parallelogram), grown by the posing margin and within / 2
+///     the fixed bodies' box tree rebuilt if one of them moved; the free
+///       bodies' box tree rebuilt if one of them moved (box_tree: linear
+///       when they moved little)
+///     candidates <- for each moved body, the bodies whose box meets its
+///       own (free bodies; fixed ones too for a free body); the pairs of
+///       the last step whose bodies both stayed keep their answer
+///     each candidate, in parallel blocks: bodies_within, the last step's
+///       witness tried first (narrow_phase.hpp)
+///     contacts <- the pairs within `within`, sorted; events: the
+///       difference with the last step's contacts
+///
+/// Cost of a step: O(m log n + k) for m moved bodies among n and k
+/// candidate pairs, plus the rebuild of the free bodies' tree (linear when
+/// they moved little), plus the narrow phase: a persisting contact whose
+/// witness edges still meet costs four posed vertices and two orientation
+/// tests; others the one-shot query's steps. Nothing grows with the number
+/// of pairs of bodies.
+template <class NT, class Exact = void>
+class world {
+public:
+    using shape_id = std::uint32_t;  ///< a shape, numbered from 0 in order of add_shape
+    using body_id = std::uint32_t;   ///< a body, numbered from 0 in order of add_body
+
+    /// An empty world. Throws invalid_input for a distance that is negative,
+    /// NaN or infinite.
+    explicit world(world_options options = {}) : options_(options) {
+        if (!(options.within >= 0) || !std::isfinite(options.within))
+            throw invalid_input("world: the distance " + std::to_string(options.within) +
+                                " is not a finite number >= 0");
+    }
+
+    /// Adds a shape that bodies may take; its preparation is shared by them.
+    /// Throws invalid_input for an empty polygon or one beyond NT's range.
+    shape_id add_shape(const polygon& p) {
+        accepted_polygon<NT>(p, "world's");
+        auto s = std::make_unique<shape_entry>(shape_entry{p, coordinate_scale(p)});
+        shapes_.push_back(std::move(s));
+        return static_cast<shape_id>(shapes_.size() - 1);
+    }
+
+    /// Adds a body of shape s at pose q; a `fixed` body is never tested
+    /// against another fixed one. Throws invalid_input for an unknown shape
+    /// or a pose component that is NaN or infinite.
+    body_id add_body(shape_id s, const pose& q, bool fixed = false) {
+        if (s >= shapes_.size())
+            throw invalid_input("world: no shape " + std::to_string(s) + " (there are " +
+                                std::to_string(shapes_.size()) + ")");
+        body b;
+        b.shape = s;
+        b.pose = rotation_pose(q);
+        b.fixed = fixed;
+        bodies_.push_back(std::move(b));
+        const body_id id = static_cast<body_id>(bodies_.size() - 1);
+        mark_moved(id);
+        return id;
+    }
+
+    /// Moves body i to pose q (its place at the next step). Throws
+    /// invalid_input for an unknown or removed body or a pose component
+    /// that is NaN or infinite.
+    void move(body_id i, const pose& q) {
+        const rotation_pose t(q);
+        live(i).pose = t;
+        mark_moved(i);
+    }
+
+    /// Removes body i: its contacts end at the next step; its id is not
+    /// reused. Throws invalid_input for an unknown or removed body.
+    void remove(body_id i) {
+        body& b = live(i);
+        b.alive = false;
+        b.placed.reset();
+        mark_moved(i);
+    }
+
+    /// Brings the world to its bodies' present poses and returns the pairs
+    /// in contact, sorted (first < second). See the class comment.
+    const std::vector<body_pair>& step() {
+        ++stats_.steps;
+        stats_.moved += moved_.size();
+        place_moved();
+        std::vector<record> tested = candidates();
+        narrow(tested);
+        gather(tested);
+        return contacts_;
+    }
+
+    /// The pairs in contact after the last step, sorted.
+    const std::vector<body_pair>& contacts() const { return contacts_; }
+    /// What shows each contact (parallel to contacts()), when
+    /// world_options::witness; empty otherwise.
+    const std::vector<contact_witness>& witnesses() const { return witnesses_; }
+    /// The contacts that began and ended at the last step, sorted by pair.
+    const std::vector<contact_event>& events() const { return events_; }
+    /// The work done so far.
+    const world_statistics& statistics() const { return stats_; }
+    /// The number of bodies added (removed ones included).
+    std::size_t body_count() const { return bodies_.size(); }
+    /// The options the world was made with.
+    const world_options& options() const { return options_; }
+
+private:
+    struct shape_entry {
+        polygon shape;
+        double scale;
+    };
+    struct body {
+        shape_id shape = 0;
+        rotation_pose pose{influence2d::pose{}};
+        bool fixed = false;
+        bool alive = true;
+        bool moved = false;  // since the last step
+        box bounds;
+        double scale = 0;  // the shape's scale plus |tx| + |ty|
+        std::shared_ptr<built_once<std::unique_ptr<placed_polygon<NT>>>> placed;
+    };
+    struct record {
+        body_pair bodies;
+        meeting shown;            // kind none: not within the distance
+        bool by_witness = false;  // answered by the last step's witness
+    };
+
+    body& live(body_id i) {
+        if (i >= bodies_.size() || !bodies_[i].alive)
+            throw invalid_input("world: no body " + std::to_string(i) +
+                                (i < bodies_.size() ? " (it was removed)" : ""));
+        return bodies_[i];
+    }
+    void mark_moved(body_id i) {
+        body& b = bodies_[i];
+        if (!b.moved) moved_.push_back(i);
+        b.moved = true;
+        (b.fixed ? fixed_dirty_ : free_dirty_) = true;
+    }
+
+    // The box of body b: its polygon's box with the four corners posed in
+    // double, grown by the posing margin and half the distance (and d's
+    // own rounding); a side that is NaN makes it the whole plane.
+    box box_of(const body& b) const {
+        const box& local = shapes_[b.shape]->shape.bounds();
+        box out;
+        for (const point<double>& c :
+             {point<double>{local.min_x, local.min_y}, point<double>{local.max_x, local.min_y},
+              point<double>{local.min_x, local.max_y}, point<double>{local.max_x, local.max_y}})
+            out.add(b.pose.template apply<double>(c));
+        out = out.inflated(2 * posing_margin<NT>(b.scale) + options_.within / 2 * (1 + 0x1p-50));
+        if (std::isnan(out.min_x) || std::isnan(out.min_y) || std::isnan(out.max_x) || std::isnan(out.max_y)) {
+            const double inf = std::numeric_limits<double>::infinity();
+            out = box{-inf, -inf, inf, inf};
+        }
+        return out;
+    }
+
+    // Step 1: the moved bodies' boxes and posed polygons (made on first use),
+    // the trees of the fixed and free bodies.
+    void place_moved() {
+        for (body_id i : moved_) {
+            body& b = bodies_[i];
+            if (!b.alive) continue;
+            b.scale = shapes_[b.shape]->scale + std::fabs(b.pose.tx) + std::fabs(b.pose.ty);
+            b.bounds = box_of(b);
+            b.placed = std::make_shared<built_once<std::unique_ptr<placed_polygon<NT>>>>();
+        }
+        for (bool fixed : {true, false}) {
+            bool& dirty = fixed ? fixed_dirty_ : free_dirty_;
+            if (!dirty) continue;
+            std::vector<box> boxes;
+            std::vector<std::uint32_t> ids;
+            for (std::size_t i = 0; i < bodies_.size(); ++i)
+                if (bodies_[i].alive && bodies_[i].fixed == fixed) {
+                    boxes.push_back(bodies_[i].bounds);
+                    ids.push_back(static_cast<std::uint32_t>(i));
+                }
+            (fixed ? fixed_tree_ : free_tree_).rebuild(boxes, ids);
+            dirty = false;
+        }
+    }
+
+    // Step 2: the pairs to test (a moved body in each), sorted; the pairs
+    // whose bodies both stayed are carried into kept_.
+    std::vector<record> candidates() {
+        std::vector<record> out;
+        for (body_id i : moved_) {
+            const body& b = bodies_[i];
+            if (!b.alive) continue;
+            // (A pair of two moved bodies is found from both: the sort
+            // below keeps one.)
+            const auto found = [&](std::uint32_t j) {
+                if (j != i) out.push_back({{std::min(i, j), std::max(i, j)}, meeting{}, false});
+            };
+            free_tree_.query(b.bounds, found);
+            if (!b.fixed) fixed_tree_.query(b.bounds, found);
+        }
+        std::sort(out.begin(), out.end(), [](const record& l, const record& r) { return l.bodies < r.bodies; });
+        out.erase(
+            std::unique(out.begin(), out.end(), [](const record& l, const record& r) { return l.bodies == r.bodies; }),
+            out.end());
+        // Carry the last step's pairs whose bodies both stayed; give the
+        // others their last witness.
+        kept_.clear();
+        std::size_t k = 0;
+        for (const record& r : last_) {
+            const body &a = bodies_[r.bodies.first], &b = bodies_[r.bodies.second];
+            if (!a.alive || !b.alive) continue;
+            if (!a.moved && !b.moved) {
+                kept_.push_back(r);
+                continue;
+            }
+            while (k < out.size() && out[k].bodies < r.bodies) ++k;
+            if (k < out.size() && out[k].bodies == r.bodies && options_.coherence) out[k].shown = r.shown;
+        }
+        stats_.candidates += out.size();
+        stats_.carried += kept_.size();
+        return out;
+    }
+
+    body_view<NT> view(body_id i) {
+        body& b = bodies_[i];
+        const polygon& shape = shapes_[b.shape]->shape;
+        placed_polygon<NT>* p = b.placed
+                                    ->get([&] {
+                                        auto made = std::make_unique<placed_polygon<NT>>(shape, b.pose);
+                                        if constexpr (!std::is_same_v<NT, double>) made->all();
+                                        return made;
+                                    })
+                                    .get();
+        return {&shape, b.pose, b.scale, p};
+    }
+
+    // Step 3: each candidate's answer, in parallel blocks when there are
+    // enough of them to pay for the threads.
+    void narrow(std::vector<record>& tested) {
+        constexpr std::size_t pairs_per_thread = 64;
+        const unsigned threads = tested.size() < pairs_per_thread * 2 ? 1u : options_.threads;
+        run_in_blocks(tested.size(), threads, [&](std::size_t first, std::size_t last) {
+            for (std::size_t k = first; k < last; ++k) {
+                record& r = tested[k];
+                r.shown = bodies_within<NT, Exact>(r.shown, view(r.bodies.first), view(r.bodies.second),
+                                                   options_.within, &r.by_witness);
+            }
+        });
+        for (const record& r : tested) stats_.witness_hits += r.by_witness ? 1 : 0;
+    }
+
+    // Step 4: this step's pairs (carried and tested), its contacts and
+    // events; the moved marks cleared.
+    void gather(const std::vector<record>& tested) {
+        std::vector<record> all;
+        all.reserve(kept_.size() + tested.size());
+        std::merge(kept_.begin(), kept_.end(), tested.begin(), tested.end(), std::back_inserter(all),
+                   [](const record& l, const record& r) { return l.bodies < r.bodies; });
+        last_.clear();
+        std::vector<body_pair> now;
+        witnesses_.clear();
+        for (const record& r : all) {
+            if (!r.shown) continue;
+            last_.push_back(r);
+            now.push_back(r.bodies);
+            if (options_.witness)
+                witnesses_.push_back(witness_of(r.shown, shapes_[bodies_[r.bodies.first].shape]->shape,
+                                                shapes_[bodies_[r.bodies.second].shape]->shape));
+        }
+        events_.clear();
+        std::size_t i = 0, j = 0;
+        while (i < contacts_.size() || j < now.size()) {
+            if (j == now.size() || (i < contacts_.size() && contacts_[i] < now[j])) {
+                events_.push_back({contacts_[i++], false});
+            } else if (i == contacts_.size() || now[j] < contacts_[i]) {
+                events_.push_back({now[j++], true});
+            } else {
+                ++i;
+                ++j;
+            }
+        }
+        contacts_ = std::move(now);
+        stats_.contacts += contacts_.size();
+        for (body_id i2 : moved_) bodies_[i2].moved = false;
+        moved_.clear();
+    }
+
+    world_options options_;
+    std::vector<std::unique_ptr<shape_entry>> shapes_;
+    std::vector<body> bodies_;
+    std::vector<body_id> moved_;
+    bool fixed_dirty_ = false, free_dirty_ = false;
+    box_tree fixed_tree_, free_tree_;
+    std::vector<record> last_;  // the last step's pairs within the distance, sorted
+    std::vector<record> kept_;  // this step's carried pairs
+    std::vector<body_pair> contacts_;
+    std::vector<contact_witness> witnesses_;
+    std::vector<contact_event> events_;
+    world_statistics stats_;
+};
+
+}  // namespace influence2d

@@ -1,0 +1,323 @@
+// SPDX-License-Identifier: BSL-1.0
+// Many bodies (world/world.hpp) and layers (world/layer_pairs.hpp) against an
+// independent exact reference: every pair of bodies placed exactly on CGAL's
+// Cartesian kernel over exact rationals and tested by its own predicates
+// (support/exact_regions.hpp; CGAL's squared_distance for a distance), never
+// the world's broad phase, witnesses or the library's pair tests. Random
+// scenes with multipolygons, holes and islands, bodies that touch exactly,
+// nest, sit far from the origin, move, stay, appear and disappear; serial
+// against parallel, coherence on and off, events against the contacts'
+// differences.
+
+#include <catch2/catch.hpp>
+
+#include "support/effort.hpp"
+#include "support/exact_regions.hpp"
+#include "support/random_scenes.hpp"
+#include "support/shapes.hpp"
+
+#include <CGAL/squared_distance_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "influence2d/exact/certified_world.hpp"
+#include "influence2d/number/cgal.hpp"
+#include "influence2d/world/layer_pairs.hpp"
+#include "influence2d/world/world.hpp"
+
+namespace {
+
+using namespace influence2d;
+using test_scenes::rng;
+
+/// A body as the reference sees it.
+struct body_state {
+    std::size_t shape = 0;
+    pose where;
+    bool fixed = false;
+    bool alive = true;
+};
+
+/// Whether two exactly placed polygons are within d (d = 0: meet): their
+/// regions meet, or an edge pair is within d by CGAL's exact squared
+/// distance.
+bool exact_within(const test_exact::placed_shape& a, const test_exact::placed_shape& b, double d) {
+    if (test_exact::regions_meet(a, b)) return true;
+    if (d == 0) return false;
+    const test_exact::FT d2 = test_exact::FT(d) * test_exact::FT(d);
+    // Edge boxes (which hold the exact edges) more than 2d apart on an axis
+    // hold no pair within d.
+    const auto far = [&](const CGAL::Bbox_2& l, const CGAL::Bbox_2& r) {
+        return l.xmin() - r.xmax() > 2 * d || r.xmin() - l.xmax() > 2 * d || l.ymin() - r.ymax() > 2 * d ||
+               r.ymin() - l.ymax() > 2 * d;
+    };
+    for (std::size_t i = 0; i < a.v.size(); ++i)
+        for (std::size_t j = 0; j < b.v.size(); ++j) {
+            if (far(a.edge_box[i], b.edge_box[j])) continue;
+            const test_exact::segment_2 s(a.v[i], a.end(i)), t(b.v[j], b.end(j));
+            if (CGAL::squared_distance(s, t) <= d2) return true;
+        }
+    return false;
+}
+
+/// The reference contacts: every pair of live bodies, not both fixed.
+std::vector<body_pair> reference_contacts(const std::vector<polygon>& shapes, const std::vector<body_state>& bodies,
+                                          double d) {
+    std::vector<std::optional<test_exact::placed_shape>> placed(bodies.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+        if (bodies[i].alive) placed[i] = test_exact::place(shapes[bodies[i].shape], bodies[i].where);
+    std::vector<body_pair> out;
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+        for (std::size_t j = i + 1; j < bodies.size(); ++j) {
+            if (!bodies[i].alive || !bodies[j].alive || (bodies[i].fixed && bodies[j].fixed)) continue;
+            if (exact_within(*placed[i], *placed[j], d))
+                out.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+        }
+    return out;
+}
+
+std::string show(const std::vector<body_pair>& v) {
+    std::ostringstream s;
+    for (const body_pair& p : v) s << '(' << p.first << ',' << p.second << ')';
+    return s.str();
+}
+
+/// Random shapes: multipolygons with holes and islands, and a few large
+/// swallowers that nest others.
+std::vector<polygon> random_shapes(rng& g, std::size_t count) {
+    std::vector<polygon> out;
+    for (std::size_t k = 0; k < count; ++k)
+        out.push_back(k % 4 == 3 ? test_scenes::random_swallower(g).to_polygon()
+                                 : test_scenes::random_multi(g, 6, 5).to_polygon());
+    return out;
+}
+
+/// A pose within the scene's square [origin - extent, origin + extent]^2,
+/// snapped and unturned half of the time (exact touching), turned at random
+/// otherwise.
+pose random_pose(rng& g, point<double> origin, double extent) {
+    const double x = origin.x + g.uniform(-extent, extent), y = origin.y + g.uniform(-extent, extent);
+    if (g.chance(0.5)) return {test_scenes::snap(x), test_scenes::snap(y), 0};
+    return {x, y, g.uniform(-3.2, 3.2)};
+}
+
+/// Runs a random scene of `steps` steps through worlds W... and the
+/// reference, checking every step's contacts and the events.
+template <class World>
+void check_scene(std::uint64_t seed, point<double> origin, double within, int steps, world_options options) {
+    rng g(seed);
+    const std::vector<polygon> shapes = random_shapes(g, 6);
+    options.within = within;
+    World w(options);
+    for (const polygon& p : shapes) w.add_shape(p);
+    std::vector<body_state> bodies;
+    const double extent = 40;
+    std::vector<body_pair> last;
+    std::size_t contacts = 0, ends = 0;
+    for (int step = 0; step < steps; ++step) {
+        // New bodies at the first step and now and then; moves, removals.
+        const std::size_t adds = step == 0 ? 24 : g.index(3);
+        for (std::size_t k = 0; k < adds; ++k) {
+            body_state b{g.index(shapes.size()), random_pose(g, origin, extent), g.chance(0.25)};
+            w.add_body(static_cast<std::uint32_t>(b.shape), b.where, b.fixed);
+            bodies.push_back(b);
+        }
+        for (std::size_t i = 0; i < bodies.size(); ++i) {
+            if (!bodies[i].alive || step == 0) continue;
+            if (g.chance(0.05)) {
+                bodies[i].alive = false;
+                w.remove(static_cast<std::uint32_t>(i));
+            } else if (g.chance(0.6)) {
+                // A small step (coherent) or a jump.
+                pose& q = bodies[i].where;
+                q = g.chance(0.8)
+                        ? pose{q.tx + g.uniform(-1, 1), q.ty + g.uniform(-1, 1), q.theta + g.uniform(-0.1, 0.1)}
+                        : random_pose(g, origin, extent);
+                w.move(static_cast<std::uint32_t>(i), q);
+            }
+        }
+        const std::vector<body_pair> got = w.step();
+        const std::vector<body_pair> want = reference_contacts(shapes, bodies, within);
+        INFO("seed " << seed << " step " << step << " origin " << origin.x << " within " << within);
+        REQUIRE(show(got) == show(want));
+        // Events: the difference of the contacts.
+        std::vector<body_pair> begun, ended;
+        std::set_difference(want.begin(), want.end(), last.begin(), last.end(), std::back_inserter(begun));
+        std::set_difference(last.begin(), last.end(), want.begin(), want.end(), std::back_inserter(ended));
+        std::vector<body_pair> got_begun, got_ended;
+        for (const contact_event& e : w.events()) (e.begins ? got_begun : got_ended).push_back(e.bodies);
+        CHECK(show(got_begun) == show(begun));
+        CHECK(show(got_ended) == show(ended));
+        if (options.witness) CHECK(w.witnesses().size() == got.size());
+        last = want;
+        contacts += want.size();
+        ends += ended.size();
+    }
+    CHECK(contacts > 0);  // the scene has contacts to compare
+    CHECK(ends > 0);      // and some of them end
+}
+
+}  // namespace
+
+TEST_CASE("world: certified contacts are the exact reference's on random scenes", "[world]") {
+    const int scenes = test_effort::scaled(6);
+    world_options o;
+    for (int s = 0; s < scenes; ++s) {
+        o.coherence = s % 2 == 0;
+        o.witness = s % 3 == 0;
+        check_scene<certified_world>(100 + s, {0, 0}, 0, 12, o);
+    }
+    CHECK(scenes > 0);
+}
+
+TEST_CASE("world: far from the origin and within a distance", "[world]") {
+    world_options o;
+    check_scene<certified_world>(200, {1e9, -3e8}, 0, 8, o);
+    check_scene<certified_world>(201, {0, 0}, 0.75, 8, o);
+    check_scene<certified_world>(202, {-5e6, 5e6}, 2.5, 6, o);
+}
+
+TEST_CASE("world: the exact type alone gives the same contacts", "[world]") {
+    world_options o;
+    check_scene<world<exact_rational>>(300, {0, 0}, 0, 5, o);
+    check_scene<world<exact_rational>>(301, {3e7, 1e7}, 0.5, 4, o);
+}
+
+TEST_CASE("world: threads and coherence change nothing", "[world]") {
+    rng g(400);
+    const std::vector<polygon> shapes = random_shapes(g, 5);
+    world_options serial, parallel, plain;
+    parallel.threads = 2;
+    plain.coherence = false;
+    certified_world a(serial), b(parallel), c(plain);
+    for (const polygon& p : shapes) {
+        a.add_shape(p);
+        b.add_shape(p);
+        c.add_shape(p);
+    }
+    const std::size_t n = 400;
+    std::vector<pose> where(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        where[i] = random_pose(g, {0, 0}, 120);
+        const auto s = static_cast<std::uint32_t>(g.index(shapes.size()));
+        const bool fixed = i % 7 == 0;
+        a.add_body(s, where[i], fixed);
+        b.add_body(s, where[i], fixed);
+        c.add_body(s, where[i], fixed);
+    }
+    std::size_t contacts = 0;
+    for (int step = 0; step < 10; ++step) {
+        const std::vector<body_pair> ra = a.step(), rb = b.step(), rc = c.step();
+        REQUIRE(show(ra) == show(rb));
+        REQUIRE(show(ra) == show(rc));
+        contacts += ra.size();
+        for (std::size_t i = 0; i < n; ++i) {
+            if (i % 7 == 0 || g.chance(0.3)) continue;
+            where[i] = {where[i].tx + g.uniform(-0.5, 0.5), where[i].ty + g.uniform(-0.5, 0.5),
+                        where[i].theta + g.uniform(-0.05, 0.05)};
+            a.move(static_cast<std::uint32_t>(i), where[i]);
+            b.move(static_cast<std::uint32_t>(i), where[i]);
+            c.move(static_cast<std::uint32_t>(i), where[i]);
+        }
+    }
+    CHECK(contacts > 100);  // the scene has contacts to compare
+    CHECK(a.statistics().witness_hits > 0);
+    CHECK(c.statistics().witness_hits == 0);
+}
+
+TEST_CASE("world: squares sharing edges and corners touch exactly", "[world]") {
+    // A 6 x 6 grid of unit squares, every fourth one fixed: each touches its
+    // 8 neighbours (edges and corners), none else; after a shift of the
+    // free ones by 2^-40 to the right, a free square no longer touches its
+    // fixed neighbours except on the shifted side.
+    certified_world w;
+    const auto s = w.add_shape(test_shapes::square(0, 0, 1));
+    const int n = 6;
+    for (int i = 0; i < n * n; ++i)
+        w.add_body(s, {static_cast<double>(i % n), static_cast<double>(i / n), 0}, i % 4 == 0);
+    std::vector<body_pair> want;
+    for (int i = 0; i < n * n; ++i)
+        for (int j = i + 1; j < n * n; ++j) {
+            const bool near = std::abs(i % n - j % n) <= 1 && std::abs(i / n - j / n) <= 1;
+            if (near && !(i % 4 == 0 && j % 4 == 0))
+                want.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+        }
+    CHECK(show(w.step()) == show(want));
+    // Every body: the same poses again change nothing.
+    for (int i = 0; i < n * n; ++i)
+        w.move(static_cast<std::uint32_t>(i), {static_cast<double>(i % n), static_cast<double>(i / n), 0});
+    CHECK(show(w.step()) == show(want));
+    CHECK(w.events().empty());
+}
+
+TEST_CASE("world: bad input is refused with invalid_input", "[world]") {
+    world_options o;
+    o.within = -1;
+    CHECK_THROWS_AS(world<double>(o), invalid_input);
+    o.within = std::nan("");
+    CHECK_THROWS_AS(world<double>(o), invalid_input);
+    world<double> w;
+    CHECK_THROWS_AS(w.add_shape(polygon{}), invalid_input);
+    const auto s = w.add_shape(test_shapes::square(0, 0, 1));
+    CHECK_THROWS_AS(w.add_body(s + 1, {}), invalid_input);
+    CHECK_THROWS_AS(w.add_body(s, {std::nan(""), 0, 0}), invalid_input);
+    const auto b = w.add_body(s, {});
+    CHECK_THROWS_AS(w.move(b, {0, HUGE_VAL, 0}), invalid_input);
+    CHECK_THROWS_AS(w.move(b + 1, {}), invalid_input);
+    w.remove(b);
+    CHECK_THROWS_AS(w.move(b, {}), invalid_input);
+    CHECK_THROWS_AS(w.remove(b), invalid_input);
+    CHECK(w.step().empty());
+}
+
+TEST_CASE("layer_pairs: one layer and two layers against the exact reference", "[world]") {
+    rng g(500);
+    for (int round = 0; round < test_effort::scaled(4); ++round) {
+        const double within = round % 2 == 0 ? 0 : 0.5;
+        const point<double> origin = round == 3 ? point<double>{2e7, 2e7} : point<double>{0, 0};
+        std::vector<polygon> first, second;
+        const std::vector<polygon> shapes = random_shapes(g, 5);
+        std::vector<body_state> as, bs;
+        for (int k = 0; k < 30; ++k) {
+            // A layer at its own coordinates: shapes posed exactly (snapped
+            // translations, no turn), so that the polygon and the posed body
+            // are the same point set.
+            const body_state b{g.index(shapes.size()),
+                               {test_scenes::snap(origin.x + g.uniform(-30, 30)),
+                                test_scenes::snap(origin.y + g.uniform(-30, 30)), 0}};
+            std::vector<ring_input> rings;
+            const polygon& p = shapes[b.shape];
+            for (std::size_t r = 0; r < p.ring_count(); ++r) {
+                ring_input ring;
+                ring.role = p.role(r);
+                for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
+                    ring.vertices.push_back({p.vertex(i).x + b.where.tx, p.vertex(i).y + b.where.ty});
+                rings.push_back(ring);
+            }
+            (k % 2 ? first : second).emplace_back(rings);
+            (k % 2 ? as : bs).push_back(b);
+        }
+        // One layer: the reference on the bodies (none fixed).
+        std::vector<body_state> all_first = as;
+        std::vector<polygon> first_shapes(shapes.begin(), shapes.end());
+        const std::vector<body_pair> want = reference_contacts(first_shapes, all_first, within);
+        INFO("round " << round);
+        CHECK(show(certified_layer_pairs(first, within)) == show(want));
+        CHECK(show(layer_pairs<exact_rational>(first, within, 2)) == show(want));
+        // Two layers: every (first, second) pair.
+        std::vector<body_pair> want2;
+        for (std::size_t i = 0; i < as.size(); ++i)
+            for (std::size_t j = 0; j < bs.size(); ++j)
+                if (exact_within(test_exact::place(shapes[as[i].shape], as[i].where),
+                                 test_exact::place(shapes[bs[j].shape], bs[j].where), within))
+                    want2.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+        CHECK(show(certified_layer_pairs(first, second, within, 2)) == show(want2));
+    }
+    CHECK_THROWS_AS(layer_pairs<double>(std::vector<polygon>{polygon{}}), invalid_input);
+    CHECK_THROWS_AS(layer_pairs<double>(std::vector<polygon>{}, -2.0), invalid_input);
+}
