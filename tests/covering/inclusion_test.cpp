@@ -2,6 +2,10 @@
 #include <catch2/catch.hpp>
 
 #include "influence2d/covering/inclusion.hpp"
+#include "influence2d/number/certified.hpp"
+#include "influence2d/number/cgal.hpp"
+#include "support/exact_regions.hpp"
+#include "support/random_scenes.hpp"
 #include "support/shapes.hpp"
 
 using namespace influence2d;
@@ -89,4 +93,62 @@ TEST_CASE("inclusion: exact on a point 2^-60 inside an edge", "[inclusion]") {
     CHECK(where(cov, 0.5, 0x1p-60) == location::inside);
     CHECK(where(cov, 0.5, -0x1p-60) == location::outside);
     CHECK(where(cov, 0.5, 0) == location::boundary);
+}
+
+namespace {
+
+/// P where it stands (vertices in NT) located by crossings, for the test below.
+template <class NT>
+location by_crossings(const polygon& shape, double x, double y) {
+    std::vector<point<NT>> v;
+    for (const point<double>& q : shape.vertices()) v.push_back(to_point<NT>(q));
+    return locate_by_crossings(shape, v, to_point<NT>(point<double>{x, y}));
+}
+
+}  // namespace
+
+TEST_CASE("inclusion: locate_by_crossings against Feito's test and an exact reference", "[inclusion]") {
+    // Messy rings (nested, overlapping, self-crossing, repeated vertices,
+    // holes outside every shell) on a grid, and points on the grid: at
+    // vertices, on edges, on the horizontal lines through vertices, and at
+    // random. Every type answers exactly there (grid values are exact in
+    // float too); the three locations agree, and the reference's closed
+    // region is the same.
+    test_scenes::rng g(31);
+    std::size_t counts[3] = {0, 0, 0};
+    for (int round = 0; round < 300; ++round) {
+        const polygon p(test_scenes::random_messy(g, 8, 6));
+        const test_exact::placed_shape exact = test_exact::place(p, pose{});
+        const std::vector<point<exact_rational>> v = [&] {
+            std::vector<point<exact_rational>> out;
+            for (const point<double>& q : p.vertices()) out.push_back(to_point<exact_rational>(q));
+            return out;
+        }();
+        for (int k = 0; k < 40; ++k) {
+            point<double> q;
+            const std::size_t i = g.index(p.size());
+            switch (k % 4) {
+            case 0: q = p.vertex(i); break;
+            case 1:
+                q = test_scenes::snap(point<double>{(p.vertex(i).x + p.vertex(p.next(i)).x) / 2,
+                                                    (p.vertex(i).y + p.vertex(p.next(i)).y) / 2});
+                break;
+            case 2: q = {test_scenes::snap(g.uniform(-20, 20)), p.vertex(i).y}; break;
+            default: q = test_scenes::snap(point<double>{g.uniform(-20, 20), g.uniform(-20, 20)});
+            }
+            const point<exact_rational> qe = to_point<exact_rational>(q);
+            const location feito = locate(p, v, to_point<exact_rational>(p.centroid()), qe);
+            const location crossing = locate_by_crossings(p, v, qe);
+            INFO("round " << round << " point (" << q.x << ", " << q.y << ")");
+            REQUIRE(crossing == feito);
+            REQUIRE((crossing != location::outside) == test_exact::in_region(exact, test_exact::point_2(q.x, q.y)));
+            CHECK(by_crossings<double>(p, q.x, q.y) == crossing);
+            CHECK(by_crossings<certified>(p, q.x, q.y) == crossing);
+            ++counts[static_cast<int>(crossing)];
+        }
+    }
+    // Every answer was met many times.
+    CHECK(counts[0] > 500);
+    CHECK(counts[1] > 500);
+    CHECK(counts[2] > 500);
 }

@@ -144,3 +144,35 @@ TEMPLATE_TEST_CASE("on_segment: closed segment, ends included", "[orientation]",
     CHECK_FALSE(on_segment(pt<TestType>(3, 3), a, b));
     CHECK_FALSE(on_segment(pt<TestType>(1, 1.5), a, b));
 }
+
+TEST_CASE("orientation_of_doubles: the exact sign on nearly collinear and tiny inputs", "[orientation]") {
+    // Points on a line, moved by a few units in the last place, at scales
+    // from the subnormal range to 2^500: the filter in double either gives
+    // the exact sign (CGAL's exact orientation) or leaves it to the exact
+    // sum; both ways the answer is exact. Some calls must be settled by each
+    // way for the test to show both.
+    test_random::rng g(77);
+    const exact_kernel::Orientation_2 exact_orientation;
+    std::size_t by_filter = 0, by_sum = 0;
+    for (int k = 0; k < 20000; ++k) {
+        const int e = -1074 + static_cast<int>(g.index(1600));
+        const double scale = std::ldexp(1.0, e);
+        const double ax = scale * g.signed_unit(), ay = scale * g.signed_unit();
+        const double dx = scale * g.signed_unit(), dy = scale * g.signed_unit();
+        const double t = g.uniform(-2, 2);
+        double cx = ax + t * dx, cy = ay + t * dy;
+        for (int n = static_cast<int>(g.index(4)); n > 0; --n)
+            cx = std::nextafter(cx, g.chance(0.5) ? HUGE_VAL : -HUGE_VAL);
+        const double bx = ax + dx, by = ay + dy;
+        if (!std::isfinite(bx) || !std::isfinite(by) || !std::isfinite(cx) || !std::isfinite(cy)) continue;
+        const int got = orientation_of_doubles(ax, ay, bx, by, cx, cy);
+        const int want = static_cast<int>(exact_orientation(
+            exact_kernel::Point_2(ax, ay), exact_kernel::Point_2(bx, by), exact_kernel::Point_2(cx, cy)));
+        REQUIRE(got == want);
+        const double left = (bx - ax) * (cy - ay), right = (by - ay) * (cx - ax);
+        const double bound = orientation_relative_bound * (std::fabs(left) + std::fabs(right)) + orientation_underflow;
+        (std::fabs(left - right) > bound ? by_filter : by_sum) += 1;
+    }
+    CHECK(by_filter > 1000);
+    CHECK(by_sum > 1000);
+}

@@ -3,6 +3,7 @@
 /// \file
 /// The orientation predicate: the one sign question everything else is made of.
 
+#include <cmath>
 #include <type_traits>
 
 #include "influence2d/core/point.hpp"
@@ -19,30 +20,57 @@ struct has_exact_double_fallback<NT, std::void_t<decltype(number_traits<NT>::exa
     : std::bool_constant<number_traits<NT>::exact_double_fallback> {};
 }  // namespace orientation_detail
 
+/// The relative error bound of the orientation determinant evaluated in
+/// double on input doubles, (b.x - a.x)(c.y - a.y) - (b.y - a.y)(c.x - a.x):
+/// its rounded value errs from the exact one by at most (3 + 16 u) u times
+/// the sum of the two products' magnitudes, u = 2^-53 (the two differences
+/// of each product, the products and the last difference rounded once
+/// each, and the bound's own evaluation; Shewchuk's ccwerrboundA, Adaptive
+/// Precision Floating-Point Arithmetic and Fast Robust Geometric
+/// Predicates, 1997), as long as no product underflows.
+inline constexpr double orientation_relative_bound = (3 + 16 * 0x1p-53) * 0x1p-53;
+/// What a product that underflows may add to that error: each of the two
+/// products loses at most 2^-1075 (half the least subnormal); the bound
+/// takes twice their sum.
+inline constexpr double orientation_underflow = 0x1p-1072;
+
+/// The sign of the orientation determinant of three points given as
+/// doubles, exactly: in double when the rounded determinant exceeds its
+/// error bound (orientation_relative_bound), which settles nearly every
+/// call at the cost of a few multiplications; else 0 when two of the points
+/// are the same; else by the exact fixed-point sum (number/exact_sum.hpp).
+inline int orientation_of_doubles(double ax, double ay, double bx, double by, double cx, double cy) {
+    const double left = (bx - ax) * (cy - ay), right = (by - ay) * (cx - ax);
+    const double det = left - right;
+    const double bound = orientation_relative_bound * (std::fabs(left) + std::fabs(right)) + orientation_underflow;
+    if (det > bound) return 1;
+    if (det < -bound) return -1;
+    // Two of the points the same (a vertex shared by two polygons, say):
+    // collinear, without the sum.
+    if ((ax == bx && ay == by) || (ax == cx && ay == cy) || (bx == cx && by == cy)) return 0;
+    return exact_sum::orientation_sign(ax, ay, bx, by, cx, cy);
+}
+
 /// Sign of the signed area [a b c]: +1 when c lies left of the directed line
 /// a->b (counter-clockwise turn), -1 when right, 0 when the three are collinear.
 /// Two coinciding points are collinear with any third. The determinant is
 /// evaluated in NT, its sign taken by number_traits::sign: exact when NT's
 /// ring operations are exact. For a filtered NT the sign is exact, or the
 /// call throws uncertain_sign (certified, interval); a type with
-/// `exact_double_fallback` settles the sign exactly instead when the three
-/// points are input doubles. In a floating NT it is the sign of the rounded
-/// determinant, which can be wrong for nearly collinear points.
+/// `exact_double_fallback` takes the sign of three points that are input
+/// doubles (a polygon where it stands, its centroid) from
+/// orientation_of_doubles instead: exact, and at double's cost. In a
+/// floating NT it is the sign of the rounded determinant, which can be
+/// wrong for nearly collinear points.
 template <class NT>
 int orientation(const point<NT>& a, const point<NT>& b, const point<NT>& c) {
     using tr = number_traits<NT>;
-    const NT det = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
     if constexpr (orientation_detail::has_exact_double_fallback<NT>::value) {
-        // A filtered type whose filter fails on three input doubles (say, the
-        // static polygon's vertices and centroid, exactly collinear) gets the
-        // exact sign from the exact fixed-point sum (number/exact_sum.hpp).
-        int s;
-        if (tr::try_sign(det, s)) return s;
         if (tr::exact(a.x) && tr::exact(a.y) && tr::exact(b.x) && tr::exact(b.y) && tr::exact(c.x) && tr::exact(c.y))
-            return exact_sum::orientation_sign(tr::to_double(a.x), tr::to_double(a.y), tr::to_double(b.x),
-                                               tr::to_double(b.y), tr::to_double(c.x), tr::to_double(c.y));
+            return orientation_of_doubles(tr::to_double(a.x), tr::to_double(a.y), tr::to_double(b.x),
+                                          tr::to_double(b.y), tr::to_double(c.x), tr::to_double(c.y));
     }
-    return tr::sign(det);
+    return tr::sign((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
 }
 
 /// Whether p and q are the same point: both coordinates equal by

@@ -24,9 +24,9 @@ namespace influence2d {
 /// placed in one frame in NT (`a_vertices[i]` is A's stored vertex i, in the
 /// polygon's stored order; likewise for B): the one-shot query's steps
 /// (intersects in query/intersects.hpp) after its posing. Touching counts; one
-/// inside a hole of the other does not meet it. Exact when NT is (one vertex
-/// per ring located in the other polygon, then the edge pairs whose boxes
-/// overlap tested exactly); a filtered NT may throw uncertain_sign.
+/// inside a hole of the other does not meet it. Exact when NT is (the edge
+/// pairs whose boxes overlap tested exactly, and one vertex per ring
+/// located in the other polygon); a filtered NT may throw uncertain_sign.
 ///
 /// The filters run on number_traits<NT>::to_double of the vertices, widened
 /// by filter_slack times `scale`: `scale` must bound the magnitudes the

@@ -24,16 +24,18 @@ namespace influence2d {
 ///
 ///   pose B's vertices in double; e <- their rounding margin
 ///   if the boxes of A and of posed B (grown by e) are apart:   disjoint
-///   for one vertex of every ring of each polygon, within the other's box:
-///       located in the other polygon (exact), not outside:     meet
+///   for one vertex of each of the first two rings of each polygon, within
+///   the other's box: located in the other polygon (exact), not outside: meet
 ///   A's edges whose box meets B's box, B's edges whose box meets A's box
 ///   for each pair of those whose boxes overlap (sort and sweep along x):
 ///       filter in double: the paper's detailed test both ways (segments_may_meet)
 ///       exact segment test in NT on the posed vertices:       meet
+///   the same location for one vertex of every other ring:    meet
 ///   disjoint
 ///
-/// Time O((n + m) log(n + m) + k) for n and m edges and k overlapping boxes
-/// (linear for most poses that meet: a located vertex answers them);
+/// Time O((n + m) log(n + m) + k + r (n + m)) for n and m edges, k
+/// overlapping boxes and r rings located (linear for most poses that meet:
+/// a located vertex answers them);
 /// no structure outlives the call. For many poses of one pair a detector is
 /// faster (it keeps A's precomputation and the last frame's candidates).
 template <class NT>

@@ -7,7 +7,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <optional>
 #include <vector>
 
 #include "influence2d/core/box.hpp"
@@ -57,31 +56,36 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e) {
         b_window.min_y > ab.max_y)
         return {};
 
-    // Containment first: one vertex of every ring located in the other
-    // polygon (containment.hpp says why that decides the case of no
-    // boundary pair). A vertex in the other's closed region is a meeting
-    // point whatever the boundaries do, and most poses that meet are
-    // answered here in linear time, before any sorting. A vertex outside the
-    // other polygon's box (widened) is outside it without a locate.
+    // Containment first: one vertex of a ring located in the other polygon
+    // (by its crossings, locate_by_crossings; containment.hpp says why that
+    // decides the case of no boundary pair).
+    // A vertex in the other's closed region is a meeting point whatever the
+    // boundaries do, and most poses that meet are answered here in linear
+    // time, before any sorting. A vertex outside the other polygon's box
+    // (widened) is outside it without a locate. Each locate reads the whole
+    // other polygon, so only the first `early_rings` rings of each are
+    // located before the boundaries are tested; the others after.
     const auto outside = [](const point<double>& v, const box& w) {
         return v.x < w.min_x || v.x > w.max_x || v.y < w.min_y || v.y > w.max_y;  // NaN: may be inside
     };
     const polygon &as = a.shape(), &bs = b.shape();
-    std::optional<point<NT>> a_origin, b_origin;  // once a ring asks
-    for (std::size_t r = 0; r < bs.ring_count(); ++r) {
-        const std::size_t j = bs.ring_begin(r);
-        if (outside(b.approx()[j], a_window)) continue;
-        if (!a_origin) a_origin = a.origin();
-        const location l = locate(as, a.all(), *a_origin, b[j]);
-        if (l != location::outside) return {meeting::kind::b_vertex_in_a, 0, j, l};
-    }
-    for (std::size_t r = 0; r < as.ring_count(); ++r) {
-        const std::size_t i = as.ring_begin(r);
-        if (outside(a.approx()[i], b_window)) continue;
-        if (!b_origin) b_origin = b.origin();
-        const location l = locate(bs, b.all(), *b_origin, a[i]);
-        if (l != location::outside) return {meeting::kind::a_vertex_in_b, i, 0, l};
-    }
+    const auto rings_inside = [&](std::size_t first, std::size_t last) -> meeting {
+        for (std::size_t r = first; r < std::min(last, bs.ring_count()); ++r) {
+            const std::size_t j = bs.ring_begin(r);
+            if (outside(b.approx()[j], a_window)) continue;
+            const location l = locate_by_crossings(as, a.all(), b[j]);
+            if (l != location::outside) return {meeting::kind::b_vertex_in_a, 0, j, l};
+        }
+        for (std::size_t r = first; r < std::min(last, as.ring_count()); ++r) {
+            const std::size_t i = as.ring_begin(r);
+            if (outside(a.approx()[i], b_window)) continue;
+            const location l = locate_by_crossings(bs, b.all(), a[i]);
+            if (l != location::outside) return {meeting::kind::a_vertex_in_b, i, 0, l};
+        }
+        return {};
+    };
+    constexpr std::size_t early_rings = 2;
+    if (meeting m = rings_inside(0, early_rings)) return m;
 
     // No ring inside the other polygon: the regions meet iff the boundaries
     // do. Candidate edges: those whose box meets the other polygon's box.
@@ -96,7 +100,8 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e) {
         found = {meeting::kind::edges, i, j, location::boundary};
         return true;
     });
-    return found;
+    if (found) return found;
+    return rings_inside(early_rings, std::numeric_limits<std::size_t>::max());
 }
 
 /// Whether the closed regions of the two placed polygons come within

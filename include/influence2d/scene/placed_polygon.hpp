@@ -109,23 +109,6 @@ public:
         }
     }
 
-    /// The origin of the covering that locates points in this polygon: its
-    /// centroid placed like its vertices (for given vertices, the centre of
-    /// their box in double, or their first vertex when that box is beyond
-    /// double's range; any point gives the same winding numbers).
-    point<NT> origin() const {
-        using tr = number_traits<NT>;
-        switch (how_) {
-        case how::own: return to_point<NT>(shape_.centroid());
-        case how::posed: return pose_.apply<NT>(shape_.centroid());
-        default: {
-            const double x = bounds_.min_x / 2 + bounds_.max_x / 2, y = bounds_.min_y / 2 + bounds_.max_y / 2;
-            if (std::isfinite(x) && std::isfinite(y)) return {tr::from_double(x), tr::from_double(y)};
-            return (*given_)[0];  // beyond double's range: a vertex serves too
-        }
-        }
-    }
-
 private:
     enum class how : std::uint8_t { own, posed, given };
 

@@ -73,9 +73,9 @@ bool witness_holds(const meeting& last, const body_view<NT>& a, const body_view<
         return d > 0 ? segments_within(p, q, u, v, d2) : segments_intersect(p, q, u, v);
     }
     case meeting::kind::b_vertex_in_a:
-        return locate(as, a.placed->all(), a.placed->origin(), (*b.placed)[last.b_index]) != location::outside;
+        return locate_by_crossings(as, a.placed->all(), (*b.placed)[last.b_index]) != location::outside;
     case meeting::kind::a_vertex_in_b:
-        return locate(bs, b.placed->all(), b.placed->origin(), (*a.placed)[last.a_index]) != location::outside;
+        return locate_by_crossings(bs, b.placed->all(), (*a.placed)[last.a_index]) != location::outside;
     default: return false;
     }
 }
