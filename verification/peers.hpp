@@ -84,8 +84,7 @@ inline point<double> posed_vertex(const rotation_pose& r, const point<double>& q
     return {r.c * q.x - r.s * q.y + r.tx, r.s * q.x + r.c * q.y + r.ty};
 }
 
-namespace peer_detail {
-
+/// Boost.Geometry's point and polygon (counter-clockwise, closed) for the peers.
 using bg_point = boost::geometry::model::d2::point_xy<double>;
 using bg_polygon = boost::geometry::model::polygon<bg_point, false, true>;  // counter-clockwise, closed
 
@@ -105,8 +104,6 @@ inline bg_polygon bg_posed(const std::vector<std::vector<point<double>>>& rings,
     return out;
 }
 
-}  // namespace peer_detail
-
 /// Boost.Geometry's intersects (closed semantics), frame form.
 class boost_geometry_peer {
 public:
@@ -116,14 +113,14 @@ public:
     /// cell by the time study, outside every timing).
     static bool applies(const polygon& A, const polygon& B) {
         const rotation_pose identity{pose{}};
-        return boost::geometry::is_valid(peer_detail::bg_posed(peer_rings(A), identity)) &&
-               boost::geometry::is_valid(peer_detail::bg_posed(peer_rings(B), identity));
+        return boost::geometry::is_valid(bg_posed(peer_rings(A), identity)) &&
+               boost::geometry::is_valid(bg_posed(peer_rings(B), identity));
     }
 
     boost_geometry_peer(const polygon& A, const polygon& B) : b_rings_(peer_rings(B)) {
         const rotation_pose identity{pose{}};
-        a_ = peer_detail::bg_posed(peer_rings(A), identity);
-        b_ = peer_detail::bg_posed(b_rings_, identity);
+        a_ = bg_posed(peer_rings(A), identity);
+        b_ = bg_posed(b_rings_, identity);
     }
 
     bool collide(const pose& p) {
@@ -138,13 +135,13 @@ private:
     static void fill(Ring& ring, const std::vector<point<double>>& from, const rotation_pose& r) {
         for (std::size_t i = 0; i < from.size(); ++i) {
             const point<double> q = posed_vertex(r, from[i]);
-            ring[i] = peer_detail::bg_point(q.x, q.y);
+            ring[i] = bg_point(q.x, q.y);
         }
         ring[from.size()] = ring[0];
     }
 
     std::vector<std::vector<point<double>>> b_rings_;
-    peer_detail::bg_polygon a_, b_;
+    bg_polygon a_, b_;
 };
 
 /// Boost.Geometry's intersects, one-shot form: B posed into a polygon built
@@ -154,14 +151,14 @@ public:
     static bool applies(const polygon& A, const polygon& B) { return boost_geometry_peer::applies(A, B); }
 
     boost_geometry_one_shot(const polygon& A, const polygon& B)
-        : a_(peer_detail::bg_posed(peer_rings(A), rotation_pose(pose{}))), b_rings_(peer_rings(B)) {}
+        : a_(bg_posed(peer_rings(A), rotation_pose(pose{}))), b_rings_(peer_rings(B)) {}
 
     bool collide(const pose& p) const {
-        return boost::geometry::intersects(a_, peer_detail::bg_posed(b_rings_, rotation_pose(p)));
+        return boost::geometry::intersects(a_, bg_posed(b_rings_, rotation_pose(p)));
     }
 
 private:
-    peer_detail::bg_polygon a_;
+    bg_polygon a_;
     std::vector<std::vector<point<double>>> b_rings_;
 };
 

@@ -9,6 +9,7 @@
 #include "influence2d/core/invalid_input.hpp"
 
 #include "influence2d/core/point.hpp"
+#include "influence2d/number/exact_sum.hpp"
 #include "influence2d/number/traits.hpp"
 
 namespace influence2d {
@@ -50,6 +51,14 @@ struct rotation_pose {
     template <class NT>
     point<NT> apply(const point<double>& q) const {
         using tr = number_traits<NT>;
+        if constexpr (tr::category != number_category::floating) {
+            // A translation whose sums are doubles: the posed point is an
+            // input double, which a filtered NT then knows exactly (its
+            // signs taken in double, orientation_of_doubles).
+            double x, y;
+            if (s == 0 && c == 1 && exact_sum::exact_double_sum(q.x, tx, x) && exact_sum::exact_double_sum(q.y, ty, y))
+                return point<NT>{tr::from_double(x), tr::from_double(y)};
+        }
         const NT cx = tr::from_double(c), sx = tr::from_double(s);
         const NT qx = tr::from_double(q.x), qy = tr::from_double(q.y);
         return point<NT>{cx * qx - sx * qy + tr::from_double(tx), sx * qx + cx * qy + tr::from_double(ty)};

@@ -89,6 +89,19 @@ private:
     std::uint64_t words_[count] = {};
 };
 
+/// Whether a + b is a double (the sum rounds to itself); `sum` gets the
+/// rounded fl(a + b) either way. Knuth's TwoSum: with s = fl(a + b) and
+/// bb = fl(s - a), the rounding error a + b - s is exactly
+/// fl(fl(a - fl(s - bb)) + fl(b - bb)) in round to nearest when s is finite,
+/// so the sum is exact when that error is 0. Not exact when s is infinite
+/// or NaN.
+inline bool exact_double_sum(double a, double b, double& sum) {
+    sum = a + b;
+    if (!(sum - sum == 0)) return false;
+    const double bb = sum - a;
+    return (a - (sum - bb)) + (b - bb) == 0;
+}
+
 /// The exact sign of the orientation determinant [a b c] of three points with
 /// double coordinates: +1 when c lies left of the directed line a->b, -1
 /// right, 0 collinear (also when two of the points coincide). The sum

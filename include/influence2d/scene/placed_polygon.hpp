@@ -67,6 +67,24 @@ public:
         }
     }
 
+    /// Poses the polygon anew by t, as the posing constructor does, in the
+    /// buffers it already holds (a body placed step after step).
+    void repose(const rotation_pose& t) {
+        INFLUENCE2D_ASSERT(how_ == how::posed, "only a posed polygon is posed anew");
+        pose_ = t;
+        bounds_ = box{};
+        finite_ = true;
+        for (std::size_t j = 0; j < shape_.size(); ++j) {
+            approx_own_[j] = t.apply<double>(shape_.vertex(j));
+            finite_ = finite_ && std::isfinite(approx_own_[j].x) && std::isfinite(approx_own_[j].y);
+            bounds_.add(approx_own_[j]);
+        }
+        if constexpr (!std::is_same_v<NT, double>) {
+            all_.clear();
+            made_.assign(shape_.size(), std::nullopt);
+        }
+    }
+
     placed_polygon(const placed_polygon&) = delete;
     placed_polygon& operator=(const placed_polygon&) = delete;
 

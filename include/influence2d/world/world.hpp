@@ -96,6 +96,9 @@ struct world_statistics {
 ///     candidates <- for each moved body, the bodies whose box meets its
 ///       own (free bodies; fixed ones too for a free body); the pairs of
 ///       the last step whose bodies both stayed keep their answer
+///     the candidates' bodies placed at their poses (vertices posed in
+///       double, and in NT for another type), once each, in buffers kept
+///       from step to step
 ///     each candidate, in parallel blocks: bodies_within, the last step's
 ///       witness tried first (narrow_phase.hpp)
 ///     contacts <- the pairs within `within`, sorted; events: the
@@ -162,6 +165,7 @@ public:
         body& b = live(i);
         b.alive = false;
         b.placed.reset();
+        b.placed_now = false;
         mark_moved(i);
     }
 
@@ -203,8 +207,9 @@ private:
         bool alive = true;
         bool moved = false;  // since the last step
         box bounds;
-        double scale = 0;  // the shape's scale plus |tx| + |ty|
-        std::shared_ptr<built_once<std::unique_ptr<placed_polygon<NT>>>> placed;
+        double scale = 0;                            // the shape's scale plus |tx| + |ty|
+        std::unique_ptr<placed_polygon<NT>> placed;  // posed at the last step that asked
+        bool placed_now = false;                     // placed at the present pose
     };
     struct record {
         body_pair bodies;
@@ -243,15 +248,14 @@ private:
         return out;
     }
 
-    // Step 1: the moved bodies' boxes and posed polygons (made on first use),
-    // the trees of the fixed and free bodies.
+    // Step 1: the moved bodies' boxes, the trees of the fixed and free bodies.
     void place_moved() {
         for (body_id i : moved_) {
             body& b = bodies_[i];
             if (!b.alive) continue;
             b.scale = shapes_[b.shape]->scale + std::fabs(b.pose.tx) + std::fabs(b.pose.ty);
             b.bounds = box_of(b);
-            b.placed = std::make_shared<built_once<std::unique_ptr<placed_polygon<NT>>>>();
+            b.placed_now = false;
         }
         for (bool fixed : {true, false}) {
             bool& dirty = fixed ? fixed_dirty_ : free_dirty_;
@@ -308,20 +312,38 @@ private:
 
     body_view<NT> view(body_id i) {
         body& b = bodies_[i];
-        const polygon& shape = shapes_[b.shape]->shape;
-        placed_polygon<NT>* p = b.placed
-                                    ->get([&] {
-                                        auto made = std::make_unique<placed_polygon<NT>>(shape, b.pose);
-                                        if constexpr (!std::is_same_v<NT, double>) made->all();
-                                        return made;
-                                    })
-                                    .get();
-        return {&shape, b.pose, b.scale, p};
+        return {&shapes_[b.shape]->shape, b.pose, b.scale, b.placed.get()};
+    }
+
+    // Step 3a: the bodies of the candidates placed at their poses (in double,
+    // and in NT for another type), each once, in parallel blocks when many;
+    // a body that stayed keeps its placing.
+    void place_candidates(const std::vector<record>& tested) {
+        std::vector<body_id> asked;
+        for (const record& r : tested)
+            for (body_id i : {r.bodies.first, r.bodies.second})
+                if (!bodies_[i].placed_now) {
+                    bodies_[i].placed_now = true;
+                    asked.push_back(i);
+                }
+        constexpr std::size_t bodies_per_thread = 256;
+        const unsigned threads = asked.size() < bodies_per_thread * 2 ? 1u : options_.threads;
+        run_in_blocks(asked.size(), threads, [&](std::size_t first, std::size_t last) {
+            for (std::size_t k = first; k < last; ++k) {
+                body& b = bodies_[asked[k]];
+                if (b.placed)
+                    b.placed->repose(b.pose);
+                else
+                    b.placed = std::make_unique<placed_polygon<NT>>(shapes_[b.shape]->shape, b.pose);
+                if constexpr (!std::is_same_v<NT, double>) b.placed->all();
+            }
+        });
     }
 
     // Step 3: each candidate's answer, in parallel blocks when there are
     // enough of them to pay for the threads.
     void narrow(std::vector<record>& tested) {
+        place_candidates(tested);
         constexpr std::size_t pairs_per_thread = 64;
         const unsigned threads = tested.size() < pairs_per_thread * 2 ? 1u : options_.threads;
         run_in_blocks(tested.size(), threads, [&](std::size_t first, std::size_t last) {
