@@ -35,6 +35,7 @@
 #include "files.hpp"
 #include "influence2d/exact/certified_world.hpp"
 #include "influence2d/io/wkt.hpp"
+#include "influence2d/query/both_posed.hpp"
 #include "influence2d/world/layer_pairs.hpp"
 #include "influence2d/world/world.hpp"
 #include "report.hpp"
@@ -358,6 +359,64 @@ std::string plot_script(const std::vector<row>& rows, const std::vector<std::str
     return g + "unset multiplot\n";
 }
 
+/// What coherence buys a pair that persists: `pairs` pairs of crossing stars
+/// (12 points), each pair far from the others, every body moved a little at
+/// every step (1e-3 in translation, 1e-3 rad); the world with and without
+/// the witness, and the two-pose one-shot query on every pair, interleaved;
+/// ns per persisting pair (medians over the steps).
+std::string coherence_study(std::size_t pairs, std::size_t steps) {
+    ring_input star;
+    for (int k = 0; k < 24; ++k) {
+        const double a = M_PI * k / 12, r = k % 2 ? 0.6 : 1.2;
+        star.vertices.push_back({r * std::cos(a), r * std::sin(a)});
+    }
+    const polygon shape({star});
+    std::vector<pose> at;
+    for (std::size_t k = 0; k < pairs; ++k) {
+        const double x = 10.0 * static_cast<double>(k % 100), y = 10.0 * static_cast<double>(k / 100);
+        at.push_back({x, y, 0});
+        at.push_back({x + 1.5, y + 0.2, 0.1});
+    }
+    world_options with, without;
+    without.coherence = false;
+    world<double> a(with), b(without);
+    a.add_shape(shape);
+    b.add_shape(shape);
+    for (const pose& q : at) {
+        a.add_body(0, q);
+        b.add_body(0, q);
+    }
+    a.step();
+    b.step();
+    std::vector<double> ta, tb, tc;
+    std::size_t met = 0;
+    for (std::size_t t = 0; t < steps; ++t) {
+        for (std::size_t k = 0; k < at.size(); ++k) {
+            const double wobble = 1e-3 * std::sin(static_cast<double>(t * 7 + k));
+            at[k] = {at[k].tx + wobble, at[k].ty - wobble, at[k].theta + wobble};
+            a.move(static_cast<std::uint32_t>(k), at[k]);
+            b.move(static_cast<std::uint32_t>(k), at[k]);
+        }
+        const auto t0 = clock_type::now();
+        met += a.step().size();
+        const auto t1 = clock_type::now();
+        b.step();
+        const auto t2 = clock_type::now();
+        for (std::size_t k = 0; k < pairs; ++k) met += intersects<double>(shape, at[2 * k], shape, at[2 * k + 1]);
+        const auto t3 = clock_type::now();
+        ta.push_back(std::chrono::duration<double>(t1 - t0).count());
+        tb.push_back(std::chrono::duration<double>(t2 - t1).count());
+        tc.push_back(std::chrono::duration<double>(t3 - t2).count());
+    }
+    const double n = static_cast<double>(pairs);
+    const world_statistics& st = a.statistics();
+    return "coherence, " + std::to_string(pairs) + " persisting pairs of crossing 12-point stars, " +
+           std::to_string(steps) + " steps (" + std::to_string(met) + " answers): witness " +
+           number(median(ta) * 1e9 / n, 0) + " ns per pair per step, no witness " + number(median(tb) * 1e9 / n, 0) +
+           " ns, one-shot two-pose query " + number(median(tc) * 1e9 / n, 0) + " ns; witness hits " +
+           std::to_string(st.witness_hits) + " of " + std::to_string(st.candidates) + " candidates\n";
+}
+
 void run(const bench_options& o) {
     const std::vector<std::string> scenes = {"falling", "convex", "parcels", "random", "mixed", "far"};
     std::vector<std::size_t> sizes = o.sizes;
@@ -376,7 +435,8 @@ void run(const bench_options& o) {
             std::cerr << "world bench: layer " << name << "\n";
             for (const row& r : run_layer(o.layers + "/" + file, name, o.quick ? 5 : 21)) rows.push_back(r);
         }
-    const std::string text = table(rows);
+    const std::string coherence = coherence_study(o.quick ? 1000 : 10000, 21);
+    const std::string text = table(rows) + "\n" + coherence;
     std::cout << text;
     if (!o.out.empty()) {
         std::filesystem::create_directories(o.out);

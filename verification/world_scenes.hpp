@@ -12,7 +12,8 @@
 //              2^-10 (snapped: touching is kept, lost and regained exactly).
 // - random:    fresh random poses every step in a square sized for about two
 //              contacts per body: no coherence at all.
-// - mixed:     sizes log-uniform over three decades, drifting slowly.
+// - mixed:     sizes log-uniform over two decades (0.1 to 10), drifting
+//              slowly.
 // - far:       `falling` moved by (1e7, -1e7).
 // - convex:    `falling` with convex 8-gons only, onto a slab (the scene Box2D
 //              can take).
@@ -158,13 +159,13 @@ inline world_scene make_world_scene(const std::string& name, std::size_t bodies,
         if (mixed) {
             s.shapes.clear();
             for (int k = 0; k < 12; ++k) {
-                const double r = std::exp(uniform(std::log(0.1), std::log(100.0)));
+                const double r = std::exp(uniform(std::log(0.1), std::log(10.0)));
                 s.shapes.push_back(k % 2 ? d::star(6 + k, 0.6 * r, r) : d::regular(8, r, 0.05 * k));
                 size_of.push_back(r);
             }
         }
         // A square in which about two bodies meet each body.
-        const double extent = std::sqrt(static_cast<double>(bodies)) * (mixed ? 6.0 : 2.2);
+        const double extent = std::sqrt(static_cast<double>(bodies)) * (mixed ? 4.0 : 2.2);
         for (std::size_t b = 0; b < bodies; ++b) {
             s.shape_of.push_back(static_cast<std::uint32_t>(g() % s.shapes.size()));
             s.fixed.push_back(false);

@@ -2,12 +2,13 @@
 #pragma once
 /// \file
 /// Which boxes of a set meet a given box: a packed tree over boxes kept in
-/// the order of their centres along a Z-order curve, rebuilt bottom-up in
+/// the order of their centres along a Hilbert curve, rebuilt bottom-up in
 /// linear time when the boxes move (docs/world.md, "Broad phase").
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "influence2d/core/box.hpp"
@@ -23,8 +24,8 @@ inline bool boxes_overlap(const box& l, const box& r) {
 /// A set of boxes, each with an id, answering which of them meet a query box.
 ///
 ///   rebuild(boxes):
-///     key <- each box's centre on a Z-order curve over the centres' box
-///            (16 bits per axis)
+///     key <- each box's centre's position along a Hilbert curve over the
+///            centres' box (16 bits per axis)
 ///     sort the entries by key: insertion sort while the entries moved
 ///       little since the last rebuild (coherent scenes: linear), else a
 ///       full sort
@@ -63,7 +64,7 @@ public:
             if (where[ids[k]] != absent) next.push_back({boxes[k], ids[k], 0});
         for (entry& e : next) {
             const point<double> c = centre(e.bounds);
-            e.key = z_order(quantized(c.x, centres.min_x, sx), quantized(c.y, centres.min_y, sy));
+            e.key = curve_position(quantized(c.x, centres.min_x, sx), quantized(c.y, centres.min_y, sy));
         }
         sort_by_key(next);
         entries_ = std::move(next);
@@ -76,6 +77,23 @@ public:
     void query(const box& q, Found&& found) const {
         if (levels_.empty()) return;
         visit(levels_.size() - 1, 0, q, found);
+    }
+
+    /// Calls found(i, j) once for every pair of distinct boxes of the set that
+    /// meet, by their ids, in no particular order: the two trees' nodes
+    /// descended together, a pair of nodes whose boxes are apart skipped
+    /// whole. O(n + k) node pairs for boxes of similar sizes, k pairs found.
+    template <class Found>
+    void self_join(Found&& found) const {
+        if (!levels_.empty()) join_within(levels_.size() - 1, 0, found);
+    }
+
+    /// Calls found(i, j) once for every box i of this set and box j of
+    /// `other` that meet, by their ids, in no particular order.
+    template <class Found>
+    void join(const box_tree& other, Found&& found) const {
+        if (!levels_.empty() && !other.levels_.empty())
+            join_nodes(*this, levels_.size() - 1, 0, other, other.levels_.size() - 1, 0, found);
     }
 
     /// The number of boxes.
@@ -108,16 +126,24 @@ private:
         if (!(q > 0)) return 0;  // (NaN too)
         return q >= 65535 ? 65535u : static_cast<std::uint32_t>(q);
     }
-    // The bits of x and y interleaved (x in the even bits).
-    static std::uint32_t z_order(std::uint32_t x, std::uint32_t y) {
-        const auto spread = [](std::uint32_t v) {
-            v = (v | (v << 8)) & 0x00ff00ffu;
-            v = (v | (v << 4)) & 0x0f0f0f0fu;
-            v = (v | (v << 2)) & 0x33333333u;
-            v = (v | (v << 1)) & 0x55555555u;
-            return v;
-        };
-        return spread(x) | (spread(y) << 1);
+    // The position of cell (x, y) along a Hilbert curve over 2^16 x 2^16
+    // cells (the classic rotate-and-flip walk, one bit of each coordinate per
+    // level). Unlike a Z-order curve, consecutive cells are always
+    // neighbours, so runs of entries stay compact and the nodes' boxes small.
+    static std::uint32_t curve_position(std::uint32_t x, std::uint32_t y) {
+        std::uint32_t d = 0;
+        for (std::uint32_t s = 1u << 15; s > 0; s >>= 1) {
+            const std::uint32_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
+            d += s * s * ((3 * rx) ^ ry);
+            if (ry == 0) {  // rotate the quadrant
+                if (rx == 1) {
+                    x = s - 1 - (x & (s - 1)) + (x & ~(s - 1));
+                    y = s - 1 - (y & (s - 1)) + (y & ~(s - 1));
+                }
+                std::swap(x, y);
+            }
+        }
+        return d;
     }
 
     // Insertion sort while it stays cheap (at most 8 moves per entry on
@@ -185,6 +211,56 @@ private:
         }
         for (std::size_t j = first; j < std::min(first + fan_out, levels_[level - 1].size()); ++j)
             visit(level - 1, j, q, found);
+    }
+
+    // The children of node `node` of level `level` > 0 (nodes of the level
+    // below), or the entries of a leaf (level 0): [first, last).
+    std::pair<std::size_t, std::size_t> children(std::size_t level, std::size_t node) const {
+        const std::size_t first = node * fan_out;
+        const std::size_t count = level == 0 ? entries_.size() : levels_[level - 1].size();
+        return {first, std::min(first + fan_out, count)};
+    }
+
+    // The pairs of boxes under one node.
+    template <class Found>
+    void join_within(std::size_t level, std::size_t node, Found& found) const {
+        const auto [first, last] = children(level, node);
+        if (level == 0) {
+            for (std::size_t i = first; i < last; ++i)
+                for (std::size_t j = i + 1; j < last; ++j)
+                    if (boxes_overlap(entries_[i].bounds, entries_[j].bounds)) found(entries_[i].id, entries_[j].id);
+            return;
+        }
+        for (std::size_t c = first; c < last; ++c) {
+            join_within(level - 1, c, found);
+            for (std::size_t d = c + 1; d < last; ++d) join_nodes(*this, level - 1, c, *this, level - 1, d, found);
+        }
+    }
+
+    // The pairs of a box under node (la, na) of a and a box under node
+    // (lb, nb) of b: the node of the higher level descended first.
+    template <class Found>
+    static void join_nodes(const box_tree& a, std::size_t la, std::size_t na, const box_tree& b, std::size_t lb,
+                           std::size_t nb, Found& found) {
+        if (!boxes_overlap(a.levels_[la][na], b.levels_[lb][nb])) return;
+        if (la == 0 && lb == 0) {
+            const auto [ai, aj] = a.children(0, na);
+            const auto [bi, bj] = b.children(0, nb);
+            for (std::size_t i = ai; i < aj; ++i) {
+                if (!boxes_overlap(a.entries_[i].bounds, b.levels_[0][nb])) continue;
+                for (std::size_t j = bi; j < bj; ++j)
+                    if (boxes_overlap(a.entries_[i].bounds, b.entries_[j].bounds))
+                        found(a.entries_[i].id, b.entries_[j].id);
+            }
+            return;
+        }
+        if (la >= lb && la > 0) {
+            const auto [first, last] = a.children(la, na);
+            for (std::size_t c = first; c < last; ++c) join_nodes(a, la - 1, c, b, lb, nb, found);
+        } else {
+            const auto [first, last] = b.children(lb, nb);
+            for (std::size_t c = first; c < last; ++c) join_nodes(a, la, na, b, lb - 1, c, found);
+        }
     }
 
     std::vector<entry> entries_;

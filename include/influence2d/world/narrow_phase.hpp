@@ -80,6 +80,25 @@ bool witness_holds(const meeting& last, const body_view<NT>& a, const body_view<
     }
 }
 
+/// Whether the two edges that showed bodies a and b within d at the last
+/// step (`last`, of kind edges) still do at their present poses: the four
+/// vertices posed in NT, no polygon placed (a and b need no placing). With
+/// Exact not void, false when NT cannot settle a sign (the pair is then
+/// answered by bodies_within, which falls back to Exact).
+template <class NT, class Exact = void>
+bool edge_witness_holds(const meeting& last, const body_view<NT>& a, const body_view<NT>& b, double d) {
+    const auto test = [&] {
+        using tr = number_traits<NT>;
+        const NT dt = tr::from_double(d);
+        return witness_holds(last, a, b, d, NT(dt * dt));
+    };
+    if constexpr (std::is_void_v<Exact>) {
+        return test();
+    } else {
+        return fallback<>::run(test, [] { return false; });
+    }
+}
+
 /// Whether bodies a and b come within d of each other (d = 0: their closed
 /// regions meet), and what shows it, in stored numbering. `last` is what
 /// showed it at the last step (kind none when they were apart or the pair

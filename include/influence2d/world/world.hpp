@@ -93,9 +93,12 @@ struct world_statistics {
 ///     the fixed bodies' box tree rebuilt if one of them moved; the free
 ///       bodies' box tree rebuilt if one of them moved (box_tree: linear
 ///       when they moved little)
-///     candidates <- for each moved body, the bodies whose box meets its
-///       own (free bodies; fixed ones too for a free body); the pairs of
-///       the last step whose bodies both stayed keep their answer
+///     candidates <- the pairs whose boxes meet and that have a moved body:
+///       when most bodies moved, the free bodies' tree joined with itself
+///       and with the fixed bodies' (box_tree::self_join, join); else, for
+///       each moved body, the bodies whose box meets its own (free bodies;
+///       fixed ones too for a free body). The contacts of the last step
+///       whose bodies both stayed keep their answer
 ///     the candidates' bodies placed at their poses (vertices posed in
 ///       double, and in NT for another type), once each, in buffers kept
 ///       from step to step
@@ -276,16 +279,26 @@ private:
     // whose bodies both stayed are carried into kept_.
     std::vector<record> candidates() {
         std::vector<record> out;
-        for (body_id i : moved_) {
-            const body& b = bodies_[i];
-            if (!b.alive) continue;
-            // (A pair of two moved bodies is found from both: the sort
-            // below keeps one.)
-            const auto found = [&](std::uint32_t j) {
-                if (j != i) out.push_back({{std::min(i, j), std::max(i, j)}, meeting{}, false});
-            };
-            free_tree_.query(b.bounds, found);
-            if (!b.fixed) fixed_tree_.query(b.bounds, found);
+        const auto add = [&](std::uint32_t i, std::uint32_t j) {
+            if (bodies_[i].moved || bodies_[j].moved)
+                out.push_back({{std::min(i, j), std::max(i, j)}, meeting{}, false});
+        };
+        if (moved_.size() * 4 >= free_tree_.size() + fixed_tree_.size()) {
+            // Most bodies moved: the trees joined, node against node.
+            free_tree_.self_join(add);
+            free_tree_.join(fixed_tree_, add);
+        } else {
+            // A few moved: a query each. (A pair of two moved bodies is
+            // found from both: the sort below keeps one.)
+            for (body_id i : moved_) {
+                const body& b = bodies_[i];
+                if (!b.alive) continue;
+                const auto found = [&](std::uint32_t j) {
+                    if (j != i) add(i, j);
+                };
+                free_tree_.query(b.bounds, found);
+                if (!b.fixed) fixed_tree_.query(b.bounds, found);
+            }
         }
         std::sort(out.begin(), out.end(), [](const record& l, const record& r) { return l.bodies < r.bodies; });
         out.erase(
@@ -310,18 +323,24 @@ private:
         return out;
     }
 
+    // Body i's polygon and pose, without its placing (pass 1).
+    body_view<NT> posed(body_id i) const {
+        const body& b = bodies_[i];
+        return {&shapes_[b.shape]->shape, b.pose, b.scale, nullptr};
+    }
+
     body_view<NT> view(body_id i) {
         body& b = bodies_[i];
         return {&shapes_[b.shape]->shape, b.pose, b.scale, b.placed.get()};
     }
 
-    // Step 3a: the bodies of the candidates placed at their poses (in double,
+    // The bodies of the candidates `which` placed at their poses (in double,
     // and in NT for another type), each once, in parallel blocks when many;
     // a body that stayed keeps its placing.
-    void place_candidates(const std::vector<record>& tested) {
+    void place_candidates(const std::vector<record>& tested, const std::vector<std::size_t>& which) {
         std::vector<body_id> asked;
-        for (const record& r : tested)
-            for (body_id i : {r.bodies.first, r.bodies.second})
+        for (std::size_t k : which)
+            for (body_id i : {tested[k].bodies.first, tested[k].bodies.second})
                 if (!bodies_[i].placed_now) {
                     bodies_[i].placed_now = true;
                     asked.push_back(i);
@@ -341,14 +360,32 @@ private:
     }
 
     // Step 3: each candidate's answer, in parallel blocks when there are
-    // enough of them to pay for the threads.
+    // enough of them to pay for the threads:
+    //   pass 1: each pair whose witness is two edges tries them (four
+    //           vertices posed, no polygon placed)
+    //   the bodies of the pairs left placed (place_candidates)
+    //   pass 2: each pair left: bodies_within (a located vertex's witness
+    //           first, then the one-shot test)
     void narrow(std::vector<record>& tested) {
-        place_candidates(tested);
         constexpr std::size_t pairs_per_thread = 64;
         const unsigned threads = tested.size() < pairs_per_thread * 2 ? 1u : options_.threads;
         run_in_blocks(tested.size(), threads, [&](std::size_t first, std::size_t last) {
             for (std::size_t k = first; k < last; ++k) {
                 record& r = tested[k];
+                if (r.shown.how != meeting::kind::edges) continue;
+                r.by_witness = edge_witness_holds<NT, Exact>(r.shown, posed(r.bodies.first), posed(r.bodies.second),
+                                                             options_.within);
+                if (!r.by_witness) r.shown = meeting{};
+            }
+        });
+        std::vector<std::size_t> left;
+        for (std::size_t k = 0; k < tested.size(); ++k)
+            if (!tested[k].by_witness) left.push_back(k);
+        place_candidates(tested, left);
+        const unsigned threads_left = left.size() < pairs_per_thread * 2 ? 1u : options_.threads;
+        run_in_blocks(left.size(), threads_left, [&](std::size_t first, std::size_t last) {
+            for (std::size_t k = first; k < last; ++k) {
+                record& r = tested[left[k]];
                 r.shown = bodies_within<NT, Exact>(r.shown, view(r.bodies.first), view(r.bodies.second),
                                                    options_.within, &r.by_witness);
             }
