@@ -22,6 +22,8 @@ namespace fs = std::filesystem;
 inline const std::string cli_path = INFLUENCE2D_CLI_PATH;
 /// influence2d-bench, the time study's program.
 inline const std::string bench_path = INFLUENCE2D_BENCH_PATH;
+/// influence2d-world-bench, the world's time study's program.
+inline const std::string world_bench_path = INFLUENCE2D_WORLD_BENCH_PATH;
 
 inline std::string quote(const std::string& s) {
     std::string q = "'";
@@ -97,5 +99,10 @@ inline run_result run_cli(const temp_dir& dir, const std::string& args) { return
 
 /// Runs influence2d-bench with `args` (already quoted), capturing stdout and stderr.
 inline run_result run_bench(const temp_dir& dir, const std::string& args) { return run_program(bench_path, dir, args); }
+
+/// Runs influence2d-world-bench with `args` (already quoted), capturing stdout and stderr.
+inline run_result run_world_bench(const temp_dir& dir, const std::string& args) {
+    return run_program(world_bench_path, dir, args);
+}
 
 }  // namespace test_process
