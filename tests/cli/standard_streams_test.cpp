@@ -153,7 +153,7 @@ TEST_CASE("cli '-': audit reads the polygon from standard input", "[cli]") {
     auto r = run_cli(dir, from(square, "audit -"));
     INFO(r.err);
     CHECK(r.exit_code == 0);
-    CHECK(r.out.rfind("standard input: 1 ring(s), 4 vertices", 0) == 0);
+    CHECK(r.out.rfind("standard input: polygon 0 (line 1): 1 ring(s), 4 vertices", 0) == 0);
 
     r = run_cli(dir, from(square, "audit - --json -"));
     CHECK(r.exit_code == 0);

@@ -11,6 +11,7 @@
 /// that what the reader refuses is reported as well as what it accepts.
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <cstddef>
@@ -63,6 +64,10 @@ enum class finding_kind {
     beyond_double_products  ///< a coordinate above 2^500 or below 2^-500 in magnitude (not 0)
 };
 
+/// The number of enumerators of finding_kind: their values run from 0 to
+/// finding_kind_count - 1.
+inline constexpr std::size_t finding_kind_count = static_cast<std::size_t>(finding_kind::beyond_double_products) + 1;
+
 /// The enumerator's name as text ("unknown" for a value outside the enum);
 /// a string literal, never freed.
 inline const char* finding_name(finding_kind k) {
@@ -112,8 +117,11 @@ struct finding {
 struct audit_report {
     std::vector<finding> findings;  ///< at most audit_options::max_per_kind of each kind
     std::size_t total = 0;          ///< findings of every kind, listed or not
-    bool accepted = true;           ///< polygon(...) accepts the rings
-    std::string rejection;          ///< its message when it does not
+    /// The findings of each kind, listed or not, at the kind's value
+    /// (`counts[static_cast<std::size_t>(k)]`); they sum to `total`.
+    std::array<std::size_t, finding_kind_count> counts{};
+    bool accepted = true;   ///< polygon(...) accepts the rings
+    std::string rejection;  ///< its message when it does not
     /// The number of rings.
     std::size_t rings = 0, vertices = 0;  ///< the number of vertices of all rings, closing points not counted
 };
@@ -211,14 +219,13 @@ inline std::string coordinates(const point<double>& p) {
 /// makes it refused (the first one's text is the rejection).
 class collector {
 public:
-    explicit collector(const audit_options& o)
-        : options(o), per_kind_(static_cast<std::size_t>(finding_kind::beyond_double_products) + 1, 0) {}
+    explicit collector(const audit_options& o) : options(o) {}
 
     /// Adds f to the report.
     void add(finding f) {
         if (f.rejects && report.accepted) refuse(f.what);
         ++report.total;
-        if (per_kind_[static_cast<std::size_t>(f.kind)]++ < options.max_per_kind)
+        if (report.counts[static_cast<std::size_t>(f.kind)]++ < options.max_per_kind)
             report.findings.push_back(std::move(f));
     }
     /// Marks the input refused with this message.
@@ -252,8 +259,6 @@ private:
         f.rejects = rejects;
         return f;
     }
-
-    std::vector<std::size_t> per_kind_;
 };
 
 /// The rings as the library takes them (closing point dropped), and which of
