@@ -153,9 +153,7 @@ public:
     boost_geometry_one_shot(const polygon& A, const polygon& B)
         : a_(bg_posed(peer_rings(A), rotation_pose(pose{}))), b_rings_(peer_rings(B)) {}
 
-    bool collide(const pose& p) const {
-        return boost::geometry::intersects(a_, bg_posed(b_rings_, rotation_pose(p)));
-    }
+    bool collide(const pose& p) const { return boost::geometry::intersects(a_, bg_posed(b_rings_, rotation_pose(p))); }
 
 private:
     bg_polygon a_;
