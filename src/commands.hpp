@@ -21,6 +21,10 @@ void register_audit(CLI::App& app);
 void register_render(CLI::App& app);
 /// `influence2d sweep`: the first contact along each motion between poses.
 void register_sweep(CLI::App& app);
+/// `influence2d world`: many bodies moved step by step, the pairs in contact.
+void register_world(CLI::App& app);
+/// `influence2d pairs`: the pairs of polygons of one layer, or of two, that meet.
+void register_pairs(CLI::App& app);
 
 /// influence2d-bench, the time study against the peers: its options and its
 /// run set on `app`, the program's whole command line (bench_main.cpp).

@@ -51,6 +51,8 @@ int main(int argc, char** argv) {
     influence2d::cli::register_audit(app);
     influence2d::cli::register_render(app);
     influence2d::cli::register_sweep(app);
+    influence2d::cli::register_world(app);
+    influence2d::cli::register_pairs(app);
     register_moved_bench(app);
     return influence2d::cli::run_tool(app, argc, argv);
 }
