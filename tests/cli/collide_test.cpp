@@ -153,12 +153,22 @@ TEST_CASE("cli collide: certified counts its exact fallbacks, and the paper's al
         std::smatch m;
         REQUIRE(std::regex_search(r.out, m, fallbacks));
         // Frames 0 (overlapping along the bottom and top edges, collinear) and
-        // 1 (touching along x = 1) decide exact zeros of posed coordinates,
-        // which double cannot certify; in frame 2, apart, the brute force
-        // still meets the collinear lines of the bottom and top edges.
-        CHECK(std::stoi(m[1].str()) >= 2);
-        CHECK(std::stoi(m[1].str()) <= 3);
+        // 1 (touching along x = 1) decide exact zeros, but of translations
+        // whose posed coordinates are doubles: certified knows them exactly
+        // and settles those zeros in double (orientation_of_doubles).
+        CHECK(std::stoi(m[1].str()) == 0);
         CHECK(lines_of(slurp(frames)) == std::vector<std::string>{"frame,collides", "0,1", "1,1", "2,0"});
+
+        // Turned by a quarter and by a half turn, touching at a corner: the
+        // posed coordinates are rounded, their exact zeros are in doubt, and
+        // each frame is answered again exactly.
+        const auto turned = dir.file("turned.csv", "tx,ty,theta\n1,0,1.5707963267948966\n1,1,3.141592653589793\n");
+        r = run_cli(dir, scene_args(a, a) + " --poses " + quote(turned.string()) +
+                             " --number-type certified --algorithm " + algorithm + " --out " + quote(frames.string()));
+        REQUIRE(r.exit_code == 0);
+        REQUIRE(std::regex_search(r.out, m, fallbacks));
+        CHECK(std::stoi(m[1].str()) == 2);
+        CHECK(lines_of(slurp(frames)) == std::vector<std::string>{"frame,collides", "0,1", "1,1"});
 
         // Frames apart and turned decide nothing in doubt: no fallback.
         const auto apart = dir.file("apart.csv", "tx,ty,theta\n5,0.3,0.25\n0.2,-7,1\n");

@@ -160,10 +160,12 @@ void report(const tally& t) {
                    << " (brute force)");
     CHECK(t.mismatches == 0);
     // The fallback is exercised on the exact contacts, and never needed on
-    // generic frames.
+    // generic frames. Most touching frames are translations whose posed
+    // coordinates are doubles, whose exact zeros certified settles in double
+    // (orientation_of_doubles); the turned ones still need the fallback.
     CHECK(t.generic_fallbacks == 0);
-    CHECK(t.touching_fallbacks * 4 >= t.touching_frames);
-    CHECK(t.brute_touching_fallbacks * 4 >= t.touching_frames);
+    CHECK(t.touching_fallbacks * 20 >= t.touching_frames);
+    CHECK(t.brute_touching_fallbacks * 20 >= t.touching_frames);
     CHECK(t.collisions >= t.frames / 4);
     CHECK(t.frames - t.collisions >= t.frames / 10);
 }
