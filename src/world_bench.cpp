@@ -43,6 +43,7 @@
 #include "verification/heap_meter.hpp"
 #include "verification/world_peers.hpp"
 #include "verification/world_scenes.hpp"
+#include "world_input.hpp"
 
 namespace influence2d::cli {
 
@@ -192,16 +193,9 @@ std::vector<row> run_scene(const std::string& name, std::size_t bodies, std::siz
 /// Real layers: all meeting pairs of one layer, each method run `runs` times,
 /// interleaved; medians.
 std::vector<row> run_layer(const std::string& path, const std::string& name, int runs) {
-    std::ifstream in(path);
-    if (!in) throw std::invalid_argument(path + ": cannot be read (make it with scripts/real_layers.sh)");
-    std::vector<polygon> layer;
-    std::string line;
-    std::size_t number = 0;
-    while (std::getline(in, line)) {
-        ++number;
-        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-        layer.push_back(read_wkt(line, path + ":" + std::to_string(number)));
-    }
+    if (!std::filesystem::exists(path))
+        throw std::invalid_argument(path + ": cannot be read (make it with scripts/real_layers.sh)");
+    const std::vector<polygon> layer = read_polygon_lines(path).polygons;
     using pairs_of = std::function<std::vector<body_pair>()>;
     std::vector<std::pair<std::string, pairs_of>> methods = {
         {"certified", [&] { return certified_layer_pairs(layer); }},
