@@ -106,10 +106,13 @@ pose random_pose(rng& g, point<double> origin, double extent) {
     return {x, y, g.uniform(-3.2, 3.2)};
 }
 
-/// Runs a random scene of `steps` steps through worlds W... and the
-/// reference, checking every step's contacts and the events.
+/// Runs a random scene of `steps` steps through a world and the reference,
+/// checking every step's contacts and the events; a coherent move is up to
+/// `stride` in each coordinate (a tenth of it in radians). Returns the
+/// world's statistics.
 template <class World>
-void check_scene(std::uint64_t seed, point<double> origin, double within, int steps, world_options options) {
+world_statistics check_scene(std::uint64_t seed, point<double> origin, double within, int steps, world_options options,
+                             double stride = 1) {
     rng g(seed);
     const std::vector<polygon> shapes = random_shapes(g, 6);
     options.within = within;
@@ -135,9 +138,9 @@ void check_scene(std::uint64_t seed, point<double> origin, double within, int st
             } else if (g.chance(0.6)) {
                 // A small step (coherent) or a jump.
                 pose& q = bodies[i].where;
-                q = g.chance(0.8)
-                        ? pose{q.tx + g.uniform(-1, 1), q.ty + g.uniform(-1, 1), q.theta + g.uniform(-0.1, 0.1)}
-                        : random_pose(g, origin, extent);
+                q = g.chance(0.8) ? pose{q.tx + g.uniform(-stride, stride), q.ty + g.uniform(-stride, stride),
+                                         q.theta + g.uniform(-stride, stride) / 10}
+                                  : random_pose(g, origin, extent);
                 w.move(static_cast<std::uint32_t>(i), q);
             }
         }
@@ -160,6 +163,7 @@ void check_scene(std::uint64_t seed, point<double> origin, double within, int st
     }
     CHECK(contacts > 0);  // the scene has contacts to compare
     CHECK(ends > 0);      // and some of them end
+    return w.statistics();
 }
 
 }  // namespace
@@ -180,6 +184,23 @@ TEST_CASE("world: far from the origin and within a distance", "[world]") {
     check_scene<certified_world>(200, {1e9, -3e8}, 0, 8, o);
     check_scene<certified_world>(201, {0, 0}, 0.75, 8, o);
     check_scene<certified_world>(202, {-5e6, 5e6}, 2.5, 6, o);
+}
+
+TEST_CASE("world: small moves stay in the enlarged boxes; the contacts stay the reference's", "[world]") {
+    // Most moves small enough that a body's box stays in its enlarged box
+    // (no tree rebuilt, the near pairs kept), contacts persisting over many
+    // steps (their witnesses tried first), some bodies nested in others.
+    for (const bool coherence : {true, false}) {
+        world_options o;
+        o.coherence = coherence;
+        const world_statistics st = check_scene<certified_world>(500 + coherence, {0, 0}, 0, 20, o, 0.05);
+        CHECK(st.escaped * 2 < st.moved);  // most moved bodies stayed in their enlarged boxes
+        INFO("witness hits " << st.witness_hits << ", contacts " << st.contacts);
+        if (coherence) CHECK(st.witness_hits * 4 > st.contacts);  // persisting contacts kept their witness
+    }
+    world_options o;
+    const world_statistics st = check_scene<certified_world>(502, {4e6, -2e6}, 0.25, 12, o, 0.02);
+    CHECK(st.escaped * 2 < st.moved);
 }
 
 TEST_CASE("world: the exact type alone gives the same contacts", "[world]") {

@@ -34,6 +34,9 @@ struct box {
     /// a default box stays empty.
     box inflated(double margin) const { return box{min_x - margin, min_y - margin, max_x + margin, max_y + margin}; }
 
+    /// The centre (NaN for an empty box or an infinite side).
+    point<double> centre() const { return {min_x / 2 + max_x / 2, min_y / 2 + max_y / 2}; }
+
     /// Whether p lies in the closed box (on a side counts); false for NaN.
     bool contains(const point<double>& p) const { return p.x >= min_x && p.x <= max_x && p.y >= min_y && p.y <= max_y; }
 

@@ -37,12 +37,22 @@ struct meeting {
     explicit operator bool() const { return how != kind::none; }
 };
 
+/// Which witness placed_meet looks for first when both kinds may show a
+/// meeting (the answer is the same; only the witness and the cost differ).
+enum class witness_preference : std::uint8_t {
+    cheapest,  ///< a ring's first vertex located first (linear), then the edges
+    edges,     ///< two edges that meet first (four vertices to test again after a
+               ///< small move, where a located vertex needs the other polygon whole);
+               ///< a located vertex only when no edges meet
+};
+
 /// Whether the closed regions of the two placed polygons meet, and what
 /// showed it; `e` bounds the distance between each coordinate in double
 /// and in NT (the filters' margin). The steps of intersects below, after
-/// the posing.
+/// the posing; `prefer` says which witness is sought first.
 template <class NT>
-meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e) {
+meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e,
+                    witness_preference prefer = witness_preference::cheapest) {
     const box& ab = a.bounds();
     box b_window = b.bounds().inflated(e), a_window = ab.inflated(e);
     // A coordinate beyond double's range (or NaN from inf - inf) leaves the
@@ -64,7 +74,8 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e) {
     // time, before any sorting. A vertex outside the other polygon's box
     // (widened) is outside it without a locate. Each locate reads the whole
     // other polygon, so only the first `early_rings` rings of each are
-    // located before the boundaries are tested; the others after.
+    // located before the boundaries are tested (none when edges are
+    // preferred); the others after.
     const auto outside = [](const point<double>& v, const box& w) {
         return v.x < w.min_x || v.x > w.max_x || v.y < w.min_y || v.y > w.max_y;  // NaN: may be inside
     };
@@ -84,7 +95,7 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e) {
         }
         return {};
     };
-    constexpr std::size_t early_rings = 2;
+    const std::size_t early_rings = prefer == witness_preference::cheapest ? 2 : 0;
     if (meeting m = rings_inside(0, early_rings)) return m;
 
     // No ring inside the other polygon: the regions meet iff the boundaries
@@ -108,7 +119,7 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e) {
 /// distance d of each other (d = 0: whether they meet, placed_meet), and
 /// what showed it; `d2` is d * d in NT (exact when NT is and d is a double
 /// whose square NT holds exactly), `e` the filters' margin as for
-/// placed_meet. Exact when NT is.
+/// placed_meet, `prefer` the witness sought first. Exact when NT is.
 ///
 ///   the boxes (grown by d and e) apart:                        not within d
 ///   placed_meet (the regions meet):                            within d
@@ -121,8 +132,9 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e) {
 /// are: a point of one within d of the other's region is within d of its
 /// boundary when outside it.)
 template <class NT>
-meeting placed_within(placed_polygon<NT>& a, placed_polygon<NT>& b, double e, double d, const NT& d2) {
-    if (!(d > 0)) return placed_meet(a, b, e);
+meeting placed_within(placed_polygon<NT>& a, placed_polygon<NT>& b, double e, double d, const NT& d2,
+                      witness_preference prefer = witness_preference::cheapest) {
+    if (!(d > 0)) return placed_meet(a, b, e, prefer);
     // (d's own share widened by 2^-50: the sums below round relative to d.)
     const double reach = d * (1 + 0x1p-50) + 2 * e;
     box b_window = b.bounds().inflated(reach), a_window = a.bounds().inflated(reach);
@@ -135,7 +147,7 @@ meeting placed_within(placed_polygon<NT>& a, placed_polygon<NT>& b, double e, do
     if (b_window.max_x < ab.min_x || b_window.min_x > ab.max_x || b_window.max_y < ab.min_y ||
         b_window.min_y > ab.max_y)
         return {};
-    if (meeting m = placed_meet(a, b, e)) return m;
+    if (meeting m = placed_meet(a, b, e, prefer)) return m;
     // Each edge's box grown by reach / 2 + e on its side: two edges within d
     // have boxes within d (exactly), within d + 2e in double.
     const double grow = reach / 2 + e;

@@ -47,7 +47,7 @@ public:
     void rebuild(const std::vector<box>& boxes, const std::vector<std::uint32_t>& ids) {
         const std::size_t n = boxes.size();
         box centres;
-        for (const box& b : boxes) centres.add(centre(b));
+        for (const box& b : boxes) centres.add(b.centre());
         const double sx = scale_of(centres.min_x, centres.max_x), sy = scale_of(centres.min_y, centres.max_y);
         // Entries carried over from the last rebuild first (in their order),
         // then the new ones: a scene that changed little stays nearly sorted.
@@ -63,7 +63,7 @@ public:
         for (std::size_t k = 0; k < n; ++k)
             if (where[ids[k]] != absent) next.push_back({boxes[k], ids[k], 0});
         for (entry& e : next) {
-            const point<double> c = centre(e.bounds);
+            const point<double> c = e.bounds.centre();
             e.key = curve_position(quantized(c.x, centres.min_x, sx), quantized(c.y, centres.min_y, sy));
         }
         sort_by_key(next);
@@ -109,7 +109,6 @@ private:
         std::uint32_t key;
     };
 
-    static point<double> centre(const box& b) { return {b.min_x / 2 + b.max_x / 2, b.min_y / 2 + b.max_y / 2}; }
     static std::size_t n_slots(const std::vector<std::uint32_t>& ids) {
         std::uint32_t top = 0;
         for (std::uint32_t id : ids) top = std::max(top, id + 1);

@@ -102,8 +102,9 @@ bool edge_witness_holds(const meeting& last, const body_view<NT>& a, const body_
 /// Whether bodies a and b come within d of each other (d = 0: their closed
 /// regions meet), and what shows it, in stored numbering. `last` is what
 /// showed it at the last step (kind none when they were apart or the pair
-/// is new): it is tried first, then the one-shot test (placed_within);
-/// `*by_witness`, when given, says whether `last` answered. Exact
+/// is new): it is tried first, then the one-shot test (placed_within,
+/// seeking the witness `prefer` first); `*by_witness`, when given, says
+/// whether `last` answered. Exact
 /// when NT is. With Exact not void, a sign NT cannot settle (uncertain_sign)
 /// makes the pair answered again in Exact, both bodies posed anew in it.
 ///
@@ -112,7 +113,7 @@ bool edge_witness_holds(const meeting& last, const body_view<NT>& a, const body_
 ///   posing (posing_margin of the sum of their scales)
 template <class NT, class Exact = void>
 meeting bodies_within(const meeting& last, const body_view<NT>& a, const body_view<NT>& b, double d,
-                      bool* by_witness = nullptr) {
+                      bool* by_witness = nullptr, witness_preference prefer = witness_preference::cheapest) {
     if (by_witness != nullptr) *by_witness = false;
     const auto in = [&](auto tag, placed_polygon<decltype(tag)>& pa, placed_polygon<decltype(tag)>& pb,
                         const meeting& witness, const body_view<decltype(tag)>* va,
@@ -125,7 +126,7 @@ meeting bodies_within(const meeting& last, const body_view<NT>& a, const body_vi
             if (by_witness != nullptr) *by_witness = true;
             return witness;
         }
-        return placed_within(pa, pb, posing_margin<T>(a.scale + b.scale), d, d2);
+        return placed_within(pa, pb, posing_margin<T>(a.scale + b.scale), d, d2, prefer);
     };
     const auto fast = [&] { return in(NT{}, *a.placed, *b.placed, last, &a, &b); };
     if constexpr (std::is_void_v<Exact>) {

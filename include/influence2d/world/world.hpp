@@ -68,6 +68,8 @@ struct world_options {
 struct world_statistics {
     std::size_t steps = 0;         ///< calls of step()
     std::size_t moved = 0;         ///< bodies moved, added or removed, summed over the steps
+    std::size_t escaped = 0;       ///< bodies whose box left their enlarged box, summed over the steps
+    std::size_t rebuilds = 0;      ///< rebuilds of a box tree
     std::size_t candidates = 0;    ///< pairs whose boxes met and had a moved body
     std::size_t carried = 0;       ///< pairs whose boxes met and neither body moved (answer kept)
     std::size_t witness_hits = 0;  ///< candidates answered by the last step's witness
@@ -89,16 +91,21 @@ struct world_statistics {
 ///   step():
 ///     each body moved since the last step: its box, from the four corners
 ///       of its polygon's box posed in double (the posed polygon lies in
-///       their parallelogram), grown by the posing margin and within / 2
-///     the fixed bodies' box tree rebuilt if one of them moved; the free
-///       bodies' box tree rebuilt if one of them moved (box_tree: linear
+///       their parallelogram), grown by the posing margin and within / 2.
+///       A box that left the body's enlarged box (the box the trees hold:
+///       grown by an eighth of its larger side and stretched along the
+///       body's last displacement) escapes: a new enlarged box
+///     the fixed bodies' box tree rebuilt if one of them escaped; the free
+///       bodies' box tree rebuilt if one of them escaped (box_tree: linear
 ///       when they moved little)
-///     candidates <- the pairs whose boxes meet and that have a moved body:
-///       when most bodies moved, the free bodies' tree joined with itself
-///       and with the fixed bodies' (box_tree::self_join, join); else, for
-///       each moved body, the bodies whose box meets its own (free bodies;
-///       fixed ones too for a free body). The contacts of the last step
-///       whose bodies both stayed keep their answer
+///     near pairs (enlarged boxes meet, not both fixed), kept from step to
+///       step: when bodies escaped, theirs found again: the free bodies'
+///       tree joined with itself and with the fixed bodies' when most
+///       bodies escaped (box_tree::self_join, join), else a query of the
+///       trees for each (free bodies; fixed ones too for a free body)
+///     candidates <- the near pairs with a moved body whose boxes meet. The
+///       contacts of the last step whose bodies both stayed keep their
+///       answer
 ///     the candidates' bodies placed at their poses (vertices posed in
 ///       double, and in NT for another type), once each, in buffers kept
 ///       from step to step
@@ -107,12 +114,13 @@ struct world_statistics {
 ///     contacts <- the pairs within `within`, sorted; events: the
 ///       difference with the last step's contacts
 ///
-/// Cost of a step: O(m log n + k) for m moved bodies among n and k
-/// candidate pairs, plus the rebuild of the free bodies' tree (linear when
-/// they moved little), plus the narrow phase: a persisting contact whose
-/// witness edges still meet costs four posed vertices and two orientation
-/// tests; others the one-shot query's steps. Nothing grows with the number
-/// of pairs of bodies.
+/// Cost of a step: O(m + p) for m moved bodies and p near pairs when no
+/// body escaped; an escape adds the rebuild of its tree (linear when the
+/// bodies moved little) and O(e log n) queries for e escaped bodies among n
+/// (O(n + p) joins when most escaped); plus the narrow phase: a persisting
+/// contact whose witness edges still meet costs four posed vertices and two
+/// orientation tests; others the one-shot query's steps. Nothing grows with
+/// the number of pairs of bodies.
 template <class NT, class Exact = void>
 class world {
 public:
@@ -178,6 +186,7 @@ public:
         ++stats_.steps;
         stats_.moved += moved_.size();
         place_moved();
+        update_near();
         std::vector<record> tested = candidates();
         narrow(tested);
         gather(tested);
@@ -208,16 +217,20 @@ private:
         rotation_pose pose{influence2d::pose{}};
         bool fixed = false;
         bool alive = true;
-        bool moved = false;  // since the last step
-        box bounds;
+        bool moved = false;                          // since the last step
+        box bounds;                                  // at the present pose
+        box enlarged;                                // held by the trees; holds bounds
+        bool escaped = false;                        // enlarged anew at this step
         double scale = 0;                            // the shape's scale plus |tx| + |ty|
         std::unique_ptr<placed_polygon<NT>> placed;  // posed at the last step that asked
         bool placed_now = false;                     // placed at the present pose
     };
     struct record {
         body_pair bodies;
-        meeting shown;            // kind none: not within the distance
-        bool by_witness = false;  // answered by the last step's witness
+        meeting shown;             // kind none: not within the distance
+        bool by_witness = false;   // answered by the last step's witness
+        bool persisting = false;   // in contact at the last step
+        bool no_crossing = false;  // shown is a located vertex sought after the edges: none met
     };
 
     body& live(body_id i) {
@@ -230,7 +243,6 @@ private:
         body& b = bodies_[i];
         if (!b.moved) moved_.push_back(i);
         b.moved = true;
-        (b.fixed ? fixed_dirty_ : free_dirty_) = true;
     }
 
     // The box of body b: its polygon's box with the four corners posed in
@@ -251,15 +263,44 @@ private:
         return out;
     }
 
-    // Step 1: the moved bodies' boxes, the trees of the fixed and free bodies.
+    // The box the trees hold for a body whose box `now` left its enlarged
+    // box: `now` grown by an eighth of its larger side (a body that wobbles
+    // stays inside) and stretched by twice the displacement of its centre
+    // since the last step (`moved`; a body that drifts stays inside for a
+    // few steps). A box that is not finite is kept as it is.
+    static box enlarged_box(const box& now, const point<double>& moved) {
+        constexpr double slack = 0.125, lead = 2;
+        box out = now.inflated(slack * std::max(now.max_x - now.min_x, now.max_y - now.min_y));
+        if (!std::isfinite(out.min_x) || !std::isfinite(out.max_x) || !std::isfinite(out.min_y) ||
+            !std::isfinite(out.max_y))
+            return now;
+        if (std::isfinite(moved.x)) (moved.x < 0 ? out.min_x : out.max_x) += lead * moved.x;
+        if (std::isfinite(moved.y)) (moved.y < 0 ? out.min_y : out.max_y) += lead * moved.y;
+        return out;
+    }
+
+    // Step 1: the moved bodies' boxes; those that left their enlarged boxes
+    // (and the added and removed bodies) escape; the trees of the fixed and
+    // free bodies rebuilt if one of theirs escaped.
     void place_moved() {
         for (body_id i : moved_) {
             body& b = bodies_[i];
-            if (!b.alive) continue;
+            if (!b.alive) {
+                escape(i);
+                continue;
+            }
+            const point<double> was = b.bounds.centre();
             b.scale = shapes_[b.shape]->scale + std::fabs(b.pose.tx) + std::fabs(b.pose.ty);
             b.bounds = box_of(b);
             b.placed_now = false;
+            if (!b.enlarged.contains(b.bounds)) {
+                const point<double> now = b.bounds.centre();
+                b.enlarged = enlarged_box(
+                    b.bounds, b.enlarged.empty() ? point<double>{0, 0} : point<double>{now.x - was.x, now.y - was.y});
+                escape(i);
+            }
         }
+        stats_.escaped += escaped_.size();
         for (bool fixed : {true, false}) {
             bool& dirty = fixed ? fixed_dirty_ : free_dirty_;
             if (!dirty) continue;
@@ -267,56 +308,84 @@ private:
             std::vector<std::uint32_t> ids;
             for (std::size_t i = 0; i < bodies_.size(); ++i)
                 if (bodies_[i].alive && bodies_[i].fixed == fixed) {
-                    boxes.push_back(bodies_[i].bounds);
+                    boxes.push_back(bodies_[i].enlarged);
                     ids.push_back(static_cast<std::uint32_t>(i));
                 }
             (fixed ? fixed_tree_ : free_tree_).rebuild(boxes, ids);
+            ++stats_.rebuilds;
             dirty = false;
         }
     }
+    void escape(body_id i) {
+        body& b = bodies_[i];
+        b.escaped = true;
+        escaped_.push_back(i);
+        (b.fixed ? fixed_dirty_ : free_dirty_) = true;
+    }
 
-    // Step 2: the pairs to test (a moved body in each), sorted; the pairs
-    // whose bodies both stayed are carried into kept_.
-    std::vector<record> candidates() {
-        std::vector<record> out;
+    // Step 2a: the near pairs (enlarged boxes meet), sorted: those of the
+    // escaped bodies found again, the others kept.
+    void update_near() {
+        if (escaped_.empty()) return;
+        std::vector<body_pair> found;
         const auto add = [&](std::uint32_t i, std::uint32_t j) {
-            if (bodies_[i].moved || bodies_[j].moved)
-                out.push_back({{std::min(i, j), std::max(i, j)}, meeting{}, false});
+            if (i != j) found.push_back({std::min(i, j), std::max(i, j)});
         };
-        if (moved_.size() * 4 >= free_tree_.size() + fixed_tree_.size()) {
-            // Most bodies moved: the trees joined, node against node.
+        const bool most = escaped_.size() * 4 >= free_tree_.size() + fixed_tree_.size();
+        if (most) {
             free_tree_.self_join(add);
             free_tree_.join(fixed_tree_, add);
         } else {
-            // A few moved: a query each. (A pair of two moved bodies is
-            // found from both: the sort below keeps one.)
-            for (body_id i : moved_) {
+            // (A pair of two escaped bodies is found from both: the sort
+            // below keeps one.)
+            for (body_id i : escaped_) {
                 const body& b = bodies_[i];
                 if (!b.alive) continue;
-                const auto found = [&](std::uint32_t j) {
-                    if (j != i) add(i, j);
-                };
-                free_tree_.query(b.bounds, found);
-                if (!b.fixed) fixed_tree_.query(b.bounds, found);
+                free_tree_.query(b.enlarged, [&](std::uint32_t j) { add(i, j); });
+                if (!b.fixed) fixed_tree_.query(b.enlarged, [&](std::uint32_t j) { add(i, j); });
             }
         }
-        std::sort(out.begin(), out.end(), [](const record& l, const record& r) { return l.bodies < r.bodies; });
-        out.erase(
-            std::unique(out.begin(), out.end(), [](const record& l, const record& r) { return l.bodies == r.bodies; }),
-            out.end());
-        // Carry the last step's pairs whose bodies both stayed; give the
-        // others their last witness.
+        std::sort(found.begin(), found.end());
+        found.erase(std::unique(found.begin(), found.end()), found.end());
+        if (!most) {
+            std::vector<body_pair> kept;
+            kept.reserve(near_.size());
+            for (const body_pair& p : near_)
+                if (!bodies_[p.first].escaped && !bodies_[p.second].escaped) kept.push_back(p);
+            std::vector<body_pair> all;
+            all.reserve(kept.size() + found.size());
+            std::merge(kept.begin(), kept.end(), found.begin(), found.end(), std::back_inserter(all));
+            found = std::move(all);
+        }
+        near_ = std::move(found);
+        for (body_id i : escaped_) bodies_[i].escaped = false;
+        escaped_.clear();
+    }
+
+    // Step 2b: the pairs to test: the near pairs with a moved body whose
+    // boxes meet, sorted, each with its last witness; the contacts whose
+    // bodies both stayed are carried into kept_. (Every contact of the last
+    // step is a near pair: its boxes met, so did its enlarged boxes.)
+    std::vector<record> candidates() {
+        std::vector<record> out;
         kept_.clear();
         std::size_t k = 0;
-        for (const record& r : last_) {
-            const body &a = bodies_[r.bodies.first], &b = bodies_[r.bodies.second];
-            if (!a.alive || !b.alive) continue;
+        for (const body_pair& p : near_) {
+            while (k < last_.size() && last_[k].bodies < p) ++k;
+            const bool had = k < last_.size() && last_[k].bodies == p;
+            const body &a = bodies_[p.first], &b = bodies_[p.second];
             if (!a.moved && !b.moved) {
-                kept_.push_back(r);
+                if (had) kept_.push_back(last_[k]);
                 continue;
             }
-            while (k < out.size() && out[k].bodies < r.bodies) ++k;
-            if (k < out.size() && out[k].bodies == r.bodies && options_.coherence) out[k].shown = r.shown;
+            if (!boxes_overlap(a.bounds, b.bounds)) continue;
+            record r{p, meeting{}, false, false, false};
+            if (had && options_.coherence) {
+                r.shown = last_[k].shown;
+                r.persisting = true;
+                r.no_crossing = last_[k].no_crossing;
+            }
+            out.push_back(r);
         }
         stats_.candidates += out.size();
         stats_.carried += kept_.size();
@@ -364,8 +433,10 @@ private:
     //   pass 1: each pair whose witness is two edges tries them (four
     //           vertices posed, no polygon placed)
     //   the bodies of the pairs left placed (place_candidates)
-    //   pass 2: each pair left: bodies_within (a located vertex's witness
-    //           first, then the one-shot test)
+    //   pass 2: each pair left: bodies_within. A pair in contact at the last
+    //           step seeks two edges that meet first (pass 1 can test them
+    //           again at the next step); a located vertex found when no
+    //           edges met (one body in the other) is tried first
     void narrow(std::vector<record>& tested) {
         constexpr std::size_t pairs_per_thread = 64;
         const unsigned threads = tested.size() < pairs_per_thread * 2 ? 1u : options_.threads;
@@ -375,7 +446,6 @@ private:
                 if (r.shown.how != meeting::kind::edges) continue;
                 r.by_witness = edge_witness_holds<NT, Exact>(r.shown, posed(r.bodies.first), posed(r.bodies.second),
                                                              options_.within);
-                if (!r.by_witness) r.shown = meeting{};
             }
         });
         std::vector<std::size_t> left;
@@ -386,8 +456,13 @@ private:
         run_in_blocks(left.size(), threads_left, [&](std::size_t first, std::size_t last) {
             for (std::size_t k = first; k < last; ++k) {
                 record& r = tested[left[k]];
-                r.shown = bodies_within<NT, Exact>(r.shown, view(r.bodies.first), view(r.bodies.second),
-                                                   options_.within, &r.by_witness);
+                const meeting contained = r.no_crossing ? r.shown : meeting{};
+                const witness_preference prefer =
+                    r.persisting ? witness_preference::edges : witness_preference::cheapest;
+                r.shown = bodies_within<NT, Exact>(contained, view(r.bodies.first), view(r.bodies.second),
+                                                   options_.within, &r.by_witness, prefer);
+                const bool located = r.shown && r.shown.how != meeting::kind::edges;
+                r.no_crossing = located && (r.by_witness || prefer == witness_preference::edges);
             }
         });
         for (const record& r : tested) stats_.witness_hits += r.by_witness ? 1 : 0;
@@ -433,6 +508,8 @@ private:
     std::vector<std::unique_ptr<shape_entry>> shapes_;
     std::vector<body> bodies_;
     std::vector<body_id> moved_;
+    std::vector<body_id> escaped_;  // at this step
+    std::vector<body_pair> near_;   // enlarged boxes meet, not both fixed; sorted
     bool fixed_dirty_ = false, free_dirty_ = false;
     box_tree fixed_tree_, free_tree_;
     std::vector<record> last_;  // the last step's pairs within the distance, sorted
