@@ -186,7 +186,7 @@ TEST_CASE("world: far from the origin and within a distance", "[world]") {
     check_scene<certified_world>(202, {-5e6, 5e6}, 2.5, 6, o);
 }
 
-TEST_CASE("world: small moves stay in the enlarged boxes; the contacts stay the reference's", "[world]") {
+TEST_CASE("world: small moves stay in the enlarged boxes and the contacts stay the reference's", "[world]") {
     // Most moves small enough that a body's box stays in its enlarged box
     // (no tree rebuilt, the near pairs kept), contacts persisting over many
     // steps (their witnesses tried first), some bodies nested in others.
