@@ -7,3 +7,5 @@ shift
 root=$(cd "$(dirname "$0")/.." && pwd)
 cmake -S "$root" -B "$dir" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
 cmake --build "$dir" -j "$(nproc)"
+# The Python package, when this build has it: installed for /usr/bin/python3.
+bash "$root/scripts/install_python.sh" "$dir"

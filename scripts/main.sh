@@ -12,6 +12,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/deps.sh"
 cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$root/build" -j "$(nproc)" --target influence2d_cli influence2d_bench_cli >/dev/null
+# The Python package (when pybind11 and /usr/bin/python3 with numpy are there), installed.
+bash "$root/scripts/install_python.sh" "$root/build" >/dev/null
 tool="$root/build/src/influence2d"
 bench_tool="$root/build/src/influence2d-bench"
 data="$root/data/families"

@@ -7,7 +7,7 @@ if(CMAKE_SCRIPT_MODE_FILE)
     file(GLOB_RECURSE sources RELATIVE "${SOURCE_DIR}" "${SOURCE_DIR}/include/*.hpp" "${SOURCE_DIR}/src/*.hpp"
         "${SOURCE_DIR}/src/*.cpp" "${SOURCE_DIR}/verification/*.hpp" "${SOURCE_DIR}/verification/*.cpp"
         "${SOURCE_DIR}/tests/*.hpp" "${SOURCE_DIR}/tests/*.cpp" "${SOURCE_DIR}/fuzz/*.cpp"
-        "${SOURCE_DIR}/scripts/*.cpp")
+        "${SOURCE_DIR}/scripts/*.cpp" "${SOURCE_DIR}/python/*.hpp" "${SOURCE_DIR}/python/*.cpp")
     list(LENGTH sources count)
     if(count EQUAL 0)
         message(FATAL_ERROR "no C++ file found under ${SOURCE_DIR}")

@@ -250,6 +250,20 @@ inline std::vector<wkt_ring> read_wkt_rings(std::string_view text, std::string_v
     return rings;
 }
 
+/// The polygon of rings as read_wkt_rings gives them (or any reader of the
+/// same rings, WKB say), checked as read_wkt checks them: closed rings,
+/// finite coordinates, three distinct vertices, an exterior before its
+/// holes. Throws invalid_input with a message starting with `source`.
+inline polygon polygon_of_rings(const std::vector<wkt_ring>& read, std::string_view source = "<text>") {
+    std::vector<ring_input> rings;
+    for (std::size_t k = 0; k < read.size(); ++k) wkt_detail::append_ring(source, read, k, rings);
+    try {
+        return polygon(std::move(rings));
+    } catch (const invalid_input& e) {
+        wkt_detail::fail(source, e.what());
+    }
+}
+
 /// Reads a polygon from WKT text: `POLYGON` (first ring outer, the others
 /// holes) or `MULTIPOLYGON` (each part's exterior outer, its interiors holes),
 /// keywords in any case, surrounding white space allowed. Rings must be
@@ -264,14 +278,7 @@ inline std::vector<wkt_ring> read_wkt_rings(std::string_view text, std::string_v
 /// vertices, collinear runs, self-intersections, zero area) are accepted as
 /// polygon takes them; audit_rings (audit/audit.hpp) lists them.
 inline polygon read_wkt(std::string_view text, std::string_view source = "<text>") {
-    std::vector<ring_input> rings;
-    const std::vector<wkt_ring> read = read_wkt_rings(text, source);
-    for (std::size_t k = 0; k < read.size(); ++k) wkt_detail::append_ring(source, read, k, rings);
-    try {
-        return polygon(std::move(rings));
-    } catch (const invalid_input& e) {
-        wkt_detail::fail(source, e.what());
-    }
+    return polygon_of_rings(read_wkt_rings(text, source), source);
 }
 
 /// The text of a WKT file, read as bytes; files over max_wkt_file_bytes are

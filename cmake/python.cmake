@@ -1,0 +1,53 @@
+# SPDX-License-Identifier: BSL-1.0
+# The option INFLUENCE2D_BUILD_PYTHON: the Python package `influence2d`
+# (python/), a pybind11 extension and its pure-Python modules. On by default
+# when CGAL, pybind11 (CONFIG) and the interpreter with numpy are found; the
+# interpreter is /usr/bin/python3 unless Python_EXECUTABLE says otherwise (a
+# python3 earlier on PATH may be another one, without Debian's numpy).
+# Never in the sanitizer build: an extension built with AddressSanitizer
+# cannot be loaded into an interpreter that is not.
+set(influence2d_python_default OFF)
+set(influence2d_python_why "")
+if(NOT PROJECT_IS_TOP_LEVEL)
+    set(influence2d_python_why "not the top-level project")
+elseif(INFLUENCE2D_SANITIZE)
+    set(influence2d_python_why "INFLUENCE2D_SANITIZE is on (an instrumented extension needs an instrumented interpreter)")
+elseif(NOT CGAL_FOUND)
+    set(influence2d_python_why "CGAL not found")
+else()
+    if(NOT DEFINED Python_EXECUTABLE AND EXISTS /usr/bin/python3)
+        set(Python_EXECUTABLE /usr/bin/python3 CACHE FILEPATH "The Python interpreter of the influence2d package")
+    endif()
+    if(NOT DEFINED PYTHON_EXECUTABLE AND DEFINED Python_EXECUTABLE)
+        set(PYTHON_EXECUTABLE ${Python_EXECUTABLE} CACHE FILEPATH "The Python interpreter (pybind11's older name)")
+    endif()
+    find_package(Python 3.7 COMPONENTS Interpreter Development.Module QUIET)
+    if(Python_FOUND)
+        execute_process(COMMAND ${Python_EXECUTABLE} -c "import numpy" RESULT_VARIABLE influence2d_numpy_rc
+            OUTPUT_QUIET ERROR_QUIET)
+        find_package(pybind11 CONFIG QUIET)
+    endif()
+    if(NOT Python_FOUND)
+        set(influence2d_python_why "no Python interpreter with its development files (python3-dev)")
+    elseif(NOT influence2d_numpy_rc EQUAL 0)
+        set(influence2d_python_why "${Python_EXECUTABLE} has no numpy (python3-numpy)")
+    elseif(NOT pybind11_FOUND)
+        set(influence2d_python_why "pybind11 not found (pybind11-dev)")
+    else()
+        set(influence2d_python_default ON)
+    endif()
+endif()
+option(INFLUENCE2D_BUILD_PYTHON "Build the Python package influence2d (python/)" ${influence2d_python_default})
+if(INFLUENCE2D_BUILD_PYTHON AND NOT influence2d_python_default)
+    if(INFLUENCE2D_SANITIZE OR NOT PROJECT_IS_TOP_LEVEL)
+        message(STATUS "influence2d: the Python package is not built: ${influence2d_python_why}")
+    else()
+        message(FATAL_ERROR "influence2d: INFLUENCE2D_BUILD_PYTHON is on but ${influence2d_python_why}")
+    endif()
+elseif(INFLUENCE2D_BUILD_PYTHON)
+    add_subdirectory(python)
+elseif(influence2d_python_why STREQUAL "")
+    message(STATUS "influence2d: the Python package is not built: INFLUENCE2D_BUILD_PYTHON is off")
+else()
+    message(STATUS "influence2d: the Python package is not built: ${influence2d_python_why}")
+endif()

@@ -1,0 +1,40 @@
+# SPDX-License-Identifier: BSL-1.0
+"""The layer join: which polygons of a layer meet each other, or which of one
+layer meet which of another, all at their own coordinates (the library's
+layer_pairs: a box tree, then each candidate pair tested exactly)."""
+
+import numpy as np
+
+from . import _core
+from .polygon import as_polygons
+
+__all__ = ["pairs"]
+
+
+def pairs(layer, other=None, within=0.0, number_type="certified", threads=0):
+    """The index pairs (i, j) whose closed regions meet (or come within
+    ``within``; touching counts) as a (k, 2) int64 array, sorted: i < j in
+    one layer, or i of ``layer`` and j of ``other``. ``layer`` and ``other``
+    are sequences of Polygons, shapely geometries, WKT or WKB, or GeoPandas
+    GeoSeries (index pairs are positions, not the series' labels).
+
+    >>> import shapely.geometry as g
+    >>> layer = [g.box(0, 0, 1, 1), g.box(1, 0, 2, 1), g.box(3, 0, 4, 1)]
+    >>> pairs(layer)
+    array([[0, 1]])
+    >>> pairs(layer, within=1.0)
+    array([[0, 1],
+           [1, 2]])
+    >>> pairs(layer, [g.box(0.5, 0.5, 3.5, 0.6)])
+    array([[0, 0],
+           [1, 0],
+           [2, 0]])
+    """
+    first = [p._p for p in as_polygons(layer, "layer")]
+    second = None if other is None else [p._p for p in as_polygons(other, "other")]
+    try:
+        within = float(within)
+    except (TypeError, ValueError):
+        raise _core.InvalidInput(f"within: expected a number, got {within!r}") from None
+    out = _core.pairs(first, second, within, number_type, threads)
+    return out.reshape(-1, 2).astype(np.int64, copy=False)

@@ -1,0 +1,110 @@
+# SPDX-License-Identifier: BSL-1.0
+"""An exact reference that does not use the library: whether two closed
+polygonal regions meet, in rational arithmetic (fractions.Fraction) on the
+posed coordinates.
+
+Posing follows the library's definition (core/pose.hpp): B's vertex q goes
+to (c qx - s qy + tx, s qx + c qy + ty) with the doubles c = cos(theta) and
+s = sin(theta), evaluated exactly here. A region is closed: a point is in it
+when it lies on an edge or when the winding number of its rings (outer rings
+counter-clockwise, holes clockwise) around it is not zero. Two regions meet
+when an edge of one meets an edge of the other, or a vertex of one lies in
+the other (a bounded intersection without boundary crossings has a boundary
+point of one inside the other).
+"""
+
+import math
+from fractions import Fraction
+
+
+def rings_of(geom):
+    """The rings of a shapely Polygon or MultiPolygon as lists of (x, y)
+    Fractions without the closing point, each with its role ("outer" or
+    "hole")."""
+    polys = list(geom.geoms) if geom.geom_type == "MultiPolygon" else [geom]
+    rings = []
+    for p in polys:
+        for k, ring in enumerate([p.exterior] + list(p.interiors)):
+            pts = [(Fraction(x), Fraction(y)) for x, y in ring.coords]
+            if pts and pts[0] == pts[-1]:
+                pts.pop()
+            rings.append((pts, "outer" if k == 0 else "hole"))
+    return rings
+
+
+def _area2(pts):
+    return sum(pts[i][0] * pts[(i + 1) % len(pts)][1] - pts[(i + 1) % len(pts)][0] * pts[i][1]
+               for i in range(len(pts)))
+
+
+def oriented(rings):
+    """The rings with outer rings counter-clockwise and holes clockwise (a
+    ring of zero area as given)."""
+    out = []
+    for pts, role in rings:
+        a = _area2(pts)
+        if (a < 0 and role == "outer") or (a > 0 and role == "hole"):
+            pts = pts[::-1]
+        out.append(pts)
+    return out
+
+
+def posed(rings, pose):
+    """The rings of B posed exactly by (tx, ty, theta)."""
+    tx, ty, theta = pose
+    c, s = Fraction(math.cos(theta)), Fraction(math.sin(theta))
+    tx, ty = Fraction(tx), Fraction(ty)
+    return [[(c * x - s * y + tx, s * x + c * y + ty) for x, y in ring] for ring in rings]
+
+
+def _orient(a, b, c):
+    d = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+    return (d > 0) - (d < 0)
+
+
+def _on_segment(a, b, p):
+    return (_orient(a, b, p) == 0 and min(a[0], b[0]) <= p[0] <= max(a[0], b[0])
+            and min(a[1], b[1]) <= p[1] <= max(a[1], b[1]))
+
+
+def segments_meet(a, b, c, d):
+    """Whether the closed segments ab and cd share a point."""
+    o1, o2, o3, o4 = _orient(a, b, c), _orient(a, b, d), _orient(c, d, a), _orient(c, d, b)
+    if o1 * o2 < 0 and o3 * o4 < 0:
+        return True
+    return (_on_segment(a, b, c) or _on_segment(a, b, d) or _on_segment(c, d, a) or _on_segment(c, d, b))
+
+
+def _edges(rings):
+    for ring in rings:
+        for i in range(len(ring)):
+            yield ring[i], ring[(i + 1) % len(ring)]
+
+
+def contains(rings, p):
+    """Whether p lies in the closed region of the oriented rings."""
+    winding = 0
+    for a, b in _edges(rings):
+        if _on_segment(a, b, p):
+            return True
+        if a[1] <= p[1]:
+            if b[1] > p[1] and _orient(a, b, p) > 0:
+                winding += 1
+        elif b[1] <= p[1] and _orient(a, b, p) < 0:
+            winding -= 1
+    return winding != 0
+
+
+def regions_meet(a_rings, b_rings):
+    """Whether the closed regions of two lists of oriented rings meet."""
+    for a0, a1 in _edges(a_rings):
+        for b0, b1 in _edges(b_rings):
+            if segments_meet(a0, a1, b0, b1):
+                return True
+    return (any(contains(a_rings, p) for ring in b_rings for p in ring)
+            or any(contains(b_rings, p) for ring in a_rings for p in ring))
+
+
+def intersects(a_geom, b_geom, pose):
+    """The exact answer of influence2d.intersects for one pose."""
+    return regions_meet(oriented(rings_of(a_geom)), posed(oriented(rings_of(b_geom)), pose))

@@ -1,0 +1,137 @@
+# SPDX-License-Identifier: BSL-1.0
+"""Bad input: every case raises InvalidInput (a ValueError) naming the value
+and its index; nothing crashes."""
+
+import math
+
+import numpy as np
+import pytest
+import shapely.geometry
+
+import influence2d
+from influence2d import InvalidInput, Polygon
+
+A = "POLYGON ((0 0, 2 0, 2 2, 0 2, 0 0))"
+B = "POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))"
+
+
+def raises(match, f, *args, **kwargs):
+    with pytest.raises(InvalidInput, match=match) as e:
+        f(*args, **kwargs)
+    assert isinstance(e.value, ValueError)
+    return str(e.value)
+
+
+def test_invalid_input_is_a_value_error():
+    assert issubclass(InvalidInput, ValueError)
+
+
+@pytest.mark.parametrize("value, name", [(math.nan, "nan"), (math.inf, "inf"), (-math.inf, "-inf")])
+@pytest.mark.parametrize("column", [0, 1, 2])
+def test_non_finite_poses_name_row_and_component(value, name, column):
+    poses = np.zeros((5, 3))
+    poses[3, column] = value
+    component = ["tx", "ty", "theta"][column]
+    for f in (influence2d.intersects, influence2d.separation):
+        raises(rf"poses\[3, {column}\] \({component}\) is {name}", f, A, B, poses)
+    raises(r"poses\[3", influence2d.Detector(A, B).collide, poses)
+    raises(r"end_poses\[3", influence2d.first_contact, A, B, np.zeros((5, 3)), poses)
+
+
+@pytest.mark.parametrize("poses, message", [
+    (np.zeros((4, 2)), r"shape \(4, 2\)"),
+    (np.zeros((2,)), r"shape \(2,\)"),
+    (np.zeros((2, 3, 1)), r"shape \(2, 3, 1\)"),
+    (np.zeros((4, 3), dtype=np.float32), "float32"),
+    (np.zeros((4, 3), dtype=np.int64), "int64"),
+    (np.zeros((3, 4))[:, :3], "C-contiguous"),
+    ([[1, 2]], r"shape \(1, 2\)"),
+    ("abc", "not an array of numbers"),
+])
+def test_wrong_pose_arrays(poses, message):
+    raises(message, influence2d.intersects, A, B, poses)
+
+
+def test_the_extension_refuses_what_it_would_have_to_copy():
+    p = influence2d.Polygon.from_wkt(A)._p
+    raises("float64", influence2d._core.intersects, p, p, np.zeros((2, 3), dtype=np.float32), "certified", 0)
+    raises("C-contiguous", influence2d._core.intersects, p, p, np.asfortranarray(np.zeros((4, 3))), "certified", 0)
+
+
+@pytest.mark.parametrize("wkt, message", [
+    ("POLYGON ((0 0, 1 0, 0 1))", "ring 0 is not closed"),
+    ("POLYGON ((0 0, 1 0, 0 0))", "ring 0: fewer than three distinct vertices"),
+    ("POLYGON ((0 0, 1 0, 1 0, 0 0))", "fewer than three distinct vertices"),
+    ("POLYGON EMPTY", "empty"),
+    ("POLYGON ((0 0, 1 0, nan 1, 0 0))", r"ring 0, vertex 2"),
+    ("POLYGON ((0 0, 1 0, 0 1, 0 0), (0.1 0.1, 0.2 0.1, 0.1 0.1))", "ring 1"),
+    ("POINT (1 2)", "expected POLYGON or MULTIPOLYGON"),
+    ("POLYGON ((0 0, 1 0, 0 1, 0 0)", "parse error"),
+    ("POLYGON Z ((0 0 0, 1 0 0, 0 1 0, 0 0 0))", ""),
+    ("", "empty input"),
+])
+def test_bad_wkt(wkt, message):
+    raises(message, Polygon.from_wkt, wkt)
+    raises(message, influence2d.intersects, wkt, B, np.zeros((1, 3)))
+
+
+def test_bad_wkb():
+    good = shapely.geometry.box(0, 0, 1, 1).wkb
+    raises("truncated", Polygon.from_wkb, good[:-3])
+    raises("bytes after", Polygon.from_wkb, good + b"\0")
+    raises("geometry type 1", Polygon.from_wkb, shapely.geometry.Point(1, 2).wkb)
+    raises("Z or M", Polygon.from_wkb, shapely.geometry.Polygon([(0, 0, 1), (1, 0, 1), (0, 1, 1)]).wkb)
+    raises("byte order", Polygon.from_wkb, b"\x07" + good[1:])
+    raises("announced", Polygon.from_wkb, good[:5] + b"\xff\xff\xff\x7f" + good[9:])
+    raises("expected bytes", Polygon.from_wkb, "not bytes")
+
+
+def test_bad_shapely_geometries():
+    raises("LineString", Polygon.from_shapely, shapely.geometry.LineString([(0, 0), (1, 1)]))
+    raises("empty", Polygon.from_shapely, shapely.geometry.Polygon())
+    raises(r"b: expected a Polygon or MultiPolygon, got a Point", influence2d.intersects, A,
+           shapely.geometry.Point(0, 0), np.zeros((1, 3)))
+    raises("z coordinates", Polygon.from_shapely, shapely.geometry.Polygon([(0, 0, 1), (1, 0, 1), (0, 1, 1)]))
+
+
+def test_bad_coords():
+    xy = np.array([[0, 0], [1, 0], [0, 1], [0, 0]], dtype=np.float64)
+    raises("shape", Polygon.from_coords, np.zeros((4, 3)), [0, 4])
+    raises("float64", Polygon.from_coords, xy.astype(np.float32), [0, 4])
+    raises(r"ring_offsets\[1\] is 9", Polygon.from_coords, xy, [0, 9])
+    raises(r"ring_offsets\[2\] is 1, less than", Polygon.from_coords, xy, [0, 2, 1])
+    raises("integer offsets", Polygon.from_coords, xy, [0.0, 4.0])
+    bad = xy.copy()
+    bad[2, 1] = np.nan
+    raises(r"coords\[2, 1\] is nan \(ring 0, vertex 2\)", Polygon.from_coords, bad, [0, 4])
+    raises("fewer than three distinct", Polygon.from_coords, xy, [0, 2])
+    raises(r"polygon_offsets\[1\] is 3", Polygon.from_coords, xy, [0, 4], [0, 3])
+
+
+def test_bad_options():
+    raises("number_type 'float'", influence2d.intersects, A, B, np.zeros((1, 3)), number_type="float")
+    raises("number_type 'quad'", influence2d.Detector, A, B, number_type="quad")
+    raises("threads is -1", influence2d.intersects, A, B, np.zeros((1, 3)), threads=-1)
+    raises("within is -1", influence2d.Detector, A, B, within=-1.0)
+    raises("within is nan", influence2d.Detector, A, B, within=math.nan)
+    raises("distance", influence2d.pairs, [A, B], within=-1.0)
+    raises("one end pose per start pose", influence2d.first_contact, A, B, np.zeros((2, 3)), np.zeros((3, 3)))
+    raises(r"pose: expected one pose", influence2d.Detector(A, B).witness, np.zeros((2, 3)))
+
+
+def test_bad_layers_name_the_index():
+    raises(r"layer\[2\]: ring 0 is not closed", influence2d.pairs, [A, B, "POLYGON ((0 0, 1 0, 0 1))"])
+    raises(r"other\[1\]: expected a Polygon", influence2d.pairs, [A], [B, 42])
+    raises(r"layer\[0\]: the Polygon is empty", influence2d.pairs, [shapely.geometry.Polygon()])
+    raises("sequence of polygons", influence2d.pairs, A)
+
+
+def test_audit_refuses_only_what_is_not_a_polygon_at_all():
+    raises("expected POLYGON or MULTIPOLYGON", influence2d.audit, "LINESTRING (0 0, 1 1)")
+    assert not influence2d.audit_report("POLYGON ((0 0, 1 0, 0 1))")["accepted"]
+
+
+def test_bad_study_names():
+    raises(r"types\[0\] is 'float16'", influence2d.study, types=["float16"])
+    raises(r"families\[0\] is 'nope'", influence2d.study, families=["nope"])
+    raises(r"queries\[0\] is 'area'", influence2d.study, queries=["area"])

@@ -1,0 +1,109 @@
+# SPDX-License-Identifier: BSL-1.0
+"""pairs: the layer join against the exact reference (every pair tested in
+rational arithmetic), shapely and the influence2d tool."""
+
+import numpy as np
+import pytest
+import shapely.affinity
+import shapely.geometry
+
+import influence2d
+import exact_reference
+from conftest import run_tool, star_polygon
+
+
+def layer_of(rng, count, spread=6.0):
+    """Random star polygons on a dyadic grid, some touching exactly: every
+    fourth one a copy of an earlier one translated to share a vertex."""
+    layer = []
+    for k in range(count):
+        if k % 4 == 3:
+            # A copy of an earlier polygon moved so that its vertex 0 lands
+            # on that polygon's vertex i: they touch at least there.
+            src = layer[rng.randrange(len(layer))]
+            pts = list(src.exterior.coords)
+            i = rng.randrange(1, len(pts) - 1)
+            layer.append(shapely.affinity.translate(src, pts[i][0] - pts[0][0], pts[i][1] - pts[0][1]))
+        else:
+            c = (round(rng.uniform(0, spread) * 64) / 64, round(rng.uniform(0, spread) * 64) / 64)
+            layer.append(star_polygon(rng, rng.randint(3, 12), radius=rng.uniform(0.3, 1.0), center=c))
+    return layer
+
+
+def reference_pairs(first, second=None):
+    rings_a = [exact_reference.oriented(exact_reference.rings_of(g)) for g in first]
+    rings_b = rings_a if second is None else [exact_reference.oriented(exact_reference.rings_of(g)) for g in second]
+    out = []
+    for i, ra in enumerate(rings_a):
+        for j, rb in enumerate(rings_b):
+            if (second is not None or j > i) and first[i].envelope.intersects(
+                    (first if second is None else second)[j].envelope) and exact_reference.regions_meet(ra, rb):
+                out.append((i, j))
+    return out
+
+
+@pytest.mark.parametrize("number_type", ["certified", "exact"])
+def test_one_layer_against_the_exact_reference(rng, number_type):
+    layer = layer_of(rng, 40)
+    got = influence2d.pairs(layer, number_type=number_type)
+    assert got.dtype == np.int64 and got.shape[1] == 2
+    assert [tuple(p) for p in got.tolist()] == reference_pairs(layer)
+
+
+def test_two_layers_against_the_exact_reference(rng):
+    first, second = layer_of(rng, 25), layer_of(rng, 20)
+    got = influence2d.pairs(first, second)
+    assert [tuple(p) for p in got.tolist()] == reference_pairs(first, second)
+
+
+def test_double_agrees_away_from_contact(rng):
+    layer = [star_polygon(rng, 8, radius=0.5, center=(rng.uniform(0, 5), rng.uniform(0, 5))) for _ in range(40)]
+    want = {(i, j) for i in range(len(layer)) for j in range(i + 1, len(layer)) if layer[i].intersects(layer[j])}
+    near = {(i, j) for i in range(len(layer)) for j in range(i + 1, len(layer))
+            if layer[i].distance(layer[j]) < 1e-9 and layer[i].intersection(layer[j]).area < 1e-9}
+    got = {tuple(p) for p in influence2d.pairs(layer, number_type="double").tolist()}
+    assert got - near == want - near
+
+
+def test_within_against_shapely(rng):
+    layer = [star_polygon(rng, 8, radius=0.4, center=(rng.uniform(0, 6), rng.uniform(0, 6))) for _ in range(50)]
+    got = {tuple(p) for p in influence2d.pairs(layer, within=0.5).tolist()}
+    for i in range(len(layer)):
+        for j in range(i + 1, len(layer)):
+            d = layer[i].distance(layer[j])
+            if abs(d - 0.5) > 1e-9:
+                assert ((i, j) in got) == (d <= 0.5)
+
+
+def test_inputs_of_every_kind_give_the_same_pairs(rng):
+    layer = layer_of(rng, 16)
+    want = influence2d.pairs(layer).tolist()
+    assert influence2d.pairs([g.wkt for g in layer]).tolist() == want
+    assert influence2d.pairs([g.wkb for g in layer]).tolist() == want
+    assert influence2d.pairs([influence2d.Polygon.from_shapely(g) for g in layer]).tolist() == want
+    assert influence2d.pairs(layer, threads=1).tolist() == want
+
+
+def test_geoseries_when_geopandas_is_there(rng):
+    gpd = pytest.importorskip("geopandas")
+    layer = layer_of(rng, 16)
+    assert influence2d.pairs(gpd.GeoSeries(layer)).tolist() == influence2d.pairs(layer).tolist()
+
+
+def test_no_pair_and_empty_layers():
+    assert influence2d.pairs([]).shape == (0, 2)
+    assert influence2d.pairs(["POLYGON ((0 0, 1 0, 0 1, 0 0))"], []).shape == (0, 2)
+
+
+@pytest.mark.parametrize("two", [False, True])
+def test_matches_the_tool(tool, tmp_path, rng, two):
+    first, second = layer_of(rng, 60), layer_of(rng, 30)
+    (tmp_path / "a.wkt").write_text("\n".join(g.wkt for g in first) + "\n")
+    (tmp_path / "b.wkt").write_text("\n".join(g.wkt for g in second) + "\n")
+    args = ["pairs", "--layer", tmp_path / "a.wkt", "--number-type", "certified", "--out", tmp_path / "pairs.csv"]
+    if two:
+        args += ["--other", tmp_path / "b.wkt"]
+    run_tool(tool, *args)
+    want = np.loadtxt(tmp_path / "pairs.csv", delimiter=",", skiprows=1, dtype=np.int64, ndmin=2).tolist()
+    got = influence2d.pairs(first, second if two else None).tolist()
+    assert got == want

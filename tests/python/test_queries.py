@@ -1,0 +1,236 @@
+# SPDX-License-Identifier: BSL-1.0
+"""intersects, Detector, separation and first_contact against the exact
+reference (exact_reference.py, rational arithmetic without the library),
+shapely away from contact, and the influence2d tool of the same build."""
+
+import math
+
+import numpy as np
+import pytest
+import shapely.affinity
+import shapely.geometry
+import shapely.wkt
+
+import influence2d
+import exact_reference
+from conftest import dyadic, run_tool, star_polygon, write_poses
+
+EXACT_TYPES = ("certified", "exact")
+
+
+def shapely_posed(b, pose):
+    tx, ty, theta = pose
+    return shapely.affinity.translate(shapely.affinity.rotate(b, theta, origin=(0, 0), use_radians=True), tx, ty)
+
+
+def touching_poses(rng, a, b, count):
+    """Translations (theta = 0, dyadic) putting a vertex of B on a vertex or
+    an edge midpoint of A, then pushed by 0 or +-2^-20 along a random axis:
+    exact contacts and the nearest misses and overlaps."""
+    a_pts = list(a.exterior.coords)[:-1]
+    b_pts = list(b.exterior.coords)[:-1]
+    poses = []
+    for _ in range(count):
+        i = rng.randrange(len(a_pts))
+        p = a_pts[i]
+        if rng.random() < 0.5:
+            q = a_pts[(i + 1) % len(a_pts)]
+            p = ((p[0] + q[0]) / 2, (p[1] + q[1]) / 2)
+        v = b_pts[rng.randrange(len(b_pts))]
+        push = rng.choice([0.0, 2.0 ** -20, -(2.0 ** -20)])
+        axis = rng.randrange(2)
+        poses.append((p[0] - v[0] + (push if axis == 0 else 0.0), p[1] - v[1] + (push if axis == 1 else 0.0), 0.0))
+    return np.array(poses, dtype=np.float64)
+
+
+@pytest.mark.parametrize("number_type", EXACT_TYPES)
+def test_intersects_exact_at_touching_translations(rng, number_type):
+    for _ in range(8):
+        a = star_polygon(rng, rng.randint(3, 16))
+        b = star_polygon(rng, rng.randint(3, 16), radius=0.6)
+        poses = touching_poses(rng, a, b, 40)
+        got = influence2d.intersects(a, b, poses, number_type=number_type)
+        want = [exact_reference.intersects(a, b, p) for p in poses]
+        assert got.tolist() == want
+
+
+@pytest.mark.parametrize("number_type", EXACT_TYPES)
+def test_intersects_exact_at_random_turned_poses(np_rng, rng, number_type):
+    a = star_polygon(rng, 12)
+    b = star_polygon(rng, 9, radius=0.7)
+    poses = np.column_stack([np_rng.uniform(-2, 2, 200), np_rng.uniform(-2, 2, 200), np_rng.uniform(-4, 4, 200)])
+    got = influence2d.intersects(a, b, poses, number_type=number_type)
+    assert got.tolist() == [exact_reference.intersects(a, b, p) for p in poses]
+
+
+def test_intersects_agrees_with_shapely_away_from_contact(np_rng, rng):
+    a = star_polygon(rng, 20)
+    b = star_polygon(rng, 12, radius=0.5)
+    poses = np.column_stack([np_rng.uniform(-2, 2, 300), np_rng.uniform(-2, 2, 300), np_rng.uniform(-4, 4, 300)])
+    for number_type in ("double", "certified", "exact"):
+        got = influence2d.intersects(a, b, poses, number_type=number_type)
+        for k, p in enumerate(poses):
+            posed = shapely_posed(b, p)
+            if a.distance(posed) > 1e-9 or a.intersection(posed).area > 1e-9:
+                assert got[k] == a.intersects(posed), (number_type, k, p)
+
+
+def test_intersects_degenerate_scenes():
+    ring = "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 3, 3 3, 3 1, 1 1))"
+    small = "POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))"
+    cases = [
+        ((4.0, 0.0, 0.0), True),     # edge on edge
+        ((4.0, 4.0, 0.0), True),     # vertex on vertex
+        ((4.0, 4.5, 0.0), False),    # beside, clear
+        ((1.5, 1.5, 0.0), False),    # inside the hole, not touching it
+        ((1.0, 1.5, 0.0), True),     # inside the hole, touching its edge
+        ((0.5, 0.0, 0.0), True),     # overlapping the outer ring
+        ((2.0, 2.0, math.pi / 4), False),  # turned inside the hole
+    ]
+    poses = np.array([p for p, _ in cases])
+    want = [w for _, w in cases]
+    for number_type in ("double", "certified", "exact"):
+        assert influence2d.intersects(ring, small, poses, number_type=number_type).tolist() == want
+    a, b = shapely.wkt.loads(ring), shapely.wkt.loads(small)
+    assert [exact_reference.intersects(a, b, p) for p in poses] == want
+
+
+def test_nested_and_multipolygons():
+    outer = "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 2 8, 8 8, 8 2, 2 2)), ((4 4, 6 4, 6 6, 4 6, 4 4)))"
+    b = "POLYGON ((0 0, 0.5 0, 0.5 0.5, 0 0.5, 0 0))"
+    poses = np.array([[3.0, 3.0, 0.0], [4.5, 4.5, 0.0], [6.0, 6.0, 0.0], [6.25, 6.25, 0.0], [-1, -1, 0.0]])
+    want = [False, True, True, False, False]
+    for number_type in ("double", "certified", "exact"):
+        assert influence2d.intersects(outer, b, poses, number_type=number_type).tolist() == want
+    a, bb = shapely.wkt.loads(outer), shapely.wkt.loads(b)
+    assert [exact_reference.intersects(a, bb, p) for p in poses] == want
+
+
+def test_role_swap_gives_the_same_answers(rng):
+    """A meets B translated by t exactly when B meets A translated by -t."""
+    for _ in range(5):
+        a = star_polygon(rng, 10)
+        b = star_polygon(rng, 7, radius=0.5)
+        poses = touching_poses(rng, a, b, 40)
+        swapped = np.column_stack([-poses[:, 0], -poses[:, 1], poses[:, 2]])
+        assert (influence2d.intersects(a, b, poses).tolist()
+                == influence2d.intersects(b, a, swapped).tolist())
+
+
+def test_threads_do_not_change_the_answers(np_rng, rng):
+    a = star_polygon(rng, 30)
+    b = star_polygon(rng, 30, radius=0.8)
+    poses = np.column_stack([np_rng.uniform(-2, 2, 2000), np_rng.uniform(-2, 2, 2000), np_rng.uniform(-4, 4, 2000)])
+    one = influence2d.intersects(a, b, poses, threads=1)
+    assert (influence2d.intersects(a, b, poses, threads=0) == one).all()
+    assert (influence2d.intersects(a, b, poses, threads=3) == one).all()
+    assert (influence2d.Detector(a, b, number_type="certified").collide(poses) == one).all()
+
+
+def test_empty_pose_array():
+    out = influence2d.intersects("POLYGON ((0 0, 1 0, 0 1, 0 0))", "POLYGON ((0 0, 1 0, 0 1, 0 0))",
+                                 np.zeros((0, 3)))
+    assert out.shape == (0,) and out.dtype == bool
+
+
+@pytest.mark.parametrize("number_type", ["double", "certified", "exact"])
+def test_intersects_matches_the_tool(tool, tmp_path, rng, number_type):
+    a = star_polygon(rng, 24)
+    b = star_polygon(rng, 16, radius=0.7)
+    poses = np.concatenate([touching_poses(rng, a, b, 100),
+                            np.array([[rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-3, 3)] for _ in range(100)])])
+    (tmp_path / "a.wkt").write_text(a.wkt)
+    (tmp_path / "b.wkt").write_text(b.wkt)
+    write_poses(tmp_path / "poses.csv", poses)
+    run_tool(tool, "collide", "--static", tmp_path / "a.wkt", "--moving", tmp_path / "b.wkt", "--poses",
+             tmp_path / "poses.csv", "--number-type", number_type, "--out", tmp_path / "frames.csv")
+    frames = np.loadtxt(tmp_path / "frames.csv", delimiter=",", skiprows=1, dtype=np.int64)
+    assert influence2d.intersects(a, b, poses, number_type=number_type).tolist() == (frames[:, 1] == 1).tolist()
+    assert influence2d.Detector(a, b, number_type=number_type).collide(poses).tolist() == (frames[:, 1] == 1).tolist()
+
+
+def test_detector_witness_matches_the_tool(tool, tmp_path, rng):
+    a = star_polygon(rng, 12)
+    b = star_polygon(rng, 8, radius=0.7)
+    poses = touching_poses(rng, a, b, 30)
+    (tmp_path / "a.wkt").write_text(a.wkt)
+    (tmp_path / "b.wkt").write_text(b.wkt)
+    write_poses(tmp_path / "poses.csv", poses)
+    run_tool(tool, "collide", "--static", tmp_path / "a.wkt", "--moving", tmp_path / "b.wkt", "--poses",
+             tmp_path / "poses.csv", "--number-type", "certified", "--witness", "--distance", "0.01", "--threads", "1",
+             "--out", tmp_path / "frames.csv")
+    lines = (tmp_path / "frames.csv").read_text().splitlines()[1:]
+    d = influence2d.Detector(a, b, number_type="certified", within=0.01)
+    dw = influence2d.Detector(a, b, number_type="certified", within=0.01, witness=True)
+    for line, pose in zip(lines, poses):
+        _, collides, edges = line.split(",")
+        want = [tuple(map(int, e.split(":"))) for e in edges.split(";")] if edges else []
+        assert d.witness(pose) == want
+        assert dw.witness(pose) == want
+
+
+def test_detector_within_is_a_distance():
+    d = influence2d.Detector("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))", "POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))",
+                             within=0.25, number_type="exact")
+    assert d.collide([[1.25, 0, 0], [1.2500001, 0, 0]]).tolist() == [True, False]
+
+
+def test_separation_against_shapely_and_the_tool(tool, tmp_path, rng, np_rng):
+    a = star_polygon(rng, 16)
+    b = star_polygon(rng, 10, radius=0.5)
+    poses = np.column_stack([np_rng.uniform(-3, 3, 100), np_rng.uniform(-3, 3, 100), np_rng.uniform(-3, 3, 100)])
+    for number_type in ("double", "certified", "exact"):
+        d = influence2d.separation(a, b, poses, number_type=number_type)
+        for k, p in enumerate(poses):
+            assert d[k] == pytest.approx(a.distance(shapely_posed(b, p)), rel=1e-9, abs=1e-12)
+    (tmp_path / "a.wkt").write_text(a.wkt)
+    (tmp_path / "b.wkt").write_text(b.wkt)
+    write_poses(tmp_path / "poses.csv", poses)
+    run_tool(tool, "collide", "--static", tmp_path / "a.wkt", "--moving", tmp_path / "b.wkt", "--poses",
+             tmp_path / "poses.csv", "--number-type", "certified", "--separation", "--witness",
+             "--out", tmp_path / "frames.csv")
+    f = influence2d.separation(a, b, poses, features=True)
+    names = {"vertex": "v", "edge": "e"}
+    for k, line in enumerate((tmp_path / "frames.csv").read_text().splitlines()[1:]):
+        cols = line.split(",")
+        assert float(cols[3]) == f["distance"][k]
+        ours = [names.get(f["static_kind"][k], "interior") + (str(f["static_index"][k]) if f["static_index"][k] >= 0 else ""),
+                names.get(f["moving_kind"][k], "interior") + (str(f["moving_index"][k]) if f["moving_index"][k] >= 0 else "")]
+        assert cols[4] == ":".join(ours)
+
+
+def test_separation_features_exact_case():
+    f = influence2d.separation("POLYGON ((0 0, 2 0, 2 2, 0 2, 0 0))", "POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))",
+                               [[3.0, 2.5, 0.0]], features=True)
+    assert f["distance"][0] == 1.0
+    assert (f["static_kind"][0], f["static_index"][0]) == ("vertex", 2)
+    assert f["static_point"][0].tolist() == [2.0, 2.0]
+    assert f["moving_point"][0].tolist() == [3.0, 2.5]
+
+
+def test_first_contact_translations_exact():
+    a = "POLYGON ((0 0, 2 0, 2 2, 0 2, 0 0))"
+    b = "POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))"
+    start = np.array([[5.0, 0.0, 0.0], [5.0, 3.0, 0.0], [1.0, 1.0, 0.0], [-3.0, 2.0, 0.0]])
+    end = np.array([[0.0, 0.0, 0.0], [0.0, 3.0, 0.0], [9.0, 9.0, 0.0], [3.0, 2.0, 0.0]])
+    for number_type in ("double", "certified", "exact"):
+        contact, t = influence2d.first_contact(a, b, start, end, number_type=number_type)
+        assert contact.tolist() == [True, False, True, True]
+        assert t[0] == 3 / 5 and math.isnan(t[1]) and t[2] == 0.0 and t[3] == 1 / 3
+
+
+def test_first_contact_matches_the_tool(tool, tmp_path, rng):
+    a = star_polygon(rng, 12)
+    b = star_polygon(rng, 8, radius=0.5)
+    poses = np.array([[rng.uniform(-3, 3), rng.uniform(-3, 3), 0.0] for _ in range(41)])
+    (tmp_path / "a.wkt").write_text(a.wkt)
+    (tmp_path / "b.wkt").write_text(b.wkt)
+    write_poses(tmp_path / "poses.csv", poses)
+    run_tool(tool, "collide", "--static", tmp_path / "a.wkt", "--moving", tmp_path / "b.wkt", "--poses",
+             tmp_path / "poses.csv", "--number-type", "certified", "--continuous", "--out", tmp_path / "frames.csv")
+    contact, t = influence2d.first_contact(a, b, poses[:-1], poses[1:])
+    for k, line in enumerate((tmp_path / "frames.csv").read_text().splitlines()[2:]):
+        cols = line.split(",")
+        assert (cols[2] != "") == contact[k]
+        if contact[k]:
+            assert float(cols[2]) == t[k]
