@@ -32,6 +32,8 @@ inline bool boxes_overlap(const box& l, const box& r) {
 ///     leaves <- runs of `fan_out` consecutive entries; each level above
 ///       groups `fan_out` consecutive nodes of the level below, bottom-up,
 ///       each node's box the union of its children's
+///   refit(id, b): the entry's box replaced, the nodes above it made anew
+///     from their children, leaf to root
 ///   query(q): descend from the root into the nodes whose box meets q
 ///
 /// Consecutive entries along the curve are near each other, so the nodes'
@@ -68,7 +70,29 @@ public:
         }
         sort_by_key(next);
         entries_ = std::move(next);
+        slot_.assign(where.size(), absent);
+        for (std::size_t k = 0; k < entries_.size(); ++k) slot_[entries_[k].id] = static_cast<std::uint32_t>(k);
         build_levels();
+    }
+
+    /// Whether the box of `id` is in the set (given at the last rebuild).
+    bool holds(std::uint32_t id) const { return id < slot_.size() && slot_[id] != absent; }
+
+    /// Replaces the box of `id` (holds(id)) by b, an empty box to drop it,
+    /// and makes the nodes above it anew from their children: O(fan_out *
+    /// log n). The order stays the last rebuild's, so the nodes widen as
+    /// refitted boxes drift away from their neighbours along the curve.
+    void refit(std::uint32_t id, const box& b) {
+        std::size_t at = slot_[id];
+        entries_[at].bounds = b;
+        for (std::size_t level = 0; level < levels_.size(); ++level) {
+            at /= fan_out;
+            const auto [first, last] = children(level, at);
+            box merged;
+            for (std::size_t c = first; c < last; ++c)
+                grow(merged, level == 0 ? entries_[c].bounds : levels_[level - 1][c]);
+            levels_[level][at] = merged;
+        }
     }
 
     /// Calls found(id) for every box that meets q (closed boxes: touching
@@ -263,6 +287,7 @@ private:
     }
 
     std::vector<entry> entries_;
+    std::vector<std::uint32_t> slot_;       // slot_[id]: the entry of id, or absent
     std::vector<std::vector<box>> levels_;  // levels_[0]: one box per leaf of fan_out entries
 };
 

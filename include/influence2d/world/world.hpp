@@ -93,16 +93,19 @@ struct world_statistics {
 ///       of its polygon's box posed in double (the posed polygon lies in
 ///       their parallelogram), grown by the posing margin and within / 2.
 ///       A box that left the body's enlarged box (the box the trees hold:
-///       grown by an eighth of its larger side and stretched along the
-///       body's last displacement) escapes: a new enlarged box
-///     the fixed bodies' box tree rebuilt if one of them escaped; the free
-///       bodies' box tree rebuilt if one of them escaped (box_tree: linear
-///       when they moved little)
+///       grown by a sixteenth of its larger side and stretched ahead along
+///       the body's last displacement, enlarged_box) escapes: a new
+///       enlarged box. Added and removed bodies escape too
+///     each tree (fixed bodies, free bodies) with an escaped body: its
+///       boxes refitted (box_tree::refit, O(log n) each) while the refits
+///       since its last rebuild stay below a quarter of its boxes; else,
+///       and for an added body, rebuilt (linear when the bodies moved
+///       little)
 ///     near pairs (enlarged boxes meet, not both fixed), kept from step to
 ///       step: when bodies escaped, theirs found again: the free bodies'
-///       tree joined with itself and with the fixed bodies' when most
-///       bodies escaped (box_tree::self_join, join), else a query of the
-///       trees for each (free bodies; fixed ones too for a free body)
+///       tree joined with itself and with the fixed bodies' when a quarter
+///       of the bodies escaped (box_tree::self_join, join), else a query of
+///       the trees for each (free bodies; fixed ones too for a free body)
 ///     candidates <- the near pairs with a moved body whose boxes meet. The
 ///       contacts of the last step whose bodies both stayed keep their
 ///       answer
@@ -110,17 +113,20 @@ struct world_statistics {
 ///       double, and in NT for another type), once each, in buffers kept
 ///       from step to step
 ///     each candidate, in parallel blocks: bodies_within, the last step's
-///       witness tried first (narrow_phase.hpp)
+///       witness tried first (narrow_phase.hpp; a persisting contact seeks
+///       two edges that meet, which the next step tests again from four
+///       vertices)
 ///     contacts <- the pairs within `within`, sorted; events: the
 ///       difference with the last step's contacts
 ///
 /// Cost of a step: O(m + p) for m moved bodies and p near pairs when no
-/// body escaped; an escape adds the rebuild of its tree (linear when the
-/// bodies moved little) and O(e log n) queries for e escaped bodies among n
-/// (O(n + p) joins when most escaped); plus the narrow phase: a persisting
-/// contact whose witness edges still meet costs four posed vertices and two
-/// orientation tests; others the one-shot query's steps. Nothing grows with
-/// the number of pairs of bodies.
+/// body escaped; e escaped bodies among n add O(e log n) refits and
+/// queries, or a rebuild of their tree (linear when the bodies moved
+/// little) now and then, or O(n + p) joins when a quarter of the bodies
+/// escaped; plus the narrow phase: a persisting contact whose witness edges
+/// still meet costs four posed vertices and two orientation tests; others
+/// the one-shot query's steps. Nothing grows with the number of pairs of
+/// bodies.
 template <class NT, class Exact = void>
 class world {
 public:
@@ -221,6 +227,7 @@ private:
         box bounds;                                  // at the present pose
         box enlarged;                                // held by the trees; holds bounds
         bool escaped = false;                        // enlarged anew at this step
+        bool jumped = false;                         // moved by more than its size at this step
         double scale = 0;                            // the shape's scale plus |tx| + |ty|
         std::unique_ptr<placed_polygon<NT>> placed;  // posed at the last step that asked
         bool placed_now = false;                     // placed at the present pose
@@ -229,7 +236,7 @@ private:
         body_pair bodies;
         meeting shown;             // kind none: not within the distance
         bool by_witness = false;   // answered by the last step's witness
-        bool persisting = false;   // in contact at the last step
+        bool persisting = false;   // in contact at the last step, neither body jumped
         bool no_crossing = false;  // shown is a located vertex sought after the edges: none met
     };
 
@@ -264,24 +271,42 @@ private:
     }
 
     // The box the trees hold for a body whose box `now` left its enlarged
-    // box: `now` grown by an eighth of its larger side (a body that wobbles
-    // stays inside) and stretched by twice the displacement of its centre
-    // since the last step (`moved`; a body that drifts stays inside for a
-    // few steps). A box that is not finite is kept as it is.
+    // box, after its centre moved by `moved` since the last step: unless it
+    // jumped, `now` grown by a sixteenth of its larger side (a body that
+    // wobbles stays inside) and stretched by eight times `moved` ahead (a
+    // body drifting at a steady speed stays inside for several steps); a
+    // body that jumped gets `now` itself (a larger box would only bring more
+    // pairs), as does a box that is not finite. (The two factors were
+    // chosen on the time study's coherent scenes: 1/8 and 2 cost the falling
+    // scene 20% more instructions, 1/16 and 16 no fewer.)
     static box enlarged_box(const box& now, const point<double>& moved) {
-        constexpr double slack = 0.125, lead = 2;
-        box out = now.inflated(slack * std::max(now.max_x - now.min_x, now.max_y - now.min_y));
+        constexpr double slack = 0.0625, lead = 8;
+        if (jumped(now, moved)) return now;
+        const double side = std::max(now.max_x - now.min_x, now.max_y - now.min_y);
+        box out = now.inflated(slack * side);
         if (!std::isfinite(out.min_x) || !std::isfinite(out.max_x) || !std::isfinite(out.min_y) ||
             !std::isfinite(out.max_y))
             return now;
-        if (std::isfinite(moved.x)) (moved.x < 0 ? out.min_x : out.max_x) += lead * moved.x;
-        if (std::isfinite(moved.y)) (moved.y < 0 ? out.min_y : out.max_y) += lead * moved.y;
+        (moved.x < 0 ? out.min_x : out.max_x) += lead * moved.x;
+        (moved.y < 0 ? out.min_y : out.max_y) += lead * moved.y;
         return out;
     }
 
+    // Whether a body whose box is `now` jumped when its centre moved by
+    // `moved`: by more than a quarter of its larger side along an axis (NaN
+    // too). A body that moves so far in a step gains little from an enlarged
+    // box (it would leave it within a step or two) and its pairs little from
+    // their last witness.
+    static bool jumped(const box& now, const point<double>& moved) {
+        const double reach = std::max(now.max_x - now.min_x, now.max_y - now.min_y) / 4;
+        return !(std::fabs(moved.x) <= reach && std::fabs(moved.y) <= reach);
+    }
+
     // Step 1: the moved bodies' boxes; those that left their enlarged boxes
-    // (and the added and removed bodies) escape; the trees of the fixed and
-    // free bodies rebuilt if one of theirs escaped.
+    // (and the added and removed bodies) escape, and their trees follow:
+    // refitted (box_tree::refit) while the refits since the tree's last
+    // rebuild stay below a quarter of its boxes, rebuilt otherwise and for
+    // an added body.
     void place_moved() {
         for (body_id i : moved_) {
             body& b = bodies_[i];
@@ -293,17 +318,33 @@ private:
             b.scale = shapes_[b.shape]->scale + std::fabs(b.pose.tx) + std::fabs(b.pose.ty);
             b.bounds = box_of(b);
             b.placed_now = false;
+            b.jumped = false;
             if (!b.enlarged.contains(b.bounds)) {
                 const point<double> now = b.bounds.centre();
-                b.enlarged = enlarged_box(
-                    b.bounds, b.enlarged.empty() ? point<double>{0, 0} : point<double>{now.x - was.x, now.y - was.y});
+                const point<double> moved =
+                    b.enlarged.empty() ? point<double>{0, 0} : point<double>{now.x - was.x, now.y - was.y};
+                b.jumped = jumped(b.bounds, moved);
+                b.enlarged = enlarged_box(b.bounds, moved);
                 escape(i);
             }
         }
         stats_.escaped += escaped_.size();
-        for (bool fixed : {true, false}) {
-            bool& dirty = fixed ? fixed_dirty_ : free_dirty_;
-            if (!dirty) continue;
+        for (const bool fixed : {true, false}) {
+            box_tree& tree = fixed ? fixed_tree_ : free_tree_;
+            std::size_t& refits = fixed ? fixed_refits_ : free_refits_;
+            std::vector<body_id> refit;
+            bool rebuild = false;
+            for (body_id i : escaped_)
+                if (bodies_[i].fixed == fixed) {
+                    rebuild = rebuild || !tree.holds(i);
+                    refit.push_back(i);
+                }
+            if (refit.empty()) continue;
+            refits += refit.size();
+            if (!rebuild && refits * 4 < tree.size()) {
+                for (body_id i : refit) tree.refit(i, bodies_[i].alive ? bodies_[i].enlarged : box{});
+                continue;
+            }
             std::vector<box> boxes;
             std::vector<std::uint32_t> ids;
             for (std::size_t i = 0; i < bodies_.size(); ++i)
@@ -311,16 +352,34 @@ private:
                     boxes.push_back(bodies_[i].enlarged);
                     ids.push_back(static_cast<std::uint32_t>(i));
                 }
-            (fixed ? fixed_tree_ : free_tree_).rebuild(boxes, ids);
+            tree.rebuild(boxes, ids);
             ++stats_.rebuilds;
-            dirty = false;
+            refits = 0;
         }
     }
     void escape(body_id i) {
-        body& b = bodies_[i];
-        b.escaped = true;
+        bodies_[i].escaped = true;
         escaped_.push_back(i);
-        (b.fixed ? fixed_dirty_ : free_dirty_) = true;
+    }
+
+    // Sorts pairs of ids below n in O(n + pairs): a stable counting sort by
+    // second id, then by first (a radix sort of two digits); std::sort when
+    // the pairs are few.
+    static void sort_pairs(std::vector<body_pair>& pairs, std::size_t n) {
+        if (pairs.size() * 8 < n) {  // few pairs: the counts would cost more
+            std::sort(pairs.begin(), pairs.end());
+            return;
+        }
+        std::vector<body_pair> by_second(pairs.size());
+        std::vector<std::uint32_t> start(n + 1);
+        const auto by = [&](const std::vector<body_pair>& in, std::vector<body_pair>& out, auto key) {
+            std::fill(start.begin(), start.end(), 0);
+            for (const body_pair& p : in) ++start[key(p) + 1];
+            for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+            for (const body_pair& p : in) out[start[key(p)]++] = p;
+        };
+        by(pairs, by_second, [](const body_pair& p) { return p.second; });
+        by(by_second, pairs, [](const body_pair& p) { return p.first; });
     }
 
     // Step 2a: the near pairs (enlarged boxes meet), sorted: those of the
@@ -345,7 +404,7 @@ private:
                 if (!b.fixed) fixed_tree_.query(b.enlarged, [&](std::uint32_t j) { add(i, j); });
             }
         }
-        std::sort(found.begin(), found.end());
+        sort_pairs(found, bodies_.size());
         found.erase(std::unique(found.begin(), found.end()), found.end());
         if (!most) {
             std::vector<body_pair> kept;
@@ -382,7 +441,7 @@ private:
             record r{p, meeting{}, false, false, false};
             if (had && options_.coherence) {
                 r.shown = last_[k].shown;
-                r.persisting = true;
+                r.persisting = !a.jumped && !b.jumped;
                 r.no_crossing = last_[k].no_crossing;
             }
             out.push_back(r);
@@ -434,7 +493,7 @@ private:
     //           vertices posed, no polygon placed)
     //   the bodies of the pairs left placed (place_candidates)
     //   pass 2: each pair left: bodies_within. A pair in contact at the last
-    //           step seeks two edges that meet first (pass 1 can test them
+    //           step whose bodies did not jump seeks two edges that meet first (pass 1 can test them
     //           again at the next step); a located vertex found when no
     //           edges met (one body in the other) is tried first
     void narrow(std::vector<record>& tested) {
@@ -508,9 +567,9 @@ private:
     std::vector<std::unique_ptr<shape_entry>> shapes_;
     std::vector<body> bodies_;
     std::vector<body_id> moved_;
-    std::vector<body_id> escaped_;  // at this step
-    std::vector<body_pair> near_;   // enlarged boxes meet, not both fixed; sorted
-    bool fixed_dirty_ = false, free_dirty_ = false;
+    std::vector<body_id> escaped_;                    // at this step
+    std::vector<body_pair> near_;                     // enlarged boxes meet, not both fixed; sorted
+    std::size_t fixed_refits_ = 0, free_refits_ = 0;  // since the tree's last rebuild
     box_tree fixed_tree_, free_tree_;
     std::vector<record> last_;  // the last step's pairs within the distance, sorted
     std::vector<record> kept_;  // this step's carried pairs
