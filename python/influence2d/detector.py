@@ -3,6 +3,8 @@
 or many, answered in order so that consecutive poses reuse the last frame's
 candidate edges (its coherence)."""
 
+import numpy as np
+
 from . import _core
 from .polygon import as_polygon
 from .poses import as_poses
@@ -46,11 +48,15 @@ class Detector:
 
         >>> d = Detector("POLYGON ((0 0, 2 0, 2 2, 0 2, 0 0))", "POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))")
         >>> d.witness((2.0, 0.5, 0.0))
-        [(0, 3), (1, 0), (1, 2), (1, 3), (2, 3)]
+        [(1, 0), (1, 2), (1, 3)]
         """
-        p = as_poses(pose, "pose")
-        if p.shape[0] != 1:
-            raise _core.InvalidInput(f"pose: expected one pose (tx, ty, theta), got {p.shape[0]}")
+        try:
+            p = np.asarray(pose, dtype=np.float64)
+        except (TypeError, ValueError) as e:
+            raise _core.InvalidInput(f"pose: not numbers ({e})") from None
+        if p.size != 3:
+            raise _core.InvalidInput(f"pose: expected one pose (tx, ty, theta), got shape {p.shape}")
+        p = np.ascontiguousarray(p.reshape(1, 3))
         return self._d.witness(float(p[0, 0]), float(p[0, 1]), float(p[0, 2]))[1]
 
     @property

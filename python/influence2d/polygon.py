@@ -107,7 +107,7 @@ class Polygon:
         clockwise (holes).
 
         >>> Polygon.from_wkt("POLYGON ((0 0, 0 1, 1 0, 0 0))").to_wkt()
-        'POLYGON((0 0,1 0,0 1,0 0))'
+        'POLYGON((1 0,0 1,0 0,1 0))'
         """
         return self._p.to_wkt()
 

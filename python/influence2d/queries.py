@@ -54,7 +54,7 @@ def separation(a, b, poses, number_type="certified", threads=0, features=False):
     array([1., 0.])
     >>> f = separation(a, b, np.array([[3.0, 0.5, 0.0]]), features=True)
     >>> f["static_kind"][0], int(f["static_index"][0]), f["moving_kind"][0], int(f["moving_index"][0])
-    ('edge', 1, 'edge', 3)
+    ('edge', 1, 'vertex', 0)
     """
     (distance, static_kind, static_index, moving_kind, moving_index, static_point,
      moving_point) = _core.separation(as_polygon(a, "a")._p, as_polygon(b, "b")._p, as_poses(poses),

@@ -31,12 +31,14 @@ def study(families=None, types=None, decisions=None, queries=None, cases=1, fram
     separation and first_contact (``[]``: neither). The defaults of
     ``cases`` and ``frames`` are the command's ``--quick`` run.
 
-    >>> t = study(families=["convex"], types=["double", "certified"], decisions=["orientation"], queries=[],
+    >>> t = study(families=["convex"], types=["double", "certified"], decisions=["collides"], queries=[],
     ...           frames=10)
     >>> t["decisions"][["number_type", "family", "decision", "cases"]]
-      number_type  family     decision  cases
-    0      double  convex  orientation     10
-    1   certified  convex  orientation     10
+      number_type  family  decision  cases
+    0      double  convex  collides     10
+    1   certified  convex  collides     10
+    >>> int(t["decisions"]["disagreements"][1])
+    0
     """
     import pandas as pd
     names = _core.study_names()

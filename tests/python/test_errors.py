@@ -7,6 +7,7 @@ import math
 import numpy as np
 import pytest
 import shapely.geometry
+import shapely.wkt
 
 import influence2d
 from influence2d import InvalidInput, Polygon
@@ -77,7 +78,8 @@ def test_bad_wkt(wkt, message):
 
 def test_bad_wkb():
     good = shapely.geometry.box(0, 0, 1, 1).wkb
-    raises("truncated", Polygon.from_wkb, good[:-3])
+    raises("announced", Polygon.from_wkb, good[:-3])
+    raises("truncated", Polygon.from_wkb, good[:7])
     raises("bytes after", Polygon.from_wkb, good + b"\0")
     raises("geometry type 1", Polygon.from_wkb, shapely.geometry.Point(1, 2).wkb)
     raises("Z or M", Polygon.from_wkb, shapely.geometry.Polygon([(0, 0, 1), (1, 0, 1), (0, 1, 1)]).wkb)
@@ -88,7 +90,7 @@ def test_bad_wkb():
 
 def test_bad_shapely_geometries():
     raises("LineString", Polygon.from_shapely, shapely.geometry.LineString([(0, 0), (1, 1)]))
-    raises("empty", Polygon.from_shapely, shapely.geometry.Polygon())
+    raises("empty", Polygon.from_shapely, shapely.wkt.loads("POLYGON EMPTY"))
     raises(r"b: expected a Polygon or MultiPolygon, got a Point", influence2d.intersects, A,
            shapely.geometry.Point(0, 0), np.zeros((1, 3)))
     raises("z coordinates", Polygon.from_shapely, shapely.geometry.Polygon([(0, 0, 1), (1, 0, 1), (0, 1, 1)]))
@@ -122,7 +124,7 @@ def test_bad_options():
 def test_bad_layers_name_the_index():
     raises(r"layer\[2\]: ring 0 is not closed", influence2d.pairs, [A, B, "POLYGON ((0 0, 1 0, 0 1))"])
     raises(r"other\[1\]: expected a Polygon", influence2d.pairs, [A], [B, 42])
-    raises(r"layer\[0\]: the Polygon is empty", influence2d.pairs, [shapely.geometry.Polygon()])
+    raises(r"layer\[0\]: the Polygon is empty", influence2d.pairs, [shapely.wkt.loads("POLYGON EMPTY")])
     raises("sequence of polygons", influence2d.pairs, A)
 
 

@@ -85,7 +85,7 @@ def test_intersects_degenerate_scenes():
         ((1.5, 1.5, 0.0), False),    # inside the hole, not touching it
         ((1.0, 1.5, 0.0), True),     # inside the hole, touching its edge
         ((0.5, 0.0, 0.0), True),     # overlapping the outer ring
-        ((2.0, 2.0, math.pi / 4), False),  # turned inside the hole
+        ((2.0, 1.5, math.pi / 4), False),  # turned inside the hole
     ]
     poses = np.array([p for p, _ in cases])
     want = [w for _, w in cases]
@@ -201,11 +201,12 @@ def test_separation_against_shapely_and_the_tool(tool, tmp_path, rng, np_rng):
 
 def test_separation_features_exact_case():
     f = influence2d.separation("POLYGON ((0 0, 2 0, 2 2, 0 2, 0 0))", "POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))",
-                               [[3.0, 2.5, 0.0]], features=True)
-    assert f["distance"][0] == 1.0
+                               [[3.0, 3.0, 0.0]], features=True)
+    assert math.isclose(f["distance"][0], math.sqrt(2), rel_tol=1e-15)
     assert (f["static_kind"][0], f["static_index"][0]) == ("vertex", 2)
+    assert (f["moving_kind"][0], f["moving_index"][0]) == ("vertex", 0)
     assert f["static_point"][0].tolist() == [2.0, 2.0]
-    assert f["moving_point"][0].tolist() == [3.0, 2.5]
+    assert f["moving_point"][0].tolist() == [3.0, 3.0]
 
 
 def test_first_contact_translations_exact():

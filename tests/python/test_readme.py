@@ -11,8 +11,8 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 def test_readme_example_runs(capsys):
     runpy.run_path(os.path.join(HERE, "readme_example.py"), run_name="__main__")
     out = capsys.readouterr().out
-    assert out.startswith("[ True False  True] [0.   0.25 0.  ]")
-    assert "[[0, 1], [1, 2], [2, 3]] ['reversed_orientation']" in out
+    assert out.strip() == ("[ True False  True] [0.  0.5 0. ] [ True False] [ 0. nan] [[0, 1], [1, 2], [2, 3]] "
+                           "['reversed_orientation']")
 
 
 def test_readme_shows_the_example():
