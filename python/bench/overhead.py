@@ -27,6 +27,7 @@ import subprocess
 import sys
 import tempfile
 import time
+import warnings
 
 import numpy as np
 import shapely
@@ -106,7 +107,9 @@ def layer_from(path, count, rng):
 
 
 def strtree_pairs(layer):
-    tree = shapely.strtree.STRtree(layer)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # shapely 1.8's notice of the STRtree of shapely 2
+        tree = shapely.strtree.STRtree(layer)
     index = {id(g): k for k, g in enumerate(layer)}
     found = []
     for i, g in enumerate(layer):
