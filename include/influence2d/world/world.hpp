@@ -183,6 +183,7 @@ public:
         b.alive = false;
         b.placed.reset();
         b.placed_now = false;
+        b.all_made = false;
         mark_moved(i);
     }
 
@@ -231,6 +232,7 @@ private:
         double scale = 0;                            // the shape's scale plus |tx| + |ty|
         std::unique_ptr<placed_polygon<NT>> placed;  // posed at the last step that asked
         bool placed_now = false;                     // placed at the present pose
+        bool all_made = false;                       // placed, with every vertex in NT made
     };
     struct record {
         body_pair bodies;
@@ -318,6 +320,7 @@ private:
             b.scale = shapes_[b.shape]->scale + std::fabs(b.pose.tx) + std::fabs(b.pose.ty);
             b.bounds = box_of(b);
             b.placed_now = false;
+            b.all_made = false;
             b.jumped = false;
             if (!b.enlarged.contains(b.bounds)) {
                 const point<double> now = b.bounds.centre();
@@ -462,27 +465,40 @@ private:
         return {&shapes_[b.shape]->shape, b.pose, b.scale, b.placed.get()};
     }
 
-    // The bodies of the candidates `which` placed at their poses (in double,
-    // and in NT for another type), each once, in parallel blocks when many;
-    // a body that stayed keeps its placing.
-    void place_candidates(const std::vector<record>& tested, const std::vector<std::size_t>& which) {
-        std::vector<body_id> asked;
+    // The bodies of the candidates `which` placed at their poses, each
+    // once, in parallel blocks when many; a body that stayed keeps its
+    // placing. Vertices in double at once; in NT (a type other than double)
+    // each made when a test first asks for it, or all of them here when the
+    // pairs are then tested by several threads (`shared`), which may not make
+    // them concurrently.
+    void place_candidates(const std::vector<record>& tested, const std::vector<std::size_t>& which, bool shared) {
+        struct placing {
+            body_id id;
+            bool repose;  // not placed at the present pose yet
+        };
+        std::vector<placing> asked;
         for (std::size_t k : which)
-            for (body_id i : {tested[k].bodies.first, tested[k].bodies.second})
-                if (!bodies_[i].placed_now) {
-                    bodies_[i].placed_now = true;
-                    asked.push_back(i);
-                }
+            for (body_id i : {tested[k].bodies.first, tested[k].bodies.second}) {
+                body& b = bodies_[i];
+                const bool repose = !b.placed_now, make_all = shared && !b.all_made;
+                if (!repose && !make_all) continue;
+                b.placed_now = true;
+                b.all_made = b.all_made || make_all;
+                asked.push_back({i, repose});
+            }
         constexpr std::size_t bodies_per_thread = 256;
         const unsigned threads = asked.size() < bodies_per_thread * 2 ? 1u : options_.threads;
         run_in_blocks(asked.size(), threads, [&](std::size_t first, std::size_t last) {
             for (std::size_t k = first; k < last; ++k) {
-                body& b = bodies_[asked[k]];
-                if (b.placed)
-                    b.placed->repose(b.pose);
-                else
-                    b.placed = std::make_unique<placed_polygon<NT>>(shapes_[b.shape]->shape, b.pose);
-                if constexpr (!std::is_same_v<NT, double>) b.placed->all();
+                body& b = bodies_[asked[k].id];
+                if (asked[k].repose) {
+                    if (b.placed)
+                        b.placed->repose(b.pose);
+                    else
+                        b.placed = std::make_unique<placed_polygon<NT>>(shapes_[b.shape]->shape, b.pose);
+                }
+                if constexpr (!std::is_same_v<NT, double>)
+                    if (b.all_made) b.placed->all();
             }
         });
     }
@@ -510,8 +526,8 @@ private:
         std::vector<std::size_t> left;
         for (std::size_t k = 0; k < tested.size(); ++k)
             if (!tested[k].by_witness) left.push_back(k);
-        place_candidates(tested, left);
-        const unsigned threads_left = left.size() < pairs_per_thread * 2 ? 1u : options_.threads;
+        const unsigned threads_left = left.size() < pairs_per_thread * 2 ? 1u : batch_threads(options_.threads);
+        place_candidates(tested, left, threads_left > 1);
         run_in_blocks(left.size(), threads_left, [&](std::size_t first, std::size_t last) {
             for (std::size_t k = first; k < last; ++k) {
                 record& r = tested[left[k]];
