@@ -33,22 +33,32 @@ double as_double(const NT& x) {
         return nearest_double(x);
 }
 
+/// answer(query, k) for every pose k, each block of poses with its own
+/// query object make(A, B) on the polygons prepared once in NT.
+template <class NT, class Make, class Answer>
+void on_prepared(const polygon& a, const polygon& b, const pose_rows& poses, unsigned threads, Make&& make,
+                 Answer&& answer) {
+    const auto pa = prepare_static<NT>(a);
+    const auto pb = prepare_moving<NT>(b);
+    run_in_blocks(poses.count, threads, [&](std::size_t first, std::size_t last) {
+        if (first == last) return;
+        auto query = make(pa, pb);
+        for (std::size_t k = first; k < last; ++k) answer(query, k);
+    });
+}
+
 /// A detector in `kind` per block, over the poses: collides for each.
 void intersects_into(const polygon& a, const polygon& b, const pose_rows& poses, number_kind kind, unsigned threads,
                      bool* out) {
-    const auto prepared = [&](auto tag) {
+    const auto in = [&](auto tag) {
         using NT = decltype(tag);
-        const auto pa = prepare_static<NT>(a);
-        const auto pb = prepare_moving<NT>(b);
-        run_in_blocks(poses.count, threads, [&](std::size_t first, std::size_t last) {
-            if (first == last) return;
-            detector<NT> d(pa, pb);
-            for (std::size_t k = first; k < last; ++k) out[k] = d.collide(poses.rows[k]).collides;
-        });
+        on_prepared<NT>(
+            a, b, poses, threads, [](const auto& pa, const auto& pb) { return detector<NT>(pa, pb); },
+            [&](detector<NT>& d, std::size_t k) { out[k] = d.collide(poses.rows[k]).collides; });
     };
     switch (kind) {
-    case number_kind::double_type: return prepared(double{});
-    case number_kind::exact_type: return prepared(exact_rational{});
+    case number_kind::double_type: return in(double{});
+    case number_kind::exact_type: return in(exact_rational{});
     case number_kind::certified_type:
         return run_in_blocks(poses.count, threads, [&](std::size_t first, std::size_t last) {
             if (first == last) return;
@@ -116,18 +126,14 @@ void separation_into(const polygon& a, const polygon& b, const pose_rows& poses,
                      const separation_out& out) {
     const auto in = [&](auto tag) {
         using NT = decltype(tag);
-        const auto pa = prepare_static<NT>(a);
-        const auto pb = prepare_moving<NT>(b);
-        run_in_blocks(poses.count, threads, [&](std::size_t first, std::size_t last) {
-            if (first == last) return;
-            separation_query<NT> query(pa, pb);
-            for (std::size_t k = first; k < last; ++k) {
+        on_prepared<NT>(
+            a, b, poses, threads, [](const auto& pa, const auto& pb) { return separation_query<NT>(pa, pb); },
+            [&](separation_query<NT>& query, std::size_t k) {
                 const separation_result<NT> r = query(poses.rows[k]);
                 out.put(k, distance_of<NT>(r.squared_distance), r.static_feature, r.moving_feature,
                         {as_double(r.static_point.x), as_double(r.static_point.y)},
                         {as_double(r.moving_point.x), as_double(r.moving_point.y)});
-            }
-        });
+            });
     };
     switch (kind) {
     case number_kind::double_type: return in(double{});

@@ -72,3 +72,14 @@ def rng():
 @pytest.fixture
 def np_rng():
     return np.random.default_rng(20240601)
+
+
+def tool_frames(tool, directory, a, b, poses, *options):
+    """`influence2d collide` on shapely polygons A and B at the poses, with
+    the options given: its FRAMES.csv rows, each a list of its columns."""
+    (directory / "a.wkt").write_text(a.wkt)
+    (directory / "b.wkt").write_text(b.wkt)
+    write_poses(directory / "poses.csv", poses)
+    run_tool(tool, "collide", "--static", directory / "a.wkt", "--moving", directory / "b.wkt", "--poses",
+             directory / "poses.csv", *options, "--out", directory / "frames.csv")
+    return [line.split(",") for line in (directory / "frames.csv").read_text().splitlines()[1:]]

@@ -13,7 +13,7 @@ import shapely.wkt
 
 import influence2d
 import exact_reference
-from conftest import dyadic, run_tool, star_polygon, write_poses
+from conftest import star_polygon, tool_frames
 
 EXACT_TYPES = ("certified", "exact")
 
@@ -139,31 +139,19 @@ def test_intersects_matches_the_tool(tool, tmp_path, rng, number_type):
     b = star_polygon(rng, 16, radius=0.7)
     poses = np.concatenate([touching_poses(rng, a, b, 100),
                             np.array([[rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-3, 3)] for _ in range(100)])])
-    (tmp_path / "a.wkt").write_text(a.wkt)
-    (tmp_path / "b.wkt").write_text(b.wkt)
-    write_poses(tmp_path / "poses.csv", poses)
-    run_tool(tool, "collide", "--static", tmp_path / "a.wkt", "--moving", tmp_path / "b.wkt", "--poses",
-             tmp_path / "poses.csv", "--number-type", number_type, "--out", tmp_path / "frames.csv")
-    frames = np.loadtxt(tmp_path / "frames.csv", delimiter=",", skiprows=1, dtype=np.int64)
-    assert influence2d.intersects(a, b, poses, number_type=number_type).tolist() == (frames[:, 1] == 1).tolist()
-    assert influence2d.Detector(a, b, number_type=number_type).collide(poses).tolist() == (frames[:, 1] == 1).tolist()
+    want = [row[1] == "1" for row in tool_frames(tool, tmp_path, a, b, poses, "--number-type", number_type)]
+    assert influence2d.intersects(a, b, poses, number_type=number_type).tolist() == want
+    assert influence2d.Detector(a, b, number_type=number_type).collide(poses).tolist() == want
 
 
 def test_detector_witness_matches_the_tool(tool, tmp_path, rng):
     a = star_polygon(rng, 12)
     b = star_polygon(rng, 8, radius=0.7)
     poses = touching_poses(rng, a, b, 30)
-    (tmp_path / "a.wkt").write_text(a.wkt)
-    (tmp_path / "b.wkt").write_text(b.wkt)
-    write_poses(tmp_path / "poses.csv", poses)
-    run_tool(tool, "collide", "--static", tmp_path / "a.wkt", "--moving", tmp_path / "b.wkt", "--poses",
-             tmp_path / "poses.csv", "--number-type", "certified", "--witness", "--distance", "0.01", "--threads", "1",
-             "--out", tmp_path / "frames.csv")
-    lines = (tmp_path / "frames.csv").read_text().splitlines()[1:]
+    rows = tool_frames(tool, tmp_path, a, b, poses, "--number-type", "certified", "--witness", "--distance", "0.01")
     d = influence2d.Detector(a, b, number_type="certified", within=0.01)
     dw = influence2d.Detector(a, b, number_type="certified", within=0.01, witness=True)
-    for line, pose in zip(lines, poses):
-        _, collides, edges = line.split(",")
+    for (_, collides, edges), pose in zip(rows, poses):
         want = [tuple(map(int, e.split(":"))) for e in edges.split(";")] if edges else []
         assert d.witness(pose) == want
         assert dw.witness(pose) == want
@@ -183,16 +171,10 @@ def test_separation_against_shapely_and_the_tool(tool, tmp_path, rng, np_rng):
         d = influence2d.separation(a, b, poses, number_type=number_type)
         for k, p in enumerate(poses):
             assert d[k] == pytest.approx(a.distance(shapely_posed(b, p)), rel=1e-9, abs=1e-12)
-    (tmp_path / "a.wkt").write_text(a.wkt)
-    (tmp_path / "b.wkt").write_text(b.wkt)
-    write_poses(tmp_path / "poses.csv", poses)
-    run_tool(tool, "collide", "--static", tmp_path / "a.wkt", "--moving", tmp_path / "b.wkt", "--poses",
-             tmp_path / "poses.csv", "--number-type", "certified", "--separation", "--witness",
-             "--out", tmp_path / "frames.csv")
+    rows = tool_frames(tool, tmp_path, a, b, poses, "--number-type", "certified", "--separation", "--witness")
     f = influence2d.separation(a, b, poses, features=True)
     names = {"vertex": "v", "edge": "e"}
-    for k, line in enumerate((tmp_path / "frames.csv").read_text().splitlines()[1:]):
-        cols = line.split(",")
+    for k, cols in enumerate(rows):
         assert float(cols[3]) == f["distance"][k]
         ours = [names.get(f["static_kind"][k], "interior") + (str(f["static_index"][k]) if f["static_index"][k] >= 0 else ""),
                 names.get(f["moving_kind"][k], "interior") + (str(f["moving_index"][k]) if f["moving_index"][k] >= 0 else "")]
@@ -224,14 +206,22 @@ def test_first_contact_matches_the_tool(tool, tmp_path, rng):
     a = star_polygon(rng, 12)
     b = star_polygon(rng, 8, radius=0.5)
     poses = np.array([[rng.uniform(-3, 3), rng.uniform(-3, 3), 0.0] for _ in range(41)])
-    (tmp_path / "a.wkt").write_text(a.wkt)
-    (tmp_path / "b.wkt").write_text(b.wkt)
-    write_poses(tmp_path / "poses.csv", poses)
-    run_tool(tool, "collide", "--static", tmp_path / "a.wkt", "--moving", tmp_path / "b.wkt", "--poses",
-             tmp_path / "poses.csv", "--number-type", "certified", "--continuous", "--out", tmp_path / "frames.csv")
+    rows = tool_frames(tool, tmp_path, a, b, poses, "--number-type", "certified", "--continuous")
     contact, t = influence2d.first_contact(a, b, poses[:-1], poses[1:])
-    for k, line in enumerate((tmp_path / "frames.csv").read_text().splitlines()[2:]):
-        cols = line.split(",")
+    for k, cols in enumerate(rows[1:]):
         assert (cols[2] != "") == contact[k]
         if contact[k]:
             assert float(cols[2]) == t[k]
+
+
+def test_detector_keeps_its_state_across_calls(np_rng, rng):
+    """Frames split over many calls answer as one call (and as intersects)."""
+    a = star_polygon(rng, 40)
+    b = star_polygon(rng, 20, radius=0.6)
+    steps = np.linspace(0, 1, 600)
+    poses = np.column_stack([2.5 * np.cos(6 * steps), 2.5 * np.sin(4 * steps), 3 * steps])
+    for number_type in ("double", "certified"):
+        d = influence2d.Detector(a, b, number_type=number_type)
+        split = np.concatenate([d.collide(poses[k:k + 37]) for k in range(0, len(poses), 37)])
+        assert (split == influence2d.Detector(a, b, number_type=number_type).collide(poses)).all()
+    assert (split == influence2d.intersects(a, b, poses)).all()
