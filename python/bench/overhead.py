@@ -131,6 +131,8 @@ def main():
     p.add_argument("--layer-size", type=int, default=10_000)
     p.add_argument("--repeats", type=int, default=5)
     p.add_argument("--number-type", default="certified")
+    p.add_argument("--parts", default="overhead,shapely,pairs",
+                   help="which measurements, comma-separated (default: all three)")
     o = p.parse_args()
     rng = np.random.default_rng(20240601)
     threads = os.cpu_count()
@@ -145,7 +147,17 @@ def main():
           f"{os.path.basename(o.static)} ({a.num_vertices} vertices) and {os.path.basename(o.moving)} "
           f"({b.num_vertices}); number type {o.number_type}; medians of {o.repeats} runs")
 
-    # 1. Python against the C++ batch call, every core and one.
+    parts = o.parts.split(",")
+    if "overhead" in parts:
+        measure_overhead(o, a, b, poses, threads)
+    if "shapely" in parts:
+        measure_shapely(o, a, b, a_geom, b_geom, poses, threads)
+    if "pairs" in parts:
+        measure_pairs(o, rng, threads)
+
+
+def measure_overhead(o, a, b, poses, threads):
+    """1. Python against the C++ batch call, every core and one."""
     with tempfile.TemporaryDirectory() as d:
         for t in (0, 1):
             n = len(poses) if t == 0 else min(len(poses), 200_000)
@@ -157,7 +169,9 @@ def main():
             print(f"intersects, {n} poses, {label}: python {py * 1e9:.1f} ns/pose, C++ batch {cpp * 1e9:.1f} "
                   f"ns/pose, overhead {100 * (py / cpp - 1):+.1f}%")
 
-    # 2. Against shapely 1.8, per pose.
+
+def measure_shapely(o, a, b, a_geom, b_geom, poses, threads):
+    """2. Against shapely 1.8, per pose."""
     sub = poses[:o.shapely_poses]
     shp, shp_answers = shapely_per_pose(a_geom, b_geom, sub, max(1, o.repeats // 2))
     ours1 = median_seconds(lambda: influence2d.intersects(a, b, sub, o.number_type, threads=1), o.repeats) / len(sub)
@@ -167,7 +181,9 @@ def main():
           f"{shp * 1e6:.2f} us/pose; influence2d {ours1 * 1e6:.3f} us/pose on 1 thread ({shp / ours1:.1f}x), "
           f"{ours * 1e6:.3f} us/pose on {threads} ({shp / ours:.1f}x); same answer on {agree} of {len(sub)}")
 
-    # 3. pairs against STRtree + intersects.
+
+def measure_pairs(o, rng, threads):
+    """3. pairs against STRtree + intersects."""
     layer = layer_from(o.layer, o.layer_size, rng)
     polys = [influence2d.Polygon.from_shapely(g) for g in layer]
     ours_pairs = influence2d.pairs(polys, number_type=o.number_type)
@@ -178,12 +194,12 @@ def main():
     t_convert = median_seconds(lambda: influence2d.pairs(layer, number_type=o.number_type, threads=0), o.repeats)
     k = len(ours_pairs)
     same = sorted(map(tuple, ours_pairs.tolist())) == tree_pairs
-    print(f"pairs, {len(layer)} polygons, {k} pairs ({'same as' if same else 'differ from'} STRtree's "
+    name = os.path.basename(o.layer) if o.layer else "generated parcels"
+    print(f"pairs, {len(layer)} polygons ({name}), {k} pairs ({'same as' if same else 'differ from'} STRtree's "
           f"{len(tree_pairs)}): STRtree + intersects {t_tree * 1e3:.1f} ms ({t_tree / max(k, 1) * 1e6:.2f} us/pair); "
           f"influence2d {t_ours1 * 1e3:.1f} ms on 1 thread ({t_tree / t_ours1:.1f}x), {t_ours * 1e3:.1f} ms on "
           f"{threads} ({t_tree / t_ours:.1f}x, {t_ours / max(k, 1) * 1e6:.2f} us/pair); from shapely geometries "
           f"(WKB read included) {t_convert * 1e3:.1f} ms")
-
 
 if __name__ == "__main__":
     sys.exit(main())
