@@ -8,6 +8,10 @@ WKB accepted wherever a Polygon is.
 >>> influence2d.intersects(a, "POLYGON ((0 0, 1 0, 0 1, 0 0))", np.array([[4.0, 0.0, 0.0], [4.5, 0.0, 0.0]]))
 array([ True, False])
 
+``influence2d.dask`` runs the audit of a layer, the layer join and the
+precision study on Dask's distributed scheduler; it is imported on first use
+(``import influence2d.dask``, or the attribute), not with the package.
+
 Errors in the input (non-finite values, empty or malformed polygons, arrays
 of the wrong shape or dtype) raise :class:`InvalidInput`, a ValueError naming
 the value and its index.
@@ -29,6 +33,17 @@ __version__ = _core.__version__
 
 #: The number types the queries take.
 NUMBER_TYPES = ("certified", "exact", "double")
+
+
+
+def __getattr__(name):
+    """``influence2d.dask`` on first use: the package does not import
+    distributed until it is asked for."""
+    if name == "dask":
+        import importlib
+        return importlib.import_module(".dask", __name__)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 
 __all__ = [
     "InvalidInput", "Polygon", "Detector", "intersects", "separation", "first_contact", "pairs", "audit",

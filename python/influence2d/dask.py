@@ -1,0 +1,357 @@
+# SPDX-License-Identifier: BSL-1.0
+"""The work that outgrows one machine, on Dask's distributed scheduler: the
+audit of a layer in chunks, the layer join partitioned by boxes, the
+precision study split by families; each on a ``distributed.Client`` (a
+LocalCluster, or a real cluster by its scheduler address,
+``Client("tcp://scheduler:8786")``), each with the same result as the
+single-process call of the package.
+
+The workers import ``influence2d`` themselves: it must be installed (or on
+their PYTHONPATH) where they run. Polygons pickle, so the partitions are
+scattered to the workers once and the tasks name them.
+"""
+
+import numpy as np
+
+from . import _core
+from .audit import _item, audit_layer
+from .pairs import pairs as _local_pairs
+from .polygon import Polygon, as_polygons
+from .study import study as _local_study, study_names
+
+__all__ = ["audit", "pairs", "study"]
+
+#: Disagreements the study keeps as examples per number type and decision
+#: (or query): the command's and the package's fixed count.
+STUDY_EXAMPLES_KEPT = 3
+
+
+# --- Checks -----------------------------------------------------------------
+
+def _client(client):
+    """The client, checked: a ``distributed.Client`` (not its address: a
+    connection is the caller's to open and close)."""
+    from distributed import Client
+    if not isinstance(client, Client):
+        raise _core.InvalidInput(f"client: expected a distributed.Client, got {type(client).__name__}")
+    return client
+
+
+def _count(value, name, least=1):
+    """An integer at least ``least`` (bools refused)."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < least:
+        raise _core.InvalidInput(f"{name} is {value!r}: expected an integer >= {least}")
+    return int(value)
+
+
+def _sequence(values, name):
+    """The items of a layer (a sequence, a pandas Series or a GeoSeries) as a
+    list, positions as indices; one geometry or a string refused."""
+    if isinstance(values, (str, bytes, Polygon)) or hasattr(values, "geom_type") and not hasattr(values, "to_numpy"):
+        raise _core.InvalidInput(f"{name}: expected a sequence of polygons, got one {type(values).__name__}")
+    if hasattr(values, "to_numpy"):  # a pandas Series or a GeoSeries: positions, not labels
+        values = values.to_numpy()
+    try:
+        return list(values)
+    except TypeError:
+        raise _core.InvalidInput(f"{name}: expected a sequence of polygons, got {type(values).__name__}") from None
+
+
+# --- audit ------------------------------------------------------------------
+
+def _audit_chunk(items, start, max_per_kind, threads):
+    """The findings of one chunk (items as the audit reads them), each row
+    with its polygon's position in the whole layer."""
+    reports = _core.audit(items, "geoms", max_per_kind, threads)
+    return [dict(polygon=start + k, **f) for k, r in enumerate(reports) for f in r["findings"]]
+
+
+def audit(geoms, client, chunk_size=1000, max_per_kind=50, threads=1):
+    """The audit of a layer (a sequence or pandas Series of WKT text, WKB
+    bytes, shapely geometries or Polygons) in chunks of ``chunk_size``, one
+    task each on ``threads`` threads of a worker: the same DataFrame as
+    :func:`influence2d.audit_layer`, ``polygon`` the position in ``geoms``.
+    Every item is checked before any task starts.
+
+    >>> from distributed import Client, LocalCluster
+    >>> import influence2d.dask
+    >>> with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as cluster, \\
+    ...         Client(cluster) as client:
+    ...     found = influence2d.dask.audit(["POLYGON ((0 0, 1 0, 0 1, 0 0))"] * 3 + ["POLYGON ((0 0, 0 1, 1 0, 0 0))"],
+    ...                                    client, chunk_size=2)
+    >>> found[["polygon", "kind"]]
+       polygon                  kind
+    0        3  reversed_orientation
+    """
+    import pandas as pd
+    client = _client(client)
+    chunk_size = _count(chunk_size, "chunk_size")
+    max_per_kind = _count(max_per_kind, "max_per_kind", least=0)
+    threads = _count(threads, "threads", least=0)
+    items = [_item(g, f"geoms[{k}]") for k, g in enumerate(_sequence(geoms, "geoms"))]
+    columns = audit_layer([]).columns
+    if not items:
+        return pd.DataFrame([], columns=columns)
+    starts = range(0, len(items), chunk_size)
+    chunks = client.scatter([items[s:s + chunk_size] for s in starts], hash=False)
+    tasks = [client.submit(_audit_chunk, c, s, max_per_kind, threads, pure=False) for c, s in zip(chunks, starts)]
+    return pd.DataFrame([row for rows in client.gather(tasks) for row in rows], columns=columns)
+
+
+# --- pairs ------------------------------------------------------------------
+
+def _boxes(polygons):
+    """The (n, 4) float64 boxes (min x, min y, max x, max y) of the polygons."""
+    return np.array([p.bounds for p in polygons], dtype=np.float64).reshape(-1, 4)
+
+
+def _hilbert_keys(x, y, extent, order=16):
+    """The positions of points on a Hilbert curve of 2^order x 2^order cells
+    over ``extent`` (min x, min y, max x, max y): near points, near keys."""
+    n = 1 << order
+    size_x, size_y = max(extent[2] - extent[0], 1e-300), max(extent[3] - extent[1], 1e-300)
+    xi = np.clip(((x - extent[0]) / size_x * (n - 1)).astype(np.int64), 0, n - 1)
+    yi = np.clip(((y - extent[1]) / size_y * (n - 1)).astype(np.int64), 0, n - 1)
+    key = np.zeros(len(xi), dtype=np.int64)
+    s = n >> 1
+    while s > 0:
+        rx, ry = (xi & s) > 0, (yi & s) > 0
+        key += s * s * ((3 * rx.astype(np.int64)) ^ ry.astype(np.int64))
+        flip = ~ry & rx
+        xi, yi = np.where(flip, n - 1 - xi, xi), np.where(flip, n - 1 - yi, yi)
+        swap = ~ry
+        xi, yi = np.where(swap, yi, xi), np.where(swap, xi, yi)
+        s >>= 1
+    return key
+
+
+def _partitions(boxes, extent, count):
+    """The layer cut into at most ``count`` runs of the Hilbert order of its
+    boxes' centres (as dask-geopandas' spatial shuffle): each a sorted array
+    of positions and the box around its polygons' boxes."""
+    keys = _hilbert_keys((boxes[:, 0] + boxes[:, 2]) / 2, (boxes[:, 1] + boxes[:, 3]) / 2, extent)
+    runs = np.array_split(np.argsort(keys, kind="stable"), min(count, len(boxes)))
+    out = []
+    for run in runs:
+        members = np.sort(run)
+        b = boxes[members]
+        out.append((members, (b[:, 0].min(), b[:, 1].min(), b[:, 2].max(), b[:, 3].max())))
+    return out
+
+
+def _reach(boxes, within):
+    """How far two partitions' boxes may be apart and still hold a pair:
+    ``within``, with room for the library's own box margins (joining more
+    partitions than needed costs time, never a different answer)."""
+    scale = float(np.abs(boxes).max()) if len(boxes) else 0.0
+    return within * (1 + 2.0 ** -40) + (scale + within) * 2.0 ** -30
+
+
+def _boxes_meet(p, q, reach):
+    """Whether boxes p and q come within ``reach`` of each other (a sum
+    rounded one way cannot hide a gap of exactly ``reach``)."""
+    return p[2] + reach >= q[0] and q[2] + reach >= p[0] and p[3] + reach >= q[1] and q[3] + reach >= p[1]
+
+
+def _at(found, at_a, at_b):
+    """Local index pairs of two partitions at the positions of the layers."""
+    return np.column_stack((at_a[found[:, 0]], at_b[found[:, 1]]))
+
+
+def _join_partitions(first, second, kind, within, number_type, threads):
+    """One task: the pairs between two partitions, (polygons, positions)
+    each, at the positions of the whole layers. ``kind``: "same" (one
+    partition of one layer: i < j), "layer" (two partitions of one layer:
+    each pair as (lower, higher)) or "layers" (one of each layer). Within one
+    layer a pair is tested with its lower position first, as the
+    single-process join tests it: a rounded type's answer may depend on the
+    order, so in double each way is asked and kept where it is that order."""
+    polys_a, at_a = first
+    if kind == "same":
+        return _at(_local_pairs(polys_a, None, within, number_type, threads), at_a, at_a)
+    polys_b, at_b = second
+    out = _at(_local_pairs(polys_a, polys_b, within, number_type, threads), at_a, at_b)
+    if kind == "layers":
+        return out
+    if number_type != "double":
+        return np.sort(out, axis=1)
+    back = _at(_local_pairs(polys_b, polys_a, within, number_type, threads), at_b, at_a)
+    return np.concatenate((out[out[:, 0] < out[:, 1]], back[back[:, 0] < back[:, 1]]))
+
+
+def _scattered(client, polygons, parts):
+    """Each partition's (polygons, positions) sent to the workers once."""
+    return client.scatter([([polygons[i] for i in members], members) for members, _ in parts], hash=False)
+
+
+def _kind(p, q, one_layer):
+    """What a task joins: one partition, two of one layer, or one of each."""
+    return ("same" if p == q else "layer") if one_layer else "layers"
+
+
+def _partition_pairs(parts_a, parts_b, reach):
+    """The pairs of partitions (indices) whose boxes come within ``reach``:
+    each unordered pair once within one layer (``parts_b`` None)."""
+    if parts_b is None:
+        return [(p, q) for p in range(len(parts_a)) for q in range(p, len(parts_a))
+                if _boxes_meet(parts_a[p][1], parts_a[q][1], reach)]
+    return [(p, q) for p in range(len(parts_a)) for q in range(len(parts_b))
+            if _boxes_meet(parts_a[p][1], parts_b[q][1], reach)]
+
+
+def pairs(layer, other=None, client=None, within=0.0, number_type="certified", partitions=None, threads=1):
+    """The same (k, 2) int64 array as :func:`influence2d.pairs` (positions,
+    sorted), found on the workers: each layer is cut into ``partitions``
+    runs of the Hilbert order of its polygons' box centres (default: two per
+    worker thread), each partition with the box around its polygons; every
+    two partitions whose boxes come within ``within`` are joined by one task
+    (``influence2d.pairs`` on ``threads`` threads). A polygon is in one
+    partition only, so a pair is found by one task only, and two polygons
+    that meet lie in partitions whose boxes meet: none is lost at a
+    partition's border.
+
+    >>> from distributed import Client, LocalCluster
+    >>> import shapely.geometry as g, influence2d.dask
+    >>> layer = [g.box(i, 0, i + 1, 1) for i in range(6)]
+    >>> with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as cluster, \\
+    ...         Client(cluster) as client:
+    ...     one = influence2d.dask.pairs(layer, client=client, partitions=3)
+    ...     two = influence2d.dask.pairs(layer, [g.box(2.5, 0.5, 3.5, 3)], client, within=0.5, partitions=3)
+    >>> one.tolist(), two.tolist()
+    ([[0, 1], [1, 2], [2, 3], [3, 4], [4, 5]], [[1, 0], [2, 0], [3, 0], [4, 0]])
+    """
+    client = _client(client)
+    threads = _count(threads, "threads", least=0)
+    first = as_polygons(_sequence(layer, "layer"), "layer")
+    second = None if other is None else as_polygons(_sequence(other, "other"), "other")
+    _local_pairs([], None if other is None else [], within, number_type, 1)  # within and number_type checked
+    within = float(within)
+    count = 2 * sum(client.nthreads().values()) if partitions is None else _count(partitions, "partitions")
+    if not first or second is not None and not second:
+        return np.empty((0, 2), dtype=np.int64)
+    boxes_a = _boxes(first)
+    boxes_b = None if second is None else _boxes(second)
+    every = boxes_a if second is None else np.concatenate((boxes_a, boxes_b))
+    extent = (every[:, 0].min(), every[:, 1].min(), every[:, 2].max(), every[:, 3].max())
+    parts_a = _partitions(boxes_a, extent, count)
+    parts_b = None if second is None else _partitions(boxes_b, extent, count)
+    sent_a = _scattered(client, first, parts_a)
+    sent_b = sent_a if second is None else _scattered(client, second, parts_b)
+    tasks = [client.submit(_join_partitions, sent_a[p], sent_b[q], _kind(p, q, second is None), within,
+                           number_type, threads, pure=False)
+             for p, q in _partition_pairs(parts_a, parts_b, _reach(every, within))]
+    found = np.concatenate([np.empty((0, 2), dtype=np.int64)] + client.gather(tasks)).astype(np.int64, copy=False)
+    return found[np.lexsort((found[:, 1], found[:, 0]))]
+
+
+# --- study ------------------------------------------------------------------
+
+def _check_names(given, known, name):
+    """The names, checked against ``known``: a list (None: empty)."""
+    given = [] if given is None else list(given)
+    for k, n in enumerate(given):
+        if n not in known:
+            raise _core.InvalidInput(f"{name}[{k}] is {n!r}: expected one of {', '.join(known)}")
+    return given
+
+
+def _study_families(families):
+    """The families a split study runs, one task each (None: the command's
+    defaults); a family named twice is refused (it would count twice)."""
+    names = study_names()
+    families = _check_names(families, names["families"], "families") or names["default_families"]
+    for k, f in enumerate(families):
+        if f in families[:k]:
+            raise _core.InvalidInput(f"families[{k}] is {f!r}, named twice: each family is run once")
+    return families
+
+
+def _merged_rows(parts, table, rank):
+    """One table's rows of the parts (one per family, in the families'
+    order) in the single run's order: by number type (``rank``), then as the
+    families came."""
+    rows = [row for part in parts for row in part[table].to_dict("records")]
+    return sorted(rows, key=lambda row: rank[row["number_type"]])
+
+
+def _merged_summaries(parts):
+    """The per-type summaries: the counts summed over the families (integer
+    sums, in the single run's order of types)."""
+    first = parts[0]["summaries"].to_dict("records")
+    for part in parts[1:]:
+        for row, more in zip(first, part["summaries"].to_dict("records")):
+            for column, value in more.items():
+                if column not in ("number_type", "claims_exact", "has_fallback"):
+                    row[column] += value
+    return first
+
+
+def _merged_examples(parts):
+    """The examples in the single run's order (family by family), at most
+    STUDY_EXAMPLES_KEPT per number type and decision or query, as the single
+    run keeps them."""
+    kept, rows = {}, []
+    for part in parts:
+        for row in part["examples"].to_dict("records"):
+            key = (row["number_type"], row["decision"])
+            kept[key] = kept.get(key, 0) + 1
+            if kept[key] <= STUDY_EXAMPLES_KEPT:
+                rows.append(row)
+    return rows
+
+
+def _merged_study(parts):
+    """The tables of one study from its families' studies: counts summed,
+    rows in the single run's order, each frame built as the single run
+    builds it (so that its column types are the same)."""
+    import pandas as pd
+    rank = {t: k for k, t in enumerate(study_names()["types"])}
+    rows = {
+        "decisions": _merged_rows(parts, "decisions", rank),
+        "queries": _merged_rows(parts, "queries", rank),
+        "stability": sorted(_merged_rows(parts, "stability", rank),
+                            key=lambda r: (rank[r["number_type"]], r["sweep"], r["magnitude"])),
+        "summaries": _merged_summaries(parts),
+        "examples": _merged_examples(parts),
+    }
+    return {name: pd.DataFrame(rows[name], columns=parts[0][name].columns) for name in parts[0]}
+
+
+def study(families=None, types=None, decisions=None, queries=None, cases=1, frames=40, query_frames=128,
+          seed=20040202, client=None):
+    """The precision study of :func:`influence2d.study` (the same arguments),
+    one task per family on the workers, the tables merged: every count the
+    same as the single run's (integer sums, rows whole), every table in its
+    order; only the measured times (``ns_per_query``, ``ns_per_question``)
+    are the workers' own. Each family's scenes are drawn from the seed and
+    the family alone, which is what lets a family run apart; the frames of
+    one scene are drawn in sequence from one generator, so a family is not
+    split further.
+
+    >>> from distributed import Client, LocalCluster
+    >>> import influence2d.dask
+    >>> with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as cluster, \\
+    ...         Client(cluster) as client:
+    ...     t = influence2d.dask.study(families=["convex", "starred"], types=["double", "certified"],
+    ...                                decisions=["collides"], queries=[], frames=10, client=client)
+    >>> t["decisions"][["number_type", "family", "cases", "disagreements"]]
+      number_type   family  cases  disagreements
+    0      double   convex     10              1
+    1      double  starred     10              0
+    2   certified   convex     10              0
+    3   certified  starred     10              0
+    >>> t["summaries"][["number_type", "questions"]]
+      number_type  questions
+    0      double         20
+    1   certified         20
+    """
+    client = _client(client)
+    names = study_names()
+    families = _study_families(families)
+    args = dict(types=_check_names(types, names["types"], "types"),
+                decisions=_check_names(decisions, names["decisions"], "decisions"),
+                queries=None if queries is None else _check_names(queries, names["queries"], "queries"),
+                cases=_count(cases, "cases"), frames=_count(frames, "frames"),
+                query_frames=_count(query_frames, "query_frames", least=0), seed=_count(seed, "seed", least=0))
+    tasks = [client.submit(_local_study, families=[f], pure=False, **args) for f in families]
+    return _merged_study(client.gather(tasks))
