@@ -1,0 +1,209 @@
+# SPDX-License-Identifier: BSL-1.0
+"""influence2d.dask: the audit, the layer join and the precision study on a
+LocalCluster (two workers of one thread, in processes and in threads) give
+what the single-process calls give; bad input is refused before any task."""
+
+import os
+import random
+import subprocess
+import sys
+
+import numpy as np
+import pandas as pd
+import pandas.testing
+import pytest
+import shapely.affinity
+import shapely.geometry
+import shapely.wkt
+
+import influence2d
+import influence2d.dask
+from conftest import star_polygon
+from test_audit import POLYGONS
+from test_pairs import layer_of
+
+distributed = pytest.importorskip("distributed")
+
+
+@pytest.fixture(scope="module", params=[True, False], ids=["processes", "threads"])
+def client(request):
+    """A LocalCluster of two one-thread workers (processes, then threads) and
+    its client, for the whole module."""
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=request.param,
+                                  dashboard_address=None) as cluster, distributed.Client(cluster) as c:
+        yield c
+
+
+def parcels(rng, rows, columns):
+    """A grid of quadrilaterals sharing their edges and corners exactly
+    (jittered dyadic corners), every one meeting its eight neighbours."""
+    corner = {(i, j): (j + rng.randint(-16, 16) / 64, i + rng.randint(-16, 16) / 64)
+              for i in range(rows + 1) for j in range(columns + 1)}
+    return [shapely.geometry.Polygon([corner[i, j], corner[i, j + 1], corner[i + 1, j + 1], corner[i + 1, j]])
+            for i in range(rows) for j in range(columns)]
+
+
+def straddling(rng, count):
+    """Long thin polygons across the whole layer: each crosses every
+    partition's border."""
+    return [shapely.geometry.box(0, y, 12, y + 0.25) if k % 2 else shapely.geometry.box(y, 0, y + 0.25, 12)
+            for k, y in enumerate(rng.randint(0, 44) / 4 for _ in range(count))]
+
+
+# --- audit -------------------------------------------------------------------
+
+def audit_layer_of(rng):
+    """A layer of every input form (WKT, WKB, shapely, Polygon) of the audit
+    test's polygons, those a reader refuses kept as text (a finding), and
+    random stars."""
+    forms = [lambda t: t, lambda t: shapely.wkt.loads(t).wkb, shapely.wkt.loads, influence2d.Polygon.from_wkt]
+    layer = []
+    for k in range(60):
+        text = POLYGONS[k % len(POLYGONS)]
+        try:
+            layer.append(forms[k % 4](text))
+        except Exception:
+            layer.append(text)
+    return layer + [star_polygon(rng, rng.randint(3, 12)) for _ in range(20)]
+
+
+@pytest.mark.parametrize("chunk_size", [1, 7, 1000])
+def test_audit_is_the_single_process_audit(client, rng, chunk_size):
+    layer = audit_layer_of(rng)
+    want = influence2d.audit_layer(layer)
+    got = influence2d.dask.audit(layer, client, chunk_size=chunk_size)
+    pandas.testing.assert_frame_equal(got, want)
+    assert len(want) > len(layer) // 2
+
+
+def test_audit_of_a_series_and_of_nothing(client):
+    series = pd.Series(POLYGONS, index=[10 * k for k in range(len(POLYGONS))])
+    pandas.testing.assert_frame_equal(influence2d.dask.audit(series, client, chunk_size=4),
+                                      influence2d.audit_layer(POLYGONS))
+    pandas.testing.assert_frame_equal(influence2d.dask.audit([], client), influence2d.audit_layer([]))
+    clean = ["POLYGON ((0 0, 1 0, 0 1, 0 0))"] * 5
+    pandas.testing.assert_frame_equal(influence2d.dask.audit(clean, client, chunk_size=2),
+                                      influence2d.audit_layer(clean))
+
+
+# --- pairs -------------------------------------------------------------------
+
+def same_pairs(client, layer, other=None, **options):
+    """influence2d.dask.pairs against influence2d.pairs on several cuts of
+    the layers into partitions; each pair found once."""
+    local = {k: v for k, v in options.items() if k in ("within", "number_type")}
+    want = influence2d.pairs(layer, other, **local)
+    for partitions in (1, 3, 7, 16):
+        got = influence2d.dask.pairs(layer, other, client, partitions=partitions, **options)
+        assert got.dtype == np.int64 and got.shape == want.shape, partitions
+        np.testing.assert_array_equal(got, want, err_msg=f"partitions={partitions}")
+    return want
+
+
+@pytest.mark.parametrize("number_type", ["certified", "exact", "double"])
+def test_pairs_of_a_random_layer_with_shared_borders(client, rng, number_type):
+    layer = layer_of(rng, 60, spread=10.0) + parcels(rng, 6, 8)
+    assert len(same_pairs(client, layer, number_type=number_type)) > 100
+
+
+def test_pairs_of_polygons_straddling_the_partitions(client, rng):
+    layer = parcels(rng, 8, 8)
+    layer = [g for pair in zip(layer, straddling(rng, len(layer))) for g in pair]
+    assert len(same_pairs(client, layer)) > 200
+
+
+def test_pairs_of_two_layers(client, rng):
+    first, second = layer_of(rng, 50, spread=10.0), parcels(rng, 5, 9) + straddling(rng, 6)
+    same_pairs(client, first, second)
+    same_pairs(client, second, first, number_type="double")
+
+
+@pytest.mark.parametrize("within", [0.25, 1.5])
+def test_pairs_within_a_distance(client, rng, within):
+    layer = [star_polygon(rng, 8, radius=0.4, center=(rng.uniform(0, 12), rng.uniform(0, 12))) for _ in range(80)]
+    assert len(same_pairs(client, layer, within=within)) > len(same_pairs(client, layer))
+    same_pairs(client, layer, [shapely.affinity.translate(g, 0.3, 0.1) for g in layer[:30]], within=within,
+               number_type="double")
+
+
+def test_pairs_of_few_polygons_and_of_none(client):
+    square = shapely.geometry.box(0, 0, 1, 1)
+    same_pairs(client, [square])
+    same_pairs(client, [square, square])
+    same_pairs(client, [square], [square, square])
+    assert influence2d.dask.pairs([], client=client).shape == (0, 2)
+    assert influence2d.dask.pairs([square], [], client).shape == (0, 2)
+
+
+def test_pairs_of_a_series_use_positions(client):
+    layer = pd.Series([shapely.geometry.box(k, 0, k + 1, 1) for k in range(5)], index=list("abcde"))
+    assert influence2d.dask.pairs(layer, client=client, partitions=2).tolist() == [[0, 1], [1, 2], [2, 3], [3, 4]]
+
+
+# --- study -------------------------------------------------------------------
+
+STUDY = dict(families=["convex", "sliver", "offset_sweep", "scale_sweep", "subnormal"],
+             types=["float", "double", "certified"], frames=12, query_frames=6, cases=2)
+TIMES = ("ns_per_query", "ns_per_question")
+
+
+def assert_same_study(got, want):
+    """Every table the same, but for the measured times."""
+    assert got.keys() == want.keys()
+    for name in want:
+        pandas.testing.assert_frame_equal(got[name].drop(columns=list(TIMES), errors="ignore"),
+                                          want[name].drop(columns=list(TIMES), errors="ignore"), obj=name)
+
+
+def test_study_is_the_single_process_study(client):
+    want = influence2d.study(**STUDY)
+    got = influence2d.dask.study(**STUDY, client=client)
+    assert_same_study(got, want)
+    # What the comparison covers: sweeps, refused scenes, examples cut at the kept count.
+    assert len(want["stability"]) > 0 and want["summaries"]["refused_scenes"].sum() > 0
+    assert want["examples"].groupby(["number_type", "decision"]).size().max() == influence2d.dask.STUDY_EXAMPLES_KEPT
+
+
+def test_study_with_families_in_another_order_and_no_queries(client):
+    args = dict(STUDY, families=["scale_sweep", "convex", "offset_sweep"], queries=[], decisions=["collides", "mask"],
+                seed=7)
+    assert_same_study(influence2d.dask.study(**args, client=client), influence2d.study(**args))
+
+
+# --- bad input ---------------------------------------------------------------
+
+SQUARE = shapely.geometry.box(0, 0, 1, 1)
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda c: influence2d.dask.audit(POLYGONS, "tcp://scheduler:8786"), "client: expected a distributed.Client"),
+    (lambda c: influence2d.dask.audit(POLYGONS, c, chunk_size=0), "chunk_size is 0"),
+    (lambda c: influence2d.dask.audit(POLYGONS, c, chunk_size=2.5), "chunk_size is 2.5"),
+    (lambda c: influence2d.dask.audit(POLYGONS[0], c), "geoms: expected a sequence of polygons, got one str"),
+    (lambda c: influence2d.dask.audit(POLYGONS + [shapely.geometry.Point(0, 0)], c), f"geoms[{len(POLYGONS)}]"),
+    (lambda c: influence2d.dask.audit(POLYGONS + [3], c), f"geoms[{len(POLYGONS)}]"),
+    (lambda c: influence2d.dask.pairs([SQUARE]), "client: expected a distributed.Client, got NoneType"),
+    (lambda c: influence2d.dask.pairs([SQUARE], client=c, within=-1.0), "distance"),
+    (lambda c: influence2d.dask.pairs([SQUARE], client=c, within="far"), "within: expected a number"),
+    (lambda c: influence2d.dask.pairs([SQUARE], client=c, number_type="float"), "number_type 'float'"),
+    (lambda c: influence2d.dask.pairs([SQUARE], client=c, partitions=0), "partitions is 0"),
+    (lambda c: influence2d.dask.pairs([SQUARE, "POLYGON ((0 0, 1 0))"], client=c), "layer[1]"),
+    (lambda c: influence2d.dask.pairs([SQUARE], [SQUARE, None], c), "other[1]"),
+    (lambda c: influence2d.dask.pairs(SQUARE, client=c), "layer: expected a sequence of polygons"),
+    (lambda c: influence2d.dask.study(families=["convex", "cubic"], client=c), "families[1] is 'cubic'"),
+    (lambda c: influence2d.dask.study(families=["convex", "convex"], client=c), "families[1] is 'convex', named twice"),
+    (lambda c: influence2d.dask.study(types=["double", "decimal"], client=c), "types[1] is 'decimal'"),
+    (lambda c: influence2d.dask.study(queries=["volume"], client=c), "queries[0] is 'volume'"),
+    (lambda c: influence2d.dask.study(frames=0, client=c), "frames is 0"),
+    (lambda c: influence2d.dask.study(cases=-1, client=c), "cases is -1"),
+    (lambda c: influence2d.dask.study(), "client: expected a distributed.Client, got NoneType"),
+])
+def test_bad_input_is_refused_naming_the_value(client, call, message):
+    with pytest.raises(influence2d.InvalidInput) as e:
+        call(client)
+    assert message in str(e.value)
+
+
+def test_the_package_does_not_import_distributed():
+    code = "import sys, influence2d; assert 'distributed' not in sys.modules; influence2d.dask.pairs"
+    subprocess.run([sys.executable, "-c", code], check=True, env=dict(os.environ))
