@@ -207,3 +207,24 @@ def test_bad_input_is_refused_naming_the_value(client, call, message):
 def test_the_package_does_not_import_distributed():
     code = "import sys, influence2d; assert 'distributed' not in sys.modules; influence2d.dask.pairs"
     subprocess.run([sys.executable, "-c", code], check=True, env=dict(os.environ))
+
+
+# --- the README --------------------------------------------------------------
+
+def readme_dask_example():
+    """The README's Python block that uses influence2d.dask."""
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    with open(os.path.join(root, "README.md")) as f:
+        blocks = f.read().split("```python\n")[1:]
+    found = [b.split("```")[0] for b in blocks if "influence2d.dask" in b]
+    assert len(found) == 1, "the README shows one Dask example"
+    return found[0]
+
+
+def test_the_readme_dask_example_runs(tmp_path):
+    """As a script of its own (its workers are processes that import it)."""
+    (tmp_path / "example.py").write_text(readme_dask_example())
+    r = subprocess.run([sys.executable, str(tmp_path / "example.py")], capture_output=True, text=True,
+                       cwd=tmp_path, timeout=120)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == "39402 [[10000, 'reversed_orientation']] [720, 720]"
