@@ -207,6 +207,23 @@ def _partition_pairs(parts_a, parts_b, reach):
             if _boxes_meet(parts_a[p][1], parts_b[q][1], reach)]
 
 
+def _join_tasks(client, first, second, within, number_type, threads, count):
+    """The layers cut into partitions and scattered, and one task per two
+    partitions whose boxes come within ``within`` (``second`` None: one
+    layer)."""
+    boxes_a = _boxes(first)
+    boxes_b = None if second is None else _boxes(second)
+    every = boxes_a if second is None else np.concatenate((boxes_a, boxes_b))
+    extent = (every[:, 0].min(), every[:, 1].min(), every[:, 2].max(), every[:, 3].max())
+    parts_a = _partitions(boxes_a, extent, count)
+    parts_b = None if second is None else _partitions(boxes_b, extent, count)
+    sent_a = _scattered(client, first, parts_a)
+    sent_b = sent_a if second is None else _scattered(client, second, parts_b)
+    return [client.submit(_join_partitions, sent_a[p], sent_b[q], _kind(p, q, second is None), within, number_type,
+                          threads, pure=False)
+            for p, q in _partition_pairs(parts_a, parts_b, _reach(every, within))]
+
+
 def pairs(layer, other=None, client=None, within=0.0, number_type="certified", partitions=None, threads=1):
     """The same (k, 2) int64 array as :func:`influence2d.pairs` (positions,
     sorted), found on the workers: each layer is cut into ``partitions``
@@ -234,20 +251,10 @@ def pairs(layer, other=None, client=None, within=0.0, number_type="certified", p
     second = None if other is None else as_polygons(_sequence(other, "other"), "other")
     _local_pairs([], None if other is None else [], within, number_type, 1)  # within and number_type checked
     within = float(within)
-    count = 2 * sum(client.nthreads().values()) if partitions is None else _count(partitions, "partitions")
+    count = max(1, 2 * sum(client.nthreads().values())) if partitions is None else _count(partitions, "partitions")
     if not first or second is not None and not second:
         return np.empty((0, 2), dtype=np.int64)
-    boxes_a = _boxes(first)
-    boxes_b = None if second is None else _boxes(second)
-    every = boxes_a if second is None else np.concatenate((boxes_a, boxes_b))
-    extent = (every[:, 0].min(), every[:, 1].min(), every[:, 2].max(), every[:, 3].max())
-    parts_a = _partitions(boxes_a, extent, count)
-    parts_b = None if second is None else _partitions(boxes_b, extent, count)
-    sent_a = _scattered(client, first, parts_a)
-    sent_b = sent_a if second is None else _scattered(client, second, parts_b)
-    tasks = [client.submit(_join_partitions, sent_a[p], sent_b[q], _kind(p, q, second is None), within,
-                           number_type, threads, pure=False)
-             for p, q in _partition_pairs(parts_a, parts_b, _reach(every, within))]
+    tasks = _join_tasks(client, first, second, within, number_type, threads, count)
     found = np.concatenate([np.empty((0, 2), dtype=np.int64)] + client.gather(tasks)).astype(np.int64, copy=False)
     return found[np.lexsort((found[:, 1], found[:, 0]))]
 
