@@ -25,6 +25,9 @@ __all__ = ["audit", "pairs", "study"]
 #: (or query): the command's and the package's fixed count.
 STUDY_EXAMPLES_KEPT = 3
 
+#: The audit's columns of text, a few values each.
+_AUDIT_TEXTS = ("kind", "what", "effect")
+
 
 # --- Checks -----------------------------------------------------------------
 
@@ -63,11 +66,21 @@ def _audit_chunk(items, start, max_per_kind, threads, columns):
     """The findings of one chunk (items as the audit reads them), each row
     with its polygon's position in the whole layer: a frame of Python
     objects (column types are inferred once, over the whole layer, as the
-    single-process audit infers them; a frame travels faster than rows)."""
+    single-process audit infers them; a frame travels faster than rows),
+    its texts as categories (each text sent once)."""
     import pandas as pd
     reports = _core.audit(items, "geoms", max_per_kind, threads)
     rows = [dict(polygon=start + k, **f) for k, r in enumerate(reports) for f in r["findings"]]
-    return pd.DataFrame(rows, columns=columns, dtype=object)
+    frame = pd.DataFrame(rows, columns=columns, dtype=object)
+    return frame.astype({c: "category" for c in _AUDIT_TEXTS})
+
+
+def _audit_frame(frames):
+    """The chunks' findings as one frame, typed as the single-process audit
+    types its columns (texts as objects, the others inferred)."""
+    import pandas as pd
+    frame = pd.concat(frames, ignore_index=True)
+    return frame.astype({c: object for c in _AUDIT_TEXTS}).infer_objects()
 
 
 def audit(geoms, client, chunk_size=1000, max_per_kind=50, threads=1):
@@ -103,7 +116,7 @@ def audit(geoms, client, chunk_size=1000, max_per_kind=50, threads=1):
     found = [frame for frame in client.gather(tasks) if len(frame)]
     if not found:
         return pd.DataFrame([], columns=columns)
-    return pd.concat(found, ignore_index=True).infer_objects()
+    return _audit_frame(found)
 
 
 # --- pairs ------------------------------------------------------------------
