@@ -23,9 +23,7 @@ thread, no Dask) are timed beside them. Run it alone on the machine:
 
 import argparse
 import os
-import statistics
 import sys
-import time
 
 import numpy as np
 import pandas.testing

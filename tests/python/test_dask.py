@@ -4,7 +4,6 @@ LocalCluster (two workers of one thread, in processes and in threads) give
 what the single-process calls give; bad input is refused before any task."""
 
 import os
-import random
 import subprocess
 import sys
 
