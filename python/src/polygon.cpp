@@ -102,29 +102,47 @@ py_polygon from_coords(const py::array& coords,
     return from_rings(std::move(out), "coords");
 }
 
-/// The rings as given, for pickling: (role, x0, y0, x1, y1, ...) per ring.
-py::list state_of(const py_polygon& p) {
-    py::list rings;
+/// The rings as given, for pickling, in three byte strings: each ring's
+/// role (1 byte: 0 outer, 1 hole), each ring's point count (uint64), and
+/// every point's x and y (float64), in the machine's byte order. A layer
+/// of 100,000 polygons pickles without one Python float made.
+py::tuple state_of(const py_polygon& p) {
+    std::string roles, counts, xy;
     for (const wkt_ring& r : p.source) {
-        std::vector<double> xy;
+        roles.push_back(r.role == ring_role::outer ? 0 : 1);
+        const std::uint64_t n = r.points.size();
+        counts.append(reinterpret_cast<const char*>(&n), sizeof n);
         for (const point<double>& q : r.points) {
-            xy.push_back(q.x);
-            xy.push_back(q.y);
+            xy.append(reinterpret_cast<const char*>(&q.x), sizeof q.x);
+            xy.append(reinterpret_cast<const char*>(&q.y), sizeof q.y);
         }
-        rings.append(py::make_tuple(r.role == ring_role::outer ? 0 : 1, xy));
     }
-    return rings;
+    return py::make_tuple(py::bytes(roles), py::bytes(counts), py::bytes(xy));
 }
 
-py_polygon from_state(const py::list& rings) {
-    std::vector<wkt_ring> source;
-    for (const py::handle& h : rings) {
-        const auto t = h.cast<std::pair<int, std::vector<double>>>();
-        wkt_ring r;
-        r.role = t.first == 0 ? ring_role::outer : ring_role::hole;
-        for (std::size_t k = 0; k + 1 < t.second.size(); k += 2) r.points.push_back({t.second[k], t.second[k + 1]});
-        source.push_back(std::move(r));
+py_polygon from_state(const py::tuple& state) {
+    if (state.size() != 3) throw invalid_input("pickle: expected 3 byte strings, got " + std::to_string(state.size()));
+    const std::string roles = state[0].cast<std::string>(), counts = state[1].cast<std::string>(),
+                      xy = state[2].cast<std::string>();
+    if (counts.size() != roles.size() * sizeof(std::uint64_t))
+        throw invalid_input("pickle: " + std::to_string(roles.size()) + " rings but " + std::to_string(counts.size()) +
+                            " bytes of counts");
+    std::vector<wkt_ring> source(roles.size());
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < roles.size(); ++k) {
+        std::uint64_t n = 0;
+        std::memcpy(&n, counts.data() + k * sizeof n, sizeof n);
+        if (n > (xy.size() - at) / (2 * sizeof(double)))
+            throw invalid_input("pickle: ring " + std::to_string(k) + " runs past the coordinates");
+        source[k].role = roles[k] == 0 ? ring_role::outer : ring_role::hole;
+        source[k].points.resize(n);
+        for (point<double>& q : source[k].points) {
+            std::memcpy(&q.x, xy.data() + at, sizeof q.x);
+            std::memcpy(&q.y, xy.data() + at + sizeof q.x, sizeof q.y);
+            at += 2 * sizeof(double);
+        }
     }
+    if (at != xy.size()) throw invalid_input("pickle: coordinates left over after the last ring");
     return from_rings(std::move(source), "pickle");
 }
 

@@ -83,6 +83,27 @@ def test_pickle_keeps_the_rings_as_given():
     assert influence2d.audit(q) == influence2d.audit(p)
 
 
+def test_pickle_of_multipolygons_with_holes_round_trips():
+    p = Polygon.from_wkt("MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 2, 2 2, 2 1, 1 1)),"
+                         " ((10 10, 11 10, 10 11, 10 10)))")
+    q = pickle.loads(pickle.dumps(p))
+    assert q.to_wkt() == p.to_wkt()
+    assert q.num_rings == 3 and q.num_vertices == p.num_vertices
+
+
+@pytest.mark.parametrize("state, message", [
+    ((b"\x00", b"\x05" + bytes(7), bytes(16)), "runs past the coordinates"),
+    ((b"", b"", b"x"), "left over"),
+    ((b"\x00",), "expected 3 byte strings"),
+    ((b"\x00\x00", bytes(8), bytes(0)), "2 rings but 8 bytes of counts"),
+])
+def test_a_corrupt_pickle_is_refused(state, message):
+    from influence2d import _core
+    fresh = _core.Polygon.__new__(_core.Polygon)
+    with pytest.raises(InvalidInput, match=message):
+        fresh.__setstate__(state)
+
+
 def test_repr_names_the_wkt():
     assert "POLYGON((0 0,1 0,0 1,0 0))" in repr(Polygon.from_wkt("POLYGON ((0 0, 1 0, 0 1, 0 0))"))
 
