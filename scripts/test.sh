@@ -7,7 +7,10 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/deps.sh"
 bash "$root/scripts/build.sh" "$root/build"
 (cd "$root/build" && ctest --output-on-failure --no-tests=error -j "$(nproc)")
-bash "$root/scripts/build.sh" "$root/build-sanitize" -DINFLUENCE2D_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
+# Built at -O1 with line tables only (-g1): the reports still name file and
+# line, and the build takes about 2.5x less time than -O2 -g.
+bash "$root/scripts/build.sh" "$root/build-sanitize" -DINFLUENCE2D_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
 # Instrumented code runs several times slower: the heavy tests draw fewer random frames.
 (cd "$root/build-sanitize" && INFLUENCE2D_TEST_EFFORT=0.25 ctest --output-on-failure --no-tests=error -j "$(nproc)")
 # A short fuzz run (clang, libFuzzer, ASan + UBSan): each target for
