@@ -4,7 +4,8 @@
 set -euo pipefail
 packages=(g++ cmake make clang-format libcgal-dev libgmp-dev libmpfr-dev libboost-dev catch2 libcli11-dev nlohmann-json3-dev gnuplot-nox
     libgeos-dev libbox2d-dev doxygen
-    pybind11-dev python3-dev python3-numpy python3-shapely python3-pandas python3-dask python3-distributed python3-pytest)
+    pybind11-dev python3-dev python3-numpy python3-shapely python3-pandas python3-dask python3-distributed python3-pytest
+    python3-geopandas)
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
