@@ -74,6 +74,13 @@ def np_rng():
     return np.random.default_rng(20240601)
 
 
+def random_poses(np_rng, n, reach, turn):
+    """n poses (tx, ty, theta): tx and ty uniform in [-reach, reach], theta
+    in [-turn, turn], drawn column by column."""
+    return np.column_stack([np_rng.uniform(-reach, reach, n), np_rng.uniform(-reach, reach, n),
+                            np_rng.uniform(-turn, turn, n)])
+
+
 def tool_frames(tool, directory, a, b, poses, *options):
     """`influence2d collide` on shapely polygons A and B at the poses, with
     the options given: its FRAMES.csv rows, each a list of its columns."""

@@ -13,7 +13,7 @@ import shapely.wkt
 
 import influence2d
 import exact_reference
-from conftest import star_polygon, tool_frames
+from conftest import random_poses, star_polygon, tool_frames
 
 EXACT_TYPES = ("certified", "exact")
 
@@ -58,7 +58,7 @@ def test_intersects_exact_at_touching_translations(rng, number_type):
 def test_intersects_exact_at_random_turned_poses(np_rng, rng, number_type):
     a = star_polygon(rng, 12)
     b = star_polygon(rng, 9, radius=0.7)
-    poses = np.column_stack([np_rng.uniform(-2, 2, 200), np_rng.uniform(-2, 2, 200), np_rng.uniform(-4, 4, 200)])
+    poses = random_poses(np_rng, 200, 2, 4)
     got = influence2d.intersects(a, b, poses, number_type=number_type)
     assert got.tolist() == [exact_reference.intersects(a, b, p) for p in poses]
 
@@ -66,7 +66,7 @@ def test_intersects_exact_at_random_turned_poses(np_rng, rng, number_type):
 def test_intersects_agrees_with_shapely_away_from_contact(np_rng, rng):
     a = star_polygon(rng, 20)
     b = star_polygon(rng, 12, radius=0.5)
-    poses = np.column_stack([np_rng.uniform(-2, 2, 300), np_rng.uniform(-2, 2, 300), np_rng.uniform(-4, 4, 300)])
+    poses = random_poses(np_rng, 300, 2, 4)
     for number_type in ("double", "certified", "exact"):
         got = influence2d.intersects(a, b, poses, number_type=number_type)
         for k, p in enumerate(poses):
@@ -120,7 +120,7 @@ def test_role_swap_gives_the_same_answers(rng):
 def test_threads_do_not_change_the_answers(np_rng, rng):
     a = star_polygon(rng, 30)
     b = star_polygon(rng, 30, radius=0.8)
-    poses = np.column_stack([np_rng.uniform(-2, 2, 2000), np_rng.uniform(-2, 2, 2000), np_rng.uniform(-4, 4, 2000)])
+    poses = random_poses(np_rng, 2000, 2, 4)
     one = influence2d.intersects(a, b, poses, threads=1)
     assert (influence2d.intersects(a, b, poses, threads=0) == one).all()
     assert (influence2d.intersects(a, b, poses, threads=3) == one).all()
@@ -166,7 +166,7 @@ def test_detector_within_is_a_distance():
 def test_separation_against_shapely_and_the_tool(tool, tmp_path, rng, np_rng):
     a = star_polygon(rng, 16)
     b = star_polygon(rng, 10, radius=0.5)
-    poses = np.column_stack([np_rng.uniform(-3, 3, 100), np_rng.uniform(-3, 3, 100), np_rng.uniform(-3, 3, 100)])
+    poses = random_poses(np_rng, 100, 3, 3)
     for number_type in ("double", "certified", "exact"):
         d = influence2d.separation(a, b, poses, number_type=number_type)
         for k, p in enumerate(poses):
