@@ -104,9 +104,9 @@ bool edge_witness_holds(const meeting& last, const body_view<NT>& a, const body_
 /// showed it at the last step (kind none when they were apart or the pair
 /// is new): it is tried first, then the one-shot test (placed_within,
 /// seeking the witness `prefer` first); `*by_witness`, when given, says
-/// whether `last` answered. Exact
-/// when NT is. With Exact not void, a sign NT cannot settle (uncertain_sign)
-/// makes the pair answered again in Exact, both bodies posed anew in it.
+/// whether `last` answered. Exact when NT is. With Exact not void, a sign
+/// NT cannot settle (uncertain_sign) makes the pair answered again in
+/// Exact, both bodies posed anew in it.
 ///
 ///   last still holds (witness_holds):    last
 ///   else placed_within on the placed bodies, with the margin of their
