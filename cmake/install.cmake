@@ -20,5 +20,12 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/influence2dConfigVersion.
 install(FILES ${PROJECT_BINARY_DIR}/influence2dConfig.cmake ${PROJECT_BINARY_DIR}/influence2dConfigVersion.cmake
     DESTINATION ${INFLUENCE2D_CMAKE_DIR})
 
+# Built with oneTBB: its workers run the parallel calls.
+set(INFLUENCE2D_PC_CFLAGS "")
+set(INFLUENCE2D_PC_LIBS "")
+if(INFLUENCE2D_WITH_TBB)
+    set(INFLUENCE2D_PC_CFLAGS " -DINFLUENCE2D_USE_TBB")
+    set(INFLUENCE2D_PC_LIBS " -ltbb")
+endif()
 configure_file(${PROJECT_SOURCE_DIR}/cmake/influence2d.pc.in ${PROJECT_BINARY_DIR}/influence2d.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/influence2d.pc DESTINATION ${CMAKE_INSTALL_DATADIR}/pkgconfig)

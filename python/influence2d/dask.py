@@ -179,9 +179,15 @@ def _at(found, at_a, at_b):
     return np.column_stack((at_a[found[:, 0]], at_b[found[:, 1]]))
 
 
+def _layer_pairs(first, second, within, number_type, threads):
+    """The (k, 2) local index pairs of two packed partitions (_core.Layer;
+    ``second`` None: within ``first``); the arguments checked by the caller."""
+    return _core.pairs(first, second, within, number_type, threads).reshape(-1, 2).astype(np.int64, copy=False)
+
+
 def _join_partitions(first, second, kind, within, number_type, threads):
-    """One task: the pairs between two partitions, (polygons, positions)
-    each, at the positions of the whole layers. ``kind``: "same" (one
+    """One task: the pairs between two partitions, (packed polygons,
+    positions) each, at the positions of the whole layers. ``kind``: "same" (one
     partition of one layer: i < j), "layer" (two partitions of one layer:
     each pair as (lower, higher)) or "layers" (one of each layer). Within one
     layer a pair is tested with its lower position first, as the
@@ -189,20 +195,23 @@ def _join_partitions(first, second, kind, within, number_type, threads):
     order, so in double each way is asked and kept where it is that order."""
     polys_a, at_a = first
     if kind == "same":
-        return _at(_local_pairs(polys_a, None, within, number_type, threads), at_a, at_a)
+        return _at(_layer_pairs(polys_a, None, within, number_type, threads), at_a, at_a)
     polys_b, at_b = second
-    out = _at(_local_pairs(polys_a, polys_b, within, number_type, threads), at_a, at_b)
+    out = _at(_layer_pairs(polys_a, polys_b, within, number_type, threads), at_a, at_b)
     if kind == "layers":
         return out
     if number_type != "double":
         return np.sort(out, axis=1)
-    back = _at(_local_pairs(polys_b, polys_a, within, number_type, threads), at_b, at_a)
+    back = _at(_layer_pairs(polys_b, polys_a, within, number_type, threads), at_b, at_a)
     return np.concatenate((out[out[:, 0] < out[:, 1]], back[back[:, 0] < back[:, 1]]))
 
 
 def _scattered(client, polygons, parts):
-    """Each partition's (polygons, positions) sent to the workers once."""
-    return client.scatter([([polygons[i] for i in members], members) for members, _ in parts], hash=False)
+    """Each partition's (polygons, positions) sent to the workers once, its
+    polygons packed in one _core.Layer (a few flat byte strings, not one
+    pickled object per polygon)."""
+    return client.scatter([(_core.Layer([polygons[i]._p for i in members]), members) for members, _ in parts],
+                          hash=False)
 
 
 def _kind(p, q, one_layer):
@@ -352,9 +361,12 @@ def study(families=None, types=None, decisions=None, queries=None, cases=1, fram
     same as the single run's (integer sums, rows whole), every table in its
     order; only the measured times (``ns_per_query``, ``ns_per_question``)
     are the workers' own. Each family's scenes are drawn from the seed and
-    the family alone, which is what lets a family run apart; the frames of
-    one scene are drawn in sequence from one generator, so a family is not
-    split further.
+    the family alone, which is what lets a family run apart. A family's
+    frames are not split among tasks: a rounded type's answer to a frame
+    may depend on the frames its evaluator answered before (the coherence
+    of its detector, parts built on first use), so a task that started at
+    a later frame could count other disagreements (float's masks on
+    ``scale_sweep`` did: 68 against 66).
 
     >>> from distributed import Client, LocalCluster
     >>> import influence2d.dask

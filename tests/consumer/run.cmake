@@ -2,8 +2,8 @@
 # The test package_consumer: installs the library from BUILD_DIR into a fresh
 # prefix under WORK_DIR, then configures, builds and runs tests/consumer three
 # ways (find_package of the installed package, add_subdirectory, FetchContent),
-# and compiles the README's example and the adapter use with the flags
-# pkg-config gives.
+# and compiles the README's example and the adapter use with the flags and
+# libraries pkg-config gives.
 #   cmake -DSOURCE_DIR=... -DBUILD_DIR=... -DWORK_DIR=... -DCXX=... -P run.cmake
 function(run)
     execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -45,10 +45,13 @@ if(PKG_CONFIG)
     run(${PKG_CONFIG} --cflags influence2d)
     string(STRIP "${run_output}" cflags)
     separate_arguments(cflags UNIX_COMMAND "${cflags}")
-    run(${CXX} ${cflags} ${SOURCE_DIR}/tests/examples/readme_example.cpp -o ${WORK_DIR}/readme_example_pc)
+    run(${PKG_CONFIG} --libs influence2d)
+    string(STRIP "${run_output}" libs)
+    separate_arguments(libs UNIX_COMMAND "${libs}")
+    run(${CXX} ${cflags} ${SOURCE_DIR}/tests/examples/readme_example.cpp ${libs} -o ${WORK_DIR}/readme_example_pc)
     run(${WORK_DIR}/readme_example_pc)
     message(STATUS "pkg-config: ${run_output}")
-    run(${CXX} ${cflags} ${SOURCE_DIR}/tests/consumer/adapters.cpp -o ${WORK_DIR}/adapters_pc)
+    run(${CXX} ${cflags} ${SOURCE_DIR}/tests/consumer/adapters.cpp ${libs} -o ${WORK_DIR}/adapters_pc)
     run(${WORK_DIR}/adapters_pc)
     message(STATUS "pkg-config: ${run_output}")
 else()

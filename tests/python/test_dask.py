@@ -139,6 +139,28 @@ def test_pairs_of_a_series_use_positions(client):
     assert influence2d.dask.pairs(layer, client=client, partitions=2).tolist() == [[0, 1], [1, 2], [2, 3], [3, 4]]
 
 
+def test_a_packed_partition_pickles_whole_and_joins_as_its_polygons(rng):
+    import pickle
+    layer = [influence2d.Polygon.from_shapely(star_polygon(rng, 3 + k % 9, 1.0, ((k % 4) * 0.7, (k // 4) * 0.7)))
+             for k in range(24)]
+    layer += [influence2d.Polygon.from_wkt("MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 3, 3 3, 3 1, 1 1)), "
+                                           "((5 5, 6 5, 6 6, 5 5)))")]
+    core = [p._p for p in layer]
+    packed = pickle.loads(pickle.dumps(influence2d._core.Layer(core)))
+    assert len(packed) == len(layer)
+    for number_type in ("double", "certified"):
+        want = influence2d._core.pairs(core, None, 0.0, number_type, 1)
+        assert np.array_equal(influence2d._core.pairs(packed, None, 0.0, number_type, 1), want)
+        assert np.array_equal(influence2d._core.pairs(packed, packed, 0.25, number_type, 1),
+                              influence2d._core.pairs(core, core, 0.25, number_type, 1))
+    state = influence2d._core.Layer(core).__getstate__()
+    for bad, message in [(state[:3], "expected 4 byte strings"), ((state[0], state[1], state[2], state[3][:-8]),
+                         "coordinates run short"), ((state[0] + b"\0" * 7, *state[1:]), "ring counts run short"),
+                         ((state[0], state[1] + b"\0", state[2], state[3]), "left over")]:
+        with pytest.raises(influence2d.InvalidInput, match=message):
+            influence2d._core.Layer.__new__(influence2d._core.Layer).__setstate__(bad)
+
+
 # --- study -------------------------------------------------------------------
 
 STUDY = dict(families=["convex", "sliver", "offset_sweep", "scale_sweep", "subnormal"],

@@ -454,6 +454,15 @@ private:
         return out;
     }
 
+    // The least work shared among threads. A parallel call costs about
+    // 4 us with oneTBB's waiting workers and 50 us when std::threads are
+    // started and joined (query/batch.hpp), so a call must bring some 100 us
+    // of work: 256 bodies to place, 1024 edge witnesses to retest (the
+    // cheapest test, four vertices posed) or 32 pairs for bodies_within
+    // (chosen on the time study's scenes of 1000 bodies: below them, two
+    // threads made the falling and convex scenes slower than one).
+    static constexpr std::size_t parallel_placings = 512, parallel_witness_tests = 2048, parallel_pair_tests = 128;
+
     // Body i's polygon and pose, without its placing (pass 1).
     body_view<NT> posed(body_id i) const {
         const body& b = bodies_[i];
@@ -486,9 +495,8 @@ private:
                 b.all_made = b.all_made || make_all;
                 asked.push_back({i, repose});
             }
-        constexpr std::size_t bodies_per_thread = 256;
-        const unsigned threads = asked.size() < bodies_per_thread * 2 ? 1u : options_.threads;
-        run_in_blocks(asked.size(), threads, [&](std::size_t first, std::size_t last) {
+        const unsigned threads = asked.size() < parallel_placings ? 1u : options_.threads;
+        run_in_chunks(asked.size(), threads, 64, [&](std::size_t first, std::size_t last) {
             for (std::size_t k = first; k < last; ++k) {
                 body& b = bodies_[asked[k].id];
                 if (asked[k].repose) {
@@ -514,9 +522,8 @@ private:
     //           located vertex found when no edges met (one body in the
     //           other) is tried first
     void narrow(std::vector<record>& tested) {
-        constexpr std::size_t pairs_per_thread = 64;
-        const unsigned threads = tested.size() < pairs_per_thread * 2 ? 1u : options_.threads;
-        run_in_blocks(tested.size(), threads, [&](std::size_t first, std::size_t last) {
+        const unsigned threads = tested.size() < parallel_witness_tests ? 1u : options_.threads;
+        run_in_chunks(tested.size(), threads, 256, [&](std::size_t first, std::size_t last) {
             for (std::size_t k = first; k < last; ++k) {
                 record& r = tested[k];
                 if (r.shown.how != meeting::kind::edges) continue;
@@ -527,9 +534,9 @@ private:
         std::vector<std::size_t> left;
         for (std::size_t k = 0; k < tested.size(); ++k)
             if (!tested[k].by_witness) left.push_back(k);
-        const unsigned threads_left = left.size() < pairs_per_thread * 2 ? 1u : batch_threads(options_.threads);
+        const unsigned threads_left = left.size() < parallel_pair_tests ? 1u : batch_threads(options_.threads);
         place_candidates(tested, left, threads_left > 1);
-        run_in_blocks(left.size(), threads_left, [&](std::size_t first, std::size_t last) {
+        run_in_chunks(left.size(), threads_left, 16, [&](std::size_t first, std::size_t last) {
             for (std::size_t k = first; k < last; ++k) {
                 record& r = tested[left[k]];
                 const meeting contained = r.no_crossing ? r.shown : meeting{};
