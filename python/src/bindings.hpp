@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <pybind11/numpy.h>
@@ -25,6 +26,17 @@ struct py_polygon {
     polygon shape;
     std::vector<wkt_ring> source;
 };
+
+/// Rings as given, in flat byte strings for pickling (a Polygon's and a
+/// Layer's): each ring's role (1 byte: 0 outer, 1 hole) appended to
+/// `roles`, its point count (uint64) to `counts`, every point's x and y
+/// (float64) to `xy`, in the machine's byte order; no Python float made.
+void append_ring_bytes(const std::vector<wkt_ring>& rings, std::string& roles, std::string& counts, std::string& xy);
+
+/// The ring of role byte `role` and `n` points read from `xy` at `at`
+/// (advanced past them), as append_ring_bytes wrote it; the caller has
+/// checked that the n points lie within xy.
+wkt_ring ring_from_bytes(char role, std::size_t n, std::string_view xy, std::size_t& at);
 
 /// The number types a query runs in.
 enum class number_kind { double_type, certified_type, exact_type };

@@ -44,23 +44,12 @@ py_layer layer_from(const py::sequence& items) {
     return out;
 }
 
-template <class T>
-void append_raw(std::string& to, const T& value) {
-    to.append(reinterpret_cast<const char*>(&value), sizeof value);
-}
-
 py::tuple layer_state(const py_layer& l) {
     std::string ring_counts, roles, point_counts, xy;
     for (const std::vector<wkt_ring>& rings : l.rings) {
-        append_raw(ring_counts, static_cast<std::uint64_t>(rings.size()));
-        for (const wkt_ring& r : rings) {
-            roles.push_back(r.role == ring_role::outer ? 0 : 1);
-            append_raw(point_counts, static_cast<std::uint64_t>(r.points.size()));
-            for (const point<double>& q : r.points) {
-                append_raw(xy, q.x);
-                append_raw(xy, q.y);
-            }
-        }
+        const std::uint64_t n = rings.size();
+        ring_counts.append(reinterpret_cast<const char*>(&n), sizeof n);
+        append_ring_bytes(rings, roles, point_counts, xy);
     }
     return py::make_tuple(py::bytes(ring_counts), py::bytes(roles), py::bytes(point_counts), py::bytes(xy));
 }
@@ -87,15 +76,10 @@ py_layer layer_from_state(const py::tuple& state) {
         if (n_rings > roles.size() - at_role) throw invalid_input("Layer pickle: the ring roles run short");
         std::vector<wkt_ring> rings(n_rings);
         for (wkt_ring& r : rings) {
-            r.role = roles[at_role++] == 0 ? ring_role::outer : ring_role::hole;
             const auto n = read_raw<std::uint64_t>(point_counts, at_counts, "the point counts");
             if (n > (xy.size() - at_xy) / (2 * sizeof(double)))
                 throw invalid_input("Layer pickle: the coordinates run short");
-            r.points.resize(n);
-            for (point<double>& q : r.points) {
-                q.x = read_raw<double>(xy, at_xy, "the coordinates");
-                q.y = read_raw<double>(xy, at_xy, "the coordinates");
-            }
+            r = ring_from_bytes(roles[at_role++], n, xy, at_xy);
         }
         out.shapes.push_back(polygon_of_rings(rings, "Layer pickle"));
         out.rings.push_back(std::move(rings));

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -102,21 +103,9 @@ py_polygon from_coords(const py::array& coords,
     return from_rings(std::move(out), "coords");
 }
 
-/// The rings as given, for pickling, in three byte strings: each ring's
-/// role (1 byte: 0 outer, 1 hole), each ring's point count (uint64), and
-/// every point's x and y (float64), in the machine's byte order. A layer
-/// of 100,000 polygons pickles without one Python float made.
 py::tuple state_of(const py_polygon& p) {
     std::string roles, counts, xy;
-    for (const wkt_ring& r : p.source) {
-        roles.push_back(r.role == ring_role::outer ? 0 : 1);
-        const std::uint64_t n = r.points.size();
-        counts.append(reinterpret_cast<const char*>(&n), sizeof n);
-        for (const point<double>& q : r.points) {
-            xy.append(reinterpret_cast<const char*>(&q.x), sizeof q.x);
-            xy.append(reinterpret_cast<const char*>(&q.y), sizeof q.y);
-        }
-    }
+    append_ring_bytes(p.source, roles, counts, xy);
     return py::make_tuple(py::bytes(roles), py::bytes(counts), py::bytes(xy));
 }
 
@@ -134,19 +123,37 @@ py_polygon from_state(const py::tuple& state) {
         std::memcpy(&n, counts.data() + k * sizeof n, sizeof n);
         if (n > (xy.size() - at) / (2 * sizeof(double)))
             throw invalid_input("pickle: ring " + std::to_string(k) + " runs past the coordinates");
-        source[k].role = roles[k] == 0 ? ring_role::outer : ring_role::hole;
-        source[k].points.resize(n);
-        for (point<double>& q : source[k].points) {
-            std::memcpy(&q.x, xy.data() + at, sizeof q.x);
-            std::memcpy(&q.y, xy.data() + at + sizeof q.x, sizeof q.y);
-            at += 2 * sizeof(double);
-        }
+        source[k] = ring_from_bytes(roles[k], n, xy, at);
     }
     if (at != xy.size()) throw invalid_input("pickle: coordinates left over after the last ring");
     return from_rings(std::move(source), "pickle");
 }
 
 }  // namespace
+
+void append_ring_bytes(const std::vector<wkt_ring>& rings, std::string& roles, std::string& counts, std::string& xy) {
+    for (const wkt_ring& r : rings) {
+        roles.push_back(r.role == ring_role::outer ? 0 : 1);
+        const std::uint64_t n = r.points.size();
+        counts.append(reinterpret_cast<const char*>(&n), sizeof n);
+        for (const point<double>& q : r.points) {
+            xy.append(reinterpret_cast<const char*>(&q.x), sizeof q.x);
+            xy.append(reinterpret_cast<const char*>(&q.y), sizeof q.y);
+        }
+    }
+}
+
+wkt_ring ring_from_bytes(char role, std::size_t n, std::string_view xy, std::size_t& at) {
+    wkt_ring r;
+    r.role = role == 0 ? ring_role::outer : ring_role::hole;
+    r.points.resize(n);
+    for (point<double>& q : r.points) {
+        std::memcpy(&q.x, xy.data() + at, sizeof q.x);
+        std::memcpy(&q.y, xy.data() + at + sizeof q.x, sizeof q.y);
+        at += 2 * sizeof(double);
+    }
+    return r;
+}
 
 void bind_polygon(py::module_& m) {
     py::class_<py_polygon>(m, "Polygon")

@@ -456,11 +456,12 @@ private:
 
     // The least work shared among threads. A parallel call costs about
     // 4 us with oneTBB's waiting workers and 50 us when std::threads are
-    // started and joined (query/batch.hpp), so a call must bring some 100 us
-    // of work: 256 bodies to place, 1024 edge witnesses to retest (the
-    // cheapest test, four vertices posed) or 32 pairs for bodies_within
-    // (chosen on the time study's scenes of 1000 bodies: below them, two
-    // threads made the falling and convex scenes slower than one).
+    // started and joined (query/batch.hpp), so a call must bring many times
+    // that in work: 512 bodies to place, 2048 edge witnesses to retest (the
+    // cheapest test, four vertices posed) or 128 pairs for bodies_within
+    // (chosen on the time study's scenes of 1000 bodies: with 256, 1024 and
+    // 32, two threads were slower than one on more of them; on the falling
+    // scene they still are, docs/world.md "Measured").
     static constexpr std::size_t parallel_placings = 512, parallel_witness_tests = 2048, parallel_pair_tests = 128;
 
     // Body i's polygon and pose, without its placing (pass 1).
