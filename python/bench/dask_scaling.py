@@ -11,8 +11,11 @@ each, every result checked against the single-process call.
 3. pairs: the join of a layer of --pairs-size generated parcels (Polygons
    built once) in two partitions per worker thread, in each number type of
    --pairs-types (certified: little work per polygon against its transfer;
-   exact: more).
-4. The scheduler's overhead per task: --tiny-tasks tasks that do nothing,
+   exact: more). The client holds the layer and sends it.
+4. pairs from files: the same parcels as --files WKT files (a layer
+   exported from a GIS), read on the workers (dask.bag.read_text) and
+   joined there in certified; the single process reads the same files.
+5. The scheduler's overhead per task: --tiny-tasks tasks that do nothing,
    submitted at once and gathered, per task.
 
 Each figure is the median of --repeats runs; the single-process calls (one
@@ -22,8 +25,10 @@ thread, no Dask) are timed beside them. Run it alone on the machine:
 """
 
 import argparse
+import glob
 import os
 import sys
+import tempfile
 
 import numpy as np
 import pandas.testing
@@ -71,11 +76,29 @@ def measure(workers, o, work):
             out["pairs " + t], got = timed(lambda: influence2d.dask.pairs(work["pairs_layer"], client=client,
                                                                           number_type=t), o.repeats)
             np.testing.assert_array_equal(got, work["pairs_want"])
+        out["files"], got = timed(lambda: influence2d.dask.pairs(lines_of(work["files"]), client=client), o.repeats)
+        np.testing.assert_array_equal(got, work["files_want"])
         out["task"] = per_task_seconds(client, o.tiny_tasks, o.repeats)
         return out
 
 
-def local_work(o):
+def lines_of(pattern):
+    """The WKT lines of the files matching ``pattern`` as a dask.bag, one
+    partition per file, read where the tasks run."""
+    import dask.bag
+    return dask.bag.read_text(pattern).map(str.strip)
+
+
+def read_files(pattern):
+    """The WKT lines of the files matching ``pattern``, read here in order."""
+    lines = []
+    for path in sorted(glob.glob(pattern)):
+        with open(path) as f:
+            lines += [line.strip() for line in f]
+    return lines
+
+
+def local_work(o, folder):
     """The inputs and the single-process answers (and their times, one
     thread)."""
     rng = np.random.default_rng(20240601)
@@ -83,6 +106,13 @@ def local_work(o):
     work["pairs_layer"] = [influence2d.Polygon.from_shapely(g) for g in layer_from(None, o.pairs_size, rng)]
     local = {}
     local["audit"], work["audit_want"] = timed(lambda: influence2d.audit_layer(work["audit_layer"], threads=1),
+                                               o.repeats)
+    texts = [p.to_wkt() for p in work["pairs_layer"]]
+    for k, cut in enumerate(np.array_split(np.arange(len(texts)), o.files)):
+        with open(os.path.join(folder, f"part-{k:04d}.wkt"), "w") as f:
+            f.write("".join(texts[i] + "\n" for i in cut))
+    work["files"] = os.path.join(folder, "part-*.wkt")
+    local["files"], work["files_want"] = timed(lambda: influence2d.pairs(read_files(work["files"]), threads=1),
                                                o.repeats)
     local["study"], work["study_want"] = timed(lambda: influence2d.study(), 1)
     for t in o.pairs_types.split(","):
@@ -97,6 +127,7 @@ def main():
     p.add_argument("--chunk-size", type=int, default=2_000)
     p.add_argument("--pairs-size", type=int, default=100_000)
     p.add_argument("--pairs-types", default="certified,exact")
+    p.add_argument("--files", type=int, default=16)
     p.add_argument("--tiny-tasks", type=int, default=2_000)
     p.add_argument("--repeats", type=int, default=3)
     o = p.parse_args()
@@ -105,14 +136,17 @@ def main():
     print(f"machine: {os.cpu_count()} cores, load average {os.getloadavg()[0]:.2f} at the start; dask "
           f"{dask.__version__}, distributed {distributed.__version__}; worker processes of one thread; "
           f"medians of {o.repeats} runs")
-    work, local = local_work(o)
-    one, two = measure(1, o, work), measure(2, o, work)
+    with tempfile.TemporaryDirectory() as folder:
+        work, local = local_work(o, folder)
+        one, two = measure(1, o, work), measure(2, o, work)
     rows = [("audit", f"audit of {o.audit_size} generated parcels (WKT), chunks of {o.chunk_size}",
              f"{len(work['audit_want'])} findings"),
             ("study", "precision study, the --quick run (every default family and type)",
              f"{int(work['study_want']['summaries']['questions'].sum())} questions")]
     rows += [("pairs " + t, f"pairs of {o.pairs_size} generated parcels, {t}", f"{len(work['pairs_want'])} pairs")
              for t in o.pairs_types.split(",")]
+    rows += [("files", f"pairs of the same parcels read from {o.files} WKT files on the workers, certified",
+              f"{len(work['files_want'])} pairs")]
     for key, what, size in rows:
         print(f"{what} ({size}): single process {local[key]:.2f} s; 1 worker {one[key]:.2f} s; "
               f"2 workers {two[key]:.2f} s; 2 workers / 1 worker {one[key] / two[key]:.2f}x; same result")

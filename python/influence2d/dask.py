@@ -8,7 +8,8 @@ single-process call of the package.
 
 The workers import ``influence2d`` themselves: it must be installed (or on
 their PYTHONPATH) where they run. Polygons pickle, so the partitions are
-scattered to the workers once and the tasks name them.
+scattered to the workers once and the tasks name them; a layer given as a
+dask collection is read and packed on the workers and stays there.
 """
 
 import numpy as np
@@ -121,11 +122,6 @@ def audit(geoms, client, chunk_size=1000, max_per_kind=50, threads=1):
 
 # --- pairs ------------------------------------------------------------------
 
-def _boxes(polygons):
-    """The (n, 4) float64 boxes (min x, min y, max x, max y) of the polygons."""
-    return np.array([p.bounds for p in polygons], dtype=np.float64).reshape(-1, 4)
-
-
 def _hilbert_keys(x, y, extent, order=16):
     """The positions of points on a Hilbert curve of 2^order x 2^order cells
     over ``extent`` (min x, min y, max x, max y): near points, near keys."""
@@ -185,14 +181,28 @@ def _layer_pairs(first, second, within, number_type, threads):
     return _core.pairs(first, second, within, number_type, threads).reshape(-1, 2).astype(np.int64, copy=False)
 
 
+def _near(part, around, reach):
+    """The polygons of a partition (packed polygons, positions) whose boxes
+    come within ``reach`` of the box ``around`` (another partition's): only
+    these can meet a polygon of that partition, so two partitions are
+    joined along their common border, not whole; a task run where the
+    partition is, so only the strip travels."""
+    polys, at = part
+    mine = polys.bounds()
+    keep = np.flatnonzero((mine[:, 2] + reach >= around[0]) & (around[2] + reach >= mine[:, 0]) &
+                          (mine[:, 3] + reach >= around[1]) & (around[3] + reach >= mine[:, 1]))
+    return polys.take(keep), at[keep]
+
+
 def _join_partitions(first, second, kind, within, number_type, threads):
     """One task: the pairs between two partitions, (packed polygons,
-    positions) each, at the positions of the whole layers. ``kind``: "same" (one
-    partition of one layer: i < j), "layer" (two partitions of one layer:
-    each pair as (lower, higher)) or "layers" (one of each layer). Within one
-    layer a pair is tested with its lower position first, as the
-    single-process join tests it: a rounded type's answer may depend on the
-    order, so in double each way is asked and kept where it is that order."""
+    positions) each, at the positions of the whole layers. ``kind``: "same"
+    (one partition of one layer: i < j; ``second`` unused), "layer" (two
+    partitions of one layer: each pair as (lower, higher)) or "layers" (one
+    of each layer). Within one layer a pair is tested with its lower
+    position first, as the single-process join tests it: a rounded type's
+    answer may depend on the order, so in double each way is asked and kept
+    where it is that order."""
     polys_a, at_a = first
     if kind == "same":
         return _at(_layer_pairs(polys_a, None, within, number_type, threads), at_a, at_a)
@@ -206,12 +216,71 @@ def _join_partitions(first, second, kind, within, number_type, threads):
     return np.concatenate((out[out[:, 0] < out[:, 1]], back[back[:, 0] < back[:, 1]]))
 
 
-def _scattered(client, polygons, parts):
-    """Each partition's (polygons, positions) sent to the workers once, its
-    polygons packed in one _core.Layer (a few flat byte strings, not one
-    pickled object per polygon)."""
-    return client.scatter([(_core.Layer([polygons[i]._p for i in members]), members) for members, _ in parts],
-                          hash=False)
+def _is_collection(values):
+    """Whether ``values`` is a dask collection (a Bag, a DataFrame's column):
+    its partitions are computed, and stay, on the workers."""
+    return hasattr(values, "to_delayed") and hasattr(values, "npartitions") and hasattr(values, "dask")
+
+
+def _pack(items, name):
+    """One partition of a dask collection packed where it was computed: a
+    _core.Layer of its polygons, each refused naming ``name[index]``."""
+    return _core.Layer([p._p for p in as_polygons(_sequence(items, name), name)])
+
+
+def _bounds_of(layer):
+    """The (n, 4) boxes of a packed partition's polygons."""
+    return layer.bounds()
+
+
+def _taken(layer, positions):
+    """The polygons of a packed partition at ``positions``."""
+    return layer.take(positions)
+
+
+def _joined(pieces, members):
+    """A spatial partition made of its pieces (in the order of the input
+    partitions), with its positions in the whole layer."""
+    return _core.Layer.concat(pieces), members
+
+
+def _held_here(client, polygons):
+    """A layer held by the client: its boxes, and how its spatial partitions
+    reach the workers (each packed from the whole and scattered once)."""
+    whole = _core.Layer([p._p for p in polygons])
+    return whole.bounds(), lambda parts: client.scatter([(whole.take(m), m) for m, _ in parts], hash=False)
+
+
+def _held_there(client, collection, name):
+    """A layer given as a dask collection: each of its partitions computed
+    and packed on a worker; only the boxes come to the client. Its spatial
+    partitions are gathered from the input partitions on the workers (one
+    take per input partition that holds part of one, then one
+    concatenation), so the polygons never pass through the client."""
+    import dask
+    packed = client.compute([dask.delayed(_pack)(d, f"{name} partition {i}")
+                             for i, d in enumerate(collection.to_delayed())])
+    boxes = client.gather([client.submit(_bounds_of, f, pure=False) for f in packed])
+    offsets = np.cumsum([0] + [len(b) for b in boxes])
+
+    def send(parts):
+        out = []
+        for members, _ in parts:
+            cuts = np.searchsorted(members, offsets)
+            pieces = [client.submit(_taken, f, members[cuts[i]:cuts[i + 1]] - offsets[i], pure=False)
+                      for i, f in enumerate(packed) if cuts[i + 1] > cuts[i]]
+            out.append(client.submit(_joined, pieces, members, pure=False))
+        return out
+
+    return np.concatenate([np.empty((0, 4))] + boxes), send
+
+
+def _source(client, values, name):
+    """A layer as the join reads it: (its boxes, how its spatial partitions
+    are sent), from a dask collection or from a sequence the client holds."""
+    if _is_collection(values):
+        return _held_there(client, values, name)
+    return _held_here(client, as_polygons(_sequence(values, name), name))
 
 
 def _kind(p, q, one_layer):
@@ -230,20 +299,30 @@ def _partition_pairs(parts_a, parts_b, reach):
 
 
 def _join_tasks(client, first, second, within, number_type, threads, count):
-    """The layers cut into partitions and scattered, and one task per two
-    partitions whose boxes come within ``within`` (``second`` None: one
-    layer)."""
-    boxes_a = _boxes(first)
-    boxes_b = None if second is None else _boxes(second)
+    """The layers (``_source``'s) cut into partitions and sent, and one task
+    per two partitions whose boxes come within ``within`` (``second`` None:
+    one layer)."""
+    boxes_a, send_a = first
+    boxes_b = None if second is None else second[0]
     every = boxes_a if second is None else np.concatenate((boxes_a, boxes_b))
     extent = (every[:, 0].min(), every[:, 1].min(), every[:, 2].max(), every[:, 3].max())
     parts_a = _partitions(boxes_a, extent, count)
     parts_b = None if second is None else _partitions(boxes_b, extent, count)
-    sent_a = _scattered(client, first, parts_a)
-    sent_b = sent_a if second is None else _scattered(client, second, parts_b)
-    return [client.submit(_join_partitions, sent_a[p], sent_b[q], _kind(p, q, second is None), within, number_type,
-                          threads, pure=False)
-            for p, q in _partition_pairs(parts_a, parts_b, _reach(every, within))]
+    sent_a = send_a(parts_a)
+    sent_b = sent_a if second is None else second[1](parts_b)
+    reach = _reach(every, within)
+    tasks = []
+    for p, q in _partition_pairs(parts_a, parts_b, reach):
+        kind = _kind(p, q, second is None)
+        if kind == "same":
+            tasks.append(client.submit(_join_partitions, sent_a[p], None, kind, within, number_type, threads,
+                                       pure=False))
+            continue
+        strip_a = client.submit(_near, sent_a[p], (parts_b or parts_a)[q][1], reach, pure=False)
+        strip_b = client.submit(_near, sent_b[q], parts_a[p][1], reach, pure=False)
+        tasks.append(client.submit(_join_partitions, strip_a, strip_b, kind, within, number_type, threads,
+                                   pure=False))
+    return tasks
 
 
 def pairs(layer, other=None, client=None, within=0.0, number_type="certified", partitions=None, threads=1):
@@ -257,6 +336,15 @@ def pairs(layer, other=None, client=None, within=0.0, number_type="certified", p
     that meet lie in partitions whose boxes meet: none is lost at a
     partition's border.
 
+    ``layer`` and ``other`` are what :func:`influence2d.pairs` takes, held
+    by the client (sent to the workers once, packed), or dask collections
+    (a ``dask.bag`` of WKT lines read from files, a DataFrame's column of
+    WKB): then each input partition is read and packed on a worker, only
+    its boxes come to the client, and the spatial partitions are gathered
+    from the input partitions on the workers, as a layer larger than the
+    client's memory needs. Positions count through the collection's
+    partitions in order.
+
     >>> from distributed import Client, LocalCluster
     >>> import shapely.geometry as g, influence2d.dask
     >>> layer = [g.box(i, 0, i + 1, 1) for i in range(6)]
@@ -264,17 +352,22 @@ def pairs(layer, other=None, client=None, within=0.0, number_type="certified", p
     ...         Client(cluster) as client:
     ...     one = influence2d.dask.pairs(layer, client=client, partitions=3)
     ...     two = influence2d.dask.pairs(layer, [g.box(2.5, 0.5, 3.5, 3)], client, within=0.5, partitions=3)
+    ...     import dask.bag
+    ...     lines = dask.bag.from_sequence([b.wkt for b in layer], npartitions=2)
+    ...     three = influence2d.dask.pairs(lines, client=client, partitions=3)
     >>> one.tolist(), two.tolist()
     ([[0, 1], [1, 2], [2, 3], [3, 4], [4, 5]], [[1, 0], [2, 0], [3, 0], [4, 0]])
+    >>> (three == one).all()
+    True
     """
     client = _client(client)
     threads = _count(threads, "threads", least=0)
-    first = as_polygons(_sequence(layer, "layer"), "layer")
-    second = None if other is None else as_polygons(_sequence(other, "other"), "other")
     _local_pairs([], None if other is None else [], within, number_type, 1)  # within and number_type checked
     within = float(within)
     count = max(1, 2 * sum(client.nthreads().values())) if partitions is None else _count(partitions, "partitions")
-    if not first or second is not None and not second:
+    first = _source(client, layer, "layer")
+    second = None if other is None else _source(client, other, "other")
+    if not len(first[0]) or second is not None and not len(second[0]):
         return np.empty((0, 2), dtype=np.int64)
     tasks = _join_tasks(client, first, second, within, number_type, threads, count)
     found = np.concatenate([np.empty((0, 2), dtype=np.int64)] + client.gather(tasks)).astype(np.int64, copy=False)

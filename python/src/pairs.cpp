@@ -2,7 +2,8 @@
 // influence2d._core.pairs: the layer join (layer_pairs and
 // certified_layer_pairs): the pairs of polygons of one layer, or of two,
 // whose closed regions meet or come within a distance, as a (k, 2) array;
-// influence2d._core.Layer: a layer's partition packed for a worker.
+// influence2d._core.Layer: a layer's partition packed for a worker, its
+// boxes, the parts of it another partition takes, partitions joined.
 
 #include <cstdint>
 #include <cstring>
@@ -52,6 +53,54 @@ py::tuple layer_state(const py_layer& l) {
         append_ring_bytes(rings, roles, point_counts, xy);
     }
     return py::make_tuple(py::bytes(ring_counts), py::bytes(roles), py::bytes(point_counts), py::bytes(xy));
+}
+
+/// The (n, 4) float64 boxes (min x, min y, max x, max y) of a layer's
+/// polygons: what a spatial partitioning needs to know of them.
+py::array_t<double> layer_bounds(const py_layer& l) {
+    py::array_t<double> out({static_cast<py::ssize_t>(l.shapes.size()), py::ssize_t{4}});
+    double* o = out.mutable_data();
+    for (const polygon& p : l.shapes) {
+        const box& b = p.bounds();
+        *o++ = b.min_x;
+        *o++ = b.min_y;
+        *o++ = b.max_x;
+        *o++ = b.max_y;
+    }
+    return out;
+}
+
+/// The polygons of `l` at `positions` (an int64 array), in that order; a
+/// position out of range is refused naming it.
+py_layer layer_take(const py_layer& l,
+                    const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& positions) {
+    if (positions.ndim() != 1) throw invalid_input("Layer.take: expected a one-dimensional array of positions");
+    py_layer out;
+    out.shapes.reserve(static_cast<std::size_t>(positions.size()));
+    out.rings.reserve(static_cast<std::size_t>(positions.size()));
+    const std::int64_t* at = positions.data();
+    for (py::ssize_t k = 0; k < positions.size(); ++k) {
+        if (at[k] < 0 || static_cast<std::uint64_t>(at[k]) >= l.shapes.size())
+            throw invalid_input("Layer.take: positions[" + std::to_string(k) + "] is " + std::to_string(at[k]) +
+                                ", outside a layer of " + std::to_string(l.shapes.size()) + " polygons");
+        out.shapes.push_back(l.shapes[static_cast<std::size_t>(at[k])]);
+        out.rings.push_back(l.rings[static_cast<std::size_t>(at[k])]);
+    }
+    return out;
+}
+
+/// The polygons of `layers` one after another.
+py_layer layer_concat(const py::sequence& layers) {
+    py_layer out;
+    for (std::size_t k = 0; k < layers.size(); ++k) {
+        const py::object item = layers[k];
+        if (!py::isinstance<py_layer>(item))
+            throw invalid_input("Layer.concat: item " + std::to_string(k) + " is not a Layer");
+        const py_layer& l = item.cast<const py_layer&>();
+        out.shapes.insert(out.shapes.end(), l.shapes.begin(), l.shapes.end());
+        out.rings.insert(out.rings.end(), l.rings.begin(), l.rings.end());
+    }
+    return out;
 }
 
 /// Reads the next T of `data` at `at`, or throws naming what ran short.
@@ -142,6 +191,9 @@ void bind_pairs(py::module_& m) {
     py::class_<py_layer>(m, "Layer")
         .def(py::init(&layer_from), py::arg("polygons"))
         .def("__len__", [](const py_layer& l) { return l.shapes.size(); })
+        .def("bounds", &layer_bounds)
+        .def("take", &layer_take, py::arg("positions"))
+        .def_static("concat", &layer_concat, py::arg("layers"))
         .def(py::pickle(&layer_state, &layer_from_state));
     m.def("pairs", &pairs, py::arg("layer"), py::arg("other"), py::arg("within"), py::arg("number_type"),
           py::arg("threads"));

@@ -87,15 +87,34 @@ def test_audit_of_a_series_and_of_nothing(client):
 
 # --- pairs -------------------------------------------------------------------
 
+def bag_of_wkb(layer, count):
+    """The layer as a dask.bag of WKB in ``count`` partitions: read on the
+    workers."""
+    import dask.bag
+    return dask.bag.from_sequence([g.wkb for g in layer], npartitions=count)
+
+
+def column_of_wkb(layer, count):
+    """The layer as a dask DataFrame's column of WKB in ``count`` partitions."""
+    import dask.dataframe
+    return dask.dataframe.from_pandas(pd.DataFrame({"wkb": [g.wkb for g in layer]}), npartitions=count)["wkb"]
+
+
 def same_pairs(client, layer, other=None, **options):
     """influence2d.dask.pairs against influence2d.pairs on several cuts of
-    the layers into partitions; each pair found once."""
+    the layers into partitions, the layers held by the client or given as
+    dask collections partitioned otherwise; each pair found once."""
     local = {k: v for k, v in options.items() if k in ("within", "number_type")}
     want = influence2d.pairs(layer, other, **local)
+    forms = [(lambda g, n: g, 1), (bag_of_wkb, 1), (bag_of_wkb, 5), (column_of_wkb, 3)]
     for partitions in (1, 3, 7, 16):
-        got = influence2d.dask.pairs(layer, other, client, partitions=partitions, **options)
-        assert got.dtype == np.int64 and got.shape == want.shape, partitions
-        np.testing.assert_array_equal(got, want, err_msg=f"partitions={partitions}")
+        for k in (0, 1 + partitions % 3):
+            form, count = forms[k]
+            first = form(layer, count)
+            second = None if other is None else forms[(k + partitions) % len(forms)][0](other, count + 1)
+            got = influence2d.dask.pairs(first, second, client, partitions=partitions, **options)
+            assert got.dtype == np.int64 and got.shape == want.shape, (partitions, k)
+            np.testing.assert_array_equal(got, want, err_msg=f"partitions={partitions}, form {k}")
     return want
 
 
@@ -132,6 +151,49 @@ def test_pairs_of_few_polygons_and_of_none(client):
     same_pairs(client, [square], [square, square])
     assert influence2d.dask.pairs([], client=client).shape == (0, 2)
     assert influence2d.dask.pairs([square], [], client).shape == (0, 2)
+
+
+def test_pairs_of_a_layer_read_from_files_on_the_workers(client, rng, tmp_path):
+    import dask.bag
+    layer = layer_of(rng, 60, spread=10.0) + parcels(rng, 7, 7)
+    texts = [influence2d.Polygon.from_shapely(g).to_wkt() for g in layer]
+    for k, cut in enumerate(np.array_split(np.arange(len(texts)), 4)):
+        (tmp_path / f"part-{k}.wkt").write_text("".join(texts[i] + "\n" for i in cut))
+    lines = dask.bag.read_text(str(tmp_path / "part-*.wkt")).map(str.strip)
+    want = influence2d.pairs(layer)
+    assert len(want) > 100
+    np.testing.assert_array_equal(influence2d.dask.pairs(lines, client=client, partitions=5), want)
+    np.testing.assert_array_equal(influence2d.dask.pairs(lines, lines, client, partitions=3),
+                                  influence2d.pairs(layer, layer))
+
+
+def test_a_bad_polygon_in_a_collection_is_named_by_its_partition(client):
+    import dask.bag
+    lines = dask.bag.from_sequence(["POLYGON ((0 0, 1 0, 0 1, 0 0))"] * 3 + ["POLYGON ((0 0, 1 0, 0 1))"],
+                                   npartitions=2)
+    with pytest.raises(influence2d.InvalidInput, match=r"layer partition 1\[1\].*not closed"):
+        influence2d.dask.pairs(lines, client=client)
+    empty = dask.bag.from_sequence([], npartitions=1)
+    assert influence2d.dask.pairs(empty, client=client).shape == (0, 2)
+    square = dask.bag.from_sequence(["POLYGON ((0 0, 1 0, 0 1, 0 0))"], npartitions=1)
+    assert influence2d.dask.pairs(square, empty, client).shape == (0, 2)
+
+
+def test_a_packed_partition_takes_and_joins_its_polygons(rng):
+    layer = influence2d._core.Layer([influence2d.Polygon.from_shapely(g)._p for g in layer_of(rng, 30)])
+    boxes = layer.bounds()
+    assert boxes.shape == (30, 4) and (boxes[:, :2] <= boxes[:, 2:]).all()
+    picked = layer.take(np.array([4, 0, 4, 29]))
+    assert len(picked) == 4 and np.array_equal(picked.bounds(), boxes[[4, 0, 4, 29]])
+    whole = influence2d._core.Layer.concat([layer.take(np.arange(0, 12)), layer.take(np.arange(12, 30))])
+    assert np.array_equal(influence2d._core.pairs(whole, None, 0.0, "certified", 1),
+                          influence2d._core.pairs(layer, None, 0.0, "certified", 1))
+    for bad, message in [(np.array([30]), r"positions\[0\] is 30, outside a layer of 30"),
+                         (np.array([0, -1]), r"positions\[1\] is -1"), (np.zeros((2, 2)), "one-dimensional")]:
+        with pytest.raises(influence2d.InvalidInput, match=message):
+            layer.take(bad)
+    with pytest.raises(influence2d.InvalidInput, match="item 1 is not a Layer"):
+        influence2d._core.Layer.concat([layer, "layer"])
 
 
 def test_pairs_of_a_series_use_positions(client):
