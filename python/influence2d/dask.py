@@ -76,6 +76,13 @@ def _audit_chunk(items, start, max_per_kind, threads, columns):
     return frame.astype({c: "category" for c in _AUDIT_TEXTS})
 
 
+def _audit_partition(items, name, max_per_kind, threads, columns):
+    """One partition of a dask collection audited where it was computed:
+    its findings (positions within the partition) and its length."""
+    items = [_item(g, f"{name}[{k}]") for k, g in enumerate(_sequence(items, name))]
+    return _audit_chunk(items, 0, max_per_kind, threads, columns), len(items)
+
+
 def _audit_frame(frames):
     """The chunks' findings as one frame, typed as the single-process audit
     types its columns (texts as objects, the others inferred)."""
@@ -89,7 +96,12 @@ def audit(geoms, client, chunk_size=1000, max_per_kind=50, threads=1):
     bytes, shapely geometries or Polygons) in chunks of ``chunk_size``, one
     task each on ``threads`` threads of a worker: the same DataFrame as
     :func:`influence2d.audit_layer`, ``polygon`` the position in ``geoms``.
-    Every item is checked before any task starts.
+    Every item is checked before any task starts. ``geoms`` may also be a
+    dask collection (a ``dask.bag`` of WKT lines read from files, a
+    DataFrame's column): then each of its partitions is read and audited on
+    a worker (one task each, ``chunk_size`` unused), an item the audit
+    cannot read is refused naming ``geoms partition p[index]``, and
+    positions count through the partitions in order.
 
     >>> from distributed import Client, LocalCluster
     >>> import influence2d.dask
@@ -106,8 +118,17 @@ def audit(geoms, client, chunk_size=1000, max_per_kind=50, threads=1):
     chunk_size = _count(chunk_size, "chunk_size")
     max_per_kind = _count(max_per_kind, "max_per_kind", least=0)
     threads = _count(threads, "threads", least=0)
-    items = [_item(g, f"geoms[{k}]") for k, g in enumerate(_sequence(geoms, "geoms"))]
     columns = list(audit_layer([]).columns)
+    if _is_collection(geoms):
+        import dask
+        parts = client.gather(client.compute(
+            [dask.delayed(_audit_partition)(d, f"geoms partition {i}", max_per_kind, threads, columns)
+             for i, d in enumerate(geoms.to_delayed())]))
+        offsets = np.cumsum([0] + [n for _, n in parts])
+        found = [frame.assign(polygon=frame["polygon"] + start) for (frame, _), start in zip(parts, offsets)
+                 if len(frame)]
+        return _audit_frame(found) if found else pd.DataFrame([], columns=columns)
+    items = [_item(g, f"geoms[{k}]") for k, g in enumerate(_sequence(geoms, "geoms"))]
     if not items:
         return pd.DataFrame([], columns=columns)
     starts = range(0, len(items), chunk_size)

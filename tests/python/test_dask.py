@@ -75,6 +75,21 @@ def test_audit_is_the_single_process_audit(client, rng, chunk_size):
     assert len(want) > len(layer) // 2
 
 
+def test_audit_of_a_collection_read_on_the_workers(client, rng):
+    import dask.bag
+    layer = audit_layer_of(rng)
+    texts = [g if isinstance(g, (str, bytes)) else g.to_wkt() if isinstance(g, influence2d.Polygon) else g.wkb
+             for g in layer]
+    want = influence2d.audit_layer(texts)
+    for count in (1, 4, 9):
+        pandas.testing.assert_frame_equal(influence2d.dask.audit(dask.bag.from_sequence(texts, npartitions=count),
+                                                                 client), want)
+    pandas.testing.assert_frame_equal(influence2d.dask.audit(column_of_wkb(POLYGONS[:0], 1), client),
+                                      influence2d.audit_layer([]))
+    with pytest.raises(influence2d.InvalidInput, match=r"geoms partition 1\[0\]"):
+        influence2d.dask.audit(dask.bag.from_sequence(texts[:2] + [3.5], npartitions=2), client)
+
+
 def test_audit_of_a_series_and_of_nothing(client):
     series = pd.Series(POLYGONS, index=[10 * k for k in range(len(POLYGONS))])
     pandas.testing.assert_frame_equal(influence2d.dask.audit(series, client, chunk_size=4),
