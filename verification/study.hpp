@@ -39,6 +39,7 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <optional>
 #include <random>
@@ -502,7 +503,13 @@ struct study_options {
     std::vector<std::string> types;        ///< empty: every type of the list
     std::vector<decision_kind> decisions;  ///< empty: every decision kind
     std::size_t cases = 2;                 ///< scenes per family (per magnitude for a sweep)
-    std::size_t frames = 100;              ///< poses and query points per scene
+    /// The scenes of each family run: those numbered [first_scene,
+    /// end_scene) in make_study_cases' order (the others are made, not run).
+    /// A scene starts with fresh evaluators, so a family's scenes can run
+    /// apart and their counts be summed.
+    std::size_t first_scene = 0;
+    std::size_t end_scene = std::numeric_limits<std::size_t>::max();
+    std::size_t frames = 100;  ///< poses and query points per scene
     std::uint64_t seed = 20040202;
     std::size_t examples = 3;  ///< disagreements kept per type and decision (or query)
     /// The queries asked (separation, first contact); empty: none.
@@ -637,12 +644,13 @@ public:
                     ? std::min(o_.frames, large_frames)
                     : o_.frames;
             const std::vector<study_case> cases = make_study_cases(o_.families[f], o_.cases, frames, o_.seed);
-            for (std::size_t k = 0; k < cases.size(); ++k) {
+            const std::size_t end = std::min(o_.end_scene, cases.size());
+            for (std::size_t k = std::min(o_.first_scene, end); k < end; ++k) {
                 if (o_.progress) o_.progress({f, families, k, cases.size(), o_.families[f]});
                 run_case(cases[k], std::index_sequence_for<Modes...>{});
                 run_queries(cases[k], std::index_sequence_for<Modes...>{});
+                ++scenes;
             }
-            scenes += cases.size();
         }
         if (o_.progress) o_.progress({families, families, 0, 0, ""});
         study_result r = collect();

@@ -7,7 +7,7 @@ each, every result checked against the single-process call.
 1. audit: a layer of --audit-size generated parcels (WKT text, as a layer
    exported from a GIS arrives), in chunks of --chunk-size.
 2. study: the precision study's --quick run (the default families, every
-   type), one family per task.
+   type), one scene per task.
 3. pairs: the join of a layer of --pairs-size generated parcels (Polygons
    built once) in two partitions per worker thread, in each number type of
    --pairs-types (certified: little work per polygon against its transfer;

@@ -18,7 +18,7 @@ from . import _core
 from .audit import _item, audit_layer
 from .pairs import pairs as _local_pairs
 from .polygon import Polygon, as_polygons
-from .study import study as _local_study, study_names
+from .study import _frames, study_names
 
 __all__ = ["audit", "pairs", "study"]
 
@@ -417,20 +417,56 @@ def _study_families(families):
     return families
 
 
-def _merged_rows(parts, table, rank):
-    """One table's rows of the parts (one per family, in the families'
-    order) in the single run's order: by number type (``rank``), then as the
-    families came."""
-    rows = [row for part in parts for row in part[table].to_dict("records")]
-    return sorted(rows, key=lambda row: rank[row["number_type"]])
+def _study_part(family, first, end, args):
+    """One task: the study of ``family``'s scenes [first, end), its tables
+    as rows (the queries' rows with their measured errors)."""
+    return _core.study([family], args["types"], args["decisions"], args["queries"], args["cases"], args["frames"],
+                       args["query_frames"], args["seed"], first, end)
+
+
+def _summed(parts, table, key, counts, order):
+    """One table's rows of the parts, the rows of the same ``key`` merged
+    (``counts`` summed, measured errors joined, times summed as
+    nanoseconds), in the single run's order (``order`` of a row)."""
+    merged = {}
+    for part in parts:
+        for row in part[table]:
+            k = tuple(row[c] for c in key)
+            weight = row.get("cases", row.get("questions"))
+            ns = row.get("ns_per_query", row.get("ns_per_question", 0.0)) * weight
+            if k not in merged:
+                merged[k] = dict(row, _ns=ns, errors=list(row.get("errors", [])))
+                continue
+            m = merged[k]
+            for c in counts:
+                m[c] += row[c]
+            m["errors"] += row.get("errors", [])
+            m["_ns"] += ns
+    return sorted(merged.values(), key=order)
+
+
+def _rate(row):
+    """The row's disagreements per case, as the study computes it."""
+    row["rate"] = row["disagreements"] / row["cases"] if row["cases"] else 0.0
+    return row
+
+
+def _measured(row):
+    """A query row's error figures from its joined errors, as the study
+    computes them (the largest, the lower median)."""
+    errors = sorted(row["errors"])
+    row["measured"] = len(errors)
+    row["largest_error"] = errors[-1] if errors else None
+    row["median_error"] = errors[(len(errors) - 1) // 2] if errors else None
+    return row
 
 
 def _merged_summaries(parts):
-    """The per-type summaries: the counts summed over the families (integer
+    """The per-type summaries: the counts summed over the parts (integer
     sums, in the single run's order of types)."""
-    first = parts[0]["summaries"].to_dict("records")
+    first = [dict(row) for row in parts[0]["summaries"]]
     for part in parts[1:]:
-        for row, more in zip(first, part["summaries"].to_dict("records")):
+        for row, more in zip(first, part["summaries"]):
             for column, value in more.items():
                 if column not in ("number_type", "claims_exact", "has_fallback"):
                     row[column] += value
@@ -438,12 +474,12 @@ def _merged_summaries(parts):
 
 
 def _merged_examples(parts):
-    """The examples in the single run's order (family by family), at most
-    STUDY_EXAMPLES_KEPT per number type and decision or query, as the single
-    run keeps them."""
+    """The examples in the single run's order (family by family, scene by
+    scene), at most STUDY_EXAMPLES_KEPT per number type and decision or
+    query, as the single run keeps them."""
     kept, rows = {}, []
     for part in parts:
-        for row in part["examples"].to_dict("records"):
+        for row in part["examples"]:
             key = (row["number_type"], row["decision"])
             kept[key] = kept.get(key, 0) + 1
             if kept[key] <= STUDY_EXAMPLES_KEPT:
@@ -451,61 +487,81 @@ def _merged_examples(parts):
     return rows
 
 
-def _merged_study(parts):
-    """The tables of one study from its families' studies: counts summed,
-    rows in the single run's order, each frame built as the single run
-    builds it (so that its column types are the same)."""
-    import pandas as pd
-    rank = {t: k for k, t in enumerate(study_names()["types"])}
-    rows = {
-        "decisions": _merged_rows(parts, "decisions", rank),
-        "queries": _merged_rows(parts, "queries", rank),
-        "stability": sorted(_merged_rows(parts, "stability", rank),
-                            key=lambda r: (rank[r["number_type"]], r["sweep"], r["magnitude"])),
-        "summaries": _merged_summaries(parts),
-        "examples": _merged_examples(parts),
-    }
-    return {name: pd.DataFrame(rows[name], columns=parts[0][name].columns) for name in parts[0]}
+def _merged_study(parts, families):
+    """The tables of one study from its parts (in the order of the families
+    and their scenes): counts summed, error figures from the joined
+    errors, rows in the single run's order; only the times (summed as
+    nanoseconds) are the workers' own."""
+    names = study_names()
+    rank = {t: k for k, t in enumerate(names["types"])}
+    family = {f: k for k, f in enumerate(families)}
+    decision = {d: k for k, d in enumerate(names["decisions"])}
+    query = {q: k for k, q in enumerate(names["queries"])}
+    decisions = _summed(parts, "decisions", ("number_type", "family", "decision"), ("cases", "disagreements"),
+                        lambda r: (rank[r["number_type"]], family[r["family"]], decision[r["decision"]]))
+    queries = _summed(parts, "queries", ("number_type", "family", "query"),
+                      ("questions", "differing", "meeting_differs", "features_differ", "values_differ"),
+                      lambda r: (rank[r["number_type"]], family[r["family"]], query[r["query"]]))
+    stability = _summed(parts, "stability", ("number_type", "sweep", "magnitude"), ("cases", "disagreements"),
+                        lambda r: (rank[r["number_type"]], r["sweep"], r["magnitude"]))
+    for row in decisions:
+        _rate(row)["ns_per_query"] = row["_ns"] / row["cases"] if row["cases"] else 0.0
+    for row in queries:
+        _measured(row)["ns_per_question"] = row["_ns"] / row["questions"] if row["questions"] else 0.0
+    return _frames({"decisions": decisions, "queries": queries, "stability": [_rate(r) for r in stability],
+                    "summaries": _merged_summaries(parts), "examples": _merged_examples(parts)})
 
 
 def study(families=None, types=None, decisions=None, queries=None, cases=1, frames=40, query_frames=128,
-          seed=20040202, client=None):
-    """The precision study of :func:`influence2d.study` (the same arguments),
-    one task per family on the workers, the tables merged: every count the
-    same as the single run's (integer sums, rows whole), every table in its
-    order; only the measured times (``ns_per_query``, ``ns_per_question``)
-    are the workers' own. Each family's scenes are drawn from the seed and
-    the family alone, which is what lets a family run apart. A family's
-    frames are not split among tasks: a rounded type's answer to a frame
-    may depend on the frames its evaluator answered before (the coherence
-    of its detector, parts built on first use), so a task that started at
-    a later frame could count other disagreements (float's masks on
-    ``scale_sweep`` did: 68 against 66).
+          seed=20040202, client=None, scenes_per_task=1):
+    """The precision study of :func:`influence2d.study` (the same arguments)
+    on the workers: each family's scenes (``cases`` per family, per
+    magnitude for a sweep) cut into runs of ``scenes_per_task``, one task
+    each, the tables merged: every count the same as the single run's
+    (integer sums; the largest and median errors from the joined errors),
+    every table in its order; only the measured times (``ns_per_query``,
+    ``ns_per_question``) are the workers' own. A family's scenes are drawn
+    from the seed and the family alone, and each starts with fresh
+    evaluators, which is what lets them run apart. A scene's frames are not
+    split among tasks: a rounded type's answer to a frame may depend on the
+    frames its evaluator answered before (the coherence of its detector,
+    parts built on first use), so a task that started at a later frame
+    could count other disagreements (float's masks on ``scale_sweep`` did:
+    68 against 66). Split a long study into many scenes (``cases``), not
+    into long scenes. The tasks with the most vertices start first (the
+    longest last would leave one worker alone at the end).
 
     >>> from distributed import Client, LocalCluster
     >>> import influence2d.dask
     >>> with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as cluster, \\
     ...         Client(cluster) as client:
     ...     t = influence2d.dask.study(families=["convex", "starred"], types=["double", "certified"],
-    ...                                decisions=["collides"], queries=[], frames=10, client=client)
+    ...                                decisions=["collides"], queries=[], cases=3, frames=10, client=client)
     >>> t["decisions"][["number_type", "family", "cases", "disagreements"]]
       number_type   family  cases  disagreements
-    0      double   convex     10              1
-    1      double  starred     10              0
-    2   certified   convex     10              0
-    3   certified  starred     10              0
+    0      double   convex     30              3
+    1      double  starred     30              0
+    2   certified   convex     30              0
+    3   certified  starred     30              0
     >>> t["summaries"][["number_type", "questions"]]
       number_type  questions
-    0      double         20
-    1   certified         20
+    0      double         60
+    1   certified         60
     """
     client = _client(client)
     names = study_names()
     families = _study_families(families)
+    scenes_per_task = _count(scenes_per_task, "scenes_per_task")
     args = dict(types=_check_names(types, names["types"], "types"),
                 decisions=_check_names(decisions, names["decisions"], "decisions"),
-                queries=None if queries is None else _check_names(queries, names["queries"], "queries"),
+                queries=list(names["queries"]) if queries is None else _check_names(queries, names["queries"],
+                                                                                    "queries"),
                 cases=_count(cases, "cases"), frames=_count(frames, "frames"),
                 query_frames=_count(query_frames, "query_frames", least=0), seed=_count(seed, "seed", least=0))
-    tasks = [client.submit(_local_study, families=[f], pure=False, **args) for f in families]
-    return _merged_study(client.gather(tasks))
+    tasks = []
+    for f in families:
+        sizes = _core.study_scene_sizes(f, args["cases"], args["frames"], args["seed"])
+        tasks += [client.submit(_study_part, f, first, first + scenes_per_task, args, pure=False,
+                                priority=sum(sizes[first:first + scenes_per_task]))
+                  for first in range(0, len(sizes), scenes_per_task)]
+    return _merged_study(client.gather(tasks), families)

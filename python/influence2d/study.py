@@ -40,19 +40,26 @@ def study(families=None, types=None, decisions=None, queries=None, cases=1, fram
     >>> int(t["decisions"]["disagreements"][1])
     0
     """
-    import pandas as pd
     names = _core.study_names()
     r = _core.study(list(families or []), list(types or []), list(decisions or []),
                     list(names["queries"] if queries is None else queries), int(cases), int(frames),
                     int(query_frames), int(seed))
-    columns = {
-        "decisions": ["number_type", "family", "decision", "cases", "disagreements", "rate", "ns_per_query"],
-        "queries": ["number_type", "family", "query", "questions", "differing", "meeting_differs",
-                    "features_differ", "values_differ", "measured", "largest_error", "median_error",
-                    "ns_per_question"],
-        "stability": ["number_type", "sweep", "magnitude", "cases", "disagreements", "rate"],
-        "summaries": ["number_type", "claims_exact", "has_fallback", "questions", "fallbacks", "setup_fallbacks",
-                      "refused_scenes", "refused_query_scenes"],
-        "examples": ["number_type", "family", "decision", "scene", "question", "got", "expected"],
-    }
-    return {name: pd.DataFrame(r[name], columns=cols) for name, cols in columns.items()}
+    return _frames(r)
+
+
+#: The columns of each table, as the command's CSV files name them.
+_COLUMNS = {
+    "decisions": ["number_type", "family", "decision", "cases", "disagreements", "rate", "ns_per_query"],
+    "queries": ["number_type", "family", "query", "questions", "differing", "meeting_differs", "features_differ",
+                "values_differ", "measured", "largest_error", "median_error", "ns_per_question"],
+    "stability": ["number_type", "sweep", "magnitude", "cases", "disagreements", "rate"],
+    "summaries": ["number_type", "claims_exact", "has_fallback", "questions", "fallbacks", "setup_fallbacks",
+                  "refused_scenes", "refused_query_scenes"],
+    "examples": ["number_type", "family", "decision", "scene", "question", "got", "expected"],
+}
+
+
+def _frames(r):
+    """The study's tables (``_core.study``'s lists of rows) as DataFrames."""
+    import pandas as pd
+    return {name: pd.DataFrame(r[name], columns=cols) for name, cols in _COLUMNS.items()}

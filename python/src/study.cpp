@@ -5,6 +5,7 @@
 // (dicts), which the package turns into pandas DataFrames.
 
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -51,7 +52,7 @@ py::dict tables(const study_result& r) {
                                 py::arg("values_differ") = t.values_differ, py::arg("measured") = t.errors.size(),
                                 py::arg("largest_error") = optional_value(t.largest_error()),
                                 py::arg("median_error") = optional_value(t.median_error()),
-                                py::arg("ns_per_question") = t.ns_per_question()));
+                                py::arg("ns_per_question") = t.ns_per_question(), py::arg("errors") = t.errors));
     }
     for (const stability_row& row : r.stability)
         stability.append(py::dict(py::arg("number_type") = row.number_type, py::arg("sweep") = row.sweep,
@@ -82,7 +83,8 @@ py::dict tables(const study_result& r) {
 
 py::dict study(const std::vector<std::string>& families, const std::vector<std::string>& types,
                const std::vector<std::string>& decisions, const std::vector<std::string>& queries, std::size_t cases,
-               std::size_t frames, std::size_t query_frames, std::uint64_t seed) {
+               std::size_t frames, std::size_t query_frames, std::uint64_t seed, std::size_t first_scene,
+               std::size_t end_scene) {
     study_options o;
     check_names(families, study_family_names(), "families");
     check_names(types, mode_names(study_modes{}), "types");
@@ -101,6 +103,8 @@ py::dict study(const std::vector<std::string>& families, const std::vector<std::
     o.frames = frames;
     o.query_frames = query_frames;
     o.seed = seed;
+    o.first_scene = first_scene;
+    o.end_scene = end_scene;
     study_result r;
     {
         py::gil_scoped_release release;
@@ -113,7 +117,21 @@ py::dict study(const std::vector<std::string>& families, const std::vector<std::
 
 void bind_study(py::module_& m) {
     m.def("study", &study, py::arg("families"), py::arg("types"), py::arg("decisions"), py::arg("queries"),
-          py::arg("cases"), py::arg("frames"), py::arg("query_frames"), py::arg("seed"));
+          py::arg("cases"), py::arg("frames"), py::arg("query_frames"), py::arg("seed"), py::arg("first_scene") = 0,
+          py::arg("end_scene") = std::numeric_limits<std::size_t>::max());
+    m.def(
+        "study_scene_sizes",
+        [](const std::string& family, std::size_t cases, std::size_t frames, std::uint64_t seed) {
+            check_names({family}, study_family_names(), "families");
+            std::vector<std::size_t> sizes;
+            {
+                py::gil_scoped_release release;
+                for (const study_case& c : make_study_cases(family, cases, frames, seed))
+                    sizes.push_back(c.a.size() + c.b.size());
+            }
+            return sizes;
+        },
+        py::arg("family"), py::arg("cases"), py::arg("frames"), py::arg("seed"));
     m.def("study_names", [] {
         std::vector<std::string> decisions, queries;
         for (decision_kind k : all_decision_kinds) decisions.emplace_back(decision_name(k));

@@ -253,13 +253,16 @@ def assert_same_study(got, want):
                                           want[name].drop(columns=list(TIMES), errors="ignore"), obj=name)
 
 
-def test_study_is_the_single_process_study(client):
+@pytest.mark.parametrize("scenes_per_task", [1, 3, 1000])
+def test_study_is_the_single_process_study(client, scenes_per_task):
     want = influence2d.study(**STUDY)
-    got = influence2d.dask.study(**STUDY, client=client)
+    got = influence2d.dask.study(**STUDY, client=client, scenes_per_task=scenes_per_task)
     assert_same_study(got, want)
-    # What the comparison covers: sweeps, refused scenes, examples cut at the kept count.
+    # What the comparison covers: sweeps, refused scenes, examples cut at the kept count, errors
+    # measured in several scenes of one family (their median is not a sum).
     assert len(want["stability"]) > 0 and want["summaries"]["refused_scenes"].sum() > 0
     assert want["examples"].groupby(["number_type", "decision"]).size().max() == influence2d.dask.STUDY_EXAMPLES_KEPT
+    assert (want["queries"]["measured"] > STUDY["query_frames"]).any()
 
 
 def test_study_with_families_in_another_order_and_no_queries(client):
@@ -294,6 +297,7 @@ SQUARE = shapely.geometry.box(0, 0, 1, 1)
     (lambda c: influence2d.dask.study(queries=["volume"], client=c), "queries[0] is 'volume'"),
     (lambda c: influence2d.dask.study(frames=0, client=c), "frames is 0"),
     (lambda c: influence2d.dask.study(cases=-1, client=c), "cases is -1"),
+    (lambda c: influence2d.dask.study(scenes_per_task=0, client=c), "scenes_per_task is 0"),
     (lambda c: influence2d.dask.study(), "client: expected a distributed.Client, got NoneType"),
 ])
 def test_bad_input_is_refused_naming_the_value(client, call, message):
