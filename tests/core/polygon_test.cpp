@@ -4,6 +4,8 @@
 #include "influence2d/adapters/traits.hpp"
 
 #include "influence2d/core/polygon.hpp"
+#include "influence2d/number/cgal.hpp"
+#include "support/random.hpp"
 #include "support/shapes.hpp"
 
 using namespace influence2d;
@@ -85,4 +87,60 @@ TEST_CASE("polygon: ring orientation is exact at 1e200 and at subnormal scale", 
                    ring({{s, s}, {2 * s, s}, {2 * s, 2 * s}, {s, 2 * s}}, ring_role::hole)});
         CHECK(h.vertex(4) == point<double>{s, 2 * s});  // the hole reversed to clockwise
     }
+}
+
+namespace {
+
+/// The sign of a ring's shoelace sum in CGAL's exact rationals: a reference
+/// that shares nothing with the polygon's filter or its fixed-point sum.
+int rational_area_sign(const std::vector<point<double>>& vs) {
+    exact_rational sum = 0;
+    for (std::size_t k = 0; k < vs.size(); ++k) {
+        const point<double>& a = vs[k];
+        const point<double>& b = vs[(k + 1) % vs.size()];
+        sum += exact_rational(a.x) * exact_rational(b.y) - exact_rational(a.y) * exact_rational(b.x);
+    }
+    return CGAL::sign(sum);
+}
+
+/// A ring whose vertices lie on one line but for a few moved by an ulp or
+/// two: its area is a few rounding errors of its coordinates, or zero.
+std::vector<point<double>> nearly_flat_ring(test_random::rng& r, double scale, double offset) {
+    const std::size_t n = 3 + r.index(10);
+    const double dx = r.signed_unit(), dy = r.signed_unit();
+    std::vector<point<double>> vs;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double t = r.signed_unit();
+        point<double> q{offset + scale * t * dx, offset + scale * t * dy};
+        if (r.chance(0.3)) q.x = std::nextafter(q.x, r.chance(0.5) ? HUGE_VAL : -HUGE_VAL);
+        if (r.chance(0.3)) q.y = std::nextafter(q.y, r.chance(0.5) ? HUGE_VAL : -HUGE_VAL);
+        vs.push_back(q);
+    }
+    return vs;
+}
+
+}  // namespace
+
+TEST_CASE("polygon: the filtered ring orientation is the exact one on nearly flat rings", "[polygon]") {
+    // The double shoelace sum decides only beyond its error bound; near zero
+    // area the fixed-point sum decides. Either way the sign must be the exact
+    // rational sum's, at every scale and far from the origin.
+    test_random::rng r(20261126);
+    std::size_t zero = 0, positive = 0, negative = 0;
+    for (const double scale : {1.0, 1e-3, 1e6, 1e200, 1e-300, 0x1p-1060})
+        for (const double offset : {0.0, 1.0, 1e6, 1e15}) {
+            const double at = offset * (scale > 1e100 ? 1e200 : 1.0);
+            for (int k = 0; k < 300; ++k) {
+                const std::vector<point<double>> vs = nearly_flat_ring(r, scale, at);
+                const int want = rational_area_sign(vs);
+                INFO("scale " << scale << ", offset " << at << ", ring " << k);
+                REQUIRE(polygon::signed_area_sign(vs) == want);
+                REQUIRE(polygon::exact_signed_area_sign(vs) == want);
+                (want == 0 ? zero : want > 0 ? positive : negative) += 1;
+            }
+        }
+    // The rings hold every answer, so a filter that decided too early would be seen.
+    CHECK(zero > 100);
+    CHECK(positive > 1000);
+    CHECK(negative > 1000);
 }
