@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: BSL-1.0
 """The work that outgrows one machine, on Dask's distributed scheduler: the
 audit of a layer in chunks, the layer join partitioned by boxes, the
-precision study split by families; each on a ``distributed.Client`` (a
+precision study split by scenes; each on a ``distributed.Client`` (a
 LocalCluster, or a real cluster by its scheduler address,
 ``Client("tcp://scheduler:8786")``), each with the same result as the
 single-process call of the package.
