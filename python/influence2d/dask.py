@@ -187,8 +187,9 @@ def _reach(boxes, within):
 
 def _boxes_meet(p, q, reach):
     """Whether boxes p and q come within ``reach`` of each other (a sum
-    rounded one way cannot hide a gap of exactly ``reach``)."""
-    return p[2] + reach >= q[0] and q[2] + reach >= p[0] and p[3] + reach >= q[1] and q[3] + reach >= p[1]
+    rounded one way cannot hide a gap of exactly ``reach``); p's four
+    components may be arrays (then for each box of them)."""
+    return (p[2] + reach >= q[0]) & (q[2] + reach >= p[0]) & (p[3] + reach >= q[1]) & (q[3] + reach >= p[1])
 
 
 def _at(found, at_a, at_b):
@@ -209,9 +210,7 @@ def _near(part, around, reach):
     joined along their common border, not whole; a task run where the
     partition is, so only the strip travels."""
     polys, at = part
-    mine = polys.bounds()
-    keep = np.flatnonzero((mine[:, 2] + reach >= around[0]) & (around[2] + reach >= mine[:, 0]) &
-                          (mine[:, 3] + reach >= around[1]) & (around[3] + reach >= mine[:, 1]))
+    keep = np.flatnonzero(_boxes_meet(polys.bounds().T, around, reach))
     return polys.take(keep), at[keep]
 
 
@@ -424,24 +423,23 @@ def _study_part(family, first, end, args):
                        args["query_frames"], args["seed"], first, end)
 
 
-def _summed(parts, table, key, counts, order):
+def _summed(parts, table, key, counts, order, time=None):
     """One table's rows of the parts, the rows of the same ``key`` merged
-    (``counts`` summed, measured errors joined, times summed as
-    nanoseconds), in the single run's order (``order`` of a row)."""
+    (``counts`` summed, measured errors joined, and with ``time`` = (a time
+    per unit, the count of units) the time summed as nanoseconds in
+    ``_ns``), in the single run's order (``order`` of a row)."""
     merged = {}
     for part in parts:
         for row in part[table]:
             k = tuple(row[c] for c in key)
-            weight = row.get("cases", row.get("questions"))
-            ns = row.get("ns_per_query", row.get("ns_per_question", 0.0)) * weight
             if k not in merged:
-                merged[k] = dict(row, _ns=ns, errors=list(row.get("errors", [])))
-                continue
-            m = merged[k]
-            for c in counts:
-                m[c] += row[c]
-            m["errors"] += row.get("errors", [])
-            m["_ns"] += ns
+                merged[k] = dict(row, errors=list(row.get("errors", [])), _ns=0.0)
+            else:
+                for c in counts:
+                    merged[k][c] += row[c]
+                merged[k]["errors"] += row.get("errors", [])
+            if time:
+                merged[k]["_ns"] += row[time[0]] * row[time[1]]
     return sorted(merged.values(), key=order)
 
 
@@ -498,10 +496,12 @@ def _merged_study(parts, families):
     decision = {d: k for k, d in enumerate(names["decisions"])}
     query = {q: k for k, q in enumerate(names["queries"])}
     decisions = _summed(parts, "decisions", ("number_type", "family", "decision"), ("cases", "disagreements"),
-                        lambda r: (rank[r["number_type"]], family[r["family"]], decision[r["decision"]]))
+                        lambda r: (rank[r["number_type"]], family[r["family"]], decision[r["decision"]]),
+                        time=("ns_per_query", "cases"))
     queries = _summed(parts, "queries", ("number_type", "family", "query"),
                       ("questions", "differing", "meeting_differs", "features_differ", "values_differ"),
-                      lambda r: (rank[r["number_type"]], family[r["family"]], query[r["query"]]))
+                      lambda r: (rank[r["number_type"]], family[r["family"]], query[r["query"]]),
+                      time=("ns_per_question", "questions"))
     stability = _summed(parts, "stability", ("number_type", "sweep", "magnitude"), ("cases", "disagreements"),
                         lambda r: (rank[r["number_type"]], r["sweep"], r["magnitude"]))
     for row in decisions:
