@@ -152,3 +152,65 @@ TEST_CASE("inclusion: locate_by_crossings against Feito's test and an exact refe
     CHECK(counts[1] > 500);
     CHECK(counts[2] > 500);
 }
+
+TEST_CASE("inclusion: locate_by_crossings filtered in double equals it in exact rationals", "[inclusion]") {
+    // The doubles of the vertices and of the point each moved by -e, 0 or
+    // +e on each coordinate (the filter's promise at its limit), e near the
+    // grid's step so that many ends sit within 2e of the point's height or
+    // abscissa; edge by edge, and by runs of three edges: the answer is the
+    // exact one, and the doubles settle most edges (a vertex in NT is asked
+    // for the others only).
+    test_scenes::rng g(57);
+    const double e = test_scenes::grid * 0.75;
+    std::size_t asked = 0, edges = 0, counts[3] = {0, 0, 0};
+    const std::size_t run_length = 3;
+    const std::vector<box> no_runs;
+    const auto moved = [&](point<double> q) {
+        const double steps[3] = {-e, 0, e};
+        return point<double>{q.x + steps[g.index(3)], q.y + steps[g.index(3)]};
+    };
+    for (int round = 0; round < 300; ++round) {
+        const polygon p(test_scenes::random_messy(g, 8, 6));
+        std::vector<point<exact_rational>> v;
+        std::vector<point<double>> approx;
+        for (const point<double>& q : p.vertices()) {
+            v.push_back(to_point<exact_rational>(q));
+            approx.push_back(moved(q));
+        }
+        // Runs of three edges, some across the end of a ring.
+        std::vector<box> runs((p.size() + run_length - 1) / run_length);
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            runs[i / run_length].add(approx[i]);
+            runs[i / run_length].add(approx[p.next(i)]);
+        }
+        for (int k = 0; k < 40; ++k) {
+            point<double> q;
+            const std::size_t i = g.index(p.size());
+            switch (k % 4) {
+            case 0: q = p.vertex(i); break;
+            case 1: q = {test_scenes::snap(g.uniform(-20, 20)), p.vertex(i).y}; break;
+            case 2: q = {p.vertex(i).x, test_scenes::snap(g.uniform(-20, 20))}; break;
+            default: q = test_scenes::snap(point<double>{g.uniform(-20, 20), g.uniform(-20, 20)});
+            }
+            const point<exact_rational> qe = to_point<exact_rational>(q);
+            const location exact = locate_by_crossings(p, v, qe);
+            const point<double> q_approx = moved(q);
+            for (const std::vector<box>* r : {&no_runs, static_cast<const std::vector<box>*>(&runs)}) {
+                const location filtered =
+                    locate_by_crossings(p, approx, *r, run_length, q_approx, e, qe, [&](std::size_t j) {
+                        ++asked;
+                        return v[j];
+                    });
+                INFO("round " << round << " point (" << q.x << ", " << q.y << "), runs " << r->size());
+                REQUIRE(filtered == exact);
+            }
+            edges += 2 * p.size();
+            ++counts[static_cast<int>(exact)];
+        }
+    }
+    CHECK(counts[0] > 500);
+    CHECK(counts[1] > 500);
+    CHECK(counts[2] > 500);
+    // Two vertices per edge left to NT: most edges were settled in double.
+    CHECK(asked < edges / 2);
+}

@@ -3,13 +3,16 @@
 /// \file
 /// Feito's inclusion test on the signed triangle covering (docs/method.md section 2).
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
 #include "influence2d/assert.hpp"
+#include "influence2d/core/box.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/covering/covering.hpp"
+#include "influence2d/predicates/filters.hpp"
 #include "influence2d/predicates/orientation.hpp"
 
 namespace influence2d {
@@ -50,42 +53,87 @@ location feito_locate(const polygon& shape, const std::vector<point<NT>>& v, con
     return doubled != 0 ? location::inside : location::outside;
 }
 
+/// edge_crossing's answer when P lies on the edge.
+inline constexpr int crossing_on_edge = 2;
+
+/// What the edge (a, b) adds to the winding number of the closed ray from
+/// P towards +x (Sunday's form of the crossing count), exactly when NT's
+/// comparisons and orientations are: +1 or -1 for an edge the ray crosses
+/// upward or downward, 0 for one it misses; `crossing_on_edge` when P lies
+/// on the closed edge:
+///   a and b both above P, or both below, or both left of it: 0
+///   both right of it: its direction alone (upward: a.y <= P.y < b.y)
+///   P on the closed edge [a, b]                      -> crossing_on_edge
+///   upward edge, P left of it: +1; downward edge (b.y <= P.y < a.y), P
+///   right of it: -1; else 0
+/// An orientation is taken only for an edge whose box holds P.
+template <class NT>
+int edge_crossing(const point<NT>& a, const point<NT>& b, const point<NT>& p) {
+    const int ay = compare_values(a.y, p.y), by = compare_values(b.y, p.y);
+    if ((ay > 0 && by > 0) || (ay < 0 && by < 0)) return 0;  // no crossing, P not on it
+    const int ax = compare_values(a.x, p.x), bx = compare_values(b.x, p.x);
+    if (ax < 0 && bx < 0) return 0;  // wholly left: the ray misses it, P is not on it
+    const bool upward = ay <= 0 && by > 0, downward = by <= 0 && ay > 0;
+    if (ax > 0 && bx > 0) return upward ? 1 : downward ? -1 : 0;  // P left of an upward edge, right of a downward one
+    const int side = orientation(a, b, p);
+    if (side == 0 && within_collinear_segment(p, a, b)) return crossing_on_edge;
+    return upward && side > 0 ? 1 : downward && side < 0 ? -1 : 0;
+}
+
 /// Locates P in the closed region of the polygon whose vertices, in NT, are
 /// `v` (topology from `shape`) by the winding number of a ray from P towards
-/// +x, without an origin (Sunday's form of the crossing count):
-///   for each edge (a, b):
-///     a and b both above P, or both below, or both left of it: skip
-///     P on the closed edge [a, b]                -> boundary: stop
-///     upward edge (a.y <= P.y < b.y), P left of it   -> winding + 1
-///     downward edge (b.y <= P.y < a.y), P right of it -> winding - 1
-///   inside when the winding number is not zero
-/// An edge wholly right of P decides its crossing by its end's heights
-/// alone; an orientation is taken only for the few edges whose box holds P.
-/// The same region as feito_locate (the same winding numbers, the boundary
-/// closed), exact when NT's comparisons and orientations are; time linear in
-/// the number of edges, with a few comparisons per edge.
+/// +x, without an origin: the sum of edge_crossing over the edges, the
+/// boundary when P lies on one; inside when the sum is not zero. The same
+/// region as feito_locate (the same winding numbers, the boundary closed),
+/// exact when NT's comparisons and orientations are; time linear in the
+/// number of edges, with a few comparisons per edge.
 template <class NT>
 location locate_by_crossings(const polygon& shape, const std::vector<point<NT>>& v, const point<NT>& p) {
     INFLUENCE2D_ASSERT(v.size() == shape.size(), "the vertices in NT are not the polygon's");
     long long winding = 0;
     for (std::size_t i = 0; i < shape.size(); ++i) {
-        const point<NT>& a = v[i];
-        const point<NT>& b = v[shape.next(i)];
-        const int ay = compare_values(a.y, p.y), by = compare_values(b.y, p.y);
-        if ((ay > 0 && by > 0) || (ay < 0 && by < 0)) continue;  // no crossing, P not on it
-        const int ax = compare_values(a.x, p.x), bx = compare_values(b.x, p.x);
-        if (ax < 0 && bx < 0) continue;  // wholly left: the ray misses it, P is not on it
-        const bool upward = ay <= 0 && by > 0, downward = by <= 0 && ay > 0;
-        if (ax > 0 && bx > 0) {
-            // Wholly right of P: P lies left of an upward edge and right of a
-            // downward one.
-            winding += upward ? 1 : downward ? -1 : 0;
-            continue;
+        const int c = edge_crossing(v[i], v[shape.next(i)], p);
+        if (c == crossing_on_edge) return location::boundary;
+        winding += c;
+    }
+    return winding != 0 ? location::inside : location::outside;
+}
+
+/// locate_by_crossings with a filter in double: the polygon's vertices are
+/// known in double (`approx`) and P (`p_approx`) to within e on each
+/// coordinate, and in NT on demand (`vertex(i)`, P as `p`). `runs`, when
+/// not empty, holds the boxes of the approx vertices of the runs of
+/// `run_length` consecutive edges (run r: edges r run_length onwards),
+/// every approx coordinate finite. The same answer as locate_by_crossings
+/// on the vertices in NT, exact when NT is:
+///   for each run (every edge one run when there are no runs):
+///     the run's box certainly misses the ray (certainly_off_ray): its
+///       edges add nothing
+///     else for each edge: its crossing settled in double (certain_crossing)
+///       or, when not, edge_crossing in NT (a vertex in NT made only there)
+template <class NT, class Vertex>
+location locate_by_crossings(const polygon& shape, const std::vector<point<double>>& approx,
+                             const std::vector<box>& runs, std::size_t run_length, const point<double>& p_approx,
+                             double e, const point<NT>& p, Vertex&& vertex) {
+    INFLUENCE2D_ASSERT(approx.size() == shape.size(), "the vertices in double are not the polygon's");
+    long long winding = 0;
+    const auto edges = [&](std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i) {
+            const std::size_t j = shape.next(i);
+            int c = certain_crossing(approx[i], approx[j], p_approx, 2 * e);
+            if (c == crossing_unknown) c = edge_crossing<NT>(vertex(i), vertex(j), p);
+            if (c == crossing_on_edge) return false;
+            winding += c;
         }
-        const int side = orientation(a, b, p);
-        if (side == 0 && within_collinear_segment(p, a, b)) return location::boundary;
-        if (upward && side > 0) ++winding;
-        if (downward && side < 0) --winding;
+        return true;
+    };
+    if (runs.empty()) {
+        if (!edges(0, shape.size())) return location::boundary;
+    } else {
+        for (std::size_t r = 0; r < runs.size(); ++r) {
+            if (certainly_off_ray(runs[r], p_approx, 2 * e)) continue;
+            if (!edges(r * run_length, std::min(shape.size(), (r + 1) * run_length))) return location::boundary;
+        }
     }
     return winding != 0 ? location::inside : location::outside;
 }

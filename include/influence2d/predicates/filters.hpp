@@ -161,6 +161,39 @@ inline bool box_may_be_near_line(const box& b, const point<double>& u, const poi
     return false;
 }
 
+/// certain_crossing's answer when the doubles do not settle an edge.
+inline constexpr int crossing_unknown = 3;
+
+/// What the edge (a, b) adds to the winding number of the ray from P
+/// towards +x (edge_crossing in covering/inclusion.hpp: +1, -1 or 0), when
+/// the doubles settle it for points each within g / 2 of these on each
+/// coordinate (two such coordinates differ by more than g from their
+/// doubles' difference only when the doubles differ by less): the edge
+/// both above P or both below it by more than g, or both left of it: 0;
+/// both right of it by more than g with each end's height off P's by more
+/// than g: its direction. Otherwise (an end within g of P's height, or the
+/// edge's box within g of P) crossing_unknown. A NaN coordinate fails
+/// every comparison: crossing_unknown.
+inline int certain_crossing(const point<double>& a, const point<double>& b, const point<double>& p, double g) {
+    const double above = p.y + g, below = p.y - g;
+    if ((a.y > above && b.y > above) || (a.y < below && b.y < below)) return 0;
+    if (a.x < p.x - g && b.x < p.x - g) return 0;
+    if (a.x > p.x + g && b.x > p.x + g) {
+        if (a.y < below && b.y > above) return 1;
+        if (a.y > above && b.y < below) return -1;
+    }
+    return crossing_unknown;
+}
+
+/// Whether every edge with both ends in box b certainly adds nothing to the
+/// crossings of the ray from P towards +x (certain_crossing's 0 for each,
+/// with the same g): b lies above P or below it by more than g, or left of
+/// it by more than g. False for an empty box or a NaN coordinate of P.
+inline bool certainly_off_ray(const box& b, const point<double>& p, double g) {
+    if (b.empty()) return false;
+    return b.min_y > p.y + g || b.max_y < p.y - g || b.max_x < p.x - g;
+}
+
 /// The margin between points posed in double and the same points posed in
 /// NT, for coordinates whose terms (the polygons' coordinates and the
 /// translations) sum to at most `scale` in magnitude: each coordinate

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "influence2d/core/box.hpp"
@@ -36,6 +37,39 @@ struct meeting {
     /// Whether the regions meet.
     explicit operator bool() const { return how != kind::none; }
 };
+
+/// Where P lies in the closed region of the placed polygon, P known in
+/// double (`p_approx`) and in NT (`p`), every coordinate in double within
+/// e of its value in NT (the filters' margin): locate_by_crossings, its
+/// runs of edges (when made) and its edges settled in double where they can
+/// be (a vertex in NT made only for the others; in double, whose doubles
+/// are the decisions' own, with no margin). Exact when NT is.
+template <class NT>
+location locate_placed(placed_polygon<NT>& a, const point<double>& p_approx, const point<NT>& p, double e) {
+    // (Run boxes leave NaN out: they serve where every coordinate is finite.
+    // In double the doubles are the decisions' own: no margin.)
+    static const std::vector<box> no_runs;
+    const std::vector<box>& runs = a.finite() ? a.run_bounds() : no_runs;
+    if constexpr (std::is_same_v<NT, double>) {
+        if (runs.empty()) return locate_by_crossings(a.shape(), a.all(), p);
+        const std::vector<point<double>>& v = a.approx();
+        return locate_by_crossings(a.shape(), v, runs, edge_run_length, p_approx, 0.0, p,
+                                   [&v](std::size_t i) -> const point<double>& { return v[i]; });
+    } else {
+        return locate_by_crossings(a.shape(), a.approx(), runs, edge_run_length, p_approx, e, p,
+                                   [&a](std::size_t i) -> decltype(a[i]) { return a[i]; });
+    }
+}
+
+/// The edges of the placed polygon whose box, grown by `grow`, meets
+/// `window` (edges_meeting), by its run boxes when it has them.
+template <class NT>
+void edges_of(const placed_polygon<NT>& a, const box& window, double grow, std::vector<edge_box>& out) {
+    if (a.run_bounds().empty())
+        edges_meeting(a.shape(), a.approx(), window, grow, out);
+    else
+        edges_meeting(a.shape(), a.approx(), a.run_bounds(), window, grow, out);
+}
 
 /// Which witness placed_meet looks for first when both kinds may show a
 /// meeting (the answer is the same; only the witness and the cost differ).
@@ -84,13 +118,13 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e,
         for (std::size_t r = first; r < std::min(last, bs.ring_count()); ++r) {
             const std::size_t j = bs.ring_begin(r);
             if (outside(b.approx()[j], a_window)) continue;
-            const location l = locate_by_crossings(as, a.all(), b[j]);
+            const location l = locate_placed(a, b.approx()[j], b[j], e);
             if (l != location::outside) return {meeting::kind::b_vertex_in_a, 0, j, l};
         }
         for (std::size_t r = first; r < std::min(last, as.ring_count()); ++r) {
             const std::size_t i = as.ring_begin(r);
             if (outside(a.approx()[i], b_window)) continue;
-            const location l = locate_by_crossings(bs, b.all(), a[i]);
+            const location l = locate_placed(b, a.approx()[i], a[i], e);
             if (l != location::outside) return {meeting::kind::a_vertex_in_b, i, 0, l};
         }
         return {};
@@ -101,8 +135,8 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e,
     // No ring inside the other polygon: the regions meet iff the boundaries
     // do. Candidate edges: those whose box meets the other polygon's box.
     std::vector<edge_box> a_edges, b_edges;
-    edges_meeting(as, a.approx(), b_window, e, a_edges);
-    edges_meeting(bs, b.approx(), a_window, e, b_edges);
+    edges_of(a, b_window, e, a_edges);
+    edges_of(b, a_window, e, b_edges);
     meeting found;
     overlapping_pairs(a_edges, b_edges, [&](std::uint32_t i, std::uint32_t j) {
         const std::size_t i2 = as.next(i), j2 = bs.next(j);
@@ -153,8 +187,8 @@ meeting placed_within(placed_polygon<NT>& a, placed_polygon<NT>& b, double e, do
     const double grow = reach / 2 + e;
     std::vector<edge_box> a_edges, b_edges;
     const polygon &as = a.shape(), &bs = b.shape();
-    edges_meeting(as, a.approx(), b_window, grow, a_edges);
-    edges_meeting(bs, b.approx(), a_window, grow, b_edges);
+    edges_of(a, b_window, grow, a_edges);
+    edges_of(b, a_window, grow, b_edges);
     meeting found;
     overlapping_pairs(a_edges, b_edges, [&](std::uint32_t i, std::uint32_t j) {
         if (!segments_within(a[i], a[as.next(i)], b[j], b[bs.next(j)], d2)) return false;

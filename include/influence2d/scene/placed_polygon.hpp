@@ -18,6 +18,7 @@
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/number/traits.hpp"
+#include "influence2d/scene/edge_boxes.hpp"
 
 namespace influence2d {
 
@@ -79,9 +80,10 @@ public:
             finite_ = finite_ && std::isfinite(approx_own_[j].x) && std::isfinite(approx_own_[j].y);
             bounds_.add(approx_own_[j]);
         }
+        runs_.clear();
         if constexpr (!std::is_same_v<NT, double>) {
             all_.clear();
-            made_.assign(shape_.size(), std::nullopt);
+            if constexpr (!by_value) made_.assign(shape_.size(), std::nullopt);
         }
     }
 
@@ -96,18 +98,38 @@ public:
     const box& bounds() const { return bounds_; }
     /// Whether every double coordinate is finite.
     bool finite() const { return finite_; }
+    /// The boxes of the runs of consecutive edges in double (edge_run_boxes),
+    /// once make_run_bounds() made them at the present placing; else empty.
+    const std::vector<box>& run_bounds() const { return runs_; }
+    /// Makes run_bounds(): a pass over the vertices, which pays when the
+    /// placing serves several pairs (edges_meeting then passes over each run
+    /// that misses a pair's window whole).
+    void make_run_bounds() { edge_run_boxes(shape_, *approx_, runs_); }
 
-    /// Vertex j in NT. The reference stays valid until the first call of
-    /// all() (which gathers the vertices made so far into one vector).
-    const point<NT>& operator[](std::size_t j) {
+    /// Whether vertex j in NT is returned by value, made anew on each call
+    /// (NT trivially copyable: a double, or a double with its error bound,
+    /// whose posing is a few operations on doubles), not as a reference into
+    /// the vertices made so far. Such a placed polygon may then be read by
+    /// several threads at once without all().
+    static constexpr bool by_value = std::is_trivially_copyable_v<NT>;
+    /// Vertex j in NT, by value or by reference (by_value). A reference stays
+    /// valid until the first call of all() (which gathers the vertices made
+    /// so far into one vector).
+    std::conditional_t<by_value, point<NT>, const point<NT>&> operator[](std::size_t j) {
         if constexpr (std::is_same_v<NT, double>) {
             return how_ == how::given ? (*given_)[j] : (*approx_)[j];
         } else {
             if (how_ == how::given) return (*given_)[j];
             if (!all_.empty()) return all_[j];
-            std::optional<point<NT>>& v = made_[j];
-            if (!v) v = make(j);
-            return *v;
+            if constexpr (by_value) {
+                // A few operations on doubles: made anew on each call (nothing
+                // kept, nothing allocated, and no state for threads to share).
+                return make(j);
+            } else {
+                std::optional<point<NT>>& v = made_[j];
+                if (!v) v = make(j);
+                return *v;
+            }
         }
     }
 
@@ -120,7 +142,7 @@ public:
             if (all_.empty()) {
                 all_.reserve(shape_.size());
                 for (std::size_t j = 0; j < shape_.size(); ++j)
-                    all_.push_back(made_[j] ? std::move(*made_[j]) : make(j));
+                    all_.push_back(j < made_.size() && made_[j] ? std::move(*made_[j]) : make(j));
                 made_.clear();
             }
             return all_;
@@ -131,9 +153,10 @@ private:
     enum class how : std::uint8_t { own, posed, given };
 
     // (A vertex in NT is made on first use: an exact NT allocates for each
-    // value, so none is made, not even a default one, before it is asked.)
+    // value, so none is made, not even a default one, before it is asked.
+    // Nothing is kept for a by_value NT.)
     void make_room() {
-        if constexpr (!std::is_same_v<NT, double>) made_.resize(shape_.size());
+        if constexpr (!std::is_same_v<NT, double> && !by_value) made_.resize(shape_.size());
     }
     point<NT> make(std::size_t j) const {
         const point<double>& v = shape_.vertex(j);
@@ -147,6 +170,7 @@ private:
     const std::vector<point<double>>* approx_ = nullptr;
     std::vector<point<double>> approx_own_;
     box bounds_;
+    std::vector<box> runs_;  // run_bounds(), once made
     bool finite_ = true;
     std::vector<std::optional<point<NT>>> made_;  // the vertices made so far, until all()
     std::vector<point<NT>> all_;                  // every vertex, once all() asked

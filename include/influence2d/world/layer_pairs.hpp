@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -46,16 +47,50 @@ void boxes_of(const std::vector<polygon>& layer, const char* which, double withi
     }
 }
 
-/// The candidates' answers (in parallel blocks) and the pairs within d.
+/// Each polygon of `layer` that some candidate names (`named`), placed where
+/// it stands once for all its pairs, with its run boxes (in parallel
+/// blocks); every vertex in NT made too when NT's placings keep them and
+/// several threads will read them.
+template <class NT>
+std::vector<std::unique_ptr<placed_polygon<NT>>> placed_layer(const std::vector<polygon>& layer,
+                                                              const std::vector<char>& named, unsigned threads) {
+    std::vector<std::size_t> which;
+    for (std::size_t k = 0; k < layer.size(); ++k)
+        if (named[k]) which.push_back(k);
+    std::vector<std::unique_ptr<placed_polygon<NT>>> placed(layer.size());
+    run_in_blocks(which.size(), which.size() < 64 ? 1u : threads, [&](std::size_t lo, std::size_t hi) {
+        for (std::size_t k = lo; k < hi; ++k) {
+            auto p = std::make_unique<placed_polygon<NT>>(layer[which[k]]);
+            p->make_run_bounds();
+            if constexpr (!placed_polygon<NT>::by_value)
+                if (threads != 1) p->all();
+            placed[which[k]] = std::move(p);
+        }
+    });
+    return placed;
+}
+
+/// The candidates' answers (in parallel blocks) and the pairs within d;
+/// `same` when both layers are one.
 template <class NT, class Exact>
-std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::vector<polygon>& second,
+std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::vector<polygon>& second, bool same,
                                  const std::vector<body_pair>& candidates, double within, unsigned threads) {
+    const unsigned pair_threads = candidates.size() < 128 ? 1u : threads;
+    std::vector<char> named_first(first.size(), 0), named_second(second.size(), 0);
+    for (const body_pair& c : candidates) {
+        named_first[c.first] = 1;
+        (same ? named_first : named_second)[c.second] = 1;
+    }
+    const auto placed_first = placed_layer<NT>(first, named_first, pair_threads);
+    const auto placed_second = same ? std::vector<std::unique_ptr<placed_polygon<NT>>>{}
+                                    : placed_layer<NT>(second, named_second, pair_threads);
+    const auto& second_placed = same ? placed_first : placed_second;
     std::vector<char> meets(candidates.size(), 0);
-    run_in_blocks(candidates.size(), candidates.size() < 128 ? 1u : threads, [&](std::size_t lo, std::size_t hi) {
+    run_in_blocks(candidates.size(), pair_threads, [&](std::size_t lo, std::size_t hi) {
         const rotation_pose here(pose{});
         for (std::size_t k = lo; k < hi; ++k) {
             const polygon &a = first[candidates[k].first], &b = second[candidates[k].second];
-            placed_polygon<NT> pa(a), pb(b);
+            placed_polygon<NT>&pa = *placed_first[candidates[k].first], &pb = *second_placed[candidates[k].second];
             const body_view<NT> va{&a, here, coordinate_scale(a), &pa}, vb{&b, here, coordinate_scale(b), &pb};
             meets[k] = bodies_within<NT, Exact>(meeting{}, va, vb, within) ? 1 : 0;
         }
@@ -84,8 +119,10 @@ inline double checked_distance(double within) {
 ///            margin); a box tree over them (box_tree)
 ///   candidates <- for each polygon i, the polygons j > i whose box meets
 ///                 its own
+///   each polygon some candidate names placed where it stands, once for
+///   all its pairs, with its run boxes (placed_layer)
 ///   each candidate, in parallel blocks of `threads` (0: every hardware
-///   thread): bodies_within at the polygons' own coordinates
+///   thread): bodies_within on the two placings
 ///
 /// Throws invalid_input for an empty polygon (naming it), one beyond NT's
 /// range, or a distance that is negative, NaN or infinite.
@@ -103,7 +140,7 @@ std::vector<body_pair> layer_pairs(const std::vector<polygon>& layer, double wit
             if (j > i) candidates.push_back({i, j});
         });
     std::sort(candidates.begin(), candidates.end());
-    return layer_pairs_detail::within_of<NT, Exact>(layer, layer, candidates, within, threads);
+    return layer_pairs_detail::within_of<NT, Exact>(layer, layer, true, candidates, within, threads);
 }
 
 /// Every pair (i, j) of a polygon i of `first` and a polygon j of `second`
@@ -123,7 +160,7 @@ std::vector<body_pair> layer_pairs(const std::vector<polygon>& first, const std:
     for (std::uint32_t i = 0; i < first.size(); ++i)
         tree.query(a_boxes[i], [&](std::uint32_t j) { candidates.push_back({i, j}); });
     std::sort(candidates.begin(), candidates.end());
-    return layer_pairs_detail::within_of<NT, Exact>(first, second, candidates, within, threads);
+    return layer_pairs_detail::within_of<NT, Exact>(first, second, false, candidates, within, threads);
 }
 
 }  // namespace influence2d

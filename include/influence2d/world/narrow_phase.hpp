@@ -72,10 +72,16 @@ bool witness_holds(const meeting& last, const body_view<NT>& a, const body_view<
                         v = b.pose.template apply<NT>(bs.vertex(bs.next(j)));
         return d > 0 ? segments_within(p, q, u, v, d2) : segments_intersect(p, q, u, v);
     }
-    case meeting::kind::b_vertex_in_a:
-        return locate_by_crossings(as, a.placed->all(), (*b.placed)[last.b_index]) != location::outside;
-    case meeting::kind::a_vertex_in_b:
-        return locate_by_crossings(bs, b.placed->all(), (*a.placed)[last.a_index]) != location::outside;
+    case meeting::kind::b_vertex_in_a: {
+        const std::size_t j = last.b_index;
+        return locate_placed(*a.placed, b.placed->approx()[j], (*b.placed)[j], posing_margin<NT>(a.scale + b.scale)) !=
+               location::outside;
+    }
+    case meeting::kind::a_vertex_in_b: {
+        const std::size_t i = last.a_index;
+        return locate_placed(*b.placed, a.placed->approx()[i], (*a.placed)[i], posing_margin<NT>(a.scale + b.scale)) !=
+               location::outside;
+    }
     default: return false;
     }
 }

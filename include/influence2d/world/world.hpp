@@ -477,10 +477,10 @@ private:
 
     // The bodies of the candidates `which` placed at their poses, each
     // once, in parallel blocks when many; a body that stayed keeps its
-    // placing. Vertices in double at once; in NT (a type other than double)
-    // each made when a test first asks for it, or all of them here when the
-    // pairs are then tested by several threads (`shared`), which may not make
-    // them concurrently.
+    // placing. Vertices in double at once; in an NT that placed_polygon
+    // keeps (not by_value: an exact type) each made when a test first asks
+    // for it, or all of them here when the pairs are then tested by several
+    // threads (`shared`), which may not make them concurrently.
     void place_candidates(const std::vector<record>& tested, const std::vector<std::size_t>& which, bool shared) {
         struct placing {
             body_id id;
@@ -506,7 +506,7 @@ private:
                     else
                         b.placed = std::make_unique<placed_polygon<NT>>(shapes_[b.shape]->shape, b.pose);
                 }
-                if constexpr (!std::is_same_v<NT, double>)
+                if constexpr (!placed_polygon<NT>::by_value)
                     if (b.all_made) b.placed->all();
             }
         });
