@@ -344,3 +344,34 @@ TEST_CASE("layer_pairs: one layer and two layers against the exact reference", "
     CHECK_THROWS_AS(layer_pairs<double>(std::vector<polygon>{polygon{}}), invalid_input);
     CHECK_THROWS_AS(layer_pairs<double>(std::vector<polygon>{}, -2.0), invalid_input);
 }
+
+TEST_CASE("layer_pairs: a crowded layer answered by two threads, exact vertices made before they share", "[world]") {
+    // Enough candidates (128 and more) for the pair tests to run on two
+    // threads, each polygon placed once for all its pairs: in exact
+    // rationals every vertex is then made before the threads read it. The
+    // answers are the exact reference's, in every type and thread count.
+    rng g(501);
+    const std::vector<polygon> shapes = random_shapes(g, 6);
+    std::vector<polygon> layer;
+    std::vector<body_state> bodies;
+    for (int k = 0; k < 60; ++k) {
+        const body_state b{g.index(shapes.size()),
+                           {test_scenes::snap(g.uniform(-8, 8)), test_scenes::snap(g.uniform(-8, 8)), 0}};
+        std::vector<ring_input> rings;
+        const polygon& p = shapes[b.shape];
+        for (std::size_t r = 0; r < p.ring_count(); ++r) {
+            ring_input ring;
+            ring.role = p.role(r);
+            for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
+                ring.vertices.push_back({p.vertex(i).x + b.where.tx, p.vertex(i).y + b.where.ty});
+            rings.push_back(ring);
+        }
+        layer.emplace_back(rings);
+        bodies.push_back(b);
+    }
+    const std::vector<body_pair> want = reference_contacts(shapes, bodies, 0);
+    REQUIRE(want.size() >= 128);
+    CHECK(show(layer_pairs<exact_rational>(layer, 0, 2)) == show(want));
+    CHECK(show(certified_layer_pairs(layer, 0, 2)) == show(want));
+    CHECK(show(layer_pairs<double>(layer, 0, 2)) == show(layer_pairs<double>(layer, 0, 1)));
+}
