@@ -65,6 +65,21 @@ bool exact_within(const test_exact::placed_shape& a, const test_exact::placed_sh
     return false;
 }
 
+/// The polygon p translated by where's (tx, ty) (its turn ignored): a
+/// layer's polygon at its own coordinates, the same point set as the body
+/// posed by `where` when the turn is 0.
+polygon translated(const polygon& p, const pose& where) {
+    std::vector<ring_input> rings;
+    for (std::size_t r = 0; r < p.ring_count(); ++r) {
+        ring_input ring;
+        ring.role = p.role(r);
+        for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
+            ring.vertices.push_back({p.vertex(i).x + where.tx, p.vertex(i).y + where.ty});
+        rings.push_back(ring);
+    }
+    return polygon(rings);
+}
+
 /// The reference contacts: every pair of live bodies, not both fixed.
 std::vector<body_pair> reference_contacts(const std::vector<polygon>& shapes, const std::vector<body_state>& bodies,
                                           double d) {
@@ -313,16 +328,7 @@ TEST_CASE("layer_pairs: one layer and two layers against the exact reference", "
             const body_state b{g.index(shapes.size()),
                                {test_scenes::snap(origin.x + g.uniform(-30, 30)),
                                 test_scenes::snap(origin.y + g.uniform(-30, 30)), 0}};
-            std::vector<ring_input> rings;
-            const polygon& p = shapes[b.shape];
-            for (std::size_t r = 0; r < p.ring_count(); ++r) {
-                ring_input ring;
-                ring.role = p.role(r);
-                for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
-                    ring.vertices.push_back({p.vertex(i).x + b.where.tx, p.vertex(i).y + b.where.ty});
-                rings.push_back(ring);
-            }
-            (k % 2 ? first : second).emplace_back(rings);
+            (k % 2 ? first : second).push_back(translated(shapes[b.shape], b.where));
             (k % 2 ? as : bs).push_back(b);
         }
         // One layer: the reference on the bodies (none fixed).
@@ -357,16 +363,7 @@ TEST_CASE("layer_pairs: a crowded layer answered by two threads, exact vertices 
     for (int k = 0; k < 60; ++k) {
         const body_state b{g.index(shapes.size()),
                            {test_scenes::snap(g.uniform(-8, 8)), test_scenes::snap(g.uniform(-8, 8)), 0}};
-        std::vector<ring_input> rings;
-        const polygon& p = shapes[b.shape];
-        for (std::size_t r = 0; r < p.ring_count(); ++r) {
-            ring_input ring;
-            ring.role = p.role(r);
-            for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
-                ring.vertices.push_back({p.vertex(i).x + b.where.tx, p.vertex(i).y + b.where.ty});
-            rings.push_back(ring);
-        }
-        layer.emplace_back(rings);
+        layer.push_back(translated(shapes[b.shape], b.where));
         bodies.push_back(b);
     }
     const std::vector<body_pair> want = reference_contacts(shapes, bodies, 0);

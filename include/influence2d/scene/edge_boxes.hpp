@@ -48,6 +48,22 @@ inline void edge_run_boxes(const polygon& shape, const std::vector<point<double>
     }
 }
 
+/// Appends to `out` each edge e in [first, end) of a polygon whose vertices
+/// (in double) are `v` whose box, its ends' box widened by `low` below and
+/// `high` above on each axis (x, then y), meets `window`.
+inline void append_edges_meeting(const polygon& shape, const std::vector<point<double>>& v, std::size_t first,
+                                 std::size_t end, const box& window, point<double> low, point<double> high,
+                                 std::vector<edge_box>& out) {
+    for (std::size_t e = first; e < end; ++e) {
+        const point<double>&a = v[e], &b = v[shape.next(e)];
+        const edge_box k{std::min(a.x, b.x) + low.x, std::max(a.x, b.x) + high.x, std::min(a.y, b.y) + low.y,
+                         std::max(a.y, b.y) + high.y, static_cast<std::uint32_t>(e)};
+        // (A NaN coordinate fails every comparison: such an edge is kept.)
+        if (!(k.max_x < window.min_x || k.min_x > window.max_x || k.max_y < window.min_y || k.min_y > window.max_y))
+            out.push_back(k);
+    }
+}
+
 /// The edges of a polygon whose vertices (in double) are `v` and whose box
 /// meets `window`, each with its box grown by `grow`. With shifts, each box
 /// is that of the edge translated by every point between `from` and `to`
@@ -56,16 +72,9 @@ inline void edges_meeting(const polygon& shape, const std::vector<point<double>>
                           std::vector<edge_box>& out, point<double> from = {0, 0}, point<double> to = {0, 0}) {
     out.clear();
     out.reserve(shape.size());
-    const double low_x = std::min(from.x, to.x) - grow, high_x = std::max(from.x, to.x) + grow;
-    const double low_y = std::min(from.y, to.y) - grow, high_y = std::max(from.y, to.y) + grow;
-    for (std::size_t e = 0; e < shape.size(); ++e) {
-        const point<double>&a = v[e], &b = v[shape.next(e)];
-        const edge_box k{std::min(a.x, b.x) + low_x, std::max(a.x, b.x) + high_x, std::min(a.y, b.y) + low_y,
-                         std::max(a.y, b.y) + high_y, static_cast<std::uint32_t>(e)};
-        // (A NaN coordinate fails every comparison: such an edge is kept.)
-        if (!(k.max_x < window.min_x || k.min_x > window.max_x || k.max_y < window.min_y || k.min_y > window.max_y))
-            out.push_back(k);
-    }
+    append_edges_meeting(shape, v, 0, shape.size(), window,
+                         {std::min(from.x, to.x) - grow, std::min(from.y, to.y) - grow},
+                         {std::max(from.x, to.x) + grow, std::max(from.y, to.y) + grow}, out);
 }
 
 /// edges_meeting without shifts for a polygon whose run boxes are `runs`
@@ -81,14 +90,9 @@ inline void edges_meeting(const polygon& shape, const std::vector<point<double>>
         if (k.max_x + grow < window.min_x || k.min_x - grow > window.max_x || k.max_y + grow < window.min_y ||
             k.min_y - grow > window.max_y)
             continue;
-        for (std::size_t e = r * edge_run_length, end = std::min(shape.size(), e + edge_run_length); e < end; ++e) {
-            const point<double>&a = v[e], &b = v[shape.next(e)];
-            const edge_box eb{std::min(a.x, b.x) - grow, std::max(a.x, b.x) + grow, std::min(a.y, b.y) - grow,
-                              std::max(a.y, b.y) + grow, static_cast<std::uint32_t>(e)};
-            if (!(eb.max_x < window.min_x || eb.min_x > window.max_x || eb.max_y < window.min_y ||
-                  eb.min_y > window.max_y))
-                out.push_back(eb);
-        }
+        const std::size_t first = r * edge_run_length;
+        append_edges_meeting(shape, v, first, std::min(shape.size(), first + edge_run_length), window, {-grow, -grow},
+                             {grow, grow}, out);
     }
 }
 
