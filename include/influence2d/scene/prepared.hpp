@@ -23,6 +23,7 @@
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/influence/edge_tree.hpp"
 #include "influence2d/influence/influence_areas.hpp"
+#include "influence2d/predicates/convexity.hpp"
 
 namespace influence2d {
 
@@ -89,7 +90,8 @@ struct static_scene {
         : shape(accepted_polygon<NT>(a, "static")),
           covering(shape, shape.centroid()),
           radius(bounding_radius(shape, shape.centroid())),
-          scale(coordinate_scale(shape)) {}
+          scale(coordinate_scale(shape)),
+          convex(is_convex_polygon(shape)) {}
     static_scene(const static_scene&) = delete;
     static_scene& operator=(const static_scene&) = delete;
 
@@ -97,6 +99,7 @@ struct static_scene {
     triangle_covering<NT> covering;  ///< refers to `shape`
     double radius;                   ///< bounds the distance from the centroid to A
     double scale;                    ///< largest absolute coordinate of A
+    bool convex;                     ///< A is one convex ring (is_convex_polygon, exact)
 
     /// A's influence areas, which index `covering` (built on first use, O(n)
     /// with n edges; thread-safe).
@@ -133,7 +136,8 @@ struct moving_scene {
         : shape(accepted_polygon<NT>(b, "moving")),
           centroid(shape.centroid()),
           radius(bounding_radius(shape, centroid)),
-          scale(coordinate_scale(shape)) {}
+          scale(coordinate_scale(shape)),
+          convex(is_convex_polygon(shape)) {}
     moving_scene(const moving_scene&) = delete;
     moving_scene& operator=(const moving_scene&) = delete;
 
@@ -141,6 +145,7 @@ struct moving_scene {
     point<double> centroid;  ///< B's centroid in its own frame
     double radius;           ///< bounds the distance from the centroid to B
     double scale;            ///< largest absolute coordinate of B
+    bool convex;             ///< B is one convex ring (is_convex_polygon, exact)
 
     /// B's edge tree in B's own frame (built on first use; thread-safe).
     const edge_tree& tree() const {

@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: BSL-1.0
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "influence2d/detect/detector.hpp"
+#include "influence2d/exact/certified_detector.hpp"
+#include "influence2d/number/cgal.hpp"
+#include "influence2d/predicates/convexity.hpp"
+#include "support/random.hpp"
+#include "support/shapes.hpp"
+#include "verification/cgal_reference.hpp"
+
+using namespace influence2d;
+using test_shapes::ring;
+using verification::cgal_reference;
+
+namespace {
+
+polygon one_ring(std::vector<point<double>> v) { return polygon({ring(std::move(v))}); }
+
+/// A convex polygon of n vertices at sorted random angles on an ellipse
+/// about c (axes rx, ry), turned by phi; its doubles need not be convex
+/// (is_convex_polygon decides).
+polygon ellipse_polygon(test_random::rng& r, std::size_t n, point<double> c, double rx, double ry) {
+    std::vector<double> angles(n);
+    for (double& a : angles) a = r.uniform(0, 6.283185307179586);
+    std::sort(angles.begin(), angles.end());
+    const double phi = r.uniform(0, 3.14159);
+    std::vector<point<double>> v;
+    for (double a : angles) {
+        const double x = rx * std::cos(a), y = ry * std::sin(a);
+        v.push_back({c.x + std::cos(phi) * x - std::sin(phi) * y, c.y + std::sin(phi) * x + std::cos(phi) * y});
+    }
+    return one_ring(v);
+}
+
+/// Small convex polygons with integer vertices (posed by integer
+/// translations they touch exactly, edge on edge and vertex on edge).
+std::vector<polygon> lattice_polygons() {
+    return {one_ring({{0, 0}, {4, 0}, {4, 4}, {0, 4}}),
+            one_ring({{0, 0}, {2, 0}, {4, 0}, {4, 4}, {0, 4}}),  // a straight vertex
+            one_ring({{0, 0}, {6, 0}, {3, 5}}),
+            one_ring({{1, 0}, {3, 0}, {4, 2}, {3, 4}, {1, 4}, {0, 2}}),
+            one_ring({{0, 0}, {8, 1}, {9, 3}, {7, 6}, {2, 7}, {-1, 4}}),
+            one_ring({{0, 0}, {1, 0}, {1, 9}})};
+}
+
+/// What the detectors say about one pose, against the reference.
+struct verdicts {
+    std::size_t frames = 0, disagreements = 0, contacts = 0;
+};
+
+}  // namespace
+
+TEST_CASE("convexity: one convex ring, decided exactly", "[convexity]") {
+    CHECK(is_convex_polygon(one_ring({{0, 0}, {1, 0}, {1, 1}, {0, 1}})));
+    CHECK(is_convex_polygon(one_ring({{0, 0}, {0, 1}, {1, 1}, {1, 0}})));                // given clockwise: reoriented
+    CHECK(is_convex_polygon(one_ring({{0, 0}, {1, 0}, {2, 0}, {2, 2}})));                // a straight vertex
+    CHECK_FALSE(is_convex_polygon(one_ring({{0, 0}, {2, 0}, {1, 0}, {1, 2}})));          // a spike back
+    CHECK_FALSE(is_convex_polygon(one_ring({{0, 0}, {2, 0}, {1, 1}, {2, 2}, {0, 2}})));  // a notch
+    CHECK_FALSE(is_convex_polygon(one_ring({{0, 0}, {1, 0}, {1, 0}, {1, 1}})));          // a repeated vertex
+    // A pentagram turns left at every vertex and winds twice.
+    std::vector<point<double>> star;
+    for (int k = 0; k < 5; ++k) {
+        const double a = 2 * 3.141592653589793 * (2 * k) / 5;
+        star.push_back({std::round(1000 * std::cos(a)), std::round(1000 * std::sin(a))});
+    }
+    CHECK_FALSE(is_convex_polygon(one_ring(star)));
+    // A turn by less than an ulp: exact, not rounded.
+    CHECK_FALSE(is_convex_polygon(one_ring({{0, 0}, {2, 0x1p-60}, {4, 0}, {4, 4}, {0, 4}})));
+    CHECK(is_convex_polygon(one_ring({{0, 0}, {2, -0x1p-60}, {4, 0}, {4, 4}, {0, 4}})));
+    CHECK_FALSE(is_convex_polygon(test_shapes::square_with_hole()));
+    // Collinear only: no area.
+    CHECK_FALSE(is_convex_polygon(one_ring({{0, 0}, {1, 1}, {2, 2}})));
+}
+
+TEST_CASE("convex pairs: the separating-edge route equals the CGAL reference", "[convexity][detector]") {
+    test_random::rng r(20261126);
+    verdicts v;
+    std::size_t convex_frames = 0;
+    const auto check_pair = [&](const polygon& a, const polygon& b, const std::vector<pose>& poses, bool exact_poses) {
+        REQUIRE(is_convex_polygon(a));
+        REQUIRE(is_convex_polygon(b));
+        const cgal_reference ref(a, b), ref_witness(a, b, 0, true);
+        detector_options witness;
+        witness.witness = true;
+        detector<exact_rational> exact(a, b), exact_witness(a, b, witness);
+        detector<exact_rational, minimal_features> exact_minimal(a, b);
+        certified_detector<detector> certified(a, b), certified_witness(a, b, witness);
+        detector<double> plain(a, b);
+        // The roles swapped, for poses that are translations (negated exactly).
+        detector<exact_rational> swapped(b, a);
+        for (const pose& q : poses) {
+            ++v.frames;
+            const bool expected = ref.collide(q).collides;
+            v.contacts += expected;
+            const frame_result w = exact_witness.collide(q);
+            const frame_result cw = certified_witness.collide(q);
+            const frame_result rw = ref_witness.collide(q);
+            const bool agree = exact.collide(q).collides == expected && exact_minimal.collide(q).collides == expected &&
+                               certified.collide(q).collides == expected && w.collides == expected &&
+                               w.pairs == rw.pairs && cw.collides == expected && cw.pairs == rw.pairs &&
+                               (!exact_poses || plain.collide(q).collides == expected) &&
+                               (q.theta != 0 || swapped.collide(pose{-q.tx, -q.ty, 0}).collides == expected);
+            if (!agree) {
+                ++v.disagreements;
+                UNSCOPED_INFO("pose " << q.tx << " " << q.ty << " " << q.theta);
+            }
+        }
+        convex_frames += exact.statistics().convex_frames;
+    };
+
+    SECTION("lattice polygons touching exactly under integer translations") {
+        const std::vector<polygon> shapes = lattice_polygons();
+        for (const polygon& a : shapes)
+            for (const polygon& b : shapes) {
+                std::vector<pose> poses;
+                for (int x = -10; x <= 10; ++x)
+                    for (int y = -9; y <= 9; ++y) poses.push_back({double(x), double(y), 0});
+                check_pair(a, b, poses, true);
+            }
+        // Among them the squares side by side (translation (4, y), |y| <= 4:
+        // edge on edge) and corner to corner ((4, 4)).
+        CHECK(v.frames == 36 * 21 * 19);
+    }
+    SECTION("random convex polygons, random and coherent poses, several scales") {
+        for (int pair = 0; pair < 60; ++pair) {
+            const double scale = pair % 3 == 0 ? 1.0 : (pair % 3 == 1 ? 0x1p-500 : 0x1p+500);
+            const std::size_t na = 3 + r.index(14), nb = 3 + r.index(14);
+            const polygon a = ellipse_polygon(r, na, {0, 0}, scale * r.uniform(1, 3), scale * r.uniform(1, 3));
+            const polygon b = ellipse_polygon(r, nb, {0, 0}, scale * r.uniform(1, 3), scale * r.uniform(1, 3));
+            if (!is_convex_polygon(a) || !is_convex_polygon(b)) continue;
+            std::vector<pose> poses;
+            for (int k = 0; k < 60; ++k)
+                poses.push_back({scale * r.uniform(-6, 6), scale * r.uniform(-6, 6), r.uniform(-3.2, 3.2)});
+            // A coherent run through contact and out again.
+            const double theta0 = r.uniform(-3, 3);
+            for (int k = 0; k < 60; ++k)
+                poses.push_back({scale * (-6 + 0.2 * k), scale * 0.01 * k, theta0 + 0.003 * k});
+            check_pair(a, b, poses, false);
+        }
+    }
+    CHECK(v.disagreements == 0);
+    CHECK(v.contacts > 0);
+    CHECK(v.contacts < v.frames);
+    CHECK(convex_frames > 0);
+}
