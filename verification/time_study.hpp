@@ -78,6 +78,7 @@
 #include "verification/families.hpp"
 #include "verification/heap_meter.hpp"
 #include "verification/peers.hpp"
+#include "verification/raster.hpp"
 
 namespace influence2d::verification {
 
@@ -164,6 +165,7 @@ struct method_info {
     bool (*applies)(const polygon&, const polygon&);  ///< whether it can take the cell's pair
     const char* frames;                               ///< its frame form, for help and reports ("" if none)
     const char* one_shot;                             ///< its one-shot form ("" if none)
+    bool approximate = false;                         ///< answers only approximately by design (never the fastest peer)
 };
 
 /// A method: its description and the types of its two forms (no_form where it
@@ -206,7 +208,14 @@ inline const auto& method_table() {
                                             "the same (B posed fresh every query)"}},
         method_entry<box2d_peer, box2d_one_shot>{
             {"box2d", false, have_box2d, "INFLUENCE2D_HAVE_BOX2D", false, box2d_peer::applies,
-             "Box2D b2TestOverlap (convex, at most 8 vertices)", "Box2D, both shapes built, b2TestOverlap"}});
+             "Box2D b2TestOverlap (convex, at most 8 vertices)", "Box2D, both shapes built, b2TestOverlap"}},
+        method_entry<raster_peer<64>, no_form>{{"raster-64", false, true, "", false, any_pair,
+                                                "image space: both rasterised, 64 pixels along A's box", "", true}},
+        method_entry<raster_peer<256>, no_form>{{"raster-256", false, true, "", false, any_pair,
+                                                 "image space: both rasterised, 256 pixels along A's box", "", true}},
+        method_entry<raster_peer<1024>, no_form>{{"raster-1024", false, true, "", false, any_pair,
+                                                  "image space: both rasterised, 1024 pixels along A's box", "",
+                                                  true}});
     return table;
 }
 

@@ -37,11 +37,13 @@ inline cell_table rows_by_cell(const time_study_result& r) {
     return cells;
 }
 
-/// The fastest peer of a cell (nullptr if no peer ran).
+/// The fastest peer of a cell (nullptr if no peer ran); the approximate
+/// baselines (the raster test) do not count: they answer another question.
 inline const time_row* fastest_peer(const cell_rows& rows) {
     const time_row* best = nullptr;
     for (const auto& [m, row] : rows)
-        if (!is_own_method(m) && (!best || row->ns_per_frame() < best->ns_per_frame())) best = row;
+        if (!is_own_method(m) && !method_of(m).approximate && (!best || row->ns_per_frame() < best->ns_per_frame()))
+            best = row;
     return best;
 }
 
