@@ -42,7 +42,7 @@ const std::string stiff_dir = std::string(INFLUENCE2D_DATA_DIR) + "/stiff";
 
 epoint exact(const dpoint& p) { return {exact_rational(p.x), exact_rational(p.y)}; }
 
-int exact_orientation(const dpoint& a, const dpoint& b, const dpoint& c) {
+int rational_orientation(const dpoint& a, const dpoint& b, const dpoint& c) {
     return orientation(exact(a), exact(b), exact(c));
 }
 
@@ -321,7 +321,7 @@ TEST_CASE("stiff families have their promised shapes", "[verification][stiff]") 
             for (std::size_t i = 0; i < s->a.size(); ++i) {
                 const dpoint& u = s->a.vertex(previous(s->a, i));
                 const dpoint& w = s->a.vertex(s->a.next(i));
-                if (exact_orientation(u, s->a.vertex(i), w) != 0 && std::fabs(turn_sine(u, s->a.vertex(i), w)) < 1e-13L)
+                if (rational_orientation(u, s->a.vertex(i), w) != 0 && std::fabs(turn_sine(u, s->a.vertex(i), w)) < 1e-13L)
                     ++nearly;
             }
             CHECK(nearly >= 3);
@@ -463,7 +463,7 @@ TEST_CASE("stiff families have their promised shapes", "[verification][stiff]") 
             INFO(s.name);
             std::size_t through = 0;
             for (std::size_t i = 0; i < s.a.size(); ++i)
-                through += exact_orientation(s.a.centroid(), s.a.vertex(i), s.a.vertex(s.a.next(i))) == 0;
+                through += rational_orientation(s.a.centroid(), s.a.vertex(i), s.a.vertex(s.a.next(i))) == 0;
             CHECK(through >= 2);
         }
     }
