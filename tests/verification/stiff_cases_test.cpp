@@ -321,7 +321,8 @@ TEST_CASE("stiff families have their promised shapes", "[verification][stiff]") 
             for (std::size_t i = 0; i < s->a.size(); ++i) {
                 const dpoint& u = s->a.vertex(previous(s->a, i));
                 const dpoint& w = s->a.vertex(s->a.next(i));
-                if (rational_orientation(u, s->a.vertex(i), w) != 0 && std::fabs(turn_sine(u, s->a.vertex(i), w)) < 1e-13L)
+                if (rational_orientation(u, s->a.vertex(i), w) != 0 &&
+                    std::fabs(turn_sine(u, s->a.vertex(i), w)) < 1e-13L)
                     ++nearly;
             }
             CHECK(nearly >= 3);
