@@ -124,29 +124,16 @@ inline int certain_side(const point<double>& a, double dx, double dy, const poin
     return o > 0 ? 1 : -1;
 }
 
-/// The side of r with respect to the line from p to q, when the doubles
-/// settle it for points within ep (p and q) and er (r) of these on each
-/// coordinate: +1 left, -1 right; else 0 (also for a NaN or an overflow).
-/// With d = q - p and w = r - p, the determinant d.x w.y - d.y w.x moves by
-/// at most (ep + er)(|d.x| + |d.y|) + 2 ep (|w.x| + |w.y|) + 4 ep (ep + er)
-/// when the points move so: each coordinate of w by at most ep + er, of d
-/// by at most 2 ep, and the two cross terms by 2 ep (ep + er) each.
-/// certain_side adds its own rounding on top.
-inline int certain_side_within(const point<double>& p, const point<double>& q, const point<double>& r, double ep,
-                               double er) {
-    const double dx = q.x - p.x, dy = q.y - p.y;
-    const double slack = (ep + er) * (std::fabs(dx) + std::fabs(dy)) +
-                         2 * ep * (std::fabs(r.x - p.x) + std::fabs(r.y - p.y) + 2 * (ep + er));
-    return certain_side(p, dx, dy, r, slack);
-}
-
 /// The slack of certain_side_for for the edges of one polygon, their ends
 /// within ep of their doubles on each coordinate, and points r within er of
 /// theirs, for every r with |r.x - p.x| + |r.y - p.y| <= spread (in
 /// doubles) from the edge's start p: per_length (|dx| + |dy|) + fixed for
-/// an edge of direction (dx, dy). certain_side_within's bound with spread
-/// in place of |w.x| + |w.y|, plus its rounding: the value's products and
-/// differences round by less than 6u (|l| + |r|) (side_rounding), and
+/// an edge of direction (dx, dy). With d = q - p and w = r - p, the value
+/// d.x w.y - d.y w.x moves by at most (ep + er)(|d.x| + |d.y|) +
+/// 2 ep (|w.x| + |w.y|) + 4 ep (ep + er) when the points move so (each
+/// coordinate of w by at most ep + er, of d by at most 2 ep, and the two
+/// cross terms by 2 ep (ep + er) each); spread stands for |w.x| + |w.y|.
+/// Its own rounding adds less than 6u (|l| + |r|) (side_rounding), and
 /// |l| + |r| <= (|dx| + |dy|) spread. The terms are computed once for all
 /// the edges; an edge's slack is then one product and one sum, and each
 /// point two products, three differences and two comparisons.
