@@ -38,7 +38,7 @@ struct raster_grid {
 
     /// The grid over box b with `resolution` pixels along its longer side
     /// (at least one pixel each way).
-    static raster_grid over(const influence2d::box& b, std::size_t resolution) {
+    static raster_grid over(const box& b, std::size_t resolution) {
         raster_grid g;
         const double w = b.max_x - b.min_x, h = b.max_y - b.min_y;
         const double side = std::max(w, h);
@@ -81,13 +81,12 @@ struct raster_crossing {
 /// centre lines from its lower end up to (not including) its upper end, so
 /// a vertex between two edges counts once. `crossings` is scratch space.
 template <class Covered>
-bool scan_region(const raster_grid& g, const influence2d::polygon& shape,
-                 const std::vector<influence2d::point<double>>& v, std::vector<raster_crossing>& crossings,
-                 Covered&& covered) {
+bool scan_region(const raster_grid& g, const polygon& shape, const std::vector<point<double>>& v,
+                 std::vector<raster_crossing>& crossings, Covered&& covered) {
     crossings.clear();
     const long rows = static_cast<long>(g.rows), columns = static_cast<long>(g.columns);
     for (std::size_t i = 0; i < shape.size(); ++i) {
-        const influence2d::point<double>&a = v[i], &b = v[shape.next(i)];
+        const point<double>&a = v[i], &b = v[shape.next(i)];
         if (a.y == b.y) continue;
         const double lo = std::min(a.y, b.y), hi = std::max(a.y, b.y);
         const long first = std::max(0L, raster_grid::first_centre_at_or_after(lo, g.y0, g.pixel, g.rows));
@@ -162,8 +161,7 @@ public:
     static_assert(R >= 1, "raster_peer: at least one pixel");
     static std::string name() { return "raster-" + std::to_string(R); }
 
-    raster_peer(const influence2d::polygon& A, const influence2d::polygon& B)
-        : b_(B), grid_(raster_grid::over(A.bounds(), R)), mask_(grid_) {
+    raster_peer(const polygon& A, const polygon& B) : b_(B), grid_(raster_grid::over(A.bounds(), R)), mask_(grid_) {
         box_ = A.bounds();
         scan_region(grid_, A, A.vertices(), crossings_, [&](std::size_t row, std::size_t first, std::size_t last) {
             mask_.set(row, first, last);
@@ -173,12 +171,11 @@ public:
     }
 
     /// Whether a pixel centre lies in A and in B posed by p.
-    bool collide(const influence2d::pose& p) {
-        const double c = std::cos(p.theta), s = std::sin(p.theta);
-        influence2d::box bb;
+    bool collide(const pose& p) {
+        const rotation_pose t(p);
+        box bb;
         for (std::size_t j = 0; j < b_.size(); ++j) {
-            const influence2d::point<double>& q = b_.vertex(j);
-            posed_[j] = {c * q.x - s * q.y + p.tx, s * q.x + c * q.y + p.ty};
+            posed_[j] = t.apply<double>(b_.vertex(j));
             bb.add(posed_[j]);
         }
         if (bb.max_x < box_.min_x || bb.min_x > box_.max_x || bb.max_y < box_.min_y || bb.min_y > box_.max_y)
@@ -189,11 +186,11 @@ public:
     }
 
 private:
-    influence2d::polygon b_;
+    polygon b_;
     raster_grid grid_;
     raster_mask mask_;
-    influence2d::box box_;
-    std::vector<influence2d::point<double>> posed_;
+    box box_;
+    std::vector<point<double>> posed_;
     std::vector<raster_crossing> crossings_;
 };
 
