@@ -70,6 +70,17 @@ std::string work_csv(const time_study_result& r) {
     return s;
 }
 
+/// The axes of a panel of cells: static vertices across, moving vertices up,
+/// one tic per size of the run.
+std::string size_axes(const time_study_options& o) {
+    std::string tics;
+    for (std::size_t i = 0; i < o.sizes.size(); ++i)
+        tics += (i ? ", " : "") + std::string("'") + std::to_string(o.sizes[i]) + "' " + std::to_string(i);
+    const std::string range = "[-0.5:" + std::to_string(o.sizes.size()) + "-0.5]";
+    return "set xlabel 'static vertices'\nset ylabel 'moving vertices'\nset xtics (" + tics +
+           ") rotate by 90 right\nset ytics (" + tics + ")\nset xrange " + range + "\nset yrange " + range + "\n";
+}
+
 /// The heat maps of the workloads `group`, one per method (file
 /// heatmap_<prefix><method>.png): seconds for all the workload's poses (ns per
 /// pose times its poses), a panel per type and workload, on one logarithmic
@@ -105,13 +116,7 @@ std::string heat_maps(const time_study_result& r, const time_study_options& o, c
                   ": " + what + " (log colour scale, the same for every method)'\n";
         script += "set logscale cb\nset format cb '%g'\nset cbrange [" + general(lo) + ":" + general(hi) + "]\n";
         script += "set palette defined (0 '#1a9850', 1 '#fee08b', 2 '#d73027')\nunset key\n";
-        script += "set xlabel 'static vertices'\nset ylabel 'moving vertices'\n";
-        std::string tics;
-        for (std::size_t i = 0; i < o.sizes.size(); ++i)
-            tics += (i ? ", " : "") + std::string("'") + std::to_string(o.sizes[i]) + "' " + std::to_string(i);
-        script += "set xtics (" + tics + ") rotate by 90 right\nset ytics (" + tics + ")\n";
-        script += "set xrange [-0.5:" + std::to_string(o.sizes.size()) +
-                  "-0.5]\nset yrange [-0.5:" + std::to_string(o.sizes.size()) + "-0.5]\n";
+        script += size_axes(o);
         for (const std::string& j : workloads)
             for (const std::string& t : o.types) {
                 // One colour box, beside the last panel of each row.
@@ -148,6 +153,106 @@ void write_heat_maps(const time_study_result& r, const time_study_options& o, co
                                heat_maps(r, o, dir, {"random"}, "random_") +
                                heat_maps(r, o, dir, {"one-shot"}, "one-shot_");
     if (!script.empty()) plot_with_gnuplot(dir / "heatmaps.gp", script, "bench");
+}
+
+/// The speed-up colour scale: logarithmic from 1/10 to 100, red below 1,
+/// yellow from 1 to 10, green from the target (10) up.
+constexpr double speedup_floor = 0.1, speedup_ceiling = 100;
+
+/// The speed-up of `method` over the fastest peer per cell (file
+/// speedup_<method>.png): a panel per workload and type, each cell coloured
+/// and labelled with its speed-up (the peer's ns per pose over the method's).
+/// Returns the gnuplot script, empty when no cell has a peer and the method.
+std::string speedup_map(const time_study_result& r, const time_study_options& o, const fs::path& dir,
+                        const std::string& method) {
+    const cell_table cells = rows_by_cell(r);
+    std::vector<std::string> workloads;
+    for (const std::string& j : o.trajectories)
+        if (ratios_over_cells(cells, j, [&](const cell_rows& rows) { return speedup_over_peer(rows, method); }).n > 0)
+            workloads.push_back(j);
+    if (workloads.empty()) return "";
+    const std::size_t columns = o.types.size(), rows_n = workloads.size();
+    std::string script = "set terminal pngcairo size " + std::to_string(250 * columns + 120) + "," +
+                         std::to_string(250 * rows_n + 60) + " font 'sans,9' background '#ffffff'\n";
+    script += "set output '" + (dir / ("speedup_" + method + ".png")).string() + "'\n";
+    script += "set multiplot layout " + std::to_string(rows_n) + "," + std::to_string(columns) + " title '" + method +
+              " over the fastest peer (its ns per pose over " + method + "''s)'\n";
+    script += "set logscale cb\nset format cb '%g'\nset cbrange [" + general(speedup_floor) + ":" +
+              general(speedup_ceiling) + "]\n";
+    script +=
+        "set palette defined (0 '#b2182b', 0.333 '#fddbc7', 0.334 '#fee08b', 0.666 '#d9ef8b', 0.667 '#66bd63', "
+        "1 '#1a9850')\nunset key\n";
+    script += size_axes(o);
+    const auto at = [&](std::size_t n) { return std::find(o.sizes.begin(), o.sizes.end(), n) - o.sizes.begin(); };
+    for (const std::string& j : workloads)
+        for (const std::string& t : o.types) {
+            script += std::string(t == o.types.back() ? "set colorbox\n" : "unset colorbox\n");
+            script += "set title '" + t + ", " + j + "'\n$d << EOD\n";
+            std::size_t points = 0;
+            for (const auto& [c, rows] : cells) {
+                const double x = speedup_over_peer(rows, method);
+                if (c.type != t || c.trajectory != j || !(x > 0)) continue;
+                script += std::to_string(at(c.static_size)) + " " + std::to_string(at(c.moving_size)) + " " +
+                          general(std::min(std::max(x, speedup_floor), speedup_ceiling)) + " \"" +
+                          fixed(x, x < 10 ? 1 : 0) + "\"\n";
+                ++points;
+            }
+            script += "EOD\n";
+            script += points ? "plot $d using 1:2:(0.5):(0.5):3 with boxxyerror fillstyle solid 1.0 noborder lc "
+                               "palette, $d using 1:2:4 with labels font 'sans,7'\n"
+                             : "set label 1 'no peer' at graph 0.5, graph 0.5 center\nplot NaN\nunset label 1\n";
+        }
+    return script + "unset multiplot\n";
+}
+
+/// The image-space baseline's share of wrong answers against its time per
+/// pose (file raster_error_vs_time.svg): per workload, one point per
+/// resolution (geometric mean over the cells), certified's time drawn at the
+/// floor of the error axis. Returns the gnuplot script, empty without it.
+std::string raster_plot(const time_study_result& r, const time_study_options& o, const fs::path& dir) {
+    constexpr double floor = 1e-5;  // a share of zero is drawn here
+    const cell_table cells = rows_by_cell(r);
+    std::string blocks, plot;
+    double fastest = HUGE_VAL, slowest = 0;  // the x range, room left for the labels
+    for (std::size_t k = 0; k < o.trajectories.size(); ++k) {
+        const std::string& j = o.trajectories[k];
+        std::string lines;
+        double certified = 0;
+        for (const std::string& m : o.methods) {
+            if (!method_of(m).approximate) continue;
+            const approximate_summary a = approximate_over_cells(cells, j, m);
+            if (a.cells == 0) continue;
+            lines += "\"" + m + "\" " + general(a.ns) + " " + general(std::max(a.share_wrong(), floor)) + "\n";
+            certified = a.certified_ns;
+            fastest = std::min({fastest, a.ns, a.certified_ns});
+            slowest = std::max({slowest, a.ns, a.certified_ns});
+        }
+        if (lines.empty()) continue;
+        const std::string name = "raster_" + std::to_string(k);
+        blocks += "$" + name + " << EOD\n" + lines + "EOD\n$" + name + "_certified << EOD\n\"certified\" " +
+                  general(certified) + " " + general(floor) + "\nEOD\n";
+        plot += std::string(plot.empty() ? "plot " : ", ") + "$" + name +
+                " using 2:3 with linespoints pointtype 7 pointsize 1.3 linewidth 2 title 'raster, " + j + "', $" +
+                name + " using 2:3:1 with labels left offset char 0.7,0.4 notitle, $" + name +
+                "_certified using 2:3 with points pointtype 5 pointsize 1.5 title 'certified (exact), " + j + "'";
+    }
+    if (plot.empty()) return "";
+    return "set terminal svg size 900,600 dynamic enhanced font 'sans,12' background '#ffffff'\n"
+           "set output '" +
+           (dir / "raster_error_vs_time.svg").string() +
+           "'\nset logscale xy\nset grid\nset format x '10^{%L}'\nset format y '10^{%L}'\nset key top right\n"
+           "set title 'The image-space baseline: wrong answers against time per pose'\n"
+           "set xlabel 'geometric mean ns per pose over the cells (log scale)'\n"
+           "set ylabel 'share of poses answered wrongly (0 drawn at 10^{-5})'\nset yrange [" +
+           general(floor / 3) + ":1]\nset xrange [" + general(fastest / 2) + ":" + general(slowest * 8) + "]\n" +
+           blocks + plot + "\n";
+}
+
+/// The speed-up maps of double and certified, and the raster plot.
+void write_speedup_plots(const time_study_result& r, const time_study_options& o, const fs::path& dir) {
+    const std::string script =
+        speedup_map(r, o, dir, "double") + speedup_map(r, o, dir, "certified") + raster_plot(r, o, dir);
+    if (!script.empty()) plot_with_gnuplot(dir / "speedups.gp", script, "bench");
 }
 
 /// `given(name)`: whether the option was on the command line.
@@ -195,9 +300,11 @@ void run_bench_command(bench_cli_options o, Given given, const std::string& comm
     const std::string md = time_study_markdown(r, so, command);
     write_atomically(dir / "bench.md", md);
     write_heat_maps(r, so, dir);
+    write_speedup_plots(r, so, dir);
     const std::size_t targets = md.find("## Targets"), end = md.find("\n## ", targets + 1);
     std::cout << md.substr(targets, end - targets) << "\nwritten: " << (dir / "bench.csv").string() << ", "
-              << (dir / "bench.md").string() << ", heat maps " << (dir / "heatmap_*.png").string() << "\n";
+              << (dir / "bench.md").string() << ", heat maps " << (dir / "heatmap_*.png").string() << ", speed-up maps "
+              << (dir / "speedup_*.png").string() << "\n";
 }
 
 /// The methods for --help, from the registry: name, forms, what it needs.

@@ -35,6 +35,7 @@ struct study_cli_options {
     std::vector<std::string> types;
     std::vector<std::string> decisions;
     std::vector<std::string> queries;  ///< empty: both; "none": neither
+    std::vector<std::string> raster;   ///< resolutions; empty: the default ladder; "none": not asked
     std::size_t cases = 3;
     std::size_t frames = 256;
     std::size_t query_frames = study_options{}.query_frames;
@@ -44,6 +45,9 @@ struct study_cli_options {
     bool quick = false;
     bool progress = false;
 };
+
+/// The finest resolution --raster takes: a mask of 16384^2 bits is 32 MiB.
+constexpr std::size_t finest_raster = 16384;
 
 /// The sizes of a --quick run, unless given.
 constexpr std::size_t quick_cases = 1, quick_frames = 40;
@@ -100,6 +104,76 @@ std::string queries_csv(const study_result& r) {
              (t.median_error() ? general(*t.median_error(), 6) : "") + "," + fixed(t.ns_per_question(), 1) + "\n";
     }
     return s;
+}
+
+std::string raster_csv(const study_result& r) {
+    std::string s = "resolution,family,questions,missed,invented,rate,ns_per_question\n";
+    for (const raster_row& row : r.raster_rows)
+        s += std::to_string(row.resolution) + "," + row.family + "," + std::to_string(row.tally.questions) + "," +
+             std::to_string(row.tally.missed) + "," + std::to_string(row.tally.invented) + "," +
+             general(row.tally.rate()) + "," + fixed(row.tally.ns_per_question(), 1) + "\n";
+    return s;
+}
+
+/// The image-space baseline's rows pooled over the families, per resolution.
+std::map<std::size_t, raster_tally> raster_totals(const study_result& r) {
+    std::map<std::size_t, raster_tally> t;
+    for (const raster_row& row : r.raster_rows) t[row.resolution].merge(row.tally);
+    return t;
+}
+
+/// The section on the image-space baseline: per resolution, its share of
+/// wrong answers per family, its misses and invented contacts, its time.
+std::string raster_md(const study_result& r) {
+    if (r.raster_rows.empty()) return "";
+    const auto totals = raster_totals(r);
+    std::vector<std::string> families;
+    for (const std::string& f : r.families)
+        if (std::any_of(r.raster_rows.begin(), r.raster_rows.end(), [&](const raster_row& x) { return x.family == f; }))
+            families.push_back(f);
+    std::string s =
+        "## The image-space baseline\n\n"
+        "The paper's own comparison (PIVOT2D), on the CPU: both polygons rasterised on a grid of R pixels along "
+        "the longer side of A's box, a contact where a pixel centre lies in both (verification/raster.hpp), asked "
+        "the `collides` questions of every scene with d = 0 (it has no distance test). A miss is a contact it did "
+        "not see (a touch, or an overlap no pixel centre falls in); an invented contact is a pixel centre it "
+        "counted in both regions that lies in at most one, by the rounding of B's posing or of the crossings. "
+        "The rates are those of the study's poses, aimed at contact (raster.csv has every family).\n\n";
+    std::size_t first_right = 0;
+    for (const auto& [resolution, t] : totals)
+        if (t.wrong() == 0) {
+            first_right = resolution;
+            break;
+        }
+    s += first_right ? "The first resolution right on every question was " + std::to_string(first_right) + ".\n\n"
+                     : "No resolution was right on every question.\n\n";
+    s += "| R |";
+    for (const std::string& f : families) s += " " + f + " |";
+    s += " questions | missed | invented | rate | ns per question |\n|---:|";
+    for (std::size_t i = 0; i < families.size() + 5; ++i) s += "---:|";
+    s += "\n";
+    for (const auto& [resolution, t] : totals) {
+        s += "| " + std::to_string(resolution) + " |";
+        for (const std::string& f : families) {
+            const auto it = std::find_if(r.raster_rows.begin(), r.raster_rows.end(), [&](const raster_row& x) {
+                return x.resolution == resolution && x.family == f;
+            });
+            s += " " + (it == r.raster_rows.end() ? std::string("-") : percent(it->tally.rate())) + " |";
+        }
+        s += " " + std::to_string(t.questions) + " | " + std::to_string(t.missed) + " | " + std::to_string(t.invented) +
+             " | " + percent(t.rate()) + " | " + fixed(t.ns_per_question(), 1) + " |\n";
+    }
+    const auto collides = totals_by_type(r, asks_collides);
+    std::string beside;
+    for (const type_summary& t : r.summaries)
+        if (t.claims_exact && collides.count(t.number_type))
+            beside += std::string(beside.empty() ? "" : ", ") + t.number_type + " " +
+                      fixed(collides.at(t.number_type).ns_per_query(), 1) + " ns";
+    if (!beside.empty())
+        s += "\nThe types that claim exactness answered every `collides` question of the study (d = 0.5 scenes "
+             "included) with no disagreement, per question: " +
+             beside + ". The plot raster_error_vs_resolution.svg draws the rate and the time against R.\n";
+    return s + "\n";
 }
 
 std::string stability_csv(const study_result& r) {
@@ -235,6 +309,7 @@ std::string study_md(const study_result& r, const study_cli_options& o) {
         s += "\n";
     }
 
+    s += raster_md(r);
     s += queries_md(r, o);
 
     if (!r.stability.empty()) {
@@ -312,6 +387,11 @@ std::string plot_script(const study_result& r, const fs::path& dir) {
         if (p.count(t)) predicates.push_back(entry(t, p.at(t)));
     }
     s += data_block("collides", collides) + data_block("predicates", predicates);
+    std::vector<std::string> rasters;
+    for (const auto& [resolution, t] : raster_totals(r))
+        rasters.push_back("\"R " + std::to_string(resolution) + "\" " + general(t.ns_per_question()) + " " +
+                          shown_rate(t.rate()));
+    if (!rasters.empty()) s += data_block("rasters", rasters);
     s += "set key top right\nset output '" + (dir / "error_vs_time.svg").string() +
          "'\n"
          "set title 'Error against run time, per number type'\n"
@@ -322,7 +402,13 @@ std::string plot_script(const study_result& r, const fs::path& dir) {
          "plot $collides using 2:3 with points pointtype 7 pointsize 1.5 title 'collides (final answer)', "
          "$collides using 2:3:1 with labels rotate by 35 left offset char 0.6,0.6 notitle, "
          "$predicates using 2:3 with points pointtype 5 pointsize 1.5 title 'predicates (pooled)', "
-         "$predicates using 2:3:1 with labels rotate by -35 left offset char 0.6,-0.6 notitle\n";
+         "$predicates using 2:3:1 with labels rotate by -35 left offset char 0.6,-0.6 notitle" +
+         (rasters.empty()
+              ? std::string()
+              : ", $rasters using 2:3 with linespoints pointtype 9 pointsize 1.2 title 'image-space baseline "
+                "(collides, d = 0), R pixels', $rasters using 2:3:1 with labels left offset char 0.6,0 "
+                "notitle") +
+         "\n";
     for (const char* sweep : {"offset", "scale"}) {
         std::string plot;
         for (std::size_t i = 0; i < r.types.size(); ++i) {
@@ -399,9 +485,35 @@ std::string query_plot_script(const study_result& r, const fs::path& dir) {
            general(error_ceiling * 10) + "\n" + s + plot + "\n";
 }
 
+/// The plot of the image-space baseline: its rate of wrong answers and its
+/// time per question against the resolution.
+std::string raster_plot_script(const study_result& r, const fs::path& dir) {
+    std::vector<std::string> lines;
+    for (const auto& [resolution, t] : raster_totals(r))
+        lines.push_back(std::to_string(resolution) + " " + shown_rate(t.rate()) + " " + general(t.ns_per_question()));
+    if (lines.empty()) return "";
+    return "set terminal svg size 900,600 dynamic enhanced font 'sans,12' background '#ffffff'\n"
+           "unset arrow\nunset label\nset autoscale\n"
+           "set logscale x 2\nset logscale y\nset logscale y2\nset grid\n"
+           "set format x '%g'\nset format y '10^{%L}'\nset format y2 '10^{%L}'\n"
+           "set ytics nomirror\nset y2tics\nset key top center\nset output '" +
+           (dir / "raster_error_vs_resolution.svg").string() +
+           "'\n"
+           "set title 'The image-space baseline: error and time against resolution'\n"
+           "set xlabel 'pixels along the longer side of A''s box (log scale)'\n"
+           "set ylabel 'share of collides questions answered wrongly'\n"
+           "set y2label 'nanoseconds per question'\n"
+           "set yrange [" +
+           general(rate_floor / 3) + ":2]\n" + data_block("raster", lines) +
+           "plot $raster using 1:2 axes x1y1 with linespoints pointtype 7 pointsize 1.5 linewidth 2 title 'wrong "
+           "answers (0 drawn at 10^{-7})', $raster using 1:3 axes x1y2 with linespoints pointtype 5 pointsize 1.5 "
+           "linewidth 2 dashtype 2 title 'time per question'\n";
+}
+
 /// Writes the plots with gnuplot (plots.gp in the output directory).
 void write_plots(const study_result& r, const fs::path& dir) {
-    plot_with_gnuplot(dir / "plots.gp", plot_script(r, dir) + query_plot_script(r, dir), "study");
+    plot_with_gnuplot(dir / "plots.gp", plot_script(r, dir) + query_plot_script(r, dir) + raster_plot_script(r, dir),
+                      "study");
 }
 
 void run_study_command(study_cli_options o, bool cases_given, bool frames_given) {
@@ -422,6 +534,27 @@ void run_study_command(study_cli_options o, bool cases_given, bool frames_given)
         check_names(o.queries, query_kind_names(), "queries");
         so.queries.clear();
         for (const std::string& q : o.queries) so.queries.push_back(*query_from_name(q));
+    }
+    if (o.raster == std::vector<std::string>{"none"}) {
+        so.raster_resolutions.clear();
+    } else if (!o.raster.empty()) {
+        so.raster_resolutions.clear();
+        for (const std::string& text : o.raster) {
+            std::size_t used = 0;
+            unsigned long long v = 0;
+            try {
+                v = std::stoull(text, &used);
+            } catch (const std::exception&) {
+                used = 0;
+            }
+            if (used != text.size() || text.empty() || text[0] == '-' || v < 1 || v > finest_raster)
+                throw std::invalid_argument("--raster: '" + text + "' is not a resolution from 1 to " +
+                                            std::to_string(finest_raster) + " (or none)");
+            so.raster_resolutions.push_back(static_cast<std::size_t>(v));
+        }
+        std::sort(so.raster_resolutions.begin(), so.raster_resolutions.end());
+        so.raster_resolutions.erase(std::unique(so.raster_resolutions.begin(), so.raster_resolutions.end()),
+                                    so.raster_resolutions.end());
     }
     so.query_frames = o.query_frames;
     so.cases = o.cases;
@@ -447,6 +580,7 @@ void run_study_command(study_cli_options o, bool cases_given, bool frames_given)
     write_atomically(dir / "study.csv", study_csv(r));
     write_atomically(dir / "stability.csv", stability_csv(r));
     write_atomically(dir / "queries.csv", queries_csv(r));
+    write_atomically(dir / "raster.csv", raster_csv(r));
     write_atomically(dir / "study.md", study_md(r, o));
     write_plots(r, dir);
 
@@ -472,7 +606,8 @@ void run_study_command(study_cli_options o, bool cases_given, bool frames_given)
                   << " disagreements of types that claim exactness, written as reproducible cases to " << o.regressions
                   << " (listed in study.md)\n";
     std::cout << "written: " << (dir / "study.csv").string() << ", " << (dir / "stability.csv").string() << ", "
-              << (dir / "queries.csv").string() << ", " << (dir / "study.md").string() << "\n";
+              << (dir / "queries.csv").string() << ", " << (dir / "raster.csv").string() << ", "
+              << (dir / "study.md").string() << "\n";
 }
 
 }  // namespace
@@ -483,9 +618,13 @@ void register_study(CLI::App& app) {
         "study",
         "Compare the method's decisions (cone membership, mask, alpha-sign selection, extended-area candidates, "
         "edge pairs, containment, the final answer) and the queries (separation, first contact along a "
-        "translation) in every number type with the exact reference, and report error against run time: "
-        "DIR/study.csv, DIR/stability.csv, DIR/queries.csv, DIR/study.md and plots (with gnuplot).");
+        "translation) in every number type, and the final answer in the image-space baseline, with the exact "
+        "reference, and report error against run time: "
+        "DIR/study.csv, DIR/stability.csv, DIR/queries.csv, DIR/raster.csv, DIR/study.md and plots (with gnuplot).");
     const std::string family_list = joined(default_study_families()), type_list = joined(mode_names(study_modes{}));
+    std::vector<std::string> resolutions;
+    for (std::size_t r : default_raster_resolutions()) resolutions.push_back(std::to_string(r));
+    const std::string raster_list = joined(resolutions);
     sub->add_option("--families", o->families,
                     "Case families, separated by commas [default: " + family_list +
                         "; also: large, a static polygon of over 100,000 vertices, slow]")
@@ -500,6 +639,12 @@ void register_study(CLI::App& app) {
         ->type_name("LIST");
     sub->add_option("--queries", o->queries,
                     "Queries, separated by commas, or none [default: " + joined(query_kind_names()) + "]")
+        ->delimiter(',')
+        ->type_name("LIST");
+    sub->add_option("--raster", o->raster,
+                    "Resolutions of the image-space baseline asked the collides questions, separated by commas, or "
+                    "none [default: " +
+                        raster_list + "]")
         ->delimiter(',')
         ->type_name("LIST");
     sub->add_option("--query-frames", o->query_frames,

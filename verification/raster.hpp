@@ -153,15 +153,12 @@ private:
     std::vector<std::uint64_t> bits_;
 };
 
-/// The image-space baseline at R pixels along the longer side of A's box:
-/// A's mask made once, B scanned at each pose (see the file comment).
-template <std::size_t R>
-class raster_peer {
+/// The image-space test at `resolution` pixels along the longer side of A's
+/// box: A's mask made once, B scanned at each pose (see the file comment).
+class raster_test {
 public:
-    static_assert(R >= 1, "raster_peer: at least one pixel");
-    static std::string name() { return "raster-" + std::to_string(R); }
-
-    raster_peer(const polygon& A, const polygon& B) : b_(B), grid_(raster_grid::over(A.bounds(), R)), mask_(grid_) {
+    raster_test(const polygon& A, const polygon& B, std::size_t resolution)
+        : b_(B), grid_(raster_grid::over(A.bounds(), std::max<std::size_t>(resolution, 1))), mask_(grid_) {
         box_ = A.bounds();
         scan_region(grid_, A, A.vertices(), crossings_, [&](std::size_t row, std::size_t first, std::size_t last) {
             mask_.set(row, first, last);
@@ -192,6 +189,15 @@ private:
     box box_;
     std::vector<point<double>> posed_;
     std::vector<raster_crossing> crossings_;
+};
+
+/// The time study's method for resolution R (raster-R).
+template <std::size_t R>
+class raster_peer : public raster_test {
+public:
+    static_assert(R >= 1, "raster_peer: at least one pixel");
+    static std::string name() { return "raster-" + std::to_string(R); }
+    raster_peer(const polygon& A, const polygon& B) : raster_test(A, B, R) {}
 };
 
 }  // namespace influence2d::verification

@@ -24,6 +24,11 @@
 //           the exact answers                                          (not timed)
 //           for each number type: time its answers; compare each with the exact one
 //
+// The image-space baseline (verification/raster.hpp), the paper's own
+// comparison, answers the `collides` questions of the scenes with d = 0 at
+// each resolution of a ladder, beside the number types: its misses and
+// invented contacts against the exact answers, and its time.
+//
 // Number types come from one type list (study_modes): each is run once, by the
 // same code. A disagreement of a type that claims the exact answer (its
 // category is not floating) is a bug of the library: it is kept as a
@@ -56,6 +61,7 @@
 #include "verification/decisions.hpp"
 #include "verification/families.hpp"
 #include "verification/query_study.hpp"
+#include "verification/raster.hpp"
 #include "verification/seeded_draws.hpp"
 #include "verification/stiff_cases.hpp"
 
@@ -111,6 +117,14 @@ inline std::vector<std::string> default_study_families() {
     std::vector<std::string> names = study_family_names();
     names.erase(std::remove(names.begin(), names.end(), stiff_family_name(stiff_family::large)), names.end());
     return names;
+}
+
+/// The image-space baseline's resolutions unless told: powers of two from 16
+/// to 4096 pixels along the longer side of A's box.
+inline std::vector<std::size_t> default_raster_resolutions() {
+    std::vector<std::size_t> r;
+    for (std::size_t p = 16; p <= 4096; p *= 2) r.push_back(p);
+    return r;
 }
 
 /// One scene of the study and its questions.
@@ -515,7 +529,11 @@ struct study_options {
     /// The queries asked (separation, first contact); empty: none.
     std::vector<query_kind> queries{std::begin(all_query_kinds), std::end(all_query_kinds)};
     std::size_t query_frames = 128;  ///< questions per scene for each query (at most `frames`)
-    std::string regressions_dir;     ///< where reproducible cases go; empty: not written
+    /// The image-space baseline (verification/raster.hpp) at each of these
+    /// resolutions, asked the `collides` questions of every scene with d = 0
+    /// (it has no distance test); empty: not asked.
+    std::vector<std::size_t> raster_resolutions = default_raster_resolutions();
+    std::string regressions_dir;  ///< where reproducible cases go; empty: not written
     std::function<void(const study_progress&)> progress;
 };
 
@@ -524,6 +542,29 @@ struct decision_tally {
     double nanoseconds = 0;
     double rate() const { return cases ? static_cast<double>(disagreements) / static_cast<double>(cases) : 0; }
     double ns_per_query() const { return cases ? nanoseconds / static_cast<double>(cases) : 0; }
+};
+
+/// The image-space baseline's answers to the `collides` questions at one
+/// resolution: contacts it missed, contacts it invented, and its time.
+struct raster_tally {
+    std::size_t questions = 0, missed = 0, invented = 0;
+    double nanoseconds = 0;
+    std::size_t wrong() const { return missed + invented; }
+    double rate() const { return questions ? static_cast<double>(wrong()) / static_cast<double>(questions) : 0; }
+    double ns_per_question() const { return questions ? nanoseconds / static_cast<double>(questions) : 0; }
+    void merge(const raster_tally& o) {
+        questions += o.questions;
+        missed += o.missed;
+        invented += o.invented;
+        nanoseconds += o.nanoseconds;
+    }
+};
+
+/// One line of raster.csv.
+struct raster_row {
+    std::size_t resolution = 0;
+    std::string family;
+    raster_tally tally;
 };
 
 /// One line of study.csv.
@@ -608,6 +649,7 @@ struct study_result {
     std::vector<study_row> rows;
     std::vector<query_row> query_rows;
     std::vector<stability_row> stability;
+    std::vector<raster_row> raster_rows;
     std::vector<study_example> examples;
     std::vector<type_summary> summaries;
     std::vector<std::string> regressions;  ///< files written
@@ -683,6 +725,9 @@ private:
         std::vector<answer_batch> expected(kinds);
         answer_batch got;
         std::vector<query> questions;
+        std::vector<raster_test> rasters;
+        if (c.distance == 0 && asks(decision_kind::collides))
+            for (std::size_t resolution : o_.raster_resolutions) rasters.emplace_back(c.a, c.b, resolution);
         const std::size_t n = std::min(c.points.size(), c.poses.size());
         for (std::size_t first = 0; first < n; first += chunk) {
             questions.clear();
@@ -696,6 +741,9 @@ private:
                 }
             }
             (run_mode<Modes>(I, std::get<I>(evaluators), c, questions, expected, got), ...);
+            for (std::size_t k = 0; k < rasters.size(); ++k)
+                run_raster(o_.raster_resolutions[k], rasters[k], c, questions,
+                           expected[index_of(decision_kind::collides)]);
         }
         ((std::get<I>(evaluators) ? add_fallbacks(I, *std::get<I>(evaluators)) : void()), ...);
     }
@@ -729,6 +777,30 @@ private:
                                              answer_text(expected[d].get(k))});
                 if (Mode::claims_exact && !o_.regressions_dir.empty()) write_regression<Mode>(c, kind, questions[k]);
             }
+        }
+    }
+
+    bool asks(decision_kind k) const { return std::find(asked_.begin(), asked_.end(), index_of(k)) != asked_.end(); }
+    static std::size_t index_of(decision_kind k) {
+        return static_cast<std::size_t>(std::find(std::begin(all_decision_kinds), std::end(all_decision_kinds), k) -
+                                        std::begin(all_decision_kinds));
+    }
+
+    /// The image-space baseline's answers to a chunk of `collides` questions,
+    /// timed, each compared with the exact answer.
+    void run_raster(std::size_t resolution, raster_test& raster, const study_case& c,
+                    const std::vector<query>& questions, const answer_batch& expected) {
+        std::vector<char> got(questions.size());
+        const auto t0 = std::chrono::steady_clock::now();
+        for (std::size_t k = 0; k < questions.size(); ++k) got[k] = raster.collide(questions[k].placement) ? 1 : 0;
+        const auto t1 = std::chrono::steady_clock::now();
+        raster_tally& t = raster_tallies_[{resolution, c.family}];
+        t.nanoseconds += std::chrono::duration<double, std::nano>(t1 - t0).count();
+        t.questions += questions.size();
+        for (std::size_t k = 0; k < questions.size(); ++k) {
+            const bool want = expected.get(k) == answer{1};
+            t.missed += want && !got[k] ? 1 : 0;
+            t.invented += !want && got[k] ? 1 : 0;
         }
     }
 
@@ -892,6 +964,11 @@ private:
             for (const auto& [key, t] : stability_)
                 if (std::get<0>(key) == m) r.stability.push_back({names[m], std::get<1>(key), std::get<2>(key), t});
         }
+        for (std::size_t resolution : o_.raster_resolutions)
+            for (const std::string& f : o_.families) {
+                const auto it = raster_tallies_.find({resolution, f});
+                if (it != raster_tallies_.end()) r.raster_rows.push_back({resolution, f, it->second});
+            }
         r.examples = example_list_;
         r.regressions = regressions_;
         return r;
@@ -904,6 +981,7 @@ private:
     std::map<std::tuple<std::size_t, std::string, std::size_t>, decision_tally> tallies_;
     std::map<std::tuple<std::size_t, std::string, query_kind>, query_tally> query_tallies_;
     std::map<std::tuple<std::size_t, std::string, double>, decision_tally> stability_;
+    std::map<std::pair<std::size_t, std::string>, raster_tally> raster_tallies_;
     std::map<std::pair<std::size_t, std::size_t>, std::size_t> examples_;
     std::vector<study_example> example_list_;
     std::vector<std::string> regressions_;

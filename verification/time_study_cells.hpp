@@ -53,13 +53,16 @@ inline double ns_ratio(const cell_rows& rows, const std::string& a, const std::s
     return rows.at(a)->ns_per_frame() / std::max(rows.at(b)->ns_per_frame(), 1e-3);
 }
 
-/// The speed-up of double over the fastest peer: the peer's ns per pose over
-/// double's, or 0.
-inline double peer_speedup(const cell_rows& rows) {
+/// The speed-up of `method` over the fastest peer: the peer's ns per pose
+/// over the method's, or 0.
+inline double speedup_over_peer(const cell_rows& rows, const std::string& method) {
     const time_row* peer = fastest_peer(rows);
-    if (!peer || !rows.count("double")) return 0;
-    return peer->ns_per_frame() / std::max(rows.at("double")->ns_per_frame(), 1e-3);
+    if (!peer || !rows.count(method)) return 0;
+    return peer->ns_per_frame() / std::max(rows.at(method)->ns_per_frame(), 1e-3);
 }
+
+/// The speed-up of double over the fastest peer, or 0.
+inline double peer_speedup(const cell_rows& rows) { return speedup_over_peer(rows, "double"); }
 
 /// The speed-up the time study aims at on every cell of a frame workload.
 inline constexpr double peer_target = 10;
@@ -89,6 +92,35 @@ inline ratio_stats ratios_over_cells(const cell_table& cells, const std::string&
     for (const auto& [c, rows] : cells)
         if (c.trajectory == workload && (type.empty() || c.type == type)) s.add(f(rows), cell_name(c));
     return s;
+}
+
+/// An approximate baseline over the cells of a workload where it and
+/// certified both ran: poses, wrong answers, and the geometric means of its
+/// and certified's ns per pose.
+struct approximate_summary {
+    std::size_t cells = 0, frames = 0, wrong = 0;
+    double ns = 0, certified_ns = 0;
+    double share_wrong() const { return frames ? static_cast<double>(wrong) / static_cast<double>(frames) : 0; }
+};
+
+inline approximate_summary approximate_over_cells(const cell_table& cells, const std::string& workload,
+                                                  const std::string& method) {
+    approximate_summary a;
+    double log_ns = 0, log_certified = 0;
+    for (const auto& [c, rows] : cells)
+        if (c.trajectory == workload && rows.count(method) && rows.count("certified")) {
+            const time_row& row = *rows.at(method);
+            ++a.cells;
+            a.frames += row.frames;
+            a.wrong += row.disagreements;
+            log_ns += std::log(std::max(row.ns_per_frame(), 1e-3));
+            log_certified += std::log(std::max(rows.at("certified")->ns_per_frame(), 1e-3));
+        }
+    if (a.cells) {
+        a.ns = std::exp(log_ns / static_cast<double>(a.cells));
+        a.certified_ns = std::exp(log_certified / static_cast<double>(a.cells));
+    }
+    return a;
 }
 
 /// The median of some values (0 for none).

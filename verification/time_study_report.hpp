@@ -244,24 +244,12 @@ inline std::string time_study_markdown(const time_study_result& r, const time_st
         for (const std::string& j : o.trajectories) {
             std::string first_exact;
             for (const std::string& m : rasters) {
-                std::size_t n = 0, frames = 0, wrong = 0;
-                double log_ns = 0, log_certified = 0;
-                for (const auto& [c, rows] : cells)
-                    if (c.trajectory == j && rows.count(m) && rows.count("certified")) {
-                        const time_row& row = *rows.at(m);
-                        ++n;
-                        frames += row.frames;
-                        wrong += row.disagreements;
-                        log_ns += std::log(std::max(row.ns_per_frame(), 1e-3));
-                        log_certified += std::log(std::max(rows.at("certified")->ns_per_frame(), 1e-3));
-                    }
-                if (n == 0) continue;
-                if (wrong == 0 && first_exact.empty()) first_exact = m;
-                s += "| " + j + " | " + m + " | " + std::to_string(frames) + " | " + std::to_string(wrong) + " | " +
-                     fixed(100.0 * static_cast<double>(wrong) / static_cast<double>(std::max<std::size_t>(frames, 1)),
-                           3) +
-                     "% | " + fixed(std::exp(log_ns / static_cast<double>(n)), 0) + " | " +
-                     fixed(std::exp(log_certified / static_cast<double>(n)), 0) + " |\n";
+                const approximate_summary a = approximate_over_cells(cells, j, m);
+                if (a.cells == 0) continue;
+                if (a.wrong == 0 && first_exact.empty()) first_exact = m;
+                s += "| " + j + " | " + m + " | " + std::to_string(a.frames) + " | " + std::to_string(a.wrong) + " | " +
+                     fixed(100.0 * a.share_wrong(), 3) + "% | " + fixed(a.ns, 0) + " | " + fixed(a.certified_ns, 0) +
+                     " |\n";
             }
             s += "| " + j + " | first resolution right on every pose run | " +
                  (first_exact.empty() ? std::string("none") : first_exact) + " | | | | |\n";

@@ -4,7 +4,8 @@
 // never disagree with the reference, float does on a stiff family; the quick
 // run's queries (separation, first contact) likewise; the reproducible-case
 // format reads back, for decisions and queries; every committed case in
-// data/regressions is answered again.
+// data/regressions is answered again; the image-space baseline's rows count
+// the questions of the d = 0 scenes, per resolution.
 
 #include <catch2/catch.hpp>
 
@@ -79,12 +80,69 @@ TEST_CASE("study: a tiny run writes the tables, the summary and the plots", "[ve
     CHECK(md.find("# Precision study") != std::string::npos);
     CHECK(md.find("## What this means when choosing a number type") != std::string::npos);
     CHECK(md.find("## collides\n") != std::string::npos);
+    CHECK(md.find("## The image-space baseline") != std::string::npos);
+    CHECK(lines_of(slurp(dir / "out" / "raster.csv")).size() ==
+          1 + default_raster_resolutions().size() * 3);  // every family has d = 0 scenes
     CHECK(md.find("## Worst examples") != std::string::npos);
     if (std::system("command -v gnuplot > /dev/null 2>&1") == 0) {
         CHECK(slurp(dir / "out" / "error_vs_time.svg").find("<svg") != std::string::npos);
         CHECK(slurp(dir / "out" / "stability_offset.svg").find("<svg") != std::string::npos);
     } else {
         CHECK(r.err.find("gnuplot not found") != std::string::npos);
+    }
+}
+
+TEST_CASE("study: the image-space baseline answers the collides questions of the d = 0 scenes per resolution",
+          "[verification][study][cli]") {
+    const temp_dir dir;
+    // Three convex scenes (the third has d = 0.5, which the baseline is not
+    // asked) and three touching ones; the resolutions given out of order and
+    // one twice.
+    const auto r = run_cli(dir,
+                           "study --families convex,touching --types certified --decisions collides --queries "
+                           "none --cases 3 --frames 40 --raster 4096,16,16 --out " +
+                               quote((dir / "out").string()));
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const std::vector<std::string> lines = lines_of(slurp(dir / "out" / "raster.csv"));
+    REQUIRE(lines.size() == 5);
+    CHECK(lines.front() == "resolution,family,questions,missed,invented,rate,ns_per_question");
+    std::map<std::string, std::size_t> wrong;      // per resolution
+    std::map<std::string, std::size_t> questions;  // per family and resolution
+    for (std::size_t i = 1; i < lines.size(); ++i) {
+        const std::vector<std::string> f = fields(lines[i]);
+        REQUIRE(f.size() == 7);
+        CHECK((f[0] == "16" || f[0] == "4096"));
+        questions[f[1] + " " + f[0]] = std::stoul(f[2]);
+        CHECK(std::stoul(f[3]) + std::stoul(f[4]) <= std::stoul(f[2]));
+        wrong[f[0]] += std::stoul(f[3]) + std::stoul(f[4]);
+        CHECK(std::stod(f[6]) > 0);
+    }
+    CHECK(questions == std::map<std::string, std::size_t>{
+                           {"convex 16", 80}, {"convex 4096", 80}, {"touching 16", 120}, {"touching 4096", 120}});
+    // Exact touches are missed at any resolution; a coarse grid misses more.
+    CHECK(wrong["4096"] > 0);
+    CHECK(wrong["16"] > wrong["4096"]);
+    const std::string md = slurp(dir / "out" / "study.md");
+    CHECK(md.find("## The image-space baseline") != std::string::npos);
+    CHECK(md.find("No resolution was right on every question.") != std::string::npos);
+    if (std::system("command -v gnuplot > /dev/null 2>&1") == 0)
+        CHECK(slurp(dir / "out" / "raster_error_vs_resolution.svg").find("<svg") != std::string::npos);
+
+    const auto none = run_cli(dir,
+                              "study --families convex --types double --decisions collides --queries none "
+                              "--cases 1 --frames 8 --raster none --out " +
+                                  quote((dir / "none").string()));
+    REQUIRE(none.exit_code == 0);
+    CHECK(lines_of(slurp(dir / "none" / "raster.csv")).size() == 1);
+    CHECK(slurp(dir / "none" / "study.md").find("image-space") == std::string::npos);
+    for (const char* bad : {"0", "16,x", "-4", "100000"}) {
+        const auto b = run_cli(
+            dir, std::string("study --families convex --raster ") + bad + " --out " + quote((dir / "bad").string()));
+        INFO(bad);
+        CHECK(b.exit_code == 2);
+        CHECK(b.err.find("--raster") != std::string::npos);
+        CHECK(!fs::exists(dir / "bad" / "study.md"));
     }
 }
 

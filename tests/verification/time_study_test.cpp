@@ -360,6 +360,10 @@ TEST_CASE("time study: the command writes the table, the summary and the heat ma
         CHECK(slurp(dir / "out" / "heatmap_double.png").substr(1, 3) == "PNG");
         CHECK(slurp(dir / "out" / "heatmap_one-shot_double.png").substr(1, 3) == "PNG");
         CHECK(!fs::exists(dir / "out" / "heatmap_random_double.png"));  // not asked
+        // Speed-up maps over the fastest peer; no raster method, no raster plot.
+        CHECK(slurp(dir / "out" / "speedup_double.png").substr(1, 3) == "PNG");
+        CHECK(slurp(dir / "out" / "speedup_certified.png").substr(1, 3) == "PNG");
+        CHECK(!fs::exists(dir / "out" / "raster_error_vs_time.svg"));
     }
 }
 
