@@ -99,6 +99,22 @@ public:
                (next_.capacity() + ring_begin_.capacity() + source_edge_.capacity()) * sizeof(std::size_t) +
                roles_.capacity() * sizeof(ring_role);
     }
+    /// The same polygon with every coordinate multiplied by 2^k (std::ldexp):
+    /// its rings, their orientation and the edge numbers kept, centroid, box
+    /// and area scaled with it. Exact unless a coordinate overflows or falls
+    /// among the subnormals (core/range_scaling.hpp brings a floating type's
+    /// query into its range with it).
+    polygon scaled_by_power_of_two(int k) const {
+        polygon p = *this;
+        for (point<double>& v : p.vertices_) v = {std::ldexp(v.x, k), std::ldexp(v.y, k)};
+        p.centroid_ = {std::ldexp(centroid_.x, k), std::ldexp(centroid_.y, k)};
+        p.bounds_.min_x = std::ldexp(bounds_.min_x, k);
+        p.bounds_.min_y = std::ldexp(bounds_.min_y, k);
+        p.bounds_.max_x = std::ldexp(bounds_.max_x, k);
+        p.bounds_.max_y = std::ldexp(bounds_.max_y, k);
+        p.area_ = std::ldexp(area_, 2 * k);
+        return p;
+    }
     /// Signed area in long double, after reorientation (non-negative for a
     /// valid polygon): outer rings add, holes subtract. Rounded, so its sign
     /// is not exact; signed_area_sign() gives a ring's exact sign.

@@ -6,11 +6,13 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <vector>
 
 #include "influence2d/assert.hpp"
+#include "influence2d/core/range_scaling.hpp"
 #include "influence2d/covering/inclusion.hpp"
 #include "influence2d/detect/containment.hpp"
 #include "influence2d/detect/convex_pair.hpp"
@@ -154,10 +156,14 @@ public:
     /// distance > 0 the detector was built without (or d < 0 or not finite),
     /// invalid_input for an empty polygon, one beyond NT's range, or one of
     /// several rings without features::holes. collide throws invalid_input
-    /// for a pose with a NaN or infinite component.
+    /// for a pose with a NaN or infinite component. In a built-in floating
+    /// NT, polygons whose largest coordinate lies outside NT's safe window
+    /// are prepared scaled by a power of two 2^k, and each frame's
+    /// translation and the distance d with them (core/range_scaling.hpp):
+    /// the same answers, without overflow or underflow.
     detector(const polygon& static_polygon, const polygon& moving_polygon, detector_options options = {})
-        : detector(prepare_static<NT>(checked(static_polygon, "static")),
-                   prepare_moving<NT>(checked(moving_polygon, "moving")), options) {}
+        : detector(range_shift<NT>(checked(static_polygon, "static"), checked(moving_polygon, "moving")),
+                   static_polygon, moving_polygon, options) {}
 
     /// A detector on prepared polygons (prepare_static, prepare_moving),
     /// which many detectors may share, in any number of threads: one A for
@@ -168,7 +174,8 @@ public:
              std::shared_ptr<const moving_scene<NT>> moving_polygon, detector_options options = {})
         : a_(checked(std::move(static_polygon), "static")),
           b_(checked(std::move(moving_polygon), "moving")),
-          options_(options) {
+          options_(options),
+          given_distance_(options.distance) {
         using tr = number_traits<NT>;
         if (!(options_.distance >= 0) || !std::isfinite(options_.distance))
             throw std::invalid_argument("detector: the distance must be finite and >= 0");
@@ -195,6 +202,7 @@ public:
     /// <= d (they meet, for d = 0); with witnesses, every edge pair within d.
     /// Throws invalid_input for a pose with a NaN or infinite component.
     ///
+    ///   q's translation scaled by 2^k when the polygons were (the constructor)
     ///   f <- the frame: B's centroid p posed in double, the rounding margin
     ///   if A's and B's bounding circles are apart:            disjoint
     ///   if A and B are small and convex, and d == 0:
@@ -210,24 +218,8 @@ public:
     ///   else:             pairs from the candidates in p's extended areas
     ///   (both end in containment when no pair meets)
     frame_result collide(const pose& q) {
-        tally(&detector_statistics::frames);
-        const frame f = begin_frame(q);
-        if (circles_apart(f)) {
-            tally(&detector_statistics::circle_rejections);
-            return {};
-        }
-        if (convex_route_) {
-            tally(&detector_statistics::convex_frames);
-            if (!convex_meet(f)) return {};
-            if (!witnessing()) return {true, {}};
-        }
-        if (!coherent_step(f)) return every_pair_pays() ? every_pair(f) : pairs_through_trees(f);
-        refresh_candidates(f);
-        if (circle_test_pays() &&
-            edges_clear_of(f.t, a_->shape.centroid(), a_->radius + distance() + 2 * f.margin, f.margin))
-            return clear_of_a(f);
-        if (tree_pays()) return pairs_through_tree(f);
-        return pairs_through_candidates(f);
+        if (shift_ != 0) return collide_at(scaled_by_power_of_two(q, shift_));
+        return collide_at(q);
     }
 
     /// Builds now what frames otherwise build on first use: A's cone index
@@ -248,7 +240,11 @@ public:
         return statistics_state::value;
     }
     /// The options the detector was built with.
-    const detector_options& options() const { return options_; }
+    detector_options options() const {
+        detector_options o = options_;
+        o.distance = given_distance_;
+        return o;
+    }
 
     /// Bytes the detector holds beyond the prepared polygons it shares (A's
     /// covering, influence areas and edge tree, B's shape and edge tree: the
@@ -266,6 +262,48 @@ public:
     }
 
 private:
+    /// The constructor from polygons, with the power of two 2^shift by which
+    /// they (and each frame's translation, and d) are scaled.
+    detector(int shift, const polygon& static_polygon, const polygon& moving_polygon, detector_options options)
+        : detector(shift ? prepare_static<NT>(static_polygon.scaled_by_power_of_two(shift))
+                         : prepare_static<NT>(static_polygon),
+                   shift ? prepare_moving<NT>(moving_polygon.scaled_by_power_of_two(shift))
+                         : prepare_moving<NT>(moving_polygon),
+                   scaled_distance(options, shift)) {
+        shift_ = shift;
+        given_distance_ = options.distance;
+    }
+
+    /// The options with d scaled by 2^shift; a d that is negative or not
+    /// finite as given (refused by the constructor).
+    static detector_options scaled_distance(detector_options o, int shift) {
+        if (o.distance > 0 && std::isfinite(o.distance))
+            o.distance = std::min(std::ldexp(o.distance, shift), std::numeric_limits<double>::max());
+        return o;
+    }
+
+    /// collide() on a pose in the prepared polygons' units.
+    frame_result collide_at(const pose& q) {
+        tally(&detector_statistics::frames);
+        const frame f = begin_frame(q);
+        if (circles_apart(f)) {
+            tally(&detector_statistics::circle_rejections);
+            return {};
+        }
+        if (convex_route_) {
+            tally(&detector_statistics::convex_frames);
+            if (!convex_meet(f)) return {};
+            if (!witnessing()) return {true, {}};
+        }
+        if (!coherent_step(f)) return every_pair_pays() ? every_pair(f) : pairs_through_trees(f);
+        refresh_candidates(f);
+        if (circle_test_pays() &&
+            edges_clear_of(f.t, a_->shape.centroid(), a_->radius + distance() + 2 * f.margin, f.margin))
+            return clear_of_a(f);
+        if (tree_pays()) return pairs_through_tree(f);
+        return pairs_through_candidates(f);
+    }
+
     /// One frame's pose and the filters' rounding: B's centroid posed in
     /// double (p), the margin of the frame's double values, and B's reach
     /// widened by it (n).
@@ -809,7 +847,9 @@ private:
 
     std::shared_ptr<const static_scene<NT>> a_;
     posed_polygon<NT> b_;
-    detector_options options_;
+    detector_options options_;   ///< d in the prepared polygons' units
+    double given_distance_ = 0;  ///< d as given
+    int shift_ = 0;              ///< the polygons and poses scaled by 2^shift_
     double reach_ = 0, margin_ = 0;
     std::vector<box> a_ring_boxes_;  ///< the box of each ring of A
     /// B's edges per chunk: a chunk's circle test replaces this many edge

@@ -14,6 +14,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -26,6 +27,7 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/core/range_scaling.hpp"
 #include "influence2d/covering/inclusion.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/influence/edge_tree.hpp"
@@ -527,6 +529,25 @@ separation_result<NT> separate(static_side<NT>& side, const search_input& in, wo
     return r;
 }
 
+/// The separation of a query answered on its input scaled by 2^k (a
+/// built-in floating NT, core/range_scaling.hpp), in the input's units:
+/// the points scaled by 2^-k, the squared distance by 2^-2k. Throws
+/// std::range_error when that squared distance lies beyond NT's range
+/// (overflows, or underflows to 0 for regions apart): NT cannot hold it.
+template <class NT>
+separation_result<NT> scaled_back(separation_result<NT> r, int k) {
+    const NT d2 = std::ldexp(r.squared_distance, -2 * k);
+    if (std::isinf(d2) || (d2 == 0 && r.squared_distance != 0))
+        throw std::range_error(std::string("separation: the squared distance, about 2^") +
+                               std::to_string(std::ilogb(r.squared_distance) - 2 * k) + ", lies beyond the range of " +
+                               number_traits<NT>::name +
+                               "; certified_separation or an exact number type answers this query");
+    r.squared_distance = d2;
+    r.static_point = {std::ldexp(r.static_point.x, -k), std::ldexp(r.static_point.y, -k)};
+    r.moving_point = {std::ldexp(r.moving_point.x, -k), std::ldexp(r.moving_point.y, -k)};
+    return r;
+}
+
 }  // namespace separation_detail
 
 /// The separation of A and of B posed by q, from prepared polygons (their
@@ -575,13 +596,23 @@ separation_result<NT> separation(const static_scene<NT>& a, const moving_scene<N
 /// polygons), from the polygons alone: it builds both edge trees (O(n log n
 /// + m log m)) and locates points by Feito's test over the polygon's edges
 /// (in an exact field, in `certified` first and again in NT only when a sign
-/// is in doubt: phase_3). Throws invalid_input for an empty polygon, one beyond NT's range, or a
-/// pose with a NaN or infinite component.
+/// is in doubt: phase_3). In a built-in floating NT, a query whose
+/// largest coordinate lies outside NT's safe window is answered on its
+/// input scaled by a power of two, its lengths scaled back
+/// (core/range_scaling.hpp). Throws invalid_input for an empty polygon, one
+/// beyond NT's range, or a pose with a NaN or infinite component, and
+/// std::range_error when the squared distance lies beyond NT's range.
 template <class NT>
 separation_result<NT> separation(const polygon& a, const polygon& b, const pose& q) {
     accepted_polygon<NT>(a, "static");
     accepted_polygon<NT>(b, "moving");
     const rotation_pose t(q);
+    if constexpr (std::is_floating_point_v<NT>) {
+        if (const int k = range_shift<NT>(a, b, q))
+            return separation_detail::scaled_back(
+                separation<NT>(a.scaled_by_power_of_two(k), b.scaled_by_power_of_two(k), scaled_by_power_of_two(q, k)),
+                k);
+    }
     const edge_tree ta(a), tb(b);
     separation_detail::workspace<NT> w(prepare_moving<NT>(b));
     separation_detail::static_side<NT> side(a);

@@ -21,6 +21,7 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/core/range_scaling.hpp"
 #include "influence2d/distance/separation.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/number/certified.hpp"
@@ -143,9 +144,13 @@ struct timed_site {
 /// witness shows unless an event at its start touches it (docs/sweep.md,
 /// "Exit distance"). Time O((n + m) log(n + m) + k log k) for k events up to
 /// the exit, plus O((n + m) log(n + m)) for each event that touches the
-/// witness. Throws invalid_input for an empty polygon, a NaN or infinite
-/// component of q or of the direction, a direction (0, 0), or one whose
-/// components differ by more than double's range (2^1022 times).
+/// witness. In a built-in floating NT, a query whose largest coordinate
+/// lies outside NT's safe window is answered on its polygons and pose scaled
+/// by a power of two 2^k, and the distance found scaled back by 2^-k
+/// (core/range_scaling.hpp), rounded as NT's range allows. Throws
+/// invalid_input for an empty polygon, a NaN or infinite component of q or
+/// of the direction, a direction (0, 0), or one whose components differ by
+/// more than double's range (2^1022 times).
 template <class NT>
 NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, double dy) {
     using namespace sweep;
@@ -155,6 +160,12 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
     accepted_polygon<NT>(b, "moving");
     const rotation_pose t(q);
     check_direction(dx, dy);
+    if constexpr (std::is_floating_point_v<NT>) {
+        if (const int k = range_shift<NT>(a, b, q))
+            return std::ldexp(exit_distance<NT>(a.scaled_by_power_of_two(k), b.scaled_by_power_of_two(k),
+                                                scaled_by_power_of_two(q, k), dx, dy),
+                              -k);
+    }
     // The direction scaled by a power of two 2^shift (exactly) to a largest
     // component in [1, 2): the windows of s, kept in double, then neither
     // overflow nor underflow; s for (dx, dy) is 2^shift times s for the

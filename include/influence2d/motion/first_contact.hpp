@@ -22,6 +22,7 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/core/range_scaling.hpp"
 #include "influence2d/distance/separation.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/number/certified.hpp"
@@ -63,14 +64,28 @@ namespace influence2d {
 /// A motion that turns is answered by conservative advancement with a
 /// tolerance (docs/sweep.md, "Motions that turn"). NT needs division for
 /// the time of the result (every number type of the library but certified
-/// and interval: certified_first_contact is the filtered route). Throws
-/// invalid_input for an empty polygon, a NaN or infinite component of
-/// either pose, or a tolerance that is negative, NaN or infinite.
+/// and interval: certified_first_contact is the filtered route). In a
+/// built-in floating NT, a motion whose largest coordinate lies outside
+/// NT's safe window is answered on its input scaled by a power of two, the
+/// tolerance with it (core/range_scaling.hpp): the same time and features,
+/// without overflow or underflow. Throws invalid_input for an empty polygon,
+/// a NaN or infinite component of either pose, or a tolerance that is
+/// negative, NaN or infinite.
 template <class NT>
 contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose& from, const pose& to,
                                  const sweep_options& options = {}) {
     using namespace sweep;
     const motion m = motion::accepted<NT>(a, b, from, to, options);
+    if constexpr (std::is_floating_point_v<NT>) {
+        if (const int k = range_shift<NT>(a, b, from, to)) {
+            sweep_options scaled = options;
+            // (A tolerance beyond double's range once scaled exceeds every
+            // distance of the scaled motion: the largest double does too.)
+            scaled.tolerance = std::min(std::ldexp(options.tolerance, k), std::numeric_limits<double>::max());
+            return first_contact<NT>(a.scaled_by_power_of_two(k), b.scaled_by_power_of_two(k),
+                                     scaled_by_power_of_two(from, k), scaled_by_power_of_two(to, k), scaled);
+        }
+    }
     if (from.theta != to.theta) return turning_first_contact<NT>(a, b, from, to, options);
     contact_result<NT> r;
     if (const auto met = meeting_at_start<NT>(a, b, from, m.start)) {

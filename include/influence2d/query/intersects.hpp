@@ -8,6 +8,7 @@
 
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/core/range_scaling.hpp"
 #include "influence2d/query/placed_meet.hpp"
 #include "influence2d/scene/placed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
@@ -22,6 +23,8 @@ namespace influence2d {
 /// for an empty polygon, one beyond NT's range, or a pose with a NaN or
 /// infinite component.
 ///
+///   a built-in floating NT outside its safe window: the query scaled by a
+///   power of two first (core/range_scaling.hpp; the same answer)
 ///   pose B's vertices in double; e <- their rounding margin
 ///   if the boxes of A and of posed B (grown by e) are apart:   disjoint
 ///   for one vertex of each of the first two rings of each polygon, within
@@ -43,6 +46,8 @@ bool intersects(const polygon& a, const polygon& b, const pose& q) {
     accepted_polygon<NT>(a, "static");
     accepted_polygon<NT>(b, "moving");
     const rotation_pose t(q);
+    if (const int k = range_shift<NT>(a, b, q))
+        return intersects<NT>(a.scaled_by_power_of_two(k), b.scaled_by_power_of_two(k), scaled_by_power_of_two(q, k));
     placed_polygon<NT> pa(a), pb(b, t);
     const double e = posing_margin<NT>(coordinate_scale(b) + coordinate_scale(a) + std::fabs(q.tx) + std::fabs(q.ty));
     return static_cast<bool>(placed_meet(pa, pb, e));

@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// Whether a query in a built-in floating type should first be scaled by a
+/// power of two, and by which.
+///
+/// The predicates multiply coordinates: an orientation is a product of two
+/// differences, a contact time a ratio of two such products, compared by
+/// cross-multiplication, and the exit distance's meetings scale coordinates
+/// by products of times (up to ten coordinates in one product). In double,
+/// coordinates near 2^+-300 already make such products overflow to infinity
+/// or underflow to zero, and the answers go wrong: a time that is NaN, a
+/// distance of 0 for polygons apart, a collision where there is none.
+///
+/// Multiplying every coordinate of a query (both polygons, the poses'
+/// translations, its lengths) by 2^k changes none of its answers but the
+/// lengths, which scale by 2^k, and in binary floating point it is exact: the
+/// rounded computation on the scaled input is the rounded computation on the
+/// input, step by step, scaled, except where the latter overflowed or fell
+/// among the subnormals. So a floating query whose largest coordinate lies
+/// outside [2^-W, 2^W] is answered on its input scaled to a largest
+/// coordinate in [1, 2); inside the window it runs as given, and its answers
+/// are those it always had.
+///
+///   W = max_exponent / 16 (double: 64; float: 8; long double: 1024): a
+///   product of ten coordinates below 2^W stays below 2^(10 W) <= 2^(5/8 of
+///   the range), and one of ten above 2^-W above 2^(-10 W), far from the
+///   subnormals.
+///
+/// The exact and filtered types need no scaling (their arithmetic has no
+/// range to leave, or falls back to one that has none), nor do the
+/// multiprecision floating types, whose exponents reach 2^+-(2^31).
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/core/pose.hpp"
+
+namespace influence2d {
+
+/// W for NT (see the file comment): coordinates of magnitude in [2^-W, 2^W]
+/// are answered as given.
+template <class NT>
+constexpr int unscaled_exponent_limit() {
+    return std::numeric_limits<NT>::max_exponent / 16;
+}
+
+/// The largest magnitude of a polygon's coordinates (from its box).
+inline double largest_coordinate(const polygon& p) {
+    const box& b = p.bounds();
+    return std::max(std::max(std::fabs(b.min_x), std::fabs(b.max_x)), std::max(std::fabs(b.min_y), std::fabs(b.max_y)));
+}
+
+/// The largest magnitude of a pose's translation.
+inline double largest_coordinate(const pose& q) { return std::max(std::fabs(q.tx), std::fabs(q.ty)); }
+
+/// The power of two 2^k by which a query in NT whose largest coordinate is
+/// `largest` is scaled: 0 for a type other than a built-in floating one, for
+/// `largest` 0, not finite, or in [2^-W, 2^W]; else -ilogb(largest), which
+/// brings it into [1, 2).
+template <class NT>
+int range_shift(double largest) {
+    if constexpr (!std::is_floating_point_v<NT>) {
+        (void)largest;
+        return 0;
+    } else {
+        constexpr int w = unscaled_exponent_limit<NT>();
+        if (!(largest > 0) || !std::isfinite(largest)) return 0;
+        const int e = std::ilogb(largest);
+        return e > w || e < -w ? -e : 0;
+    }
+}
+
+/// The shift of a query on polygons a and b at poses `poses` (range_shift of
+/// their largest coordinate).
+template <class NT, class... Poses>
+int range_shift(const polygon& a, const polygon& b, const Poses&... poses) {
+    if constexpr (!std::is_floating_point_v<NT>) {
+        return 0;
+    } else {
+        double largest = std::max(largest_coordinate(a), largest_coordinate(b));
+        ((largest = std::max(largest, largest_coordinate(poses))), ...);
+        return range_shift<NT>(largest);
+    }
+}
+
+/// A pose with its translation scaled by 2^k; the angle unchanged.
+inline pose scaled_by_power_of_two(const pose& q, int k) { return {std::ldexp(q.tx, k), std::ldexp(q.ty, k), q.theta}; }
+
+}  // namespace influence2d
