@@ -4,12 +4,14 @@
 // the GIL released, on all cores (run_in_blocks, one contiguous block of
 // poses per thread, as collide_batch).
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <type_traits>
 
 #include "bindings.hpp"
+#include "influence2d/core/range_scaling.hpp"
 #include "influence2d/detect/detector.hpp"
 #include "influence2d/distance/separation.hpp"
 #include "influence2d/exact/certified_detector.hpp"
@@ -33,17 +35,33 @@ double as_double(const NT& x) {
         return nearest_double(x);
 }
 
-/// answer(query, k) for every pose k, each block of poses with its own
-/// query object make(A, B) on the polygons prepared once in NT.
+/// The power of two 2^shift by which a batch in NT is scaled into NT's
+/// range (core/range_scaling.hpp): from the largest coordinate of A, of B
+/// and of every pose's translation; 0 for the exact types.
+template <class NT>
+int batch_shift(const polygon& a, const polygon& b, const pose_rows& poses) {
+    if constexpr (!std::is_floating_point_v<NT>) {
+        return 0;
+    } else {
+        double largest = std::max(largest_coordinate(a), largest_coordinate(b));
+        for (std::size_t k = 0; k < poses.count; ++k) largest = std::max(largest, largest_coordinate(poses.rows[k]));
+        return range_shift<NT>(largest);
+    }
+}
+
+/// answer(query, k, pose k) for every pose k, each block of poses with its
+/// own query object make(A, B) on the polygons prepared once in NT; with a
+/// shift, on the polygons and poses scaled by 2^shift.
 template <class NT, class Make, class Answer>
-void on_prepared(const polygon& a, const polygon& b, const pose_rows& poses, unsigned threads, Make&& make,
+void on_prepared(const polygon& a, const polygon& b, const pose_rows& poses, int shift, unsigned threads, Make&& make,
                  Answer&& answer) {
-    const auto pa = prepare_static<NT>(a);
-    const auto pb = prepare_moving<NT>(b);
+    const auto pa = shift ? prepare_static<NT>(a.scaled_by_power_of_two(shift)) : prepare_static<NT>(a);
+    const auto pb = shift ? prepare_moving<NT>(b.scaled_by_power_of_two(shift)) : prepare_moving<NT>(b);
     run_in_blocks(poses.count, threads, [&](std::size_t first, std::size_t last) {
         if (first == last) return;
         auto query = make(pa, pb);
-        for (std::size_t k = first; k < last; ++k) answer(query, k);
+        for (std::size_t k = first; k < last; ++k)
+            answer(query, k, shift ? scaled_by_power_of_two(poses.rows[k], shift) : poses.rows[k]);
     });
 }
 
@@ -53,8 +71,9 @@ void intersects_into(const polygon& a, const polygon& b, const pose_rows& poses,
     const auto in = [&](auto tag) {
         using NT = decltype(tag);
         on_prepared<NT>(
-            a, b, poses, threads, [](const auto& pa, const auto& pb) { return detector<NT>(pa, pb); },
-            [&](detector<NT>& d, std::size_t k) { out[k] = d.collide(poses.rows[k]).collides; });
+            a, b, poses, batch_shift<NT>(a, b, poses), threads,
+            [](const auto& pa, const auto& pb) { return detector<NT>(pa, pb); },
+            [&](detector<NT>& d, std::size_t k, const pose& q) { out[k] = d.collide(q).collides; });
     };
     switch (kind) {
     case number_kind::double_type: return in(double{});
@@ -126,13 +145,17 @@ void separation_into(const polygon& a, const polygon& b, const pose_rows& poses,
                      const separation_out& out) {
     const auto in = [&](auto tag) {
         using NT = decltype(tag);
+        // Scaled by 2^shift, the lengths come back scaled by 2^-shift: the
+        // distance from the scaled squared distance, which double holds.
+        const int shift = batch_shift<NT>(a, b, poses);
+        const auto back = [shift](double x) { return std::ldexp(x, -shift); };
         on_prepared<NT>(
-            a, b, poses, threads, [](const auto& pa, const auto& pb) { return separation_query<NT>(pa, pb); },
-            [&](separation_query<NT>& query, std::size_t k) {
-                const separation_result<NT> r = query(poses.rows[k]);
-                out.put(k, distance_of<NT>(r.squared_distance), r.static_feature, r.moving_feature,
-                        {as_double(r.static_point.x), as_double(r.static_point.y)},
-                        {as_double(r.moving_point.x), as_double(r.moving_point.y)});
+            a, b, poses, shift, threads, [](const auto& pa, const auto& pb) { return separation_query<NT>(pa, pb); },
+            [&](separation_query<NT>& query, std::size_t k, const pose& q) {
+                const separation_result<NT> r = query(q);
+                out.put(k, back(distance_of<NT>(r.squared_distance)), r.static_feature, r.moving_feature,
+                        {back(as_double(r.static_point.x)), back(as_double(r.static_point.y))},
+                        {back(as_double(r.moving_point.x)), back(as_double(r.moving_point.y))});
             });
     };
     switch (kind) {

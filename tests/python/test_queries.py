@@ -225,3 +225,30 @@ def test_detector_keeps_its_state_across_calls(np_rng, rng):
         split = np.concatenate([d.collide(poses[k:k + 37]) for k in range(0, len(poses), 37)])
         assert (split == influence2d.Detector(a, b, number_type=number_type).collide(poses)).all()
     assert (split == influence2d.intersects(a, b, poses)).all()
+
+
+@pytest.mark.parametrize("e", [-600, -300, 300, 600])
+def test_double_far_from_one_in_scale(rng, np_rng, e):
+    """Every coordinate times 2^e: double answers as at scale 1 (its query
+    scaled into its range first), its distances times 2^e exactly."""
+    a = star_polygon(rng, 16)
+    b = star_polygon(rng, 10, radius=0.5)
+    poses = random_poses(np_rng, 100, 3, 3)
+    s = 2.0 ** e
+    a_s = shapely.affinity.scale(a, s, s, origin=(0, 0))
+    b_s = shapely.affinity.scale(b, s, s, origin=(0, 0))
+    poses_s = poses.copy()
+    poses_s[:, :2] *= s
+    meet = influence2d.intersects(a, b, poses, number_type="double")
+    assert 0 < meet.sum() < len(poses)
+    assert influence2d.intersects(a_s, b_s, poses_s, number_type="double").tolist() == meet.tolist()
+    d = influence2d.separation(a, b, poses, number_type="double")
+    assert influence2d.separation(a_s, b_s, poses_s, number_type="double").tolist() == (d * s).tolist()
+    ends = np.roll(poses, 1, axis=0)
+    ends[:, 2] = poses[:, 2]
+    ends_s = ends.copy()
+    ends_s[:, :2] *= s
+    contact, t = influence2d.first_contact(a, b, poses, ends, number_type="double")
+    contact_s, t_s = influence2d.first_contact(a_s, b_s, poses_s, ends_s, number_type="double")
+    assert contact_s.tolist() == contact.tolist()
+    assert np.array_equal(t_s, t, equal_nan=True)
