@@ -34,6 +34,7 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -243,7 +244,21 @@ public:
 
     query_route(const polygon& a, const polygon& b) : a_(a), b_(b), separation_(a, b) {}
 
-    separation_result<NT> separation(const pose& q) { return separation_(q); }
+    /// The separation at q; a squared distance beyond NT's range (the
+    /// query's std::range_error) is an answer whose squared distance is not
+    /// finite, as the study reports it.
+    separation_result<NT> separation(const pose& q) {
+        if constexpr (scaled_into_range_v<NT>) {
+            try {
+                return separation_(q);
+            } catch (const std::range_error&) {
+                separation_result<NT> r;
+                r.squared_distance = std::numeric_limits<NT>::infinity();
+                return r;
+            }
+        }
+        return separation_(q);
+    }
     contact_result<NT> first_contact(const translation& m) {
         return influence2d::first_contact<NT>(a_, b_, m.from, m.to);
     }

@@ -40,7 +40,7 @@ double as_double(const NT& x) {
 /// and of every pose's translation; 0 for the exact types.
 template <class NT>
 int batch_shift(const polygon& a, const polygon& b, const pose_rows& poses) {
-    if constexpr (!std::is_floating_point_v<NT>) {
+    if constexpr (!scaled_into_range_v<NT>) {
         return 0;
     } else {
         double largest = std::max(largest_coordinate(a), largest_coordinate(b));

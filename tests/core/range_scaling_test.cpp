@@ -90,11 +90,13 @@ TEST_CASE("range scaling: double answers at 2^e as at scale 1, lengths scaled by
         const std::vector<pose> poses = test_poses::near_contact(a, b, 24, 0.3, 0, 900 + scene);
         detector<double> d0(a, b);
         detector<double> w0(a, b, {0, true});
+        separation_query<double> s0_query(a, b);
         for (int e : {-1000, -600, -300, -40, 40, 300, 600, 1000}) {
             INFO("scene " << scene << ", scale 2^" << e);
             const polygon as(scaled_rings(ra, e)), bs(scaled_rings(rb, e));
             detector<double> de(as, bs);
             detector<double> we(as, bs, {0, true});
+            separation_query<double> se_query(as, bs);
             for (std::size_t k = 0; k < poses.size(); ++k) {
                 const pose& q = poses[k];
                 const pose qe = scaled(q, e);
@@ -118,6 +120,7 @@ TEST_CASE("range scaling: double answers at 2^e as at scale 1, lengths scaled by
                 const double want = std::ldexp(s0.squared_distance, 2 * e);
                 if (std::isinf(want) || (want == 0 && s0.squared_distance != 0)) {
                     CHECK_THROWS_AS(separation<double>(as, bs, qe), std::range_error);
+                    CHECK_THROWS_AS(se_query(qe), std::range_error);
                     ++out_of_range;
                 } else {
                     const separation_result<double> se = separation<double>(as, bs, qe);
@@ -125,6 +128,10 @@ TEST_CASE("range scaling: double answers at 2^e as at scale 1, lengths scaled by
                     CHECK(same(se.static_feature, s0.static_feature));
                     CHECK(same(se.moving_feature, s0.moving_feature));
                     CHECK(se.moving_point.x == std::ldexp(s0.moving_point.x, e));
+                    // The prepared query, coherent from pose to pose, as its own answer at scale 1.
+                    const separation_result<double> pe = se_query(qe), p0 = s0_query(q);
+                    CHECK(pe.squared_distance == std::ldexp(p0.squared_distance, 2 * e));
+                    CHECK(same(pe.static_feature, p0.static_feature));
                 }
 
                 // First contact along a translation to the next pose's place,

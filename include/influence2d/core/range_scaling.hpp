@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
-/// Whether a query in a built-in floating type should first be scaled by a
+/// Whether a query in float, double or long double should first be scaled by a
 /// power of two, and by which.
 ///
 /// The predicates multiply coordinates: an orientation is a product of two
@@ -28,8 +28,9 @@
 ///   subnormals.
 ///
 /// The exact and filtered types need no scaling (their arithmetic has no
-/// range to leave, or falls back to one that has none), nor do the
-/// multiprecision floating types, whose exponents reach 2^+-(2^31).
+/// range to leave, or falls back to one that has none), nor do quad and
+/// float128, whose exponents reach 2^+-16383: a product of ten doubles, from
+/// 2^-10740 to 2^10240, stays within it.
 
 #include <algorithm>
 #include <cmath>
@@ -40,6 +41,12 @@
 #include "influence2d/core/pose.hpp"
 
 namespace influence2d {
+
+/// Whether queries in NT are scaled into its range: float, double and long
+/// double (not GCC's __float128, whose exponent reaches as far as quad's).
+template <class NT>
+inline constexpr bool scaled_into_range_v =
+    std::is_same_v<NT, float> || std::is_same_v<NT, double> || std::is_same_v<NT, long double>;
 
 /// W for NT (see the file comment): coordinates of magnitude in [2^-W, 2^W]
 /// are answered as given.
@@ -58,12 +65,12 @@ inline double largest_coordinate(const polygon& p) {
 inline double largest_coordinate(const pose& q) { return std::max(std::fabs(q.tx), std::fabs(q.ty)); }
 
 /// The power of two 2^k by which a query in NT whose largest coordinate is
-/// `largest` is scaled: 0 for a type other than a built-in floating one, for
+/// `largest` is scaled: 0 for a type other than float, double and long double, for
 /// `largest` 0, not finite, or in [2^-W, 2^W]; else -ilogb(largest), which
 /// brings it into [1, 2).
 template <class NT>
 int range_shift(double largest) {
-    if constexpr (!std::is_floating_point_v<NT>) {
+    if constexpr (!scaled_into_range_v<NT>) {
         (void)largest;
         return 0;
     } else {
@@ -78,7 +85,7 @@ int range_shift(double largest) {
 /// their largest coordinate).
 template <class NT, class... Poses>
 int range_shift(const polygon& a, const polygon& b, const Poses&... poses) {
-    if constexpr (!std::is_floating_point_v<NT>) {
+    if constexpr (!scaled_into_range_v<NT>) {
         return 0;
     } else {
         double largest = std::max(largest_coordinate(a), largest_coordinate(b));

@@ -156,8 +156,8 @@ public:
     /// distance > 0 the detector was built without (or d < 0 or not finite),
     /// invalid_input for an empty polygon, one beyond NT's range, or one of
     /// several rings without features::holes. collide throws invalid_input
-    /// for a pose with a NaN or infinite component. In a built-in floating
-    /// NT, polygons whose largest coordinate lies outside NT's safe window
+    /// for a pose with a NaN or infinite component. In float, double or
+    /// long double, polygons whose largest coordinate lies outside NT's safe window
     /// are prepared scaled by a power of two 2^k, and each frame's
     /// translation and the distance d with them (core/range_scaling.hpp):
     /// the same answers, without overflow or underflow.

@@ -529,8 +529,8 @@ separation_result<NT> separate(static_side<NT>& side, const search_input& in, wo
     return r;
 }
 
-/// The separation of a query answered on its input scaled by 2^k (a
-/// built-in floating NT, core/range_scaling.hpp), in the input's units:
+/// The separation of a query answered on its input scaled by 2^k (NT float,
+/// double or long double; core/range_scaling.hpp), in the input's units:
 /// the points scaled by 2^-k, the squared distance by 2^-2k. Throws
 /// std::range_error when that squared distance lies beyond NT's range
 /// (overflows, or underflows to 0 for regions apart): NT cannot hold it.
@@ -596,7 +596,7 @@ separation_result<NT> separation(const static_scene<NT>& a, const moving_scene<N
 /// polygons), from the polygons alone: it builds both edge trees (O(n log n
 /// + m log m)) and locates points by Feito's test over the polygon's edges
 /// (in an exact field, in `certified` first and again in NT only when a sign
-/// is in doubt: phase_3). In a built-in floating NT, a query whose
+/// is in doubt: phase_3). In float, double or long double, a query whose
 /// largest coordinate lies outside NT's safe window is answered on its
 /// input scaled by a power of two, its lengths scaled back
 /// (core/range_scaling.hpp). Throws invalid_input for an empty polygon, one
@@ -607,7 +607,7 @@ separation_result<NT> separation(const polygon& a, const polygon& b, const pose&
     accepted_polygon<NT>(a, "static");
     accepted_polygon<NT>(b, "moving");
     const rotation_pose t(q);
-    if constexpr (std::is_floating_point_v<NT>) {
+    if constexpr (scaled_into_range_v<NT>) {
         if (const int k = range_shift<NT>(a, b, q))
             return separation_detail::scaled_back(
                 separation<NT>(a.scaled_by_power_of_two(k), b.scaled_by_power_of_two(k), scaled_by_power_of_two(q, k)),
@@ -630,10 +630,17 @@ separation_result<NT> separation(const polygon& a, const polygon& b, const pose&
 template <class NT>
 class separation_query {
 public:
-    /// Prepares A and B (prepare_static, prepare_moving). Throws
-    /// invalid_input for an empty polygon or one beyond NT's range.
+    /// Prepares A and B (prepare_static, prepare_moving). In a built-in
+    /// floating NT, polygons whose largest coordinate lies outside NT's safe
+    /// window are prepared scaled by a power of two 2^k, each pose's
+    /// translation with them, and the answers' lengths scaled back
+    /// (core/range_scaling.hpp; std::range_error for a squared distance
+    /// beyond NT's range). Throws invalid_input for an empty polygon or one
+    /// beyond NT's range.
     separation_query(const polygon& static_polygon, const polygon& moving_polygon)
-        : separation_query(prepare_static<NT>(static_polygon), prepare_moving<NT>(moving_polygon)) {}
+        : separation_query(range_shift<NT>(accepted_polygon<NT>(static_polygon, "static"),
+                                           accepted_polygon<NT>(moving_polygon, "moving")),
+                           static_polygon, moving_polygon) {}
 
     /// On prepared polygons, shared. Throws invalid_input for a null pointer.
     separation_query(std::shared_ptr<const static_scene<NT>> static_polygon,
@@ -646,16 +653,33 @@ public:
     /// The separation at pose q (separation()). Throws invalid_input for a
     /// pose with a NaN or infinite component.
     separation_result<NT> operator()(const pose& q) {
-        const rotation_pose t(q);
-        const separation_detail::search_input in{a_->shape,  a_->tree(), b_->shape,
-                                                 b_->tree(), t,          posing_error(b_->scale, q.tx, q.ty)};
-        return separation_detail::separate(side_, in, w_);
+        if constexpr (scaled_into_range_v<NT>) {
+            if (shift_ != 0) return separation_detail::scaled_back(at(scaled_by_power_of_two(q, shift_)), shift_);
+        }
+        return at(q);
     }
 
     /// The number of edge pairs the last query evaluated in NT.
     std::size_t evaluated_pairs() const { return w_.evaluated; }
 
 private:
+    /// The query on polygons scaled by 2^shift.
+    separation_query(int shift, const polygon& static_polygon, const polygon& moving_polygon)
+        : separation_query(shift ? prepare_static<NT>(static_polygon.scaled_by_power_of_two(shift))
+                                 : prepare_static<NT>(static_polygon),
+                           shift ? prepare_moving<NT>(moving_polygon.scaled_by_power_of_two(shift))
+                                 : prepare_moving<NT>(moving_polygon)) {
+        shift_ = shift;
+    }
+
+    /// The separation at q, in the prepared polygons' units.
+    separation_result<NT> at(const pose& q) {
+        const rotation_pose t(q);
+        const separation_detail::search_input in{a_->shape,  a_->tree(), b_->shape,
+                                                 b_->tree(), t,          posing_error(b_->scale, q.tx, q.ty)};
+        return separation_detail::separate(side_, in, w_);
+    }
+
     template <class Scene>
     static std::shared_ptr<const Scene> checked(std::shared_ptr<const Scene> s, const char* which) {
         if (!s)
@@ -667,6 +691,7 @@ private:
     std::shared_ptr<const moving_scene<NT>> b_;
     separation_detail::workspace<NT> w_;
     separation_detail::static_side<NT> side_;
+    int shift_ = 0;  ///< the polygons and poses scaled by 2^shift_
 };
 
 /// The distance as a double from a squared distance. In an exact NT the

@@ -144,7 +144,7 @@ struct timed_site {
 /// witness shows unless an event at its start touches it (docs/sweep.md,
 /// "Exit distance"). Time O((n + m) log(n + m) + k log k) for k events up to
 /// the exit, plus O((n + m) log(n + m)) for each event that touches the
-/// witness. In a built-in floating NT, a query whose largest coordinate
+/// witness. In float, double or long double, a query whose largest coordinate
 /// lies outside NT's safe window is answered on its polygons and pose scaled
 /// by a power of two 2^k, and the distance found scaled back by 2^-k
 /// (core/range_scaling.hpp), rounded as NT's range allows. Throws
@@ -160,7 +160,7 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
     accepted_polygon<NT>(b, "moving");
     const rotation_pose t(q);
     check_direction(dx, dy);
-    if constexpr (std::is_floating_point_v<NT>) {
+    if constexpr (scaled_into_range_v<NT>) {
         if (const int k = range_shift<NT>(a, b, q))
             return std::ldexp(exit_distance<NT>(a.scaled_by_power_of_two(k), b.scaled_by_power_of_two(k),
                                                 scaled_by_power_of_two(q, k), dx, dy),

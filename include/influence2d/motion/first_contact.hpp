@@ -64,8 +64,8 @@ namespace influence2d {
 /// A motion that turns is answered by conservative advancement with a
 /// tolerance (docs/sweep.md, "Motions that turn"). NT needs division for
 /// the time of the result (every number type of the library but certified
-/// and interval: certified_first_contact is the filtered route). In a
-/// built-in floating NT, a motion whose largest coordinate lies outside
+/// and interval: certified_first_contact is the filtered route). In
+/// float, double or long double, a motion whose largest coordinate lies outside
 /// NT's safe window is answered on its input scaled by a power of two, the
 /// tolerance with it (core/range_scaling.hpp): the same time and features,
 /// without overflow or underflow. Throws invalid_input for an empty polygon,
@@ -76,7 +76,7 @@ contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose&
                                  const sweep_options& options = {}) {
     using namespace sweep;
     const motion m = motion::accepted<NT>(a, b, from, to, options);
-    if constexpr (std::is_floating_point_v<NT>) {
+    if constexpr (scaled_into_range_v<NT>) {
         if (const int k = range_shift<NT>(a, b, from, to)) {
             sweep_options scaled = options;
             // (A tolerance beyond double's range once scaled exceeds every

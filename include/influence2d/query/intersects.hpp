@@ -23,7 +23,7 @@ namespace influence2d {
 /// for an empty polygon, one beyond NT's range, or a pose with a NaN or
 /// infinite component.
 ///
-///   a built-in floating NT outside its safe window: the query scaled by a
+///   NT float, double or long double, outside its safe window: the query scaled by a
 ///   power of two first (core/range_scaling.hpp; the same answer)
 ///   pose B's vertices in double; e <- their rounding margin
 ///   if the boxes of A and of posed B (grown by e) are apart:   disjoint
