@@ -7,9 +7,12 @@
 // help text and the dispatch all come from that table: a new type is one line
 // there.
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -19,6 +22,7 @@
 
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/core/range_scaling.hpp"
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/detector.hpp"
 #include "influence2d/detect/paper_detector.hpp"
@@ -78,9 +82,23 @@ frames_run time_frames(const detector_job& job, Make&& make, Done&& done) {
 }
 
 /// A plain number type: every algorithm's detector in NT; the sound one on
-/// A and B prepared once for every thread.
+/// A and B prepared once for every thread. In float, double and long double,
+/// a scene far from 1 in scale (its polygons and every pose's translation)
+/// runs scaled by a power of two into the type's range, d with it
+/// (core/range_scaling.hpp): the same answers, without overflow or underflow.
 template <class NT>
 frames_run run_in(const detector_job& job) {
+    double largest = std::max(largest_coordinate(job.a), largest_coordinate(job.b));
+    for (const pose& p : job.poses) largest = std::max(largest, largest_coordinate(p));
+    if (const int k = range_shift<NT>(largest)) {
+        const polygon a = job.a.scaled_by_power_of_two(k), b = job.b.scaled_by_power_of_two(k);
+        std::vector<pose> poses;
+        poses.reserve(job.poses.size());
+        for (const pose& p : job.poses) poses.push_back(scaled_by_power_of_two(p, k));
+        detector_job scaled{a, b, poses, job.options, job.algorithm, job.threads};
+        scaled.options.distance = std::min(std::ldexp(job.options.distance, k), std::numeric_limits<double>::max());
+        return run_in<NT>(scaled);
+    }
     const auto nothing = [](const auto&) {};
     if (job.algorithm == "paper")
         return time_frames(

@@ -314,3 +314,24 @@ TEST_CASE("cli collide: the help of --number-type lists every type with its answ
     CHECK(r.out.find("certified and interval (exact fallback) run with --algorithm sound or brute-force only") !=
           std::string::npos);
 }
+
+TEST_CASE("cli collide: far from 1 in scale every type answers as certified (the scene scaled into range)", "[cli]") {
+    // A wall and a square at 2^-599: clearly apart, overlapping, far apart.
+    // Unscaled, double's products underflow and it reported the first pose
+    // as a collision.
+    const temp_dir dir;
+    const auto a =
+        dir.file("A.wkt", "POLYGON((0 -3.0e-180,6.1e-182 -3.0e-180,6.1e-182 3.0e-180,0 3.0e-180,0 -3.0e-180))\n");
+    const auto b = dir.file("B.wkt",
+                            "POLYGON((-6.1e-181 -6.1e-181,6.1e-181 -6.1e-181,6.1e-181 6.1e-181,-6.1e-181 6.1e-181,"
+                            "-6.1e-181 -6.1e-181))\n");
+    const auto poses =
+        dir.file("poses.csv", "tx,ty,theta\n-6.5e-181,3e-181,0.01\n-6.0e-181,3e-181,0.01\n-5e-180,0,0\n");
+    for (const char* type : {"double", "float", "long-double", "quad", "certified"}) {
+        INFO(type);
+        const auto r = run_cli(
+            dir, scene_args(a, b) + " --poses " + quote(poses.string()) + " --number-type " + type + " --out -");
+        CHECK(r.exit_code == 0);
+        CHECK(r.out == "frame,collides\n0,0\n1,1\n2,0\n");
+    }
+}
