@@ -7,7 +7,7 @@
 /// The predicates multiply coordinates: an orientation is a product of two
 /// differences, a contact time a ratio of two such products, compared by
 /// cross-multiplication, and the exit distance's meetings scale coordinates
-/// by products of times (up to ten coordinates in one product). In double,
+/// by products of times. In double,
 /// coordinates near 2^+-300 already make such products overflow to infinity
 /// or underflow to zero, and the answers go wrong: a time that is NaN, a
 /// distance of 0 for polygons apart, a collision where there is none.
