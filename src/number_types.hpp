@@ -7,12 +7,9 @@
 // help text and the dispatch all come from that table: a new type is one line
 // there.
 
-#include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <cmath>
 #include <cstddef>
-#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -88,15 +85,13 @@ frames_run time_frames(const detector_job& job, Make&& make, Done&& done) {
 /// (core/range_scaling.hpp): the same answers, without overflow or underflow.
 template <class NT>
 frames_run run_in(const detector_job& job) {
-    double largest = std::max(largest_coordinate(job.a), largest_coordinate(job.b));
-    for (const pose& p : job.poses) largest = std::max(largest, largest_coordinate(p));
-    if (const int k = range_shift<NT>(largest)) {
+    if (const int k = batch_range_shift<NT>(job.a, job.b, job.poses.data(), job.poses.size())) {
         const polygon a = job.a.scaled_by_power_of_two(k), b = job.b.scaled_by_power_of_two(k);
         std::vector<pose> poses;
         poses.reserve(job.poses.size());
         for (const pose& p : job.poses) poses.push_back(scaled_by_power_of_two(p, k));
         detector_job scaled{a, b, poses, job.options, job.algorithm, job.threads};
-        scaled.options.distance = std::min(std::ldexp(job.options.distance, k), std::numeric_limits<double>::max());
+        scaled.options.distance = scaled_length(job.options.distance, k);
         return run_in<NT>(scaled);
     }
     const auto nothing = [](const auto&) {};

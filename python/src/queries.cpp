@@ -4,7 +4,6 @@
 // the GIL released, on all cores (run_in_blocks, one contiguous block of
 // poses per thread, as collide_batch).
 
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -35,28 +34,15 @@ double as_double(const NT& x) {
         return nearest_double(x);
 }
 
-/// The power of two 2^shift by which a batch in NT is scaled into NT's
-/// range (core/range_scaling.hpp): from the largest coordinate of A, of B
-/// and of every pose's translation; 0 for the exact types.
-template <class NT>
-int batch_shift(const polygon& a, const polygon& b, const pose_rows& poses) {
-    if constexpr (!scaled_into_range_v<NT>) {
-        return 0;
-    } else {
-        double largest = std::max(largest_coordinate(a), largest_coordinate(b));
-        for (std::size_t k = 0; k < poses.count; ++k) largest = std::max(largest, largest_coordinate(poses.rows[k]));
-        return range_shift<NT>(largest);
-    }
-}
-
 /// answer(query, k, pose k) for every pose k, each block of poses with its
 /// own query object make(A, B) on the polygons prepared once in NT; with a
-/// shift, on the polygons and poses scaled by 2^shift.
+/// shift (batch_range_shift, core/range_scaling.hpp), on the polygons and
+/// poses scaled by 2^shift.
 template <class NT, class Make, class Answer>
 void on_prepared(const polygon& a, const polygon& b, const pose_rows& poses, int shift, unsigned threads, Make&& make,
                  Answer&& answer) {
-    const auto pa = shift ? prepare_static<NT>(a.scaled_by_power_of_two(shift)) : prepare_static<NT>(a);
-    const auto pb = shift ? prepare_moving<NT>(b.scaled_by_power_of_two(shift)) : prepare_moving<NT>(b);
+    const auto pa = prepare_static<NT>(a, shift);
+    const auto pb = prepare_moving<NT>(b, shift);
     run_in_blocks(poses.count, threads, [&](std::size_t first, std::size_t last) {
         if (first == last) return;
         auto query = make(pa, pb);
@@ -71,7 +57,7 @@ void intersects_into(const polygon& a, const polygon& b, const pose_rows& poses,
     const auto in = [&](auto tag) {
         using NT = decltype(tag);
         on_prepared<NT>(
-            a, b, poses, batch_shift<NT>(a, b, poses), threads,
+            a, b, poses, batch_range_shift<NT>(a, b, poses.rows, poses.count), threads,
             [](const auto& pa, const auto& pb) { return detector<NT>(pa, pb); },
             [&](detector<NT>& d, std::size_t k, const pose& q) { out[k] = d.collide(q).collides; });
     };
@@ -147,7 +133,7 @@ void separation_into(const polygon& a, const polygon& b, const pose_rows& poses,
         using NT = decltype(tag);
         // Scaled by 2^shift, the lengths come back scaled by 2^-shift: the
         // distance from the scaled squared distance, which double holds.
-        const int shift = batch_shift<NT>(a, b, poses);
+        const int shift = batch_range_shift<NT>(a, b, poses.rows, poses.count);
         const auto back = [shift](double x) { return std::ldexp(x, -shift); };
         on_prepared<NT>(
             a, b, poses, shift, threads, [](const auto& pa, const auto& pb) { return separation_query<NT>(pa, pb); },

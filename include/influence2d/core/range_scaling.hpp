@@ -34,6 +34,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <type_traits>
 
@@ -92,6 +93,27 @@ int range_shift(const polygon& a, const polygon& b, const Poses&... poses) {
         ((largest = std::max(largest, largest_coordinate(poses))), ...);
         return range_shift<NT>(largest);
     }
+}
+
+/// The shift of a batch: polygons a and b at each of `count` poses from
+/// `poses` (range_shift of their largest coordinate).
+template <class NT>
+int batch_range_shift(const polygon& a, const polygon& b, const pose* poses, std::size_t count) {
+    if constexpr (!scaled_into_range_v<NT>) {
+        return 0;
+    } else {
+        double largest = std::max(largest_coordinate(a), largest_coordinate(b));
+        for (std::size_t k = 0; k < count; ++k) largest = std::max(largest, largest_coordinate(poses[k]));
+        return range_shift<NT>(largest);
+    }
+}
+
+/// A length (a distance d, a tolerance) scaled by 2^k with its query: at
+/// most the largest double, which exceeds every length of the scaled query
+/// as the overflowing value would; a length that is not finite unchanged
+/// (for its check to refuse it as given).
+inline double scaled_length(double x, int k) {
+    return std::isfinite(x) ? std::min(std::ldexp(x, k), std::numeric_limits<double>::max()) : x;
 }
 
 /// A pose with its translation scaled by 2^k; the angle unchanged.

@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -265,20 +264,15 @@ private:
     /// The constructor from polygons, with the power of two 2^shift by which
     /// they (and each frame's translation, and d) are scaled.
     detector(int shift, const polygon& static_polygon, const polygon& moving_polygon, detector_options options)
-        : detector(shift ? prepare_static<NT>(static_polygon.scaled_by_power_of_two(shift))
-                         : prepare_static<NT>(static_polygon),
-                   shift ? prepare_moving<NT>(moving_polygon.scaled_by_power_of_two(shift))
-                         : prepare_moving<NT>(moving_polygon),
+        : detector(prepare_static<NT>(static_polygon, shift), prepare_moving<NT>(moving_polygon, shift),
                    scaled_distance(options, shift)) {
         shift_ = shift;
         given_distance_ = options.distance;
     }
 
-    /// The options with d scaled by 2^shift; a d that is negative or not
-    /// finite as given (refused by the constructor).
+    /// The options with d scaled by 2^shift (scaled_length).
     static detector_options scaled_distance(detector_options o, int shift) {
-        if (o.distance > 0 && std::isfinite(o.distance))
-            o.distance = std::min(std::ldexp(o.distance, shift), std::numeric_limits<double>::max());
+        o.distance = scaled_length(o.distance, shift);
         return o;
     }
 

@@ -630,8 +630,8 @@ separation_result<NT> separation(const polygon& a, const polygon& b, const pose&
 template <class NT>
 class separation_query {
 public:
-    /// Prepares A and B (prepare_static, prepare_moving). In a built-in
-    /// floating NT, polygons whose largest coordinate lies outside NT's safe
+    /// Prepares A and B (prepare_static, prepare_moving). In float, double
+    /// or long double, polygons whose largest coordinate lies outside NT's safe
     /// window are prepared scaled by a power of two 2^k, each pose's
     /// translation with them, and the answers' lengths scaled back
     /// (core/range_scaling.hpp; std::range_error for a squared distance
@@ -665,10 +665,7 @@ public:
 private:
     /// The query on polygons scaled by 2^shift.
     separation_query(int shift, const polygon& static_polygon, const polygon& moving_polygon)
-        : separation_query(shift ? prepare_static<NT>(static_polygon.scaled_by_power_of_two(shift))
-                                 : prepare_static<NT>(static_polygon),
-                           shift ? prepare_moving<NT>(moving_polygon.scaled_by_power_of_two(shift))
-                                 : prepare_moving<NT>(moving_polygon)) {
+        : separation_query(prepare_static<NT>(static_polygon, shift), prepare_moving<NT>(moving_polygon, shift)) {
         shift_ = shift;
     }
 

@@ -79,9 +79,7 @@ contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose&
     if constexpr (scaled_into_range_v<NT>) {
         if (const int k = range_shift<NT>(a, b, from, to)) {
             sweep_options scaled = options;
-            // (A tolerance beyond double's range once scaled exceeds every
-            // distance of the scaled motion: the largest double does too.)
-            scaled.tolerance = std::min(std::ldexp(options.tolerance, k), std::numeric_limits<double>::max());
+            scaled.tolerance = scaled_length(options.tolerance, k);
             return first_contact<NT>(a.scaled_by_power_of_two(k), b.scaled_by_power_of_two(k),
                                      scaled_by_power_of_two(from, k), scaled_by_power_of_two(to, k), scaled);
         }

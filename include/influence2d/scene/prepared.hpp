@@ -173,5 +173,15 @@ template <class NT>
 std::shared_ptr<const moving_scene<NT>> prepare_moving(const polygon& b) {
     return std::make_shared<const moving_scene<NT>>(b);
 }
+/// A prepared scaled by 2^shift (core/range_scaling.hpp); as given for 0.
+template <class NT>
+std::shared_ptr<const static_scene<NT>> prepare_static(const polygon& a, int shift) {
+    return shift ? prepare_static<NT>(a.scaled_by_power_of_two(shift)) : prepare_static<NT>(a);
+}
+/// B prepared scaled by 2^shift (core/range_scaling.hpp); as given for 0.
+template <class NT>
+std::shared_ptr<const moving_scene<NT>> prepare_moving(const polygon& b, int shift) {
+    return shift ? prepare_moving<NT>(b.scaled_by_power_of_two(shift)) : prepare_moving<NT>(b);
+}
 
 }  // namespace influence2d
