@@ -5,13 +5,15 @@
 # in double and in exact arithmetic, with the sound and the paper-literal
 # detectors, and prints a summary table; then a short precision study of the
 # method's decisions per number type, and a quick time study against the peers
-# (the paper's trajectories, random poses near contact, one-shot queries).
-# Outputs go to build/main-job/.
+# (the paper's trajectories, random poses near contact, one-shot queries), and
+# the time study on pairs of real polygons (countries and New York City
+# boroughs, downloaded from Debian's archive by scripts/real_layers.sh; skipped,
+# with the reason, when that fails). Outputs go to build/main-job/.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/deps.sh"
 cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$root/build" -j "$(nproc)" --target influence2d_cli influence2d_bench_cli >/dev/null
+cmake --build "$root/build" -j "$(nproc)" --target influence2d_cli influence2d_bench_cli influence2d_real_bench_cli >/dev/null
 # The Python package (when pybind11 and /usr/bin/python3 with numpy are there), installed.
 bash "$root/scripts/install_python.sh" "$root/build" >/dev/null
 tool="$root/build/src/influence2d"
@@ -83,3 +85,12 @@ echo "time study (quick grid: sizes 8 and 1024, every polygon type; the two traj
 sed -n '/^## Methods/,/^## Targets/p' "$out/bench/bench.md" | sed '$d'
 sed -n '/^## Targets/,/^## Speed-up/p' "$out/bench/bench.md" | sed '$d'
 echo "tables and heat maps: $out/bench/bench.md, $out/bench/heatmap_*.png (full grid: influence2d-bench)"
+echo
+echo "real pairs (countries and NYC boroughs, 200 poses a pair along a random walk and shuffled, against GEOS prepared):"
+if bash "$root/scripts/real_layers.sh" "$out/real_layers" >"$out/real_layers.log" 2>&1; then
+    "$root/build/src/influence2d-real-bench" --layers "$out/real_layers" --poses 200 --runs 3 --out "$out/real" \
+        2>/dev/null | grep -E '^\| static|\| (double|certified|GEOS prepared) \|'
+    echo "table: $out/real/real.md (full run: influence2d-real-bench --layers DIR)"
+else
+    echo "skipped: the real layers could not be made ($out/real_layers.log)"
+fi
