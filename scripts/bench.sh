@@ -25,7 +25,7 @@ out="$build/bench.json"
 "$build/verification/bench/influence2d_bench" --benchmark_out="$out" --benchmark_out_format=json \
     --benchmark_repetitions=3 --benchmark_min_time=0.5 --benchmark_report_aggregates_only=true "$@" >&2
 
-python3 - "$out" <<'EOF'
+/usr/bin/python3 - "$out" <<'EOF'
 import json
 import sys
 

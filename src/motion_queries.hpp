@@ -71,13 +71,14 @@ std::vector<separation_row> separations_in(const polygon& a, const polygon& b, c
 }
 
 /// The separation at every pose, certified: exact features, the distance
-/// within one unit in the last place.
+/// within one unit in the last place; one query object over the poses.
 inline std::vector<separation_row> certified_separations(const polygon& a, const polygon& b,
                                                          const std::vector<pose>& poses) {
+    certified_separation_query query(a, b);
     std::vector<separation_row> rows;
     rows.reserve(poses.size());
     for (const pose& p : poses) {
-        const certified_separation_result r = certified_separation(a, b, p);
+        const certified_separation_result r = query(p);
         rows.push_back({r.distance, r.static_feature, r.moving_feature});
     }
     return rows;

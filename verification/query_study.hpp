@@ -7,7 +7,8 @@
 //
 //   floating types, exact:  separation_query<NT> (A and B prepared once per
 //                           scene, not timed), first_contact<NT>
-//   certified, interval:    certified_separation, certified_first_contact
+//   certified, interval:    certified_separation_query (prepared once per
+//                           scene, not timed), certified_first_contact
 //                           (interval has no route of its own: as certified)
 //
 // and compared with the exact answers: separation<exact_rational> on the
@@ -235,7 +236,7 @@ query_outcome compare_answer(const contact_result<NT>& got, const contact_result
 
 /// How a number type answers the queries: in NT through separation_query<NT>
 /// and first_contact<NT>, or, for a filtered type (Filtered), through
-/// certified_separation and certified_first_contact. Throws invalid_input
+/// certified_separation_query and certified_first_contact. Throws invalid_input
 /// when NT cannot hold the scene (float beyond its range).
 template <class NT, bool Filtered>
 class query_route {
@@ -274,14 +275,15 @@ class query_route<NT, true> {
 public:
     static constexpr value_claim claim = value_claim::rounded;
 
-    query_route(const polygon& a, const polygon& b) : a_(a), b_(b) {}
+    query_route(const polygon& a, const polygon& b) : a_(a), b_(b), separation_(a, b) {}
 
-    certified_separation_result separation(const pose& q) { return certified_separation(a_, b_, q); }
+    certified_separation_result separation(const pose& q) { return separation_(q); }
     contact_result<double> first_contact(const translation& m) { return certified_first_contact(a_, b_, m.from, m.to); }
 
 private:
     const polygon& a_;
     const polygon& b_;
+    certified_separation_query separation_;
 };
 
 /// The exact answers of one scene: separation<exact_rational> on A and B

@@ -149,8 +149,10 @@ void separation_into(const polygon& a, const polygon& b, const pose_rows& poses,
     case number_kind::exact_type: return in(exact_rational{});
     case number_kind::certified_type:
         return run_in_blocks(poses.count, threads, [&](std::size_t first, std::size_t last) {
+            if (first == last) return;
+            certified_separation_query query(a, b);
             for (std::size_t k = first; k < last; ++k) {
-                const certified_separation_result r = certified_separation(a, b, poses.rows[k]);
+                const certified_separation_result r = query(poses.rows[k]);
                 out.put(k, r.distance, r.static_feature, r.moving_feature, r.static_point, r.moving_point);
             }
         });

@@ -18,7 +18,9 @@
 //     common point, or a vertex in the other's interior only when the
 //     boundaries are apart);
 //   - certified_separation: the exact features, points rounded to nearest,
-//     distance within one ulp of the exact one, few pairs evaluated exactly;
+//     distance within one ulp of the exact one, most poses answered in double
+//     words (no pair evaluated exactly) and few pairs evaluated exactly when
+//     not; certified_separation_query the same answers over pose sequences;
 //   - double within 2^-40 S of the exact distance (S: the largest coordinates
 //     of A and B plus |tx| + |ty|; docs/separation.md), long double and quad
 //     too, float within 2^-16 S;
@@ -173,13 +175,15 @@ std::string describe(const polygon& a, const polygon& b, const pose& p) {
     return s.str();
 }
 
-/// How many frames met, how many pairs certified_separation evaluated exactly.
+/// How many frames met, how many certified_separation answered in double
+/// words (no pair evaluated exactly), how many pairs it evaluated exactly.
 struct tally {
-    std::size_t frames = 0, meet = 0, interior = 0, exact_pairs = 0, most_exact_pairs = 0;
+    std::size_t frames = 0, meet = 0, interior = 0, in_words = 0, exact_pairs = 0, most_exact_pairs = 0;
     void count(const reference_answer& ref, const separation_result<ER>& e, std::size_t pairs) {
         ++frames;
         meet += ref.meet;
         interior += e.static_feature.kind == feature_kind::interior || e.moving_feature.kind == feature_kind::interior;
+        in_words += pairs == 0;
         exact_pairs += pairs;
         most_exact_pairs = std::max(most_exact_pairs, pairs);
     }
@@ -209,7 +213,19 @@ void check_certified(const certified_separation_result& c, const separation_resu
     CHECK(c.static_point.y == test_exact::nearest_double(e.static_point.y));
     CHECK(c.moving_point.x == test_exact::nearest_double(e.moving_point.x));
     CHECK(c.moving_point.y == test_exact::nearest_double(e.moving_point.y));
-    CHECK(c.exact_pairs >= 1);
+}
+
+/// Two certified answers are the same, field by field.
+void check_same(const certified_separation_result& c, const certified_separation_result& d) {
+    CHECK(c.meet == d.meet);
+    CHECK(c.static_feature.kind == d.static_feature.kind);
+    CHECK(c.static_feature.index == d.static_feature.index);
+    CHECK(c.moving_feature.kind == d.moving_feature.kind);
+    CHECK(c.moving_feature.index == d.moving_feature.index);
+    CHECK(c.distance == d.distance);
+    CHECK(c.squared_distance == d.squared_distance);
+    CHECK(c.static_point == d.static_point);
+    CHECK(c.moving_point == d.moving_point);
 }
 
 /// Which floating types check_frame runs besides the exact modes.
@@ -454,9 +470,12 @@ TEST_CASE("separation: the families under random, touching, grazing, sliding and
     }
     CHECK(t.meet > t.frames / 5);
     CHECK(t.meet < t.frames);
-    INFO("certified: " << t.exact_pairs << " pairs evaluated exactly over " << t.frames << " frames, at most "
-                       << t.most_exact_pairs);
+    INFO("certified: " << t.in_words << " of " << t.frames << " frames in double words; " << t.exact_pairs
+                       << " pairs evaluated exactly, at most " << t.most_exact_pairs);
     CHECK(t.exact_pairs <= 8 * t.frames);
+    // Touching poses and slides at 2^-30 need the exact route; random ones
+    // do not.
+    CHECK(t.in_words * 10 > t.frames * 6);
 }
 
 TEST_CASE("separation: random multipolygons with parts inside the other, and rings nothing keeps apart",
@@ -591,4 +610,41 @@ TEST_CASE("separation: swapped roles and translated scenes give the same exact d
             CHECK(separation<ER>(a, b, q).squared_distance == separation<ER>(polygon(moved), b, qv).squared_distance);
         }
     }
+}
+
+TEST_CASE("separation: certified_separation_query answers as certified_separation over pose sequences",
+          "[separation][reference]") {
+    const auto run = [](const polygon& a, const polygon& b, const std::vector<pose>& poses, std::size_t& in_words) {
+        certified_separation_query query(a, b);
+        for (const pose& q : poses) {
+            INFO(describe(a, b, q));
+            const certified_separation_result c = query(q);
+            check_same(c, certified_separation(a, b, q));
+            in_words += c.exact_pairs == 0;
+        }
+    };
+    std::size_t frames = 0, in_words = 0;
+    for (const cell& k : family_cells) {
+        const polygon& a = test_families::load(k.fa, k.n);
+        const polygon& b = test_families::load(k.fb, k.m);
+        // An approach (apart, near contact, overlapping), random jumps, and
+        // touching poses with their one-ulp neighbours.
+        std::vector<pose> poses = test_poses::approach(a, b, static_cast<std::size_t>(test_effort::scaled(20)),
+                                                       test_poses::approach_path{0.3, 0.5, 0.1, 1.0});
+        for (const pose& q :
+             test_poses::near_contact(a, b, static_cast<std::size_t>(test_effort::scaled(20)), 0.4, 0, k.m))
+            poses.push_back(q);
+        test_random::rng g(k.n * 31 + k.m);
+        for (const pose& q : test_poses::touching(a, b, g, 4)) poses.push_back(q);
+        // The roles swapped, B static.
+        run(a, b, poses, in_words);
+        run(b, a, poses, in_words);
+        frames += 2 * poses.size();
+        // The exact reference on a few of them.
+        tally t;
+        for (std::size_t i = 0; i < poses.size(); i += 7) check_frame(a, b, poses[i], t, floating::none);
+    }
+    INFO(in_words << " of " << frames << " frames in double words");
+    CHECK(in_words * 10 > frames * 6);
+    CHECK(in_words < frames);
 }

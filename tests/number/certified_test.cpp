@@ -22,6 +22,7 @@
 #include "influence2d/number/certified.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/predicates/orientation.hpp"
+#include "support/number_chains.hpp"
 #include "support/random.hpp"
 
 namespace {
@@ -91,67 +92,8 @@ struct tally {
 
 using test_random::rng;
 
-/// Binary exponents of the magnitudes drawn: about 1e-300, 1e-150, 1e-20, 1,
-/// 1e20, 1e150, 1e300.
-constexpr int scales[] = {-997, -498, -66, 0, 66, 498, 997};
-
-/// A random double near 2^scale (within 2^+-6), or, now and then, a zero, a
-/// small integer, a subnormal or a double with few significant bits.
-double random_double(rng& r, int scale) {
-    const double sgn = r.index(2) == 0 ? 1.0 : -1.0;
-    switch (r.index(16)) {
-    case 0: return 0.0;
-    case 1: return sgn * static_cast<double>(1 + r.index(16));
-    case 2: return sgn * std::ldexp(static_cast<double>(1 + r.index(std::size_t{1} << 20)), -1074);
-    case 3: return sgn * std::ldexp(static_cast<double>(r.gen() >> 12), -1074);  // up to 2^52 ulps
-    case 4: return sgn * std::ldexp(static_cast<double>(1 + r.index(1024)), scale - 5);
-    default: return sgn * std::ldexp(1 + r.unit(), scale + static_cast<int>(r.index(13)) - 6);
-    }
-}
-
-/// Random expression trees of depth <= 6; every node is checked. A node's
-/// operands are new subtrees or, one time in three, a value built before in
-/// the same chain (so that x - y, with y sharing most of x, cancels).
-class chain_builder {
-public:
-    chain_builder(rng& r, tally& t) : r_(r), t_(t) {}
-
-    void run(int depth) {
-        pool_.clear();
-        base_ = scales[r_.index(std::size(scales))];
-        build(depth);
-    }
-
-private:
-    tracked build(int depth) {
-        if (depth == 0 || r_.index(5) == 0) return operand();
-        const tracked a = build(depth - 1);
-        const tracked b = (!pool_.empty() && r_.index(3) == 0) ? pool_[r_.index(pool_.size())] : build(depth - 1);
-        tracked v;
-        switch (r_.index(3)) {
-        case 0: v = a + b; break;
-        case 1: v = a - b; break;
-        default: v = a * b; break;
-        }
-        if (r_.index(2) == 0) v = v - (r_.index(2) == 0 ? a : b);  // cancel one operand again
-        t_.check(v);
-        pool_.push_back(v);
-        return v;
-    }
-
-    tracked operand() {
-        // Mostly the chain's own magnitude; a quarter of the leaves elsewhere.
-        const int scale = r_.index(4) == 0 ? scales[r_.index(std::size(scales))] : base_;
-        tracked v = leaf(random_double(r_, scale));
-        t_.check(v);
-        return v;
-    }
-
-    rng& r_;
-    tally& t_;
-    std::vector<tracked> pool_;
-    int base_ = 0;
-};
+using test_chains::random_double;
+using test_chains::scales;
 
 point<tracked> pose_point(const rotation_pose& t, const point<double>& q) {
     const point<certified> c = t.apply<certified>(q);
@@ -173,7 +115,7 @@ point<NT> pt(double x, double y) {
 TEST_CASE("certified: the bound contains the exact value on random chains of depth <= 6", "[certified]") {
     rng r(0xce47f1edULL);
     tally t;
-    chain_builder chains(r, t);
+    test_chains::chain_builder<tracked, tally> chains(r, t, leaf);
     for (int k = 0; k < 6000; ++k) chains.run(1 + k % 6);
     INFO(t.first);
     CHECK(t.violations == 0);

@@ -4,10 +4,12 @@
 //   separation/<method>/<cell>   the distance between the closed regions at
 //       random poses near contact (the time study's random workload: B's
 //       centroid uniform in the annulus 0.4 to 1.1 times R_A + R_B, any
-//       angle); influence2d's separation_query<double> (one object over the
-//       poses), certified_separation, GEOS's GEOSDistance_r (A built once, B
-//       built posed for each query) and GEOSPreparedDistance_r (A prepared
-//       once);
+//       angle); influence2d's separation_query<double> and
+//       certified_separation_query (one object over the poses: double, certified),
+//       the one-shot separation<double> and certified_separation (both edge
+//       trees built per call: double_once, certified_once), GEOS's
+//       GEOSDistance_r (A built once, B built posed for each query) and
+//       GEOSPreparedDistance_r (A prepared once);
 //   first_contact/<method>/<cell>   the first contact along a motion from
 //       one random pose to another random pose of the annulus: translations
 //       (the angle kept) for influence2d's first_contact<double> and
@@ -20,7 +22,9 @@
 // One iteration is one query; the queries cycle through 1,024 poses or
 // motions. Counters: max_relative_difference (separation: the largest
 // |d - d_GEOS| / max(d_GEOS, 1e-300) over the poses, checked once before
-// timing), contacts (first contact: the share of motions with contact).
+// timing), exact_share (certified separation: the share of poses answered
+// in exact rationals), contacts (first contact: the share of motions with
+// contact).
 
 #include <benchmark/benchmark.h>
 
@@ -90,6 +94,29 @@ void separation_double(benchmark::State& state, const cell& c) {
 }
 
 void separation_certified(benchmark::State& state, const cell& c) {
+    const std::vector<pose> poses = poses_of(c);
+    certified_separation_query query(c.a(), c.b());
+    std::size_t k = 0, exact = 0, asked = 0;
+    for (auto _ : state) {
+        const certified_separation_result r = query(poses[k]);
+        exact += r.exact_pairs != 0;
+        ++asked;
+        benchmark::DoNotOptimize(r.distance);
+        k = (k + 1) % poses.size();
+    }
+    state.counters["exact_share"] = static_cast<double>(exact) / static_cast<double>(std::max<std::size_t>(asked, 1));
+}
+
+void separation_double_once(benchmark::State& state, const cell& c) {
+    const std::vector<pose> poses = poses_of(c);
+    std::size_t k = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(separation<double>(c.a(), c.b(), poses[k]).squared_distance);
+        k = (k + 1) % poses.size();
+    }
+}
+
+void separation_certified_once(benchmark::State& state, const cell& c) {
     const std::vector<pose> poses = poses_of(c);
     std::size_t k = 0;
     for (auto _ : state) {
@@ -208,6 +235,8 @@ void register_query_benchmarks() {
     for (const cell& c : cells()) {
         benchmark::RegisterBenchmark(("separation/double/" + c.name()).c_str(), separation_double, c);
         benchmark::RegisterBenchmark(("separation/certified/" + c.name()).c_str(), separation_certified, c);
+        benchmark::RegisterBenchmark(("separation/double_once/" + c.name()).c_str(), separation_double_once, c);
+        benchmark::RegisterBenchmark(("separation/certified_once/" + c.name()).c_str(), separation_certified_once, c);
 #if INFLUENCE2D_HAVE_GEOS
         benchmark::RegisterBenchmark(("separation/geos/" + c.name()).c_str(), separation_geos, c, false);
         benchmark::RegisterBenchmark(("separation/geos_prepared/" + c.name()).c_str(), separation_geos, c, true);

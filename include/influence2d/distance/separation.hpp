@@ -31,8 +31,7 @@
 #include "influence2d/covering/inclusion.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/influence/edge_tree.hpp"
-#include "influence2d/number/certified.hpp"
-#include "influence2d/number/fallback.hpp"
+#include "influence2d/number/double_word.hpp"
 #include "influence2d/predicates/distance.hpp"
 #include "influence2d/scene/posed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
@@ -209,11 +208,17 @@ inline constexpr double to_double_widening = 0x1p-40;
 inline constexpr long double squared_floor = 0x1p-1000L;
 
 /// An upper bound, in double, of the square root of the squared distance x
-/// (for phase 2's stopping rule).
+/// (for phase 2's stopping rule). A double word is below hi + |lo| + its
+/// error, a sum rounded at most twice (2^-52 covers both).
 template <class NT>
 double upper_distance(const NT& x) {
-    const double d = number_traits<NT>::to_double(x);
-    return upper_sqrt(static_cast<long double>(d) * (1 + to_double_widening) + squared_floor);
+    if constexpr (std::is_same_v<NT, double_word>) {
+        return upper_sqrt((static_cast<long double>(x.hi()) + std::fabs(x.lo()) + x.error()) * (1 + 0x1p-52L) +
+                          squared_floor);
+    } else {
+        const double d = number_traits<NT>::to_double(x);
+        return upper_sqrt(static_cast<long double>(d) * (1 + to_double_widening) + squared_floor);
+    }
 }
 
 /// The pair phase 2 chose, with its closest points.
@@ -223,6 +228,18 @@ struct chosen_pair {
     std::uint32_t static_edge = 0, moving_edge = 0;
     bool found = false;
 };
+
+/// The feature of the stored edge e that the part `part` of it is, as a key:
+/// twice the stored vertex (start: e, end: the next one), or twice e plus 1
+/// for the edge's interior. Two pairs whose closest points have the same
+/// keys on both sides join the same vertices or edges: at the same distance.
+inline std::uint64_t feature_key(const polygon& shape, std::uint32_t e, segment_part part) {
+    switch (part) {
+    case segment_part::start: return 2 * std::uint64_t{e};
+    case segment_part::end: return 2 * std::uint64_t{shape.next(e)};
+    default: return 2 * std::uint64_t{e} + 1;
+    }
+}
 
 /// Phase 2: the pair that certainly crosses, if phase 1 found one (its
 /// distance is 0). Otherwise the candidates evaluated in NT (evaluate(e,
@@ -234,9 +251,13 @@ struct chosen_pair {
 /// distance, so all of them are evaluated and the choice does not depend on
 /// how phase 1 found them. A pair at distance 0 ends the loop: every pair at
 /// distance 0 has lower bound 0 and so comes, in edge order, before any
-/// other. `evaluated` counts the pairs evaluated.
+/// other. Two pairs whose closest points are the same vertices (the edges
+/// about a vertex of A against those about a vertex of B: feature_key) are
+/// at equal distance without a comparison, which a filtered NT could not
+/// make. `evaluated` counts the pairs evaluated.
 template <class NT, class Evaluate>
-chosen_pair<NT> closest_candidate(const search_space& space, Evaluate&& evaluate, std::size_t& evaluated) {
+chosen_pair<NT> closest_candidate(const search_input& in, const search_space& space, Evaluate&& evaluate,
+                                  std::size_t& evaluated) {
     chosen_pair<NT> best;
     if (space.crossing) {
         ++evaluated;
@@ -253,7 +274,11 @@ chosen_pair<NT> closest_candidate(const search_space& space, Evaluate&& evaluate
         ++evaluated;
         const std::uint32_t e = c.static_edge, f = c.moving_edge;
         segment_pair_closest<NT> d = evaluate(e, f);
-        const int order = best.found ? compare_squared(d.squared, best.closest.squared) : -1;
+        const auto same_features = [&] {
+            return feature_key(in.a, e, d.first_part) == feature_key(in.a, best.static_edge, best.closest.first_part) &&
+                   feature_key(in.b, f, d.second_part) == feature_key(in.b, best.moving_edge, best.closest.second_part);
+        };
+        const int order = !best.found ? -1 : same_features() ? 0 : compare_squared(d.squared, best.closest.squared);
         if (order < 0 || (order == 0 && (e < best.static_edge || (e == best.static_edge && f < best.moving_edge)))) {
             best.closest = std::move(d);
             best.static_edge = e;
@@ -448,7 +473,13 @@ private:
 
 /// Phase 3 in NT: a ring's vertex inside the other region (ring_vertex_inside),
 /// B's vertices given in double by `approx` and in NT by the posed polygon
-/// `b` (the query's own, or one in another NT), A's by `side`.
+/// `b` (the query's own), A's by `side`. In a floating NT the locations are
+/// its own. In an exact or filtered NT they are exact and mostly settled in
+/// double: B's vertices posed in double lie within in.delta of their exact
+/// places on each coordinate and A's are exact, so a point is located by
+/// its crossings (locate_by_crossings, the same region as Feito's test) with
+/// that slack, evaluating in NT only the edges whose crossing the doubles
+/// leave in doubt; B's vertex in a prepared A through its cone index in NT.
 template <class NT, class Approx>
 std::optional<inside_vertex> inside_in(static_side<NT>& side, const search_input& in, Approx& approx,
                                        posed_polygon<NT>& b) {
@@ -459,38 +490,32 @@ std::optional<inside_vertex> inside_in(static_side<NT>& side, const search_input
             return b.vertex(j);
         }
     };
-    std::optional<point<NT>> b_origin;
-    return ring_vertex_inside(
-        in.a, in.b, static_window(in), posed_window(in), approx,
-        [&](std::size_t j) { return side.locate_point(b_vertex(j)); },
-        [&](std::size_t i) {
-            if (!b_origin) b_origin = in.t.apply<NT>(in.b.centroid());
-            if constexpr (std::is_same_v<NT, double>) {
-                return locate(in.b, b.approximate_all(), *b_origin, side.vertex(i));
-            } else {
-                return locate(in.b, b.vertices(), *b_origin, side.vertex(i));
-            }
-        });
-}
-
-/// Phase 3 in NT, filtered when NT is an exact field and A is not prepared:
-/// first in `certified` (A's vertices and B's posed ones made anew, its
-/// signs exact or raising uncertain_sign), and in NT only when a sign is in
-/// doubt. A location is a sign decision, so both give the same vertex.
-template <class NT>
-std::optional<inside_vertex> phase_3(static_side<NT>& side, const search_input& in, workspace<NT>& w) {
-    if constexpr (number_traits<NT>::category == number_category::exact) {
-        if (!side.prepared()) {
-            const auto in_certified = [&] {
-                static_side<certified> a(in.a);
-                posed_polygon<certified> b(prepare_moving<certified>(in.b));
-                b.place(in.t);
-                return inside_in(a, in, w.approx, b);
-            };
-            return fallback<>::run(in_certified, [&] { return inside_in(side, in, w.approx, w.b_posed); });
-        }
+    if constexpr (number_traits<NT>::category != number_category::floating) {
+        const auto a_vertex = [&](std::size_t i) { return side.vertex(i); };
+        return ring_vertex_inside(
+            in.a, in.b, static_window(in), posed_window(in), approx,
+            [&](std::size_t j) {
+                if (side.prepared()) return side.locate_point(b_vertex(j));
+                return locate_by_crossings(in.a, in.a.vertices(), {}, 0, approx[j], in.delta, b_vertex(j), a_vertex);
+            },
+            [&](std::size_t i) {
+                return locate_by_crossings(in.b, approx.all(), {}, 0, in.a.vertex(i), in.delta, side.vertex(i),
+                                           b_vertex);
+            });
+    } else {
+        std::optional<point<NT>> b_origin;
+        return ring_vertex_inside(
+            in.a, in.b, static_window(in), posed_window(in), approx,
+            [&](std::size_t j) { return side.locate_point(b_vertex(j)); },
+            [&](std::size_t i) {
+                if (!b_origin) b_origin = in.t.apply<NT>(in.b.centroid());
+                if constexpr (std::is_same_v<NT, double>) {
+                    return locate(in.b, b.approximate_all(), *b_origin, side.vertex(i));
+                } else {
+                    return locate(in.b, b.vertices(), *b_origin, side.vertex(i));
+                }
+            });
     }
-    return inside_in(side, in, w.approx, w.b_posed);
 }
 
 /// The query in NT on A (its side and tree) and B (its tree, scale), for
@@ -510,7 +535,7 @@ separation_result<NT> separate(static_side<NT>& side, const search_input& in, wo
     search_pairs(in, w.approx, pair_upper(in, w.approx, w.last), w.space);
     w.evaluated = 0;
     const chosen_pair<NT> best = closest_candidate<NT>(
-        w.space,
+        in, w.space,
         [&](std::uint32_t e, std::uint32_t f) { return pair_closest<NT>(in, w.approx, a_vertex, b_vertex, e, f); },
         w.evaluated);
     INFLUENCE2D_ASSERT(best.found, "phase 1 left no candidate");
@@ -520,7 +545,7 @@ separation_result<NT> separate(static_side<NT>& side, const search_input& in, wo
         r.evaluated_pairs = w.evaluated;
         return r;
     }
-    const std::optional<inside_vertex> inside = phase_3(side, in, w);
+    const std::optional<inside_vertex> inside = inside_in(side, in, w.approx, w.b_posed);
     separation_result<NT> r =
         inside ? inside_result<NT>(in.a, in.b, *inside,
                                    inside->moving ? b_vertex(inside->vertex) : a_vertex(inside->vertex))
@@ -594,9 +619,9 @@ separation_result<NT> separation(const static_scene<NT>& a, const moving_scene<N
 
 /// The separation of A and of B posed by q (as the overload on prepared
 /// polygons), from the polygons alone: it builds both edge trees (O(n log n
-/// + m log m)) and locates points by Feito's test over the polygon's edges
-/// (in an exact field, in `certified` first and again in NT only when a sign
-/// is in doubt: phase_3). In float, double or long double, a query whose
+/// + m log m)) and locates points by their crossings of the polygon's edges
+/// (in an exact or filtered NT settled in double, in NT only for an edge in
+/// doubt: inside_in). In float, double or long double, a query whose
 /// largest coordinate lies outside NT's safe window is answered on its
 /// input scaled by a power of two, its lengths scaled back
 /// (core/range_scaling.hpp). Throws invalid_input for an empty polygon, one

@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
-/// The exact separation rounded to double, at about double's cost.
+/// The exact separation rounded to double, at a few times double's cost: the
+/// query in double words, rounded where their bounds settle the rounding,
+/// and in exact rationals otherwise.
 
 #include <cmath>
 #include <cstddef>
+#include <memory>
+#include <optional>
 
 #include "influence2d/core/feature.hpp"
 #include "influence2d/core/point.hpp"
@@ -12,7 +16,11 @@
 #include "influence2d/core/pose.hpp"
 #include "influence2d/distance/separation.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "influence2d/number/double_word.hpp"
+#include "influence2d/number/fallback.hpp"
+#include "influence2d/predicates/certain_nearest.hpp"
 #include "influence2d/predicates/distance.hpp"
+#include "influence2d/scene/prepared.hpp"
 
 namespace influence2d {
 
@@ -26,21 +34,17 @@ struct certified_separation_result {
     point<double> static_point;   ///< the exact closest point of A, each coordinate rounded to the nearest double
     point<double> moving_point;   ///< the exact closest point of posed B, rounded likewise
     bool meet = false;            ///< whether the regions meet (exact)
-    std::size_t exact_pairs = 0;  ///< edge pairs evaluated in exact rationals
+    /// Edge pairs evaluated in exact rationals: 0 when the query in double
+    /// words settled every sign and rounding (nearly every pose).
+    std::size_t exact_pairs = 0;
 };
 
-/// The exact separation, separation<exact_rational>(a, b, q) on the polygons
-/// (distance/separation.hpp), rounded to double: the same features, its
-/// points and distance rounded. It costs about double's: the search runs in
-/// double with proven bounds (phase 1), only the candidate pairs those bounds
-/// cannot separate from the least are evaluated in exact rationals (usually
-/// the one or few pairs at the least distance), and a ring's vertex is
-/// located in `certified`, again in exact rationals only when a sign is in
-/// doubt (phase 3 of an exact field on unprepared polygons). Throws
-/// invalid_input for an empty polygon or a pose with a NaN or infinite
-/// component.
-inline certified_separation_result certified_separation(const polygon& a, const polygon& b, const pose& q) {
-    const separation_result<exact_rational> exact = separation<exact_rational>(a, b, q);
+namespace certified_separation_detail {
+
+/// The exact answer rounded: the squared distance by scaled_nearest (whatever
+/// its magnitude), the distance as distance_of, the points coordinate by
+/// coordinate.
+inline certified_separation_result rounded(const separation_result<exact_rational>& exact) {
     certified_separation_result r;
     const scaled_double squared = scaled_nearest(exact.squared_distance);  // (distance_of's rounding)
     r.squared_distance = std::ldexp(squared.mantissa, squared.exponent);
@@ -55,5 +59,91 @@ inline certified_separation_result certified_separation(const polygon& a, const 
     r.exact_pairs = exact.evaluated_pairs;
     return r;
 }
+
+/// The double nearest to x's exact value; uncertain_sign when x's bound
+/// cannot settle it (certain_nearest).
+inline double nearest_of(const double_word& x) {
+    double d;
+    if (!certain_nearest(x, d)) throw uncertain_sign();
+    return d;
+}
+
+/// The answer in double words rounded as `rounded` rounds the exact one, or
+/// uncertain_sign when a rounding is in doubt. Its features are the exact
+/// ones (every sign of the query was certain). A squared distance in
+/// [word_floor, word_ceiling] is a double of scaled_nearest's exponent 0, so
+/// the distance is the root of its nearest double, as distance_of's.
+inline certified_separation_result rounded(const separation_result<double_word>& w) {
+    certified_separation_result r;
+    r.squared_distance = nearest_of(w.squared_distance);
+    r.distance = std::sqrt(r.squared_distance);
+    r.static_feature = w.static_feature;
+    r.moving_feature = w.moving_feature;
+    r.meet = w.meet();
+    r.static_point = {nearest_of(w.static_point.x), nearest_of(w.static_point.y)};
+    r.moving_point =
+        r.meet ? r.static_point : point<double>{nearest_of(w.moving_point.x), nearest_of(w.moving_point.y)};
+    return r;
+}
+
+}  // namespace certified_separation_detail
+
+/// The exact separation, separation<exact_rational>(a, b, q) on the polygons
+/// (distance/separation.hpp), rounded to double: the same features, its
+/// points and distance rounded. The query first runs in double words
+/// (number/double_word.hpp): phase 1 in double as always, the candidate
+/// pairs and the ring vertices' locations in double words whose signs are
+/// exact or raise uncertain_sign, and the answer's values rounded where
+/// their bounds settle the rounding (certain_nearest). A sign or a rounding
+/// in doubt (exact touching, a value within its bound of a midpoint between
+/// doubles, magnitudes beyond 2^+-900) sends the pose to exact rationals.
+/// Both routes give the exact answer's rounding, so the answer does not
+/// depend on which one ran. Throws invalid_input for an empty polygon or a
+/// pose with a NaN or infinite component.
+inline certified_separation_result certified_separation(const polygon& a, const polygon& b, const pose& q) {
+    return fallback<>::run([&] { return certified_separation_detail::rounded(separation<double_word>(a, b, q)); },
+                           [&] { return certified_separation_detail::rounded(separation<exact_rational>(a, b, q)); });
+}
+
+/// certified_separation over many poses of one pair: A and B prepared once in
+/// double words (their edge trees, A's cone index for the ring vertices'
+/// locations), each pose's search seeded by the last closest pair
+/// (separation_query), and the exact route prepared on the first pose that
+/// needs it. One object per thread. Answers as certified_separation.
+class certified_separation_query {
+public:
+    /// Prepares A and B. Throws invalid_input for an empty polygon.
+    certified_separation_query(const polygon& static_polygon, const polygon& moving_polygon)
+        : a_(std::make_shared<const polygon>(static_polygon)), b_(std::make_shared<const polygon>(moving_polygon)) {
+        accepted_polygon<exact_rational>(*a_, "static");
+        accepted_polygon<exact_rational>(*b_, "moving");
+        // (A polygon whose preparation in double words meets a sign in
+        // doubt is answered in exact rationals alone.)
+        try {
+            fast_.emplace(prepare_static<double_word>(*a_), prepare_moving<double_word>(*b_));
+        } catch (const uncertain_sign&) {
+            fast_.reset();
+        }
+    }
+
+    /// The separation at pose q (certified_separation). Throws invalid_input
+    /// for a pose with a NaN or infinite component.
+    certified_separation_result operator()(const pose& q) {
+        if (fast_) {
+            try {
+                return certified_separation_detail::rounded((*fast_)(q));
+            } catch (const uncertain_sign&) {}
+        }
+        if (!exact_) exact_.emplace(prepare_static<exact_rational>(*a_), prepare_moving<exact_rational>(*b_));
+        certified_separation_result r = certified_separation_detail::rounded((*exact_)(q));
+        r.exact_pairs = exact_->evaluated_pairs();
+        return r;
+    }
+
+private:
+    std::shared_ptr<const polygon> a_, b_;
+    std::optional<separation_query<double_word>> fast_;
+    std::optional<separation_query<exact_rational>> exact_;
+};
 
 }  // namespace influence2d

@@ -145,10 +145,21 @@ segment_pair_closest<NT> meeting_point(const point<NT>& a, const point<NT>& b, c
     return {number_traits<NT>::from_double(0), x, x, part_of(x, a, b), part_of(x, u, v)};
 }
 
+/// The part of [a, b] its second end b is: end, or start when the segment
+/// has length 0 (b is a). Exact when NT is; b is never compared with itself.
+template <class NT>
+segment_part end_part(const point<NT>& a, const point<NT>& b) {
+    return same_point(b, a) ? segment_part::start : segment_part::end;
+}
+
 /// For [a, b] and [u, v] that do not meet: the least of the end-to-segment
 /// candidates k (0: a to [u, v], 1: b to [u, v], 2: u to [a, b], 3: v to
 /// [a, b]) for which may_be_least(k), the first of them on a tie. A
-/// candidate left out must not be the least nor tie with it.
+/// candidate left out must not be the least nor tie with it. Two candidates
+/// whose closest points are the same parts of both segments (a to u found
+/// from a and from u) join the same points: their distances are equal
+/// without comparing them, and the first is kept (a filtered NT could not
+/// tell two equal values apart).
 template <class NT, class MayBeLeast>
 segment_pair_closest<NT> least_end_distance(const point<NT>& a, const point<NT>& b, const point<NT>& u,
                                             const point<NT>& v, MayBeLeast&& may_be_least) {
@@ -158,12 +169,17 @@ segment_pair_closest<NT> least_end_distance(const point<NT>& a, const point<NT>&
         if (!may_be_least(k)) continue;
         const point<NT>& p = k == 0 ? a : k == 1 ? b : k == 2 ? u : v;
         segment_point<NT> c = k < 2 ? closest_on_segment(p, u, v) : closest_on_segment(p, a, b);
-        if (found && compare_squared(c.squared, best.squared) >= 0) continue;
+        const segment_part first = k == 0 ? segment_part::start : k == 1 ? end_part(a, b) : c.part;
+        const segment_part second = k == 2 ? segment_part::start : k == 3 ? end_part(u, v) : c.part;
+        if (found && ((first == best.first_part && second == best.second_part && first != segment_part::interior &&
+                       second != segment_part::interior) ||
+                      compare_squared(c.squared, best.squared) >= 0))
+            continue;
         found = true;
         if (k < 2)
-            best = {std::move(c.squared), p, std::move(c.at), k == 0 ? segment_part::start : part_of(b, a, b), c.part};
+            best = {std::move(c.squared), p, std::move(c.at), first, second};
         else
-            best = {std::move(c.squared), std::move(c.at), p, c.part, k == 2 ? segment_part::start : part_of(v, u, v)};
+            best = {std::move(c.squared), std::move(c.at), p, first, second};
     }
     return best;
 }
