@@ -686,3 +686,61 @@ TEST_CASE("sweep: far from 1 in scale, and directions of any length", "[sweep][e
     CHECK(exit_distance<double>(a, unit, {3.5, 1, 0}, 1e-300, 0) == Approx(0.5e300));
     CHECK_THROWS_AS(exit_distance<double>(a, unit, {3.5, 1, 0}, 1e300, 1e-300), invalid_input);
 }
+
+TEST_CASE("sweep: certified first contact far from 1 in scale answers as at scale 1", "[sweep]") {
+    // The same motions scaled by 2^e are the same questions: the exact time
+    // and features do not change, so neither does their certified rounding,
+    // whether or not the scaled query is brought back near 1.
+    const auto scaled = [](const polygon& p, int e) {
+        std::vector<ring_input> rings;
+        for (std::size_t r = 0; r < p.ring_count(); ++r) {
+            ring_input in{{}, p.role(r)};
+            for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
+                in.vertices.push_back({std::ldexp(p.vertex(i).x, e), std::ldexp(p.vertex(i).y, e)});
+            rings.push_back(in);
+        }
+        return polygon(rings);
+    };
+    std::size_t contacts = 0, motions = 0;
+    family_motions({8, 64}, {8}, test_effort::scaled(3), 0x5ca1eULL, 0.5,
+                   [&](const polygon& a, const polygon& b, const pose& from, const pose& to) {
+                       const pose still{from.tx, from.ty, from.theta};
+                       const pose straight{to.tx, to.ty, from.theta};
+                       const contact_result<double> one = certified_first_contact(a, b, still, straight);
+                       contacts += one.contact;
+                       ++motions;
+                       for (int e : {-1000, -500, 500}) {
+                           INFO("scale 2^" << e);
+                           const polygon sa = scaled(a, e), sb = scaled(b, e);
+                           const pose f = scaled_by_power_of_two(still, e), t = scaled_by_power_of_two(straight, e);
+                           const contact_result<double> r = certified_first_contact(sa, sb, f, t);
+                           CHECK(r.contact == one.contact);
+                           CHECK(r.time == one.time);
+                           CHECK(r.static_feature.kind == one.static_feature.kind);
+                           CHECK(r.static_feature.index == one.static_feature.index);
+                           CHECK(r.moving_feature.kind == one.moving_feature.kind);
+                           CHECK(r.moving_feature.index == one.moving_feature.index);
+                           // The exact query, never scaled, on a third of them.
+                           if (motions % 3 == 0) {
+                               const contact_result<exact_rational> x = first_contact<exact_rational>(sa, sb, f, t);
+                               CHECK(x.contact == r.contact);
+                               if (x.contact) CHECK(nearest_double(x.time) == r.time);
+                           }
+                       }
+                   });
+    CHECK(contacts > 0);
+    CHECK(contacts < motions);
+    // A's apex 2^-1060 below the line B's bottom edge slides along: they
+    // never meet. Scaled into range, that apex would round to the line and
+    // touch it, so the query runs as given, still exact.
+    const double far = std::ldexp(1.0, 100);
+    const polygon peak = ring({{-far, -far}, {far, -far}, {0, -std::ldexp(1.0, -1060)}});
+    const polygon block = square(-far / 1024, 0, far / 1024, far / 512);
+    const pose from{-2 * far, 0, 0}, to{2 * far, 0, 0};
+    const contact_result<exact_rational> x = first_contact<exact_rational>(peak, block, from, to);
+    CHECK_FALSE(x.contact);
+    CHECK_FALSE(certified_first_contact(peak, block, from, to).contact);
+    // With the apex on that line they touch.
+    const polygon touching = ring({{-far, -far}, {far, -far}, {0, 0}});
+    CHECK(certified_first_contact(touching, block, from, to).contact);
+}

@@ -119,4 +119,22 @@ inline double scaled_length(double x, int k) {
 /// A pose with its translation scaled by 2^k; the angle unchanged.
 inline pose scaled_by_power_of_two(const pose& q, int k) { return {std::ldexp(q.tx, k), std::ldexp(q.ty, k), q.theta}; }
 
+/// Whether x times 2^k is exact: it comes back from 2^k and 2^-k unchanged
+/// (a product that overflows, or loses bits among the subnormals, does not).
+inline bool scales_exactly(double x, int k) { return std::ldexp(std::ldexp(x, k), -k) == x; }
+
+/// Whether scaling the polygons and the poses' translations by 2^k is exact,
+/// coordinate by coordinate (scales_exactly): the scaled query is then the
+/// same question, with the same exact answer scaled.
+template <class... Poses>
+bool scales_exactly(const polygon& a, const polygon& b, int k, const Poses&... poses) {
+    const auto polygon_scales = [k](const polygon& p) {
+        for (const point<double>& v : p.vertices())
+            if (!scales_exactly(v.x, k) || !scales_exactly(v.y, k)) return false;
+        return true;
+    };
+    return polygon_scales(a) && polygon_scales(b) &&
+           (... && (scales_exactly(poses.tx, k) && scales_exactly(poses.ty, k)));
+}
+
 }  // namespace influence2d

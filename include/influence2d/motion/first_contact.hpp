@@ -110,13 +110,25 @@ contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose&
 /// time is rounded from its exact value (one site evaluated exactly). For
 /// a motion that turns: the answer of first_contact<Exact> (the same
 /// steps, the stop decided on separation<Exact>'s exact distance;
-/// docs/sweep.md). Throws as first_contact. certified_first_contact
-/// (exact/certified_first_contact.hpp) is this query in exact rationals.
+/// docs/sweep.md). A motion whose largest coordinate lies outside double's
+/// safe window (core/range_scaling.hpp), where the filter's bounds in double
+/// lose their hold (products near the subnormals, or beyond the range), is
+/// answered on its input scaled by a power of two, the tolerance with it,
+/// when every coordinate scales exactly (scales_exactly): the same question,
+/// so the same exact time and features. Throws as first_contact.
+/// certified_first_contact (exact/certified_first_contact.hpp) is this
+/// query in exact rationals.
 template <class Exact>
 contact_result<double> filtered_first_contact(const polygon& a, const polygon& b, const pose& from, const pose& to,
                                               const sweep_options& options = {}) {
     using namespace sweep;
     const motion m = motion::accepted<double>(a, b, from, to, options);
+    if (const int k = range_shift<double>(a, b, from, to); k != 0 && scales_exactly(a, b, k, from, to)) {
+        sweep_options scaled = options;
+        scaled.tolerance = scaled_length(options.tolerance, k);
+        return filtered_first_contact<Exact>(a.scaled_by_power_of_two(k), b.scaled_by_power_of_two(k),
+                                             scaled_by_power_of_two(from, k), scaled_by_power_of_two(to, k), scaled);
+    }
     if (from.theta != to.theta) return filtered_turning_first_contact<Exact>(a, b, from, to, options);
     contact_result<double> r;
     const auto met = fallback<>::run([&] { return meeting_at_start<certified>(a, b, from, m.start); },
