@@ -36,6 +36,7 @@
 #include "support/families.hpp"
 #include "support/poses.hpp"
 #include "support/random_scenes.hpp"
+#include "support/shapes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -520,17 +521,7 @@ TEST_CASE("separation: far from 1 in scale, the exact modes stay exact", "[separ
     const polygon& a0 = test_families::load(verification::family::contour, 32);
     const polygon& b0 = test_families::load(verification::family::starred, 16);
     for (int e : {-600, -40, 40, 600}) {
-        const auto scaled = [e](const polygon& p) {
-            std::vector<ring_input> rings;
-            for (std::size_t r = 0; r < p.ring_count(); ++r) {
-                ring_input in{{}, p.role(r)};
-                for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
-                    in.vertices.push_back({std::ldexp(p.vertex(i).x, e), std::ldexp(p.vertex(i).y, e)});
-                rings.push_back(in);
-            }
-            return polygon(rings);
-        };
-        const polygon a = scaled(a0), b = scaled(b0);
+        const polygon a = test_shapes::scaled(a0, e), b = test_shapes::scaled(b0, e);
         test_random::rng g(static_cast<std::uint64_t>(e + 1000));
         std::vector<pose> poses =
             test_poses::near_contact(a0, b0, static_cast<std::size_t>(test_effort::scaled(20)), 0.9, 0, 17);

@@ -15,6 +15,7 @@
 #include "support/families.hpp"
 #include "support/poses.hpp"
 #include "support/random_scenes.hpp"
+#include "support/shapes.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -691,16 +692,7 @@ TEST_CASE("sweep: certified first contact far from 1 in scale answers as at scal
     // The same motions scaled by 2^e are the same questions: the exact time
     // and features do not change, so neither does their certified rounding,
     // whether or not the scaled query is brought back near 1.
-    const auto scaled = [](const polygon& p, int e) {
-        std::vector<ring_input> rings;
-        for (std::size_t r = 0; r < p.ring_count(); ++r) {
-            ring_input in{{}, p.role(r)};
-            for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
-                in.vertices.push_back({std::ldexp(p.vertex(i).x, e), std::ldexp(p.vertex(i).y, e)});
-            rings.push_back(in);
-        }
-        return polygon(rings);
-    };
+    using test_shapes::scaled;
     std::size_t contacts = 0, motions = 0;
     family_motions({8, 64}, {8}, test_effort::scaled(3), 0x5ca1eULL, 0.5,
                    [&](const polygon& a, const polygon& b, const pose& from, const pose& to) {

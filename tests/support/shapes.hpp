@@ -2,6 +2,8 @@
 #pragma once
 // Small polygons for the unit tests.
 
+#include <cmath>
+#include <cstddef>
 #include <vector>
 
 #include "influence2d/core/polygon.hpp"
@@ -45,5 +47,18 @@ inline polygon square_with_hole() { return polygon({square_ring(0, 0, 8), square
 ///        | +----+(6,1)
 ///   (0,0)+------+(6,0)
 inline polygon c_shape() { return polygon({ring({{0, 0}, {6, 0}, {6, 1}, {1, 1}, {1, 5}, {6, 5}, {6, 6}, {0, 6}})}); }
+
+/// p with every coordinate multiplied by 2^e, built anew from its rings
+/// (their roles kept).
+inline polygon scaled(const polygon& p, int e) {
+    std::vector<ring_input> rings;
+    for (std::size_t r = 0; r < p.ring_count(); ++r) {
+        ring_input in{{}, p.role(r)};
+        for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
+            in.vertices.push_back({std::ldexp(p.vertex(i).x, e), std::ldexp(p.vertex(i).y, e)});
+        rings.push_back(in);
+    }
+    return polygon(rings);
+}
 
 }  // namespace test_shapes
