@@ -7,7 +7,6 @@
 
 #include <cmath>
 #include <cstddef>
-#include <memory>
 #include <optional>
 
 #include "influence2d/core/feature.hpp"
@@ -114,13 +113,12 @@ class certified_separation_query {
 public:
     /// Prepares A and B. Throws invalid_input for an empty polygon.
     certified_separation_query(const polygon& static_polygon, const polygon& moving_polygon)
-        : a_(std::make_shared<const polygon>(static_polygon)), b_(std::make_shared<const polygon>(moving_polygon)) {
-        accepted_polygon<exact_rational>(*a_, "static");
-        accepted_polygon<exact_rational>(*b_, "moving");
+        : a_(accepted_polygon<exact_rational>(static_polygon, "static")),
+          b_(accepted_polygon<exact_rational>(moving_polygon, "moving")) {
         // (A polygon whose preparation in double words meets a sign in
         // doubt is answered in exact rationals alone.)
         try {
-            fast_.emplace(prepare_static<double_word>(*a_), prepare_moving<double_word>(*b_));
+            fast_.emplace(prepare_static<double_word>(a_), prepare_moving<double_word>(b_));
         } catch (const uncertain_sign&) {
             fast_.reset();
         }
@@ -129,19 +127,18 @@ public:
     /// The separation at pose q (certified_separation). Throws invalid_input
     /// for a pose with a NaN or infinite component.
     certified_separation_result operator()(const pose& q) {
-        if (fast_) {
-            try {
-                return certified_separation_detail::rounded((*fast_)(q));
-            } catch (const uncertain_sign&) {}
-        }
-        if (!exact_) exact_.emplace(prepare_static<exact_rational>(*a_), prepare_moving<exact_rational>(*b_));
-        certified_separation_result r = certified_separation_detail::rounded((*exact_)(q));
-        r.exact_pairs = exact_->evaluated_pairs();
-        return r;
+        const auto in_rationals = [&] {
+            if (!exact_) exact_.emplace(prepare_static<exact_rational>(a_), prepare_moving<exact_rational>(b_));
+            certified_separation_result r = certified_separation_detail::rounded((*exact_)(q));
+            r.exact_pairs = exact_->evaluated_pairs();
+            return r;
+        };
+        if (!fast_) return in_rationals();
+        return fallback<>::run([&] { return certified_separation_detail::rounded((*fast_)(q)); }, in_rationals);
     }
 
 private:
-    std::shared_ptr<const polygon> a_, b_;
+    polygon a_, b_;
     std::optional<separation_query<double_word>> fast_;
     std::optional<separation_query<exact_rational>> exact_;
 };

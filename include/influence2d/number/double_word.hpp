@@ -118,9 +118,9 @@ public:
     /// (1 + 2^-52) + |b.hi| ea (1 + 2^-52), |a| <= |a.hi| (1 + 2^-53).
     friend double_word operator*(const double_word& a, const double_word& b) {
         if (!a.known() || !b.known()) return unknown();
+        if (a.hi_ == 0 || b.hi_ == 0) return settled(0, 0, product_error(a, b), 0);
         double ch, cl;
         two_product(a.hi_, b.hi_, ch, cl);
-        if (a.hi_ == 0 || b.hi_ == 0) return settled(0, 0, product_error(a, b), 0);
         if (ch == 0) return unknown();  // (underflow)
         const double propagated = product_error(a, b);
         if (a.lo_ == 0 && b.lo_ == 0) return settled(ch, cl, propagated, 0);
@@ -132,9 +132,9 @@ public:
     /// residual R = a - b q in words, and the correction R.hi / b.hi rounded;
     /// the result is q plus the correction, exactly (FastTwoSum). Its bound:
     /// with A, B the exact values, A / B - q = (A - q B) / B, where A - q B
-    /// lies within eN = |R.lo| + word_rounding (|P.hi| + |R.hi|) + ea + |q| eb
-    /// of R.hi (P = b q the product word: the roundings of P and R, the
-    /// low word, the propagated errors) and B within eD = |b.lo| + eb of b.hi;
+    /// lies within eN = |R.lo| + R's error of R.hi (R's error holds A's, the
+    /// product word P = b q's, which holds |q| eb and P's rounding, and R's
+    /// own rounding) and B within eD = |b.lo| + eb of b.hi;
     /// so |A / B - q - R.hi / b.hi| <= (eN + |R.hi / b.hi| eD) / (|b.hi| - eD)
     /// (for |b.hi| > eD), and the correction's rounding adds 2^-53 of it (and
     /// 2^-1074 when it underflows). |R.hi / b.hi| <= |correction| (1 +
@@ -146,12 +146,10 @@ public:
         if (!(std::fabs(b.hi_) > 4 * e_d)) return unknown();
         const double q = a.hi_ / b.hi_;
         if (!kept(q) || (q == 0 && a.hi_ != 0)) return unknown();
-        const double_word p = b * double_word(q);
-        const double_word r = a - double_word(p.hi_, p.lo_, 0);
+        const double_word r = a - b * double_word(q);
         if (!r.known()) return unknown();
         const double correction = r.hi_ / b.hi_;
-        const double e_n = std::fabs(r.lo_) + word_rounding * (std::fabs(p.hi_) + std::fabs(r.hi_)) + a.error_ +
-                           std::fabs(q) * b.error_ + r.error_;
+        const double e_n = std::fabs(r.lo_) + r.error_;
         const double bound = (e_n + std::fabs(correction) * (1 + 0x1p-52) * e_d) / (std::fabs(b.hi_) - e_d) +
                              0x1p-53 * std::fabs(correction) + underflow;
         double zh, zl;
