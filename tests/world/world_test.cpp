@@ -351,6 +351,124 @@ TEST_CASE("layer_pairs: one layer and two layers against the exact reference", "
     CHECK_THROWS_AS(layer_pairs<double>(std::vector<polygon>{}, -2.0), invalid_input);
 }
 
+/// A layer of cells that share long wiggly borders exactly (each border one
+/// polyline of many vertices, walked by both cells), as in a cadastre or a
+/// map of countries: an n x n grid of cells 10 wide, each side bent away
+/// from its line by at most 2.5 sin(pi s) at s along it (so that borders
+/// meet only at their corners), some cells left out, some shifted by one
+/// grid step (overlapping one neighbour, a hair from another), some with a
+/// square hole holding an island that touches the hole at a corner or
+/// floats in it.
+std::vector<polygon> bordered_cells(rng& g, int n, std::size_t per_side) {
+    const double side = 10;
+    // Border (i, j, horizontal) runs from lattice point (i, j) to (i + 1, j);
+    // vertical from (i, j) to (i, j + 1); interior points only.
+    const auto border = [&](double x0, double y0, bool horizontal) {
+        std::vector<point<double>> out;
+        const double amplitude = 2.5 * g.signed_unit();
+        const double phase = g.uniform(0, 6.28);
+        for (std::size_t k = 1; k <= per_side; ++k) {
+            const double s = static_cast<double>(k) / static_cast<double>(per_side + 1);
+            const double off = amplitude * std::sin(3.14159265358979 * s) * (0.7 + 0.3 * std::sin(phase + 17 * s));
+            const double along = side * s;
+            out.push_back(test_scenes::snap(horizontal ? point<double>{x0 + along, y0 + off}
+                                                       : point<double>{x0 + off, y0 + along}));
+        }
+        return out;
+    };
+    std::vector<std::vector<std::vector<point<double>>>> horizontal(static_cast<std::size_t>(n)),
+        vertical(static_cast<std::size_t>(n + 1));
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j <= n; ++j)
+            horizontal[static_cast<std::size_t>(i)].push_back(border(i * side, j * side, true));
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j < n; ++j) vertical[static_cast<std::size_t>(i)].push_back(border(i * side, j * side, false));
+    std::vector<polygon> out;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            if (g.chance(0.1)) continue;
+            const std::size_t ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
+            ring_input outer;
+            const auto corner = [&](int a, int b) { outer.vertices.push_back({a * side, b * side}); };
+            const auto walk = [&](const std::vector<point<double>>& pts, bool reversed) {
+                if (reversed)
+                    outer.vertices.insert(outer.vertices.end(), pts.rbegin(), pts.rend());
+                else
+                    outer.vertices.insert(outer.vertices.end(), pts.begin(), pts.end());
+            };
+            corner(i, j);
+            walk(horizontal[ui][uj], false);
+            corner(i + 1, j);
+            walk(vertical[ui + 1][uj], false);
+            corner(i + 1, j + 1);
+            walk(horizontal[ui][uj + 1], true);
+            corner(i, j + 1);
+            walk(vertical[ui][uj], true);
+            const double shift = g.chance(0.15) ? test_scenes::grid * (g.chance(0.5) ? 1 : -1) : 0;
+            for (point<double>& v : outer.vertices) v.x += shift;
+            std::vector<ring_input> rings{outer};
+            if (g.chance(0.2)) {
+                // A square hole of side 2 about the centre, and an island in it.
+                const double cx = i * side + side / 2 + shift, cy = j * side + side / 2;
+                ring_input hole;
+                hole.role = ring_role::hole;
+                hole.vertices = {{cx - 1, cy - 1}, {cx + 1, cy - 1}, {cx + 1, cy + 1}, {cx - 1, cy + 1}};
+                rings.push_back(hole);
+                const double gap = g.chance(0.5) ? 0 : test_scenes::grid;
+                ring_input island;
+                island.vertices = {{cx - 1 + gap, cy - 1 + gap}, {cx, cy - 0.5}, {cx + 0.5, cy + 0.5}};
+                out.push_back(polygon({island}));
+            }
+            out.push_back(polygon(rings));
+        }
+    return out;
+}
+
+TEST_CASE("layer_pairs: cells along long shared borders against the exact reference", "[world]") {
+    // Cells of about 4 x 40 edges: many runs each, their boundaries
+    // touching along whole borders, so that the edge pairs are sought where
+    // runs overlap (overlapping_run_pairs). One layer and two (the cells
+    // split in two), meeting and within a distance.
+    rng g(502);
+    std::size_t meeting_pairs = 0;
+    for (int round = 0; round < test_effort::scaled(4); ++round) {
+        const std::vector<polygon> layer = bordered_cells(g, 4 + round % 2, 30 + 10 * static_cast<std::size_t>(round));
+        const double within = round == 1 ? 0.01 : round == 3 ? test_scenes::grid / 2 : 0;
+        std::vector<test_exact::placed_shape> placed;
+        for (const polygon& p : layer) placed.push_back(test_exact::place(p, pose{}));
+        std::vector<body_pair> want;
+        for (std::size_t i = 0; i < layer.size(); ++i)
+            for (std::size_t j = i + 1; j < layer.size(); ++j)
+                if (exact_within(placed[i], placed[j], within))
+                    want.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+        meeting_pairs += want.size();
+        INFO("round " << round << ", " << layer.size() << " polygons");
+        CHECK(show(certified_layer_pairs(layer, within)) == show(want));
+        CHECK(show(layer_pairs<exact_rational>(layer, within)) == show(want));
+        CHECK(show(layer_pairs<double>(layer, within, 2)) == show(layer_pairs<double>(layer, within, 1)));
+        // Two layers: alternate polygons.
+        std::vector<polygon> first, second;
+        std::vector<std::size_t> first_index, second_index;
+        for (std::size_t k = 0; k < layer.size(); ++k) {
+            (k % 2 ? second : first).push_back(layer[k]);
+            (k % 2 ? second_index : first_index).push_back(k);
+        }
+        std::vector<body_pair> want2;
+        for (std::size_t i = 0; i < first.size(); ++i)
+            for (std::size_t j = 0; j < second.size(); ++j)
+                if (exact_within(placed[first_index[i]], placed[second_index[j]], within))
+                    want2.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+        CHECK(show(certified_layer_pairs(first, second, within)) == show(want2));
+        // Roles swapped: the same pairs, each turned round.
+        std::vector<body_pair> swapped;
+        for (const body_pair& q : want2) swapped.push_back({q.second, q.first});
+        std::sort(swapped.begin(), swapped.end());
+        CHECK(show(layer_pairs<exact_rational>(second, first, within)) == show(swapped));
+    }
+    // Not vacuous: most neighbours touch.
+    CHECK(meeting_pairs >= 100);
+}
+
 TEST_CASE("layer_pairs: a crowded layer answered by two threads, exact vertices made before they share", "[world]") {
     // Enough candidates (128 and more) for the pair tests to run on two
     // threads, each polygon placed once for all its pairs: in exact

@@ -61,14 +61,22 @@ location locate_placed(placed_polygon<NT>& a, const point<double>& p_approx, con
     }
 }
 
-/// The edges of the placed polygon whose box, grown by `grow`, meets
-/// `window` (edges_meeting), by its run boxes when it has them.
-template <class NT>
-void edges_of(const placed_polygon<NT>& a, const box& window, double grow, std::vector<edge_box>& out) {
-    if (a.run_bounds().empty())
-        edges_meeting(a.shape(), a.approx(), window, grow, out);
-    else
-        edges_meeting(a.shape(), a.approx(), a.run_bounds(), window, grow, out);
+/// Calls meet(i, j) for each edge i of A whose box (grown by `grow`) meets
+/// `a_window` and edge j of B whose box meets `b_window`, the two boxes
+/// overlapping, until meet returns true; returns whether it did. By the
+/// two placings' run boxes when both have them and every coordinate is
+/// finite (overlapping_run_pairs: edges only where two runs overlap); else
+/// each edge list made whole (edges_meeting) and swept (overlapping_pairs).
+template <class NT, class Meet>
+bool edge_pairs_near(const placed_polygon<NT>& a, const placed_polygon<NT>& b, const box& a_window, const box& b_window,
+                     double grow, Meet&& meet) {
+    if (!a.run_bounds().empty() && !b.run_bounds().empty() && a.finite() && b.finite())
+        return overlapping_run_pairs({a.shape(), a.approx(), a.run_bounds(), a_window},
+                                     {b.shape(), b.approx(), b.run_bounds(), b_window}, grow, meet);
+    std::vector<edge_box> a_edges, b_edges;
+    edges_meeting(a.shape(), a.approx(), a_window, grow, a_edges);
+    edges_meeting(b.shape(), b.approx(), b_window, grow, b_edges);
+    return overlapping_pairs(a_edges, b_edges, meet);
 }
 
 /// Which witness placed_meet looks for first when both kinds may show a
@@ -134,11 +142,8 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e,
 
     // No ring inside the other polygon: the regions meet iff the boundaries
     // do. Candidate edges: those whose box meets the other polygon's box.
-    std::vector<edge_box> a_edges, b_edges;
-    edges_of(a, b_window, e, a_edges);
-    edges_of(b, a_window, e, b_edges);
     meeting found;
-    overlapping_pairs(a_edges, b_edges, [&](std::uint32_t i, std::uint32_t j) {
+    edge_pairs_near(a, b, b_window, a_window, e, [&](std::uint32_t i, std::uint32_t j) {
         const std::size_t i2 = as.next(i), j2 = bs.next(j);
         if (!segments_may_meet(a.approx()[i], a.approx()[i2], b.approx()[j], b.approx()[j2], e)) return false;
         if (!segments_intersect(a[i], a[i2], b[j], b[j2])) return false;
@@ -185,12 +190,9 @@ meeting placed_within(placed_polygon<NT>& a, placed_polygon<NT>& b, double e, do
     // Each edge's box grown by reach / 2 + e on its side: two edges within d
     // have boxes within d (exactly), within d + 2e in double.
     const double grow = reach / 2 + e;
-    std::vector<edge_box> a_edges, b_edges;
     const polygon &as = a.shape(), &bs = b.shape();
-    edges_of(a, b_window, grow, a_edges);
-    edges_of(b, a_window, grow, b_edges);
     meeting found;
-    overlapping_pairs(a_edges, b_edges, [&](std::uint32_t i, std::uint32_t j) {
+    edge_pairs_near(a, b, b_window, a_window, grow, [&](std::uint32_t i, std::uint32_t j) {
         if (!segments_within(a[i], a[as.next(i)], b[j], b[bs.next(j)], d2)) return false;
         found = {meeting::kind::edges, i, j, location::boundary};
         return true;

@@ -5,6 +5,7 @@
 /// edges whose boxes overlap: the candidates of the one-shot questions.
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -26,7 +27,7 @@ struct edge_box {
 };
 
 /// Edges taken together: runs of consecutive edges, each tested as one box
-/// before its edges are (edge_run_boxes, edges_meeting), and runs of
+/// before its edges are (edge_run_boxes, overlapping_run_pairs), and runs of
 /// consecutive entries of an edges_meeting list swept as one box
 /// (overlapping_pairs). Consecutive edges of a ring lie close together, so
 /// that a run's box stays near the size of its edges' on curved
@@ -40,12 +41,20 @@ inline constexpr std::size_t edge_run_length = 16;
 /// r edge_run_length to (r + 1) edge_run_length - 1, its box both ends of
 /// each (a NaN coordinate is left out: box::add).
 inline void edge_run_boxes(const polygon& shape, const std::vector<point<double>>& v, std::vector<box>& out) {
-    out.assign((shape.size() + edge_run_length - 1) / edge_run_length, box{});
-    for (std::size_t e = 0; e < shape.size(); ++e) {
-        box& b = out[e / edge_run_length];
-        b.add(v[e]);
-        b.add(v[shape.next(e)]);
+    const std::size_t n = shape.size();
+    out.assign((n + edge_run_length - 1) / edge_run_length, box{});
+    // Each edge's first end, in one pass; then the far end of each run's
+    // last edge, and the far end of each ring's last edge (its first
+    // vertex): every other far end is the next edge's first end, in the
+    // same run.
+    for (std::size_t r = 0; r < out.size(); ++r) {
+        box b;
+        for (std::size_t e = r * edge_run_length; e < std::min(n, (r + 1) * edge_run_length); ++e) b.add(v[e]);
+        b.add(v[shape.next(std::min(n, (r + 1) * edge_run_length) - 1)]);
+        out[r] = b;
     }
+    for (std::size_t k = 0; k < shape.ring_count(); ++k)
+        out[(shape.ring_end(k) - 1) / edge_run_length].add(v[shape.ring_begin(k)]);
 }
 
 /// Appends to `out` each edge e in [first, end) of a polygon whose vertices
@@ -77,33 +86,14 @@ inline void edges_meeting(const polygon& shape, const std::vector<point<double>>
                          {std::max(from.x, to.x) + grow, std::max(from.y, to.y) + grow}, out);
 }
 
-/// edges_meeting without shifts for a polygon whose run boxes are `runs`
-/// (edge_run_boxes of the same vertices): a run whose box, grown, misses
-/// the window is passed over whole. Only where every coordinate is finite
-/// (a run's box leaves NaN out); callers widen the window to the whole
-/// plane otherwise, which every run meets.
-inline void edges_meeting(const polygon& shape, const std::vector<point<double>>& v, const std::vector<box>& runs,
-                          const box& window, double grow, std::vector<edge_box>& out) {
-    out.clear();
-    for (std::size_t r = 0; r < runs.size(); ++r) {
-        const box& k = runs[r];
-        if (k.max_x + grow < window.min_x || k.min_x - grow > window.max_x || k.max_y + grow < window.min_y ||
-            k.min_y - grow > window.max_y)
-            continue;
-        const std::size_t first = r * edge_run_length;
-        append_edges_meeting(shape, v, first, std::min(shape.size(), first + edge_run_length), window, {-grow, -grow},
-                             {grow, grow}, out);
-    }
-}
-
 /// Calls pair(i, j) for each i in [a_first, a_end) of `as` and j in
 /// [b_first, b_end) of `bs` whose boxes (`box_of`, edge_box bounds) overlap,
 /// each range sorted by min_x, until pair returns true; returns whether it
 /// did. Sort and sweep along x: the box that starts first meets the other
 /// range's boxes that start before it ends.
-template <class T, class BoxOf, class Pair>
-bool sweep_along_x(const std::vector<T>& as, std::size_t a_first, std::size_t a_end, const std::vector<T>& bs,
-                   std::size_t b_first, std::size_t b_end, BoxOf&& box_of, Pair&& pair) {
+template <class Seq, class BoxOf, class Pair>
+bool sweep_along_x(const Seq& as, std::size_t a_first, std::size_t a_end, const Seq& bs, std::size_t b_first,
+                   std::size_t b_end, BoxOf&& box_of, Pair&& pair) {
     const auto overlap_y = [](const edge_box& l, const edge_box& r) {
         return !(l.max_y < r.min_y || r.max_y < l.min_y);
     };
@@ -184,6 +174,88 @@ bool overlapping_pairs(std::vector<edge_box>& as, std::vector<edge_box>& bs, Mee
         [&](std::size_t i, std::size_t j) {
             return sweep_along_x(as, ra[i].first, ra[i].end, bs, rb[j].first, rb[j].end, entry, entries_meet);
         });
+}
+
+/// One side of overlapping_run_pairs: a polygon's topology, its vertices in
+/// double, its run boxes (edge_run_boxes of the same vertices), and the
+/// window its edges must meet to be offered (the other polygon's box,
+/// grown).
+struct runs_side {
+    const polygon& shape;                 ///< the topology
+    const std::vector<point<double>>& v;  ///< the vertices in double
+    const std::vector<box>& runs;         ///< edge_run_boxes of v
+    box window;                           ///< what an offered edge's box must meet
+};
+
+/// Calls meet(i, j) for each edge i of A and edge j of B whose boxes, each
+/// grown by `grow`, overlap and meet their windows, until meet returns
+/// true; returns whether it did. Each pair is offered once. Runs first,
+/// edges only inside two runs that overlap:
+///
+///   A's runs whose box (grown) meets A's window, and B's likewise, each
+///   list sorted by min_x
+///   for each run of A and run of B whose boxes overlap (sort and sweep,
+///   sweep_along_x):
+///     the run's edges whose box (grown) meets its window and the other
+///     run's box, on each side (at most edge_run_length), sorted by min_x
+///     and swept: meet on each two that overlap
+///
+/// An edge pair whose boxes overlap lies in two runs whose boxes overlap,
+/// so the pairs offered are those of edges_meeting and overlapping_pairs;
+/// the work on edges is confined to where the two boundaries come close,
+/// and a meeting found there ends it. Only where every coordinate is finite
+/// (a run box leaves NaN out).
+template <class Meet>
+bool overlapping_run_pairs(const runs_side& a, const runs_side& b, double grow, Meet&& meet) {
+    // Run boxes grown, as edge_box entries whose `edge` is the run.
+    const auto runs_meeting = [grow](const runs_side& s, std::vector<edge_box>& out) {
+        out.clear();
+        for (std::size_t r = 0; r < s.runs.size(); ++r) {
+            const box& k = s.runs[r];
+            const edge_box g{k.min_x - grow, k.max_x + grow, k.min_y - grow, k.max_y + grow,
+                             static_cast<std::uint32_t>(r)};
+            if (!(g.max_x < s.window.min_x || g.min_x > s.window.max_x || g.max_y < s.window.min_y ||
+                  g.min_y > s.window.max_y))
+                out.push_back(g);
+        }
+        std::sort(out.begin(), out.end(), [](const edge_box& l, const edge_box& r) { return l.min_x < r.min_x; });
+    };
+    // (Kept per thread: a layer or a world asks this for many pairs.)
+    static thread_local std::vector<edge_box> a_runs, b_runs;
+    runs_meeting(a, a_runs);
+    if (a_runs.empty()) return false;
+    runs_meeting(b, b_runs);
+    if (b_runs.empty()) return false;
+    // The edges of run r of side s whose grown box meets s's window and
+    // `other` (a grown run box), sorted by min_x; returns their number.
+    using run_edges = std::array<edge_box, edge_run_length>;
+    const auto edges_in = [grow](const runs_side& s, std::size_t r, const edge_box& other, run_edges& out) {
+        std::size_t n = 0;
+        const std::size_t first = r * edge_run_length, end = std::min(s.shape.size(), first + edge_run_length);
+        for (std::size_t e = first; e < end; ++e) {
+            const point<double>&p = s.v[e], &q = s.v[s.shape.next(e)];
+            const edge_box k{std::min(p.x, q.x) - grow, std::max(p.x, q.x) + grow, std::min(p.y, q.y) - grow,
+                             std::max(p.y, q.y) + grow, static_cast<std::uint32_t>(e)};
+            if (k.max_x < other.min_x || k.min_x > other.max_x || k.max_y < other.min_y || k.min_y > other.max_y ||
+                k.max_x < s.window.min_x || k.min_x > s.window.max_x || k.max_y < s.window.min_y ||
+                k.min_y > s.window.max_y)
+                continue;
+            // Insertion by min_x: at most edge_run_length entries.
+            std::size_t at = n++;
+            for (; at > 0 && out[at - 1].min_x > k.min_x; --at) out[at] = out[at - 1];
+            out[at] = k;
+        }
+        return n;
+    };
+    const auto entry = [](const edge_box& e) -> const edge_box& { return e; };
+    run_edges ea, eb;
+    return sweep_along_x(a_runs, 0, a_runs.size(), b_runs, 0, b_runs.size(), entry, [&](std::size_t i, std::size_t j) {
+        const std::size_t na = edges_in(a, a_runs[i].edge, b_runs[j], ea);
+        if (na == 0) return false;
+        const std::size_t nb = edges_in(b, b_runs[j].edge, a_runs[i], eb);
+        return sweep_along_x(ea, 0, na, eb, 0, nb, entry,
+                             [&](std::size_t k, std::size_t l) { return meet(ea[k].edge, eb[l].edge); });
+    });
 }
 
 }  // namespace influence2d

@@ -102,8 +102,9 @@ public:
     /// once make_run_bounds() made them at the present placing; else empty.
     const std::vector<box>& run_bounds() const { return runs_; }
     /// Makes run_bounds(): a pass over the vertices, which pays when the
-    /// placing serves several pairs (edges_meeting then passes over each run
-    /// that misses a pair's window whole).
+    /// placing serves several pairs (a pair's edges are then sought where
+    /// two runs overlap, overlapping_run_pairs, and a locate passes over
+    /// each run off its ray whole).
     void make_run_bounds() { edge_run_boxes(shape_, *approx_, runs_); }
 
     /// Whether vertex j in NT is returned by value, made anew on each call

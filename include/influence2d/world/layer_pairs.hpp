@@ -117,8 +117,8 @@ inline double checked_distance(double within) {
 ///
 ///   boxes <- each polygon's box, grown by within / 2 (and the filters'
 ///            margin); a box tree over them (box_tree)
-///   candidates <- for each polygon i, the polygons j > i whose box meets
-///                 its own
+///   candidates <- the pairs whose boxes meet (the tree joined with itself,
+///                 box_tree::self_join), sorted
 ///   each polygon some candidate names placed where it stands, once for
 ///   all its pairs, with its run boxes (placed_layer)
 ///   each candidate, in parallel blocks of `threads` (0: every hardware
@@ -135,17 +135,14 @@ std::vector<body_pair> layer_pairs(const std::vector<polygon>& layer, double wit
     box_tree tree;
     tree.rebuild(boxes, ids);
     std::vector<body_pair> candidates;
-    for (std::uint32_t i = 0; i < layer.size(); ++i)
-        tree.query(boxes[i], [&](std::uint32_t j) {
-            if (j > i) candidates.push_back({i, j});
-        });
+    tree.self_join([&](std::uint32_t i, std::uint32_t j) { candidates.push_back({std::min(i, j), std::max(i, j)}); });
     std::sort(candidates.begin(), candidates.end());
     return layer_pairs_detail::within_of<NT, Exact>(layer, layer, true, candidates, within, threads);
 }
 
 /// Every pair (i, j) of a polygon i of `first` and a polygon j of `second`
 /// whose closed regions come within `within` of each other, sorted; as the
-/// one-layer form otherwise (the box tree over `second`).
+/// one-layer form otherwise (a box tree over each layer, the two joined).
 template <class NT, class Exact = void>
 std::vector<body_pair> layer_pairs(const std::vector<polygon>& first, const std::vector<polygon>& second,
                                    double within = 0, unsigned threads = 1) {
@@ -154,11 +151,11 @@ std::vector<body_pair> layer_pairs(const std::vector<polygon>& first, const std:
     std::vector<std::uint32_t> a_ids, b_ids;
     layer_pairs_detail::boxes_of<NT>(first, "first", within, a_boxes, a_ids);
     layer_pairs_detail::boxes_of<NT>(second, "second", within, b_boxes, b_ids);
-    box_tree tree;
-    tree.rebuild(b_boxes, b_ids);
+    box_tree a_tree, b_tree;
+    a_tree.rebuild(a_boxes, a_ids);
+    b_tree.rebuild(b_boxes, b_ids);
     std::vector<body_pair> candidates;
-    for (std::uint32_t i = 0; i < first.size(); ++i)
-        tree.query(a_boxes[i], [&](std::uint32_t j) { candidates.push_back({i, j}); });
+    a_tree.join(b_tree, [&](std::uint32_t i, std::uint32_t j) { candidates.push_back({i, j}); });
     std::sort(candidates.begin(), candidates.end());
     return layer_pairs_detail::within_of<NT, Exact>(first, second, false, candidates, within, threads);
 }
