@@ -417,6 +417,52 @@ TEST_CASE("filters: segments_may_meet never drops segments that meet, with or wi
     CHECK(segments_may_meet({0, 0}, {1, 0}, {nan_value, 0}, {2, 0}, 0));
 }
 
+TEST_CASE("filters: segments_certainly_cross answers only segments whose every exact version within e crosses",
+          "[filters]") {
+    test_random::rng r(19);
+    using test_exact::exact_segment;
+    std::size_t crossing = 0, unsure = 0;
+    for (int k = 0; k < count(20000); ++k) {
+        const int s = static_cast<int>(r.index(1200)) - 600;
+        const double scale = std::ldexp(1.0, s);
+        const double e = r.chance(0.2) ? 0 : scale * std::ldexp(1.0, -static_cast<int>(r.index(40)) - 2);
+        const point<double> a{at_scale(r, s), at_scale(r, s)}, b{at_scale(r, s), at_scale(r, s)};
+        // u and v about the line of [a, b], a few e off it or far from it;
+        // sometimes an end of [u, v] on [a, b] itself.
+        const point<double> on = near_line(r, a, b);
+        const double gap = r.chance(0.5) ? r.uniform(0, 8) * e : at_scale(r, s);
+        const point<double> u{on.x + gap, on.y + (r.chance(0.5) ? gap : -gap)};
+        const point<double> v = r.chance(0.1) ? on : point<double>{2 * on.x - u.x, 2 * on.y - u.y};
+        const bool answer = segments_certainly_cross(a, b, u, v, e);
+        if (!answer) {
+            ++unsure;
+            continue;
+        }
+        ++crossing;
+        // Every end moved within e on each coordinate (k/8 of e, exactly),
+        // and the corners of that square: the segments still meet.
+        for (int trial = 0; trial < 4; ++trial) {
+            const auto moved = [&](const point<double>& p) {
+                const int i = trial < 2 ? (trial == 0 ? 8 : -8) : static_cast<int>(r.index(17)) - 8;
+                const int j = trial < 2 ? (trial == 0 ? -8 : 8) : static_cast<int>(r.index(17)) - 8;
+                return test_exact::exact_point(Q(p.x) + Q(e) * Q(i) / 8, Q(p.y) + Q(e) * Q(j) / 8);
+            };
+            INFO("scale 2^" << s << ", e " << e);
+            CHECK(CGAL::do_intersect(exact_segment(moved(a), moved(b)), exact_segment(moved(u), moved(v))));
+        }
+    }
+    CHECK(crossing > at_least(1000));
+    CHECK(unsure > at_least(1000));
+    // Named cases: a clear cross; a T (an end on the other segment) is not
+    // certain; parallel; a cross closer than the slack for e = 0.3.
+    CHECK(segments_certainly_cross({0, 0}, {2, 0}, {1, -1}, {1, 1}, 0));
+    CHECK_FALSE(segments_certainly_cross({0, 0}, {2, 0}, {1, 0}, {1, 1}, 0));
+    CHECK_FALSE(segments_certainly_cross({0, 0}, {2, 0}, {0, 1}, {2, 1}, 0));
+    CHECK(segments_certainly_cross({0, 0}, {2, 0}, {1, -1}, {1, 1}, 0.01));
+    CHECK_FALSE(segments_certainly_cross({0, 0}, {2, 0}, {1, -0.1}, {1, 1}, 0.3));
+    CHECK_FALSE(segments_certainly_cross({0, 0}, {1, 0}, {nan_value, -1}, {0.5, 1}, 0));
+}
+
 TEST_CASE("filters: box_may_be_near_line never drops a box within g of the line", "[filters]") {
     test_random::rng r(10);
     std::size_t near = 0, far = 0;

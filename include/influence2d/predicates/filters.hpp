@@ -37,6 +37,14 @@ inline constexpr double square_safe_high = 0x1p400;
 /// 2^-48 leaves a factor of four.
 inline constexpr double side_rounding = 0x1p-48;
 
+/// The widening of segments_certainly_cross's slack for its own rounding:
+/// the slack 2e (|dx| + |dy| + spread) + 8e^2 takes six rounded operations
+/// on non-negative terms after the rounded differences dx, dy and spread
+/// (each below u = 2^-53 relative, the differences' error below u of each
+/// term), in all below 9u < 2^-49 relative; 1 + 2^-46 leaves a factor of
+/// eight.
+inline constexpr double crossing_slack_widening = 1 + 0x1p-46;
+
 /// Below this a bound built from products may have lost its meaning to
 /// underflow (a product of two magnitudes near 2^-450 is subnormal): a side
 /// test whose bound is smaller is not trusted.
@@ -174,6 +182,35 @@ inline bool segments_may_meet(const point<double>& a, const point<double>& b, co
     return !one_side(a, b, u, v) && !one_side(u, v, a, b);
 }
 
+/// Whether the segments [a, b] and [u, v] certainly cross, each point known
+/// only to within e on each coordinate: u and v certainly on opposite sides
+/// of the line through a and b, and a and b of the line through u and v,
+/// whatever the exact points within e (then the exact segments cross at a
+/// point interior to both, and meet). False whenever that is not certain.
+/// The slack of r's side of the line through p and q: with d = q - p and
+/// w = r - p, the value d.x w.y - d.y w.x moves by at most
+/// 2e (|d.x| + |d.y|) + 2e (|w.x| + |w.y|) + 8e^2 when each point moves by e
+/// on each coordinate (each coordinate of d and w moves by at most 2e, and
+/// the two cross terms by (2e)^2 each); the sums in double are widened by
+/// crossing_slack_widening for their own rounding, and certain_side adds the
+/// value's.
+inline bool segments_certainly_cross(const point<double>& a, const point<double>& b, const point<double>& u,
+                                     const point<double>& v, double e) {
+    const auto sides_differ = [e](const point<double>& p, const point<double>& q, const point<double>& s,
+                                  const point<double>& t) {
+        const double dx = q.x - p.x, dy = q.y - p.y;
+        const auto side = [&](const point<double>& r) {
+            const double spread = std::fabs(r.x - p.x) + std::fabs(r.y - p.y);
+            const double slack =
+                (2 * e * (std::fabs(dx) + std::fabs(dy) + spread) + 8 * e * e) * crossing_slack_widening;
+            return certain_side(p, dx, dy, r, slack);
+        };
+        const int first = side(s);
+        return first != 0 && side(t) == -first;
+    };
+    return sides_differ(a, b, u, v) && sides_differ(u, v, a, b);
+}
+
 /// Whether some point of box b may lie within g of the line through u and v:
 /// false only when every corner lies certainly on one side, beyond g (then
 /// no point within g of the segment [u, v] lies in b). True for u == v and
@@ -240,6 +277,46 @@ inline bool certainly_off_ray(const box& b, const point<double>& p, double g) {
 template <class NT>
 double posing_margin(double scale) {
     return number_traits<NT>::filter_slack * 4 * scale + std::numeric_limits<double>::min();
+}
+
+/// The relative margin of placing_margin. A coordinate posed in double by
+/// rotation_pose errs from the exact c x - s y + t (the same doubles c and
+/// s) by less than 8u = 2^-50 times the scale (pose_rounding in
+/// predicates/distance.hpp derives it: 6.02u (|x| + |y|) + 1.01u |t|,
+/// u = 2^-53), and the same point posed in an NT at least as fine as double
+/// by as much again; the filters that widen by the margin round a few times
+/// more (a sum with a coordinate, a box's side widened), each time by at
+/// most u times the scale. 2^-46 = 128u leaves a factor of four over 32u.
+inline constexpr double placing_slack = 0x1p-46;
+
+/// Whether NT's posed values are the exact ones (an exact or filtered type)
+/// or rounded at least as finely as double's: placing_margin's tight bound
+/// holds for them.
+template <class NT>
+constexpr bool places_as_finely_as_double() {
+    if constexpr (is_exact_v<NT>)
+        return true;
+    else if constexpr (std::numeric_limits<NT>::is_specialized)
+        return std::numeric_limits<NT>::epsilon() <= std::numeric_limits<double>::epsilon();
+    else
+        return false;
+}
+
+/// The margin between points placed in double by rotation_pose::apply (or
+/// standing where they are) and the same points in NT, for coordinates
+/// whose terms sum to at most `scale` in magnitude, as posing_margin: for a
+/// type that places as finely as double (places_as_finely_as_double), the
+/// roundings of the posings alone (placing_slack), some 2^18 times tighter
+/// than posing_margin, so that the one-shot filters and the world's boxes
+/// keep their power far from the origin; otherwise (float) posing_margin.
+/// Plus the least normal double for coordinates that underflow
+/// (pose_underflow, 2^-1072, is below it).
+template <class NT>
+double placing_margin(double scale) {
+    if constexpr (places_as_finely_as_double<NT>())
+        return placing_slack * scale + std::numeric_limits<double>::min();
+    else
+        return posing_margin<NT>(scale);
 }
 
 }  // namespace influence2d

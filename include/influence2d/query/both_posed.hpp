@@ -71,8 +71,8 @@ bool intersects(const polygon& a, const pose& pose_a, const polygon& b, const po
     accepted_polygon<NT>(b, "second");
     const rotation_pose ta(pose_a), tb(pose_b);
     placed_polygon<NT> pa(a, ta), pb(b, tb);
-    const double e = posing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(pose_a.tx) +
-                                       std::fabs(pose_a.ty) + std::fabs(pose_b.tx) + std::fabs(pose_b.ty));
+    const double e = placing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(pose_a.tx) +
+                                        std::fabs(pose_a.ty) + std::fabs(pose_b.tx) + std::fabs(pose_b.ty));
     return static_cast<bool>(placed_meet(pa, pb, e));
 }
 

@@ -49,7 +49,7 @@ bool intersects(const polygon& a, const polygon& b, const pose& q) {
     if (const int k = range_shift<NT>(a, b, q))
         return intersects<NT>(a.scaled_by_power_of_two(k), b.scaled_by_power_of_two(k), scaled_by_power_of_two(q, k));
     placed_polygon<NT> pa(a), pb(b, t);
-    const double e = posing_margin<NT>(coordinate_scale(b) + coordinate_scale(a) + std::fabs(q.tx) + std::fabs(q.ty));
+    const double e = placing_margin<NT>(coordinate_scale(b) + coordinate_scale(a) + std::fabs(q.tx) + std::fabs(q.ty));
     return static_cast<bool>(placed_meet(pa, pb, e));
 }
 

@@ -145,8 +145,11 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e,
     meeting found;
     edge_pairs_near(a, b, b_window, a_window, e, [&](std::uint32_t i, std::uint32_t j) {
         const std::size_t i2 = as.next(i), j2 = bs.next(j);
-        if (!segments_may_meet(a.approx()[i], a.approx()[i2], b.approx()[j], b.approx()[j2], e)) return false;
-        if (!segments_intersect(a[i], a[i2], b[j], b[j2])) return false;
+        const point<double>&p = a.approx()[i], &q = a.approx()[i2], &u = b.approx()[j], &v = b.approx()[j2];
+        if (!segments_may_meet(p, q, u, v, e)) return false;
+        // (In double the doubles are the decision's own: no second filter.)
+        const bool crossing = !std::is_same_v<NT, double> && segments_certainly_cross(p, q, u, v, e);
+        if (!crossing && !segments_intersect(a[i], a[i2], b[j], b[j2])) return false;
         found = {meeting::kind::edges, i, j, location::boundary};
         return true;
     });

@@ -42,7 +42,7 @@ void boxes_of(const std::vector<polygon>& layer, const char* which, double withi
                                 " layer is empty (it has no ring)");
         accepted_polygon<NT>(layer[k], which);
         boxes.push_back(
-            layer[k].bounds().inflated(posing_margin<NT>(coordinate_scale(layer[k])) + within / 2 * (1 + 0x1p-50)));
+            layer[k].bounds().inflated(placing_margin<NT>(coordinate_scale(layer[k])) + within / 2 * (1 + 0x1p-50)));
         ids.push_back(static_cast<std::uint32_t>(k));
     }
 }

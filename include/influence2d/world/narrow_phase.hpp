@@ -58,14 +58,26 @@ struct body_view {
 /// Whether what showed bodies a and b within d at the last step (`last`,
 /// stored numbering) still does at their present poses, decided exactly in
 /// NT: for two edges, the exact segment test (d = 0) or distance test on the
-/// four vertices posed in NT; for a located vertex, its location in the
-/// other polygon.
+/// four vertices posed in NT, in a type other than double after a filter in
+/// double (edges that certainly cross); for a located vertex, its location
+/// in the other polygon.
 template <class NT>
 bool witness_holds(const meeting& last, const body_view<NT>& a, const body_view<NT>& b, double d, const NT& d2) {
     const polygon &as = *a.shape, &bs = *b.shape;
     switch (last.how) {
     case meeting::kind::edges: {
         const std::size_t i = last.a_index, j = last.b_index;
+        if constexpr (!std::is_same_v<NT, double>) {
+            // Two edges that still cross clearly are settled in double, the
+            // four vertices posed in double within the posing's margin of
+            // their values in NT (segments_certainly_cross).
+            if (d == 0 && segments_certainly_cross(a.pose.template apply<double>(as.vertex(i)),
+                                                   a.pose.template apply<double>(as.vertex(as.next(i))),
+                                                   b.pose.template apply<double>(bs.vertex(j)),
+                                                   b.pose.template apply<double>(bs.vertex(bs.next(j))),
+                                                   placing_margin<NT>(a.scale + b.scale)))
+                return true;
+        }
         const point<NT> p = a.pose.template apply<NT>(as.vertex(i)),
                         q = a.pose.template apply<NT>(as.vertex(as.next(i)));
         const point<NT> u = b.pose.template apply<NT>(bs.vertex(j)),
@@ -74,12 +86,12 @@ bool witness_holds(const meeting& last, const body_view<NT>& a, const body_view<
     }
     case meeting::kind::b_vertex_in_a: {
         const std::size_t j = last.b_index;
-        return locate_placed(*a.placed, b.placed->approx()[j], (*b.placed)[j], posing_margin<NT>(a.scale + b.scale)) !=
+        return locate_placed(*a.placed, b.placed->approx()[j], (*b.placed)[j], placing_margin<NT>(a.scale + b.scale)) !=
                location::outside;
     }
     case meeting::kind::a_vertex_in_b: {
         const std::size_t i = last.a_index;
-        return locate_placed(*b.placed, a.placed->approx()[i], (*a.placed)[i], posing_margin<NT>(a.scale + b.scale)) !=
+        return locate_placed(*b.placed, a.placed->approx()[i], (*a.placed)[i], placing_margin<NT>(a.scale + b.scale)) !=
                location::outside;
     }
     default: return false;
@@ -116,7 +128,7 @@ bool edge_witness_holds(const meeting& last, const body_view<NT>& a, const body_
 ///
 ///   last still holds (witness_holds):    last
 ///   else placed_within on the placed bodies, with the margin of their
-///   posing (posing_margin of the sum of their scales)
+///   posing (placing_margin of the sum of their scales)
 template <class NT, class Exact = void>
 meeting bodies_within(const meeting& last, const body_view<NT>& a, const body_view<NT>& b, double d,
                       bool* by_witness = nullptr, witness_preference prefer = witness_preference::cheapest) {
@@ -132,7 +144,7 @@ meeting bodies_within(const meeting& last, const body_view<NT>& a, const body_vi
             if (by_witness != nullptr) *by_witness = true;
             return witness;
         }
-        return placed_within(pa, pb, posing_margin<T>(a.scale + b.scale), d, d2, prefer);
+        return placed_within(pa, pb, placing_margin<T>(a.scale + b.scale), d, d2, prefer);
     };
     const auto fast = [&] { return in(NT{}, *a.placed, *b.placed, last, &a, &b); };
     if constexpr (std::is_void_v<Exact>) {

@@ -264,7 +264,7 @@ private:
              {point<double>{local.min_x, local.min_y}, point<double>{local.max_x, local.min_y},
               point<double>{local.min_x, local.max_y}, point<double>{local.max_x, local.max_y}})
             out.add(b.pose.template apply<double>(c));
-        out = out.inflated(2 * posing_margin<NT>(b.scale) + options_.within / 2 * (1 + 0x1p-50));
+        out = out.inflated(2 * placing_margin<NT>(b.scale) + options_.within / 2 * (1 + 0x1p-50));
         if (std::isnan(out.min_x) || std::isnan(out.min_y) || std::isnan(out.max_x) || std::isnan(out.max_y)) {
             const double inf = std::numeric_limits<double>::infinity();
             out = box{-inf, -inf, inf, inf};
