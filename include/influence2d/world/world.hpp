@@ -505,6 +505,7 @@ private:
                         b.placed->repose(b.pose);
                     else
                         b.placed = std::make_unique<placed_polygon<NT>>(shapes_[b.shape]->shape, b.pose);
+                    b.placed->make_run_bounds();
                 }
                 if constexpr (!placed_polygon<NT>::by_value)
                     if (b.all_made) b.placed->all();
