@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "influence2d/assert.hpp"
 #include "influence2d/core/feature.hpp"
 #include "influence2d/core/invalid_input.hpp"
 #include "influence2d/core/point.hpp"
@@ -54,6 +55,31 @@ inline void check_direction(double dx, double dy) {
                                 ", not a finite number");
     if (dx == 0 && dy == 0) throw invalid_input("direction: (0, 0) has no direction");
 }
+
+/// The direction scaled by a power of two 2^shift (exactly) to a largest
+/// component in [1, 2): the windows of s, kept in double, then neither
+/// overflow nor underflow; s for (dx, dy) is 2^shift times s for the scaled
+/// one. Throws invalid_input when the components' magnitudes are too far
+/// apart for both to scale exactly.
+struct unit_direction {
+    double dx = 0;  ///< the scaled direction's components
+    double dy = 0;
+    int shift = 0;  ///< the power of two applied
+
+    unit_direction(double x, double y) : shift(-std::ilogb(std::max(std::fabs(x), std::fabs(y)))) {
+        dx = std::ldexp(x, shift);
+        dy = std::ldexp(y, shift);
+        if (std::ldexp(dx, -shift) != x || std::ldexp(dy, -shift) != y)
+            throw invalid_input("direction: the components' magnitudes are too far apart to scale exactly");
+    }
+
+    /// 2^shift in NT, exactly in an exact NT (two factors, each a double).
+    template <class NT>
+    NT factor() const {
+        using tr = number_traits<NT>;
+        return tr::from_double(std::ldexp(1.0, shift / 2)) * tr::from_double(std::ldexp(1.0, shift - shift / 2));
+    }
+};
 
 /// A double s_max such that B, its box `bb` (in double, within e of its
 /// place in NT) moved by s (dx, dy) for any s > s_max, lies beyond A's box
@@ -107,12 +133,97 @@ inline bool touches(const meeting& w, const contact_site& s, const polygon& a, c
     }
 }
 
-/// An event of the exit search: its time and site.
+/// An event of the exit search: its time, its site, and which of the site's
+/// contact times it is (translation_frame::times' order, the same in every
+/// NT whose signs are exact).
 template <class NT>
 struct timed_site {
     time_fraction<NT> time;
     contact_site site;
+    int which = 0;
 };
+
+/// Where the exit search ended: the exit, in units of the direction it was
+/// given, and the event there (none when the exit is 0: the regions do not
+/// meet at q, or no event comes after it).
+template <class NT>
+struct exit_found {
+    time_fraction<NT> time;            ///< the exit
+    std::optional<timed_site<NT>> at;  ///< the event whose time it is
+};
+
+/// The exit search of exit_distance (its pseudocode) for B posed by t and
+/// translated by s (dx, dy), the direction's largest component in [1, 2);
+/// `scale` bounds the magnitudes of the polygons and of t's translation.
+template <class NT>
+exit_found<NT> exit_search(const polygon& a, const polygon& b, const rotation_pose& t, double dx, double dy,
+                           double scale) {
+    using namespace sweep;
+    using tr = number_traits<NT>;
+    translation_frame<NT> f(a, b, t, {tr::from_double(dx), tr::from_double(dy)});
+    const double reach = std::fabs(dx) + std::fabs(dy);
+    const double e0 = posing_margin<NT>(scale);
+    exit_found<NT> out{{NT(0), NT(1)}, std::nullopt};
+    meeting witness = placed_meet(f.a, f.b, e0);
+    if (!witness) return out;
+    const double s_max = exit_reach(a.bounds(), f.b.bounds(), dx, dy, e0);
+    const double e = posing_margin<NT>(scale + s_max * reach);
+    const auto beyond = [](const time_fraction<NT>& s, double x) {
+        return compare_values<NT>(s.num, tr::from_double(x) * s.den) > 0;
+    };
+    // The events of the window (w_low, w] of s, sorted. In an exact NT a
+    // site is first tried in certified: one that certainly has no event
+    // costs no exact arithmetic.
+    constexpr bool exact = tr::category == number_category::exact;
+    std::optional<translation_frame<certified>> fast;
+    if constexpr (exact) fast.emplace(a, b, t, point<certified>{certified(dx), certified(dy)});
+    std::vector<timed_site<NT>> events;
+    const auto load = [&](double w_low, double w) {
+        events.clear();
+        candidate_sites(a, b, f.b.approx(), f.b.bounds(), {std::max(w_low, 0.0) * dx, std::max(w_low, 0.0) * dy},
+                        {w * dx, w * dy}, e, [&](const contact_site& site) {
+                            if constexpr (exact) {
+                                try {
+                                    time_fraction<certified> none[2];
+                                    if (fast->times(site, false, none) == 0) return;
+                                } catch (const uncertain_sign&) {}
+                            }
+                            time_fraction<NT> times[2];
+                            const int k = f.times(site, false, times);
+                            for (int i = 0; i < k; ++i)
+                                if ((w_low < 0 || beyond(times[i], w_low)) && !beyond(times[i], w))
+                                    events.push_back({std::move(times[i]), site, i});
+                        });
+        std::sort(events.begin(), events.end(),
+                  [](const timed_site<NT>& l, const timed_site<NT>& r) { return compare_times(l.time, r.time) < 0; });
+    };
+    double w_low = -1, w = std::min(s_max, s_max * first_window);
+    load(w_low, w);
+    std::size_t next = 0;
+    bool stale = false;  // an event at the exit so far touches the witness
+    for (;;) {
+        // The other events at the exit so far (some may come at 0). (The
+        // event taken as the exit is not compared with itself: a filtered
+        // NT cannot tell a value from itself.)
+        for (; next < events.size() && compare_times(events[next].time, out.time) <= 0; ++next)
+            if (touches(witness, events[next].site, a, b)) stale = true;
+        while (next == events.size() && w < s_max) {
+            w_low = w;
+            w = std::min(s_max, 2 * w);
+            load(w_low, w);
+            next = 0;
+        }
+        if (next == events.size()) return out;  // after the last event, apart
+        timed_site<NT> following = events[next++];
+        if (stale) {
+            witness = meeting_between(f, out.time, following.time, scale, reach);
+            if (!witness) return out;
+        }
+        stale = touches(witness, following.site, a, b);
+        out.time = following.time;
+        out.at = std::move(following);
+    }
+}
 
 }  // namespace exit_distance_detail
 
@@ -153,9 +264,7 @@ struct timed_site {
 /// more than double's range (2^1022 times).
 template <class NT>
 NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, double dy) {
-    using namespace sweep;
     using namespace exit_distance_detail;
-    using tr = number_traits<NT>;
     accepted_polygon<NT>(a, "static");
     accepted_polygon<NT>(b, "moving");
     const rotation_pose t(q);
@@ -166,79 +275,59 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
                                                 scaled_by_power_of_two(q, k), dx, dy),
                               -k);
     }
-    // The direction scaled by a power of two 2^shift (exactly) to a largest
-    // component in [1, 2): the windows of s, kept in double, then neither
-    // overflow nor underflow; s for (dx, dy) is 2^shift times s for the
-    // scaled one.
-    const int shift = -std::ilogb(std::max(std::fabs(dx), std::fabs(dy)));
-    const double ux = std::ldexp(dx, shift), uy = std::ldexp(dy, shift);
-    if (std::ldexp(ux, -shift) != dx || std::ldexp(uy, -shift) != dy)
-        throw invalid_input("direction: the components' magnitudes are too far apart to scale exactly");
-    const NT unit_scale =
-        tr::from_double(std::ldexp(1.0, shift / 2)) * tr::from_double(std::ldexp(1.0, shift - shift / 2));
-    dx = ux;
-    dy = uy;
-    translation_frame<NT> f(a, b, t, {tr::from_double(dx), tr::from_double(dy)});
+    const unit_direction u(dx, dy);
     const double scale = coordinate_scale(a) + coordinate_scale(b) + std::fabs(q.tx) + std::fabs(q.ty);
-    const double reach = std::fabs(dx) + std::fabs(dy);
-    const double e0 = posing_margin<NT>(scale);
-    meeting witness = placed_meet(f.a, f.b, e0);
-    if (!witness) return NT(0);
+    const exit_found<NT> r = exit_search<NT>(a, b, t, u.dx, u.dy, scale);
+    return r.time.num / r.time.den * u.factor<NT>();
+}
 
-    const double s_max = exit_reach(a.bounds(), f.b.bounds(), dx, dy, e0);
-    const double e = posing_margin<NT>(scale + s_max * reach);
-    const auto beyond = [](const time_fraction<NT>& s, double x) {
-        return compare_values<NT>(s.num, tr::from_double(x) * s.den) > 0;
+/// The exit distance of exit_distance<Exact>, rounded to the nearest double,
+/// at nearly double's cost: the exit search run in `certified` (the events'
+/// times, their order and the meeting tests, each sign certain or raising
+/// uncertain_sign), then the one event at the exit evaluated again in Exact
+/// and rounded. The search takes the exact search's every branch, so its
+/// exit is the exact exit; a sign that `certified` cannot settle (a tie
+/// between events, a touching meeting test, coordinates far from 1 in
+/// scale) sends the query to exit_search<Exact> whole. Throws as
+/// exit_distance. `*by_filter`, when given, says whether the search in
+/// `certified` answered (no sign sent the query to Exact).
+/// certified_exit_distance (exact/certified_exit_distance.hpp) is this query
+/// in exact rationals.
+///
+///   (exit, event) <- exit_search<certified>, or on uncertain_sign
+///                    exit_search<Exact>
+///   no event:                      0
+///   the event's time in Exact, times 2^shift, rounded to the nearest double
+template <class Exact>
+double filtered_exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, double dy,
+                              bool* by_filter = nullptr) {
+    using namespace exit_distance_detail;
+    using tr = number_traits<Exact>;
+    accepted_polygon<Exact>(a, "static");
+    accepted_polygon<Exact>(b, "moving");
+    const rotation_pose t(q);
+    check_direction(dx, dy);
+    const unit_direction u(dx, dy);
+    const double scale = coordinate_scale(a) + coordinate_scale(b) + std::fabs(q.tx) + std::fabs(q.ty);
+    const auto rounded = [&](const time_fraction<Exact>& s) {
+        return nearest_double(time_fraction<Exact>{s.num * u.factor<Exact>(), s.den});
     };
-    // The events of the window (w_low, w] of s, sorted. In an exact NT a
-    // site is first tried in certified: one that certainly has no event
-    // costs no exact arithmetic.
-    constexpr bool exact = tr::category == number_category::exact;
-    std::optional<translation_frame<certified>> fast;
-    if constexpr (exact) fast.emplace(a, b, t, point<certified>{certified(dx), certified(dy)});
-    std::vector<timed_site<NT>> events;
-    const auto load = [&](double w_low, double w) {
-        events.clear();
-        candidate_sites(a, b, f.b.approx(), f.b.bounds(), {std::max(w_low, 0.0) * dx, std::max(w_low, 0.0) * dy},
-                        {w * dx, w * dy}, e, [&](const contact_site& site) {
-                            if constexpr (exact) {
-                                try {
-                                    time_fraction<certified> none[2];
-                                    if (fast->times(site, false, none) == 0) return;
-                                } catch (const uncertain_sign&) {}
-                            }
-                            time_fraction<NT> out[2];
-                            const int k = f.times(site, false, out);
-                            for (int i = 0; i < k; ++i)
-                                if ((w_low < 0 || beyond(out[i], w_low)) && !beyond(out[i], w))
-                                    events.push_back({std::move(out[i]), site});
-                        });
-        std::sort(events.begin(), events.end(),
-                  [](const timed_site<NT>& l, const timed_site<NT>& r) { return compare_times(l.time, r.time) < 0; });
-    };
-    double w_low = -1, w = std::min(s_max, s_max * first_window);
-    load(w_low, w);
-    std::size_t next = 0;
-    time_fraction<NT> last{NT(0), NT(1)};
-    for (;;) {
-        // The events at `last` (some may come at 0): do they touch the witness?
-        bool stale = false;
-        for (; next < events.size() && compare_times(events[next].time, last) <= 0; ++next)
-            if (touches(witness, events[next].site, a, b)) stale = true;
-        while (next == events.size() && w < s_max) {
-            w_low = w;
-            w = std::min(s_max, 2 * w);
-            load(w_low, w);
-            next = 0;
-        }
-        if (next == events.size()) return last.num / last.den * unit_scale;  // after the last event, apart
-        const time_fraction<NT>& following = events[next].time;
-        if (stale) {
-            witness = meeting_between(f, last, following, scale, reach);
-            if (!witness) return last.num / last.den * unit_scale;
-        }
-        last = following;
-    }
+    if (by_filter != nullptr) *by_filter = false;
+    return fallback<>::run(
+        [&] {
+            const exit_found<certified> r = exit_search<certified>(a, b, t, u.dx, u.dy, scale);
+            if (by_filter != nullptr) *by_filter = true;
+            if (!r.at) return 0.0;
+            translation_frame<Exact> f(a, b, t, {tr::from_double(u.dx), tr::from_double(u.dy)});
+            time_fraction<Exact> times[2];
+            const int k = f.times(r.at->site, false, times);
+            INFLUENCE2D_ASSERT(r.at->which < k, "the exit's event is not one of its site's times");
+            return rounded(times[r.at->which]);
+        },
+        [&] {
+            const exit_found<Exact> r = exit_search<Exact>(a, b, t, u.dx, u.dy, scale);
+            return r.at ? rounded(r.time) : 0.0;
+        });
 }
 
 }  // namespace influence2d

@@ -157,9 +157,14 @@ template <class NT>
 double nearest_double(const time_fraction<NT>& t) {
     using tr = number_traits<NT>;
     const double inf = std::numeric_limits<double>::infinity();
-    double x = tr::to_double(t.num) / tr::to_double(t.den);
+    const double num = tr::to_double(t.num), den = tr::to_double(t.den);
+    double x = num / den;
     if constexpr (tr::category == number_category::floating) return x;  // its rounding is NT's
-    if (!(x >= 0 && x < inf)) {
+    // (A numerator or denominator whose double is subnormal or 0 has lost
+    // its relative precision: their quotient may be off by any factor, and
+    // the walks below by as many steps.)
+    const auto normal = [inf](double v) { return v >= std::numeric_limits<double>::min() && v < inf; };
+    if (!(x >= 0 && x < inf) || (tr::sign(t.num) != 0 && !normal(num)) || !normal(den)) {
         // The doubles nearest num and den overflowed (or underflowed): the
         // largest double x <= t by bisection on the ordered bit patterns of
         // the non-negative doubles.
