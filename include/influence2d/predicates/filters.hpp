@@ -296,10 +296,10 @@ template <class NT>
 constexpr bool places_as_finely_as_double() {
     if constexpr (is_exact_v<NT>)
         return true;
-    else if constexpr (std::numeric_limits<NT>::is_specialized)
-        return std::numeric_limits<NT>::epsilon() <= std::numeric_limits<double>::epsilon();
+    else if constexpr (std::numeric_limits<NT>::is_specialized && std::numeric_limits<NT>::radix == 2)
+        return std::numeric_limits<NT>::digits >= std::numeric_limits<double>::digits;
     else
-        return false;
+        return false;  // (a decimal type keeps posing_margin)
 }
 
 /// The margin between points placed in double by rotation_pose::apply (or
