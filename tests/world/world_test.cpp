@@ -431,7 +431,8 @@ TEST_CASE("layer_pairs: cells along long shared borders against the exact refere
     // split in two), meeting and within a distance.
     rng g(502);
     std::size_t meeting_pairs = 0;
-    for (int round = 0; round < test_effort::scaled(4); ++round) {
+    const int rounds = test_effort::scaled(4);
+    for (int round = 0; round < rounds; ++round) {
         const std::vector<polygon> layer = bordered_cells(g, 4 + round % 2, 30 + 10 * static_cast<std::size_t>(round));
         const double within = round == 1 ? 0.01 : round == 3 ? test_scenes::grid / 2 : 0;
         std::vector<test_exact::placed_shape> placed;
@@ -465,8 +466,8 @@ TEST_CASE("layer_pairs: cells along long shared borders against the exact refere
         std::sort(swapped.begin(), swapped.end());
         CHECK(show(layer_pairs<exact_rational>(second, first, within)) == show(swapped));
     }
-    // Not vacuous: most neighbours touch.
-    CHECK(meeting_pairs >= 100);
+    // Not vacuous: most neighbours touch (some 40 pairs a round).
+    CHECK(meeting_pairs >= 20 * static_cast<std::size_t>(rounds));
 }
 
 TEST_CASE("layer_pairs: a crowded layer answered by two threads, exact vertices made before they share", "[world]") {
