@@ -143,29 +143,24 @@ struct timed_site {
     int which = 0;
 };
 
-/// Where the exit search ended: the exit, in units of the direction it was
-/// given, and the event there (none when the exit is 0: the regions do not
-/// meet at q, or no event comes after it).
-template <class NT>
-struct exit_found {
-    time_fraction<NT> time;            ///< the exit
-    std::optional<timed_site<NT>> at;  ///< the event whose time it is
-};
-
 /// The exit search of exit_distance (its pseudocode) for B posed by t and
 /// translated by s (dx, dy), the direction's largest component in [1, 2);
 /// `scale` bounds the magnitudes of the polygons and of t's translation.
+/// Returns the event at the exit, whose time is the exit in units of
+/// (dx, dy); none when the exit is 0 (the regions do not meet at q, or no
+/// event comes after it).
 template <class NT>
-exit_found<NT> exit_search(const polygon& a, const polygon& b, const rotation_pose& t, double dx, double dy,
-                           double scale) {
+std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, const rotation_pose& t, double dx,
+                                          double dy, double scale) {
     using namespace sweep;
     using tr = number_traits<NT>;
     translation_frame<NT> f(a, b, t, {tr::from_double(dx), tr::from_double(dy)});
     const double reach = std::fabs(dx) + std::fabs(dy);
     const double e0 = posing_margin<NT>(scale);
-    exit_found<NT> out{{NT(0), NT(1)}, std::nullopt};
+    const time_fraction<NT> zero{NT(0), NT(1)};
+    std::optional<timed_site<NT>> exit;
     meeting witness = placed_meet(f.a, f.b, e0);
-    if (!witness) return out;
+    if (!witness) return exit;
     const double s_max = exit_reach(a.bounds(), f.b.bounds(), dx, dy, e0);
     const double e = posing_margin<NT>(scale + s_max * reach);
     const auto beyond = [](const time_fraction<NT>& s, double x) {
@@ -205,7 +200,8 @@ exit_found<NT> exit_search(const polygon& a, const polygon& b, const rotation_po
         // The other events at the exit so far (some may come at 0). (The
         // event taken as the exit is not compared with itself: a filtered
         // NT cannot tell a value from itself.)
-        for (; next < events.size() && compare_times(events[next].time, out.time) <= 0; ++next)
+        const time_fraction<NT>& last = exit ? exit->time : zero;
+        for (; next < events.size() && compare_times(events[next].time, last) <= 0; ++next)
             if (touches(witness, events[next].site, a, b)) stale = true;
         while (next == events.size() && w < s_max) {
             w_low = w;
@@ -213,15 +209,14 @@ exit_found<NT> exit_search(const polygon& a, const polygon& b, const rotation_po
             load(w_low, w);
             next = 0;
         }
-        if (next == events.size()) return out;  // after the last event, apart
+        if (next == events.size()) return exit;  // after the last event, apart
         timed_site<NT> following = events[next++];
         if (stale) {
-            witness = meeting_between(f, out.time, following.time, scale, reach);
-            if (!witness) return out;
+            witness = meeting_between(f, last, following.time, scale, reach);
+            if (!witness) return exit;
         }
         stale = touches(witness, following.site, a, b);
-        out.time = following.time;
-        out.at = std::move(following);
+        exit = std::move(following);
     }
 }
 
@@ -277,8 +272,9 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
     }
     const unit_direction u(dx, dy);
     const double scale = coordinate_scale(a) + coordinate_scale(b) + std::fabs(q.tx) + std::fabs(q.ty);
-    const exit_found<NT> r = exit_search<NT>(a, b, t, u.dx, u.dy, scale);
-    return r.time.num / r.time.den * u.factor<NT>();
+    const std::optional<timed_site<NT>> exit = exit_search<NT>(a, b, t, u.dx, u.dy, scale);
+    if (!exit) return NT(0);
+    return exit->time.num / exit->time.den * u.factor<NT>();
 }
 
 /// The exit distance of exit_distance<Exact>, rounded to the nearest double,
@@ -315,18 +311,18 @@ double filtered_exit_distance(const polygon& a, const polygon& b, const pose& q,
     if (by_filter != nullptr) *by_filter = false;
     return fallback<>::run(
         [&] {
-            const exit_found<certified> r = exit_search<certified>(a, b, t, u.dx, u.dy, scale);
+            const std::optional<timed_site<certified>> exit = exit_search<certified>(a, b, t, u.dx, u.dy, scale);
             if (by_filter != nullptr) *by_filter = true;
-            if (!r.at) return 0.0;
+            if (!exit) return 0.0;
             translation_frame<Exact> f(a, b, t, {tr::from_double(u.dx), tr::from_double(u.dy)});
             time_fraction<Exact> times[2];
-            const int k = f.times(r.at->site, false, times);
-            INFLUENCE2D_ASSERT(r.at->which < k, "the exit's event is not one of its site's times");
-            return rounded(times[r.at->which]);
+            const int k = f.times(exit->site, false, times);
+            INFLUENCE2D_ASSERT(exit->which < k, "the exit's event is not one of its site's times");
+            return rounded(times[exit->which]);
         },
         [&] {
-            const exit_found<Exact> r = exit_search<Exact>(a, b, t, u.dx, u.dy, scale);
-            return r.at ? rounded(r.time) : 0.0;
+            const std::optional<timed_site<Exact>> exit = exit_search<Exact>(a, b, t, u.dx, u.dy, scale);
+            return exit ? rounded(exit->time) : 0.0;
         });
 }
 

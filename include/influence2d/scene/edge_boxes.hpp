@@ -48,42 +48,47 @@ inline void edge_run_boxes(const polygon& shape, const std::vector<point<double>
     // vertex): every other far end is the next edge's first end, in the
     // same run.
     for (std::size_t r = 0; r < out.size(); ++r) {
-        box b;
-        for (std::size_t e = r * edge_run_length; e < std::min(n, (r + 1) * edge_run_length); ++e) b.add(v[e]);
-        b.add(v[shape.next(std::min(n, (r + 1) * edge_run_length) - 1)]);
-        out[r] = b;
+        const std::size_t end = std::min(n, (r + 1) * edge_run_length);
+        box& b = out[r];
+        for (std::size_t e = r * edge_run_length; e < end; ++e) b.add(v[e]);
+        b.add(v[shape.next(end - 1)]);
     }
     for (std::size_t k = 0; k < shape.ring_count(); ++k)
         out[(shape.ring_end(k) - 1) / edge_run_length].add(v[shape.ring_begin(k)]);
 }
 
-/// Appends to `out` each edge e in [first, end) of a polygon whose vertices
-/// (in double) are `v` whose box, its ends' box widened by `low` below and
-/// `high` above on each axis (x, then y), meets `window`.
-inline void append_edges_meeting(const polygon& shape, const std::vector<point<double>>& v, std::size_t first,
-                                 std::size_t end, const box& window, point<double> low, point<double> high,
-                                 std::vector<edge_box>& out) {
-    for (std::size_t e = first; e < end; ++e) {
-        const point<double>&a = v[e], &b = v[shape.next(e)];
-        const edge_box k{std::min(a.x, b.x) + low.x, std::max(a.x, b.x) + high.x, std::min(a.y, b.y) + low.y,
-                         std::max(a.y, b.y) + high.y, static_cast<std::uint32_t>(e)};
-        // (A NaN coordinate fails every comparison: such an edge is kept.)
-        if (!(k.max_x < window.min_x || k.min_x > window.max_x || k.max_y < window.min_y || k.min_y > window.max_y))
-            out.push_back(k);
-    }
+/// Whether the entry's box meets the box `w` (an edge_box or a box; closed
+/// boxes). A NaN bound fails every comparison: such an entry meets it.
+template <class W>
+bool meets_box(const edge_box& k, const W& w) {
+    return !(k.max_x < w.min_x || k.min_x > w.max_x || k.max_y < w.min_y || k.min_y > w.max_y);
+}
+
+/// The box of edge e of a polygon whose vertices (in double) are `v`, its
+/// ends' box widened by `low` below and `high` above on each axis (x, then
+/// y).
+inline edge_box edge_box_of(const polygon& shape, const std::vector<point<double>>& v, std::size_t e, point<double> low,
+                            point<double> high) {
+    const point<double>&a = v[e], &b = v[shape.next(e)];
+    return {std::min(a.x, b.x) + low.x, std::max(a.x, b.x) + high.x, std::min(a.y, b.y) + low.y,
+            std::max(a.y, b.y) + high.y, static_cast<std::uint32_t>(e)};
 }
 
 /// The edges of a polygon whose vertices (in double) are `v` and whose box
 /// meets `window`, each with its box grown by `grow`. With shifts, each box
 /// is that of the edge translated by every point between `from` and `to`
-/// (the union of its boxes shifted by both).
+/// (the union of its boxes shifted by both). (An edge with a NaN coordinate
+/// is kept.)
 inline void edges_meeting(const polygon& shape, const std::vector<point<double>>& v, const box& window, double grow,
                           std::vector<edge_box>& out, point<double> from = {0, 0}, point<double> to = {0, 0}) {
     out.clear();
     out.reserve(shape.size());
-    append_edges_meeting(shape, v, 0, shape.size(), window,
-                         {std::min(from.x, to.x) - grow, std::min(from.y, to.y) - grow},
-                         {std::max(from.x, to.x) + grow, std::max(from.y, to.y) + grow}, out);
+    const point<double> low{std::min(from.x, to.x) - grow, std::min(from.y, to.y) - grow},
+        high{std::max(from.x, to.x) + grow, std::max(from.y, to.y) + grow};
+    for (std::size_t e = 0; e < shape.size(); ++e) {
+        const edge_box k = edge_box_of(shape, v, e, low, high);
+        if (meets_box(k, window)) out.push_back(k);
+    }
 }
 
 /// Calls pair(i, j) for each i in [a_first, a_end) of `as` and j in
@@ -214,9 +219,7 @@ bool overlapping_run_pairs(const runs_side& a, const runs_side& b, double grow, 
             const box& k = s.runs[r];
             const edge_box g{k.min_x - grow, k.max_x + grow, k.min_y - grow, k.max_y + grow,
                              static_cast<std::uint32_t>(r)};
-            if (!(g.max_x < s.window.min_x || g.min_x > s.window.max_x || g.max_y < s.window.min_y ||
-                  g.min_y > s.window.max_y))
-                out.push_back(g);
+            if (meets_box(g, s.window)) out.push_back(g);
         }
         std::sort(out.begin(), out.end(), [](const edge_box& l, const edge_box& r) { return l.min_x < r.min_x; });
     };
@@ -233,13 +236,8 @@ bool overlapping_run_pairs(const runs_side& a, const runs_side& b, double grow, 
         std::size_t n = 0;
         const std::size_t first = r * edge_run_length, end = std::min(s.shape.size(), first + edge_run_length);
         for (std::size_t e = first; e < end; ++e) {
-            const point<double>&p = s.v[e], &q = s.v[s.shape.next(e)];
-            const edge_box k{std::min(p.x, q.x) - grow, std::max(p.x, q.x) + grow, std::min(p.y, q.y) - grow,
-                             std::max(p.y, q.y) + grow, static_cast<std::uint32_t>(e)};
-            if (k.max_x < other.min_x || k.min_x > other.max_x || k.max_y < other.min_y || k.min_y > other.max_y ||
-                k.max_x < s.window.min_x || k.min_x > s.window.max_x || k.max_y < s.window.min_y ||
-                k.min_y > s.window.max_y)
-                continue;
+            const edge_box k = edge_box_of(s.shape, s.v, e, {-grow, -grow}, {grow, grow});
+            if (!meets_box(k, other) || !meets_box(k, s.window)) continue;
             // Insertion by min_x: at most edge_run_length entries.
             std::size_t at = n++;
             for (; at > 0 && out[at - 1].min_x > k.min_x; --at) out[at] = out[at - 1];
