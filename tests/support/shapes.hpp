@@ -61,4 +61,17 @@ inline polygon scaled(const polygon& p, int e) {
     return polygon(rings);
 }
 
+/// p translated by (dx, dy), built anew from its rings (their roles
+/// kept): a layer's polygon where an unturned body of it stands.
+inline polygon translated(const polygon& p, double dx, double dy) {
+    std::vector<ring_input> rings;
+    for (std::size_t r = 0; r < p.ring_count(); ++r) {
+        ring_input in{{}, p.role(r)};
+        for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
+            in.vertices.push_back({p.vertex(i).x + dx, p.vertex(i).y + dy});
+        rings.push_back(in);
+    }
+    return polygon(rings);
+}
+
 }  // namespace test_shapes

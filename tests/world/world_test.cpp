@@ -65,21 +65,6 @@ bool exact_within(const test_exact::placed_shape& a, const test_exact::placed_sh
     return false;
 }
 
-/// The polygon p translated by where's (tx, ty) (its turn ignored): a
-/// layer's polygon at its own coordinates, the same point set as the body
-/// posed by `where` when the turn is 0.
-polygon translated(const polygon& p, const pose& where) {
-    std::vector<ring_input> rings;
-    for (std::size_t r = 0; r < p.ring_count(); ++r) {
-        ring_input ring;
-        ring.role = p.role(r);
-        for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
-            ring.vertices.push_back({p.vertex(i).x + where.tx, p.vertex(i).y + where.ty});
-        rings.push_back(ring);
-    }
-    return polygon(rings);
-}
-
 /// The reference contacts: every pair of live bodies, not both fixed.
 std::vector<body_pair> reference_contacts(const std::vector<polygon>& shapes, const std::vector<body_state>& bodies,
                                           double d) {
@@ -268,6 +253,60 @@ TEST_CASE("world: threads and coherence change nothing", "[world]") {
     CHECK(c.statistics().witness_hits == 0);
 }
 
+TEST_CASE("world: thousands of bodies on two threads, the joins and candidates shared, as on one", "[world]") {
+    // Enough bodies and near pairs for the broad phase's parallel passes
+    // (world.hpp: parallel_join_bodies, parallel_near_pairs): steps where
+    // every body jumps (the joins) and steps of small moves, with witnesses.
+    rng g(410);
+    const std::vector<polygon> shapes = random_shapes(g, 5);
+    world_options serial, parallel;
+    serial.witness = parallel.witness = true;
+    parallel.threads = 2;
+    world<double> a(serial), b(parallel);
+    for (const polygon& p : shapes) {
+        a.add_shape(p);
+        b.add_shape(p);
+    }
+    const std::size_t n = 5000;
+    std::vector<pose> where(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        where[i] = random_pose(g, {0, 0}, 250);
+        const auto s = static_cast<std::uint32_t>(g.index(shapes.size()));
+        a.add_body(s, where[i], i % 11 == 0);
+        b.add_body(s, where[i], i % 11 == 0);
+    }
+    const int steps = std::max(2, test_effort::scaled(6));
+    std::size_t contacts = 0;
+    for (int step = 0; step < steps; ++step) {
+        INFO("step " << step);
+        const std::vector<body_pair> ra = a.step(), rb = b.step();
+        REQUIRE(show(ra) == show(rb));
+        REQUIRE(a.witnesses().size() == b.witnesses().size());
+        std::size_t same_witness = 0;
+        for (std::size_t k = 0; k < ra.size(); ++k)
+            same_witness += a.witnesses()[k].first.index == b.witnesses()[k].first.index &&
+                            a.witnesses()[k].second.index == b.witnesses()[k].second.index;
+        CHECK(same_witness == ra.size());
+        CHECK(a.events().size() == b.events().size());
+        contacts += ra.size();
+        const bool jump = step % 2 == 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (i % 11 == 0) continue;
+            where[i] = jump ? random_pose(g, {0, 0}, 250)
+                            : pose{where[i].tx + g.uniform(-0.3, 0.3), where[i].ty + g.uniform(-0.3, 0.3),
+                                   where[i].theta + g.uniform(-0.03, 0.03)};
+            a.move(static_cast<std::uint32_t>(i), where[i]);
+            b.move(static_cast<std::uint32_t>(i), where[i]);
+        }
+    }
+    INFO("contacts " << contacts << ", candidates " << a.statistics().candidates);
+    CHECK(contacts > 1000);
+    // Past the thresholds of the parallel passes: more bodies than 4,096 and
+    // more candidates a step (so more near pairs) than 16,384.
+    CHECK(a.statistics().candidates > 16384 * static_cast<std::size_t>(steps));
+    CHECK(b.statistics().rebuilds == a.statistics().rebuilds);
+}
+
 TEST_CASE("world: squares sharing edges and corners touch exactly", "[world]") {
     // A 6 x 6 grid of unit squares, every fourth one fixed: each touches its
     // 8 neighbours (edges and corners), none else; after a shift of the
@@ -328,7 +367,7 @@ TEST_CASE("layer_pairs: one layer and two layers against the exact reference", "
             const body_state b{g.index(shapes.size()),
                                {test_scenes::snap(origin.x + g.uniform(-30, 30)),
                                 test_scenes::snap(origin.y + g.uniform(-30, 30)), 0}};
-            (k % 2 ? first : second).push_back(translated(shapes[b.shape], b.where));
+            (k % 2 ? first : second).push_back(test_shapes::translated(shapes[b.shape], b.where.tx, b.where.ty));
             (k % 2 ? as : bs).push_back(b);
         }
         // One layer: the reference on the bodies (none fixed).
@@ -482,7 +521,7 @@ TEST_CASE("layer_pairs: a crowded layer answered by two threads, exact vertices 
     for (int k = 0; k < 60; ++k) {
         const body_state b{g.index(shapes.size()),
                            {test_scenes::snap(g.uniform(-8, 8)), test_scenes::snap(g.uniform(-8, 8)), 0}};
-        layer.push_back(translated(shapes[b.shape], b.where));
+        layer.push_back(test_shapes::translated(shapes[b.shape], b.where.tx, b.where.ty));
         bodies.push_back(b);
     }
     const std::vector<body_pair> want = reference_contacts(shapes, bodies, 0);

@@ -119,6 +119,15 @@ inline double scaled_length(double x, int k) {
 /// A pose with its translation scaled by 2^k; the angle unchanged.
 inline pose scaled_by_power_of_two(const pose& q, int k) { return {std::ldexp(q.tx, k), std::ldexp(q.ty, k), q.theta}; }
 
+/// A pose already turned into its cosine and sine with its translation
+/// scaled by 2^k; c and s unchanged, so that every point it poses is the
+/// same pose's point scaled by 2^k, rounding for rounding.
+inline rotation_pose scaled_by_power_of_two(rotation_pose t, int k) {
+    t.tx = std::ldexp(t.tx, k);
+    t.ty = std::ldexp(t.ty, k);
+    return t;
+}
+
 /// Whether x times 2^k is exact: it comes back from 2^k and 2^-k unchanged
 /// (a product that overflows, or loses bits among the subnormals, does not).
 inline bool scales_exactly(double x, int k) { return std::ldexp(std::ldexp(x, k), -k) == x; }

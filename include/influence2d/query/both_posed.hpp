@@ -12,6 +12,7 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/core/range_scaling.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/query/intersects.hpp"
 #include "influence2d/query/placed_meet.hpp"
@@ -36,8 +37,10 @@ namespace influence2d {
 /// of the inputs for values a filtered NT computed through cancellations
 /// (a translation far larger than the polygon it moves).
 ///
-/// Throws invalid_input for an empty polygon or a count of vertices that is
-/// not the polygon's.
+/// In float, double and long double, vertices far from 1 in scale are
+/// answered scaled by a power of two (core/range_scaling.hpp), `scale` with
+/// them. Throws invalid_input for an empty polygon or a count of vertices
+/// that is not the polygon's.
 template <class NT>
 bool regions_meet(const polygon& a, const std::vector<point<NT>>& a_vertices, const polygon& b,
                   const std::vector<point<NT>>& b_vertices, double scale = 0) {
@@ -45,6 +48,22 @@ bool regions_meet(const polygon& a, const std::vector<point<NT>>& a_vertices, co
     accepted_polygon<NT>(b, "second");
     if (a_vertices.size() != a.size() || b_vertices.size() != b.size())
         throw invalid_input("regions_meet: the vertices given are not as many as the polygon's");
+    if constexpr (scaled_into_range_v<NT>) {
+        double largest = std::max(largest_coordinate(a), largest_coordinate(b));
+        for (const std::vector<point<NT>>* vs : {&a_vertices, &b_vertices})
+            for (const point<NT>& v : *vs)
+                largest = std::max({largest, static_cast<double>(std::fabs(v.x)), static_cast<double>(std::fabs(v.y))});
+        if (const int k = range_shift<NT>(largest)) {
+            const auto scaled = [k](const std::vector<point<NT>>& vs) {
+                std::vector<point<NT>> out;
+                out.reserve(vs.size());
+                for (const point<NT>& v : vs) out.push_back({std::ldexp(v.x, k), std::ldexp(v.y, k)});
+                return out;
+            };
+            return regions_meet<NT>(a.scaled_by_power_of_two(k), scaled(a_vertices), b.scaled_by_power_of_two(k),
+                                    scaled(b_vertices), scaled_length(scale, k));
+        }
+    }
     placed_polygon<NT> pa(a, a_vertices), pb(b, b_vertices);
     if (!(scale > 0)) {
         for (const box& w : {pa.bounds(), pb.bounds()})
@@ -58,9 +77,13 @@ bool regions_meet(const polygon& a, const std::vector<point<NT>>& a_vertices, co
 /// by its own pose (c, s and translation as for intersects), so that the
 /// answer in an exact NT is the exact answer for that pair of poses: no
 /// relative pose is formed and rounded. Exact when NT is; a filtered NT may
-/// throw uncertain_sign. Throws invalid_input for an empty polygon or a pose
+/// throw uncertain_sign. In float, double and long double a query far from 1
+/// in scale is answered on its input scaled into the type's range
+/// (core/range_scaling.hpp). Throws invalid_input for an empty polygon or a pose
 /// component that is NaN or infinite.
 ///
+///   float, double, long double far from 1 in scale: both polygons and
+///   translations scaled by a power of two first (the same answer)
 ///   pose A's and B's vertices in double; e <- their rounding margin
 ///   the one-shot query's steps on both (boxes, one located vertex per
 ///   ring, the edge pairs whose boxes overlap), each vertex posed in NT
@@ -70,6 +93,9 @@ bool intersects(const polygon& a, const pose& pose_a, const polygon& b, const po
     accepted_polygon<NT>(a, "first");
     accepted_polygon<NT>(b, "second");
     const rotation_pose ta(pose_a), tb(pose_b);
+    if (const int k = range_shift<NT>(a, b, pose_a, pose_b))
+        return intersects<NT>(a.scaled_by_power_of_two(k), scaled_by_power_of_two(pose_a, k),
+                              b.scaled_by_power_of_two(k), scaled_by_power_of_two(pose_b, k));
     placed_polygon<NT> pa(a, ta), pb(b, tb);
     const double e = placing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(pose_a.tx) +
                                         std::fabs(pose_a.ty) + std::fabs(pose_b.tx) + std::fabs(pose_b.ty));

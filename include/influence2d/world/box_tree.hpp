@@ -15,12 +15,6 @@
 
 namespace influence2d {
 
-/// Whether two closed boxes share a point (false when either is empty or
-/// has a NaN side).
-inline bool boxes_overlap(const box& l, const box& r) {
-    return l.min_x <= r.max_x && r.min_x <= l.max_x && l.min_y <= r.max_y && r.min_y <= l.max_y;
-}
-
 /// A set of boxes, each with an id, answering which of them meet a query box.
 ///
 ///   rebuild(boxes):
@@ -118,6 +112,93 @@ public:
     void join(const box_tree& other, Found&& found) const {
         if (!levels_.empty() && !other.levels_.empty())
             join_nodes(*this, levels_.size() - 1, 0, other, other.levels_.size() - 1, 0, found);
+    }
+
+    /// A part of a join: the pairs of boxes under one node of this tree
+    /// (`within`), or the pairs of a box under a node of this tree and a box
+    /// under a node of the other (a node of this tree again for a self
+    /// join). Nodes by level (0: the leaves) and index.
+    struct join_part {
+        std::size_t la = 0;   ///< this tree's node: level
+        std::size_t na = 0;   ///< this tree's node: index
+        std::size_t lb = 0;   ///< the other node: level (unless within)
+        std::size_t nb = 0;   ///< the other node: index (unless within)
+        bool within = false;  ///< the pairs under (la, na) alone
+    };
+
+    /// self_join cut into parts that find each of its pairs once, for
+    /// threads to share: the pairs under a node are those under each child
+    /// and those between two children whose boxes meet; parts of the first
+    /// kind are cut so, a level at a time, until there are at least `wanted`
+    /// parts or they reach the leaves.
+    std::vector<join_part> self_join_parts(std::size_t wanted) const {
+        std::vector<join_part> parts;
+        if (levels_.empty()) return parts;
+        parts.push_back({levels_.size() - 1, 0, 0, 0, true});
+        for (std::size_t level = levels_.size() - 1; level > 0 && parts.size() < wanted; --level) {
+            std::vector<join_part> next;
+            for (const join_part& p : parts) {
+                if (!p.within) {
+                    next.push_back(p);
+                    continue;
+                }
+                const auto [first, last] = children(level, p.na);
+                for (std::size_t c = first; c < last; ++c) {
+                    next.push_back({level - 1, c, 0, 0, true});
+                    for (std::size_t d = c + 1; d < last; ++d)
+                        if (boxes_overlap(levels_[level - 1][c], levels_[level - 1][d]))
+                            next.push_back({level - 1, c, level - 1, d, false});
+                }
+            }
+            parts = std::move(next);
+        }
+        return parts;
+    }
+
+    /// join(other) cut into parts that find each of its pairs once: pairs
+    /// of nodes whose boxes meet, the node of the higher level replaced by
+    /// its children, a level at a time, until there are at least `wanted`
+    /// parts or both nodes are leaves.
+    std::vector<join_part> join_parts(const box_tree& other, std::size_t wanted) const {
+        std::vector<join_part> parts;
+        if (levels_.empty() || other.levels_.empty()) return parts;
+        const std::size_t la = levels_.size() - 1, lb = other.levels_.size() - 1;
+        if (boxes_overlap(levels_[la][0], other.levels_[lb][0])) parts.push_back({la, 0, lb, 0, false});
+        bool split = true;
+        while (split && !parts.empty() && parts.size() < wanted) {
+            split = false;
+            std::vector<join_part> next;
+            for (const join_part& p : parts) {
+                if (p.la == 0 && p.lb == 0) {
+                    next.push_back(p);
+                    continue;
+                }
+                split = true;
+                if (p.la >= p.lb) {
+                    const auto [first, last] = children(p.la, p.na);
+                    for (std::size_t c = first; c < last; ++c)
+                        if (boxes_overlap(levels_[p.la - 1][c], other.levels_[p.lb][p.nb]))
+                            next.push_back({p.la - 1, c, p.lb, p.nb, false});
+                } else {
+                    const auto [first, last] = other.children(p.lb, p.nb);
+                    for (std::size_t c = first; c < last; ++c)
+                        if (boxes_overlap(levels_[p.la][p.na], other.levels_[p.lb - 1][c]))
+                            next.push_back({p.la, p.na, p.lb - 1, c, false});
+                }
+            }
+            parts = std::move(next);
+        }
+        return parts;
+    }
+
+    /// Calls found(i, j) for every pair of part p, by ids: p from
+    /// self_join_parts (other: this tree) or from join_parts(other).
+    template <class Found>
+    void join_part_pairs(const join_part& p, const box_tree& other, Found&& found) const {
+        if (p.within)
+            join_within(p.la, p.na, found);
+        else
+            join_nodes(*this, p.la, p.na, other, p.lb, p.nb, found);
     }
 
     /// The number of boxes.

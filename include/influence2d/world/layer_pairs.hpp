@@ -15,6 +15,7 @@
 #include "influence2d/core/invalid_input.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/core/range_scaling.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/query/batch.hpp"
@@ -108,6 +109,30 @@ inline double checked_distance(double within) {
     return within;
 }
 
+/// The shift of a join in NT (range_shift of the largest coordinate of the
+/// layers' polygons).
+template <class NT>
+int layers_shift(const std::vector<polygon>& first, const std::vector<polygon>& second) {
+    if constexpr (!scaled_into_range_v<NT>) {
+        (void)first;
+        (void)second;
+        return 0;
+    } else {
+        double largest = 0;
+        for (const std::vector<polygon>* layer : {&first, &second})
+            for (const polygon& p : *layer) largest = std::max(largest, largest_coordinate(p));
+        return range_shift<NT>(largest);
+    }
+}
+
+/// Each polygon of the layer scaled by 2^k.
+inline std::vector<polygon> scaled_layer(const std::vector<polygon>& layer, int k) {
+    std::vector<polygon> out;
+    out.reserve(layer.size());
+    for (const polygon& p : layer) out.push_back(p.scaled_by_power_of_two(k));
+    return out;
+}
+
 }  // namespace layer_pairs_detail
 
 /// Every pair (i, j), i < j, of the layer's polygons whose closed regions
@@ -115,6 +140,9 @@ inline double checked_distance(double within) {
 /// Exact when NT is, or with Exact not void (certified_layer_pairs in
 /// exact/certified_world.hpp): the answers of intersects on each pair.
 ///
+///   float, double, long double far from 1 in scale: every polygon and the
+///   distance scaled by a power of two first (core/range_scaling.hpp; the
+///   same answer)
 ///   boxes <- each polygon's box, grown by within / 2 (and the filters'
 ///            margin); a box tree over them (box_tree)
 ///   candidates <- the pairs whose boxes meet (the tree joined with itself,
@@ -129,6 +157,8 @@ inline double checked_distance(double within) {
 template <class NT, class Exact = void>
 std::vector<body_pair> layer_pairs(const std::vector<polygon>& layer, double within = 0, unsigned threads = 1) {
     within = layer_pairs_detail::checked_distance(within);
+    if (const int k = layer_pairs_detail::layers_shift<NT>(layer, layer))
+        return layer_pairs<NT, Exact>(layer_pairs_detail::scaled_layer(layer, k), scaled_length(within, k), threads);
     std::vector<box> boxes;
     std::vector<std::uint32_t> ids;
     layer_pairs_detail::boxes_of<NT>(layer, "first", within, boxes, ids);
@@ -147,6 +177,9 @@ template <class NT, class Exact = void>
 std::vector<body_pair> layer_pairs(const std::vector<polygon>& first, const std::vector<polygon>& second,
                                    double within = 0, unsigned threads = 1) {
     within = layer_pairs_detail::checked_distance(within);
+    if (const int k = layer_pairs_detail::layers_shift<NT>(first, second))
+        return layer_pairs<NT, Exact>(layer_pairs_detail::scaled_layer(first, k),
+                                      layer_pairs_detail::scaled_layer(second, k), scaled_length(within, k), threads);
     std::vector<box> a_boxes, b_boxes;
     std::vector<std::uint32_t> a_ids, b_ids;
     layer_pairs_detail::boxes_of<NT>(first, "first", within, a_boxes, a_ids);

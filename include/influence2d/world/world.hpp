@@ -9,14 +9,17 @@
 #include <cstdint>
 #include <iterator>
 #include <limits>
+#include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "influence2d/core/box.hpp"
 #include "influence2d/core/invalid_input.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/core/range_scaling.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/query/batch.hpp"
@@ -89,7 +92,8 @@ struct world_statistics {
 /// pair whose signs NT cannot settle is answered again in Exact.
 ///
 ///   step():
-///     each body moved since the last step: its box, from the four corners
+///     each body moved since the last step (in parallel blocks when many):
+///       its box, from the four corners
 ///       of its polygon's box posed in double (the posed polygon lies in
 ///       their parallelogram), grown by the posing margin and within / 2.
 ///       A box that left the body's enlarged box (the box the trees hold:
@@ -104,11 +108,16 @@ struct world_statistics {
 ///     near pairs (enlarged boxes meet, not both fixed), kept from step to
 ///       step: when bodies escaped, theirs found again: the free bodies'
 ///       tree joined with itself and with the fixed bodies' when a quarter
-///       of the bodies escaped (box_tree::self_join, join), else a query of
-///       the trees for each (free bodies; fixed ones too for a free body)
-///     candidates <- the near pairs with a moved body whose boxes meet. The
+///       of the bodies escaped (box_tree::self_join, join; in parts shared
+///       among threads for many bodies), else a query of the trees for each
+///       (free bodies; fixed ones too for a free body)
+///     candidates <- the near pairs with a moved body whose boxes meet (in
+///       parallel blocks for many near pairs). The
 ///       contacts of the last step whose bodies both stayed keep their
-///       answer
+///       answer. In float, double and long double a pair whose coordinates
+///       lie far from 1 in scale is answered on its two bodies scaled by a
+///       power of two (core/range_scaling.hpp; the same answer), each
+///       placed for that pair alone
 ///     the candidates' bodies placed at their poses (vertices posed in
 ///       double, and in NT for another type), once each, in buffers kept
 ///       from step to step
@@ -194,9 +203,9 @@ public:
         stats_.moved += moved_.size();
         place_moved();
         update_near();
-        std::vector<record> tested = candidates();
-        narrow(tested);
-        gather(tested);
+        candidates();
+        narrow(tested_);
+        gather();
         return contacts_;
     }
 
@@ -240,6 +249,7 @@ private:
         bool by_witness = false;   // answered by the last step's witness
         bool persisting = false;   // in contact at the last step, neither body jumped
         bool no_crossing = false;  // shown is a located vertex sought after the edges: none met
+        int shift = 0;             // the pair answered scaled by 2^shift (range_shift), 0: as it stands
     };
 
     body& live(body_id i) {
@@ -310,27 +320,15 @@ private:
     // rebuild stay below a quarter of its boxes, rebuilt otherwise and for
     // an added body.
     void place_moved() {
-        for (body_id i : moved_) {
-            body& b = bodies_[i];
-            if (!b.alive) {
-                escape(i);
-                continue;
-            }
-            const point<double> was = b.bounds.centre();
-            b.scale = shapes_[b.shape]->scale + std::fabs(b.pose.tx) + std::fabs(b.pose.ty);
-            b.bounds = box_of(b);
-            b.placed_now = false;
-            b.all_made = false;
-            b.jumped = false;
-            if (!b.enlarged.contains(b.bounds)) {
-                const point<double> now = b.bounds.centre();
-                const point<double> moved =
-                    b.enlarged.empty() ? point<double>{0, 0} : point<double>{now.x - was.x, now.y - was.y};
-                b.jumped = jumped(b.bounds, moved);
-                b.enlarged = b.jumped ? b.bounds : enlarged_box(b.bounds, moved);
-                escape(i);
-            }
-        }
+        // Each moved body's box, in parallel blocks when many (each body's
+        // own fields alone written); the escaped ones then listed in the
+        // order of moved_.
+        const unsigned threads = moved_.size() < parallel_boxes ? 1u : batch_threads(options_.threads);
+        run_in_blocks(moved_.size(), threads, [&](std::size_t first, std::size_t last) {
+            for (std::size_t k = first; k < last; ++k) rebox(bodies_[moved_[k]]);
+        });
+        for (body_id i : moved_)
+            if (bodies_[i].escaped) escaped_.push_back(i);
         stats_.escaped += escaped_.size();
         for (const bool fixed : {true, false}) {
             box_tree& tree = fixed ? fixed_tree_ : free_tree_;
@@ -360,9 +358,27 @@ private:
             refits = 0;
         }
     }
-    void escape(body_id i) {
-        bodies_[i].escaped = true;
-        escaped_.push_back(i);
+    // Body b's box at its present pose, and whether it escaped (b.escaped):
+    // it left its enlarged box, which is made anew, or it was removed.
+    void rebox(body& b) const {
+        if (!b.alive) {
+            b.escaped = true;
+            return;
+        }
+        const point<double> was = b.bounds.centre();
+        b.scale = shapes_[b.shape]->scale + std::fabs(b.pose.tx) + std::fabs(b.pose.ty);
+        b.bounds = box_of(b);
+        b.placed_now = false;
+        b.all_made = false;
+        b.jumped = false;
+        if (!b.enlarged.contains(b.bounds)) {
+            const point<double> now = b.bounds.centre();
+            const point<double> moved =
+                b.enlarged.empty() ? point<double>{0, 0} : point<double>{now.x - was.x, now.y - was.y};
+            b.jumped = jumped(b.bounds, moved);
+            b.enlarged = b.jumped ? b.bounds : enlarged_box(b.bounds, moved);
+            b.escaped = true;
+        }
     }
 
     // Sorts pairs of ids below n in O(n + pairs): a stable counting sort by
@@ -394,7 +410,28 @@ private:
             if (i != j) found.push_back({std::min(i, j), std::max(i, j)});
         };
         const bool most = escaped_.size() * 4 >= free_tree_.size() + fixed_tree_.size();
-        if (most) {
+        const unsigned threads = bodies_.size() < parallel_join_bodies ? 1u : batch_threads(options_.threads);
+        if (most && threads > 1) {
+            // The joins cut into parts (box_tree::self_join_parts,
+            // join_parts), each part's pairs gathered apart, then in part
+            // order: the pairs of the serial joins, sorted below.
+            std::vector<box_tree::join_part> parts = free_tree_.self_join_parts(32 * threads);
+            const std::size_t own = parts.size();
+            for (const box_tree::join_part& p : free_tree_.join_parts(fixed_tree_, 32 * threads)) parts.push_back(p);
+            std::vector<std::vector<body_pair>> part_pairs(parts.size());
+            run_in_chunks(parts.size(), threads, 1, [&](std::size_t first, std::size_t last) {
+                for (std::size_t k = first; k < last; ++k)
+                    free_tree_.join_part_pairs(parts[k], k < own ? free_tree_ : fixed_tree_,
+                                               [&](std::uint32_t i, std::uint32_t j) {
+                                                   if (i != j)
+                                                       part_pairs[k].push_back({std::min(i, j), std::max(i, j)});
+                                               });
+            });
+            std::size_t total = 0;
+            for (const std::vector<body_pair>& v : part_pairs) total += v.size();
+            found.reserve(total);
+            for (const std::vector<body_pair>& v : part_pairs) found.insert(found.end(), v.begin(), v.end());
+        } else if (most) {
             free_tree_.self_join(add);
             free_tree_.join(fixed_tree_, add);
         } else {
@@ -424,24 +461,67 @@ private:
         escaped_.clear();
     }
 
-    // Step 2b: the pairs to test: the near pairs with a moved body whose
-    // boxes meet, sorted, each with its last witness; the contacts whose
-    // bodies both stayed are carried into kept_. (Every contact of the last
-    // step is a near pair: its boxes met, so did its enlarged boxes.)
-    std::vector<record> candidates() {
-        std::vector<record> out;
+    // Step 2b: the pairs to test (tested_): the near pairs with a moved body
+    // whose boxes meet, sorted, each with its last witness; the contacts
+    // whose bodies both stayed are carried into kept_. (Every contact of the
+    // last step is a near pair: its boxes met, so did its enlarged boxes.)
+    // Many near pairs are sought in parallel blocks.
+    void candidates() {
+        tested_.clear();
         kept_.clear();
-        std::size_t k = 0;
-        for (const body_pair& p : near_) {
+        const unsigned threads = near_.size() < parallel_near_pairs ? 1u : batch_threads(options_.threads);
+        bool shifted = false;
+        if (threads == 1) {
+            shifted = candidates_in(0, near_.size(), tested_, kept_);
+        } else {
+            // Blocks of the near pairs, each block's candidates apart, then
+            // in block order: the serial pass's.
+            const std::size_t blocks = 4 * std::size_t{threads};
+            std::vector<std::vector<record>> tested(blocks), kept(blocks);
+            std::vector<char> shifted_in(blocks, 0);
+            run_in_chunks(blocks, threads, 1, [&](std::size_t first, std::size_t last) {
+                for (std::size_t k = first; k < last; ++k)
+                    shifted_in[k] =
+                        candidates_in(near_.size() * k / blocks, near_.size() * (k + 1) / blocks, tested[k], kept[k]);
+            });
+            for (std::size_t k = 0; k < blocks; ++k) {
+                tested_.insert(tested_.end(), tested[k].begin(), tested[k].end());
+                kept_.insert(kept_.end(), kept[k].begin(), kept[k].end());
+                shifted = shifted || shifted_in[k];
+            }
+        }
+        if (shifted)
+            for (const record& r : tested_)
+                if (r.shift != 0) {
+                    scaled_shape(bodies_[r.bodies.first].shape, r.shift);
+                    scaled_shape(bodies_[r.bodies.second].shape, r.shift);
+                }
+        stats_.candidates += tested_.size();
+        stats_.carried += kept_.size();
+    }
+
+    // The candidates among near_[first, last) appended to `out`, the carried
+    // contacts to `kept`; whether a candidate is to be scaled (its scaled
+    // shapes are made afterwards, serially).
+    bool candidates_in(std::size_t first, std::size_t last, std::vector<record>& out, std::vector<record>& kept) const {
+        bool shifted = false;
+        if (first == last) return shifted;
+        std::size_t k = static_cast<std::size_t>(
+            std::lower_bound(last_.begin(), last_.end(), near_[first],
+                             [](const record& r, const body_pair& p) { return r.bodies < p; }) -
+            last_.begin());
+        for (std::size_t n = first; n < last; ++n) {
+            const body_pair& p = near_[n];
             while (k < last_.size() && last_[k].bodies < p) ++k;
             const bool had = k < last_.size() && last_[k].bodies == p;
             const body &a = bodies_[p.first], &b = bodies_[p.second];
             if (!a.moved && !b.moved) {
-                if (had) kept_.push_back(last_[k]);
+                if (had) kept.push_back(last_[k]);
                 continue;
             }
             if (!boxes_overlap(a.bounds, b.bounds)) continue;
-            record r{p, meeting{}, false, false, false};
+            record r{p, meeting{}, false, false, false, pair_shift(a, b)};
+            shifted = shifted || r.shift != 0;
             if (had && options_.coherence) {
                 r.shown = last_[k].shown;
                 r.persisting = !a.jumped && !b.jumped;
@@ -449,9 +529,7 @@ private:
             }
             out.push_back(r);
         }
-        stats_.candidates += out.size();
-        stats_.carried += kept_.size();
-        return out;
+        return shifted;
     }
 
     // The least work shared among threads. A parallel call costs about
@@ -463,6 +541,13 @@ private:
     // 32, two threads were slower than one on more of them; on the falling
     // scene they still are, docs/world.md "Measured").
     static constexpr std::size_t parallel_placings = 512, parallel_witness_tests = 2048, parallel_pair_tests = 128;
+    // Bodies from which the joins of a step where most bodies escaped are
+    // shared among threads, and near pairs from which the candidates are
+    // sought in parallel blocks: both are a few nanoseconds a body or pair.
+    static constexpr std::size_t parallel_join_bodies = 4096, parallel_near_pairs = 16384;
+    // Moved bodies from which their boxes are made in parallel blocks (four
+    // corners posed, some 50 ns a body).
+    static constexpr std::size_t parallel_boxes = 4096;
 
     // Body i's polygon and pose, without its placing (pass 1).
     body_view<NT> posed(body_id i) const {
@@ -473,6 +558,48 @@ private:
     body_view<NT> view(body_id i) {
         body& b = bodies_[i];
         return {&shapes_[b.shape]->shape, b.pose, b.scale, b.placed.get()};
+    }
+
+    // The shift of a pair of bodies in NT: range_shift of the sum of their
+    // scales (which bounds every coordinate either one's placing computes).
+    static int pair_shift(const body& a, const body& b) {
+        if constexpr (!scaled_into_range_v<NT>) {
+            (void)a;
+            (void)b;
+            return 0;
+        } else {
+            return range_shift<NT>(a.scale + b.scale);
+        }
+    }
+
+    // Shape s scaled by 2^k, made once (serially: the candidates' pass) and
+    // kept for the pairs that ask for it again.
+    const polygon& scaled_shape(shape_id s, int k) {
+        std::unique_ptr<polygon>& p = scaled_shapes_[{s, k}];
+        if (!p) p = std::make_unique<polygon>(shapes_[s]->shape.scaled_by_power_of_two(k));
+        return *p;
+    }
+
+    // Body i scaled by 2^k (its shape from scaled_shapes_, its translation
+    // and scale), with `placed` as its placing, or none (pass 1).
+    body_view<NT> scaled_view(body_id i, int k, placed_polygon<NT>* placed) const {
+        const body& b = bodies_[i];
+        return {scaled_shapes_.at({b.shape, k}).get(), scaled_by_power_of_two(b.pose, k), std::ldexp(b.scale, k),
+                placed};
+    }
+
+    // Whether a pair scaled by 2^shift shows its bodies within d (d scaled
+    // with it), `last` tried first: both bodies placed at their scaled poses
+    // for this pair alone, with run boxes as the world's placings (the same
+    // search, the same witness).
+    meeting scaled_within(const record& r, const meeting& last, bool* by_witness, witness_preference prefer) const {
+        const body_view<NT> a = scaled_view(r.bodies.first, r.shift, nullptr),
+                            b = scaled_view(r.bodies.second, r.shift, nullptr);
+        placed_polygon<NT> pa(*a.shape, a.pose), pb(*b.shape, b.pose);
+        pa.make_run_bounds();
+        pb.make_run_bounds();
+        return bodies_within<NT, Exact>(last, {a.shape, a.pose, a.scale, &pa}, {b.shape, b.pose, b.scale, &pb},
+                                        scaled_length(options_.within, r.shift), by_witness, prefer);
     }
 
     // The bodies of the candidates `which` placed at their poses, each
@@ -487,7 +614,8 @@ private:
             bool repose;  // not placed at the present pose yet
         };
         std::vector<placing> asked;
-        for (std::size_t k : which)
+        for (std::size_t k : which) {
+            if (tested[k].shift != 0) continue;  // placed scaled, for its pair alone
             for (body_id i : {tested[k].bodies.first, tested[k].bodies.second}) {
                 body& b = bodies_[i];
                 const bool repose = !b.placed_now, make_all = shared && !b.all_made;
@@ -496,6 +624,7 @@ private:
                 b.all_made = b.all_made || make_all;
                 asked.push_back({i, repose});
             }
+        }
         const unsigned threads = asked.size() < parallel_placings ? 1u : options_.threads;
         run_in_chunks(asked.size(), threads, 64, [&](std::size_t first, std::size_t last) {
             for (std::size_t k = first; k < last; ++k) {
@@ -529,8 +658,12 @@ private:
             for (std::size_t k = first; k < last; ++k) {
                 record& r = tested[k];
                 if (r.shown.how != meeting::kind::edges) continue;
-                r.by_witness = edge_witness_holds<NT, Exact>(r.shown, posed(r.bodies.first), posed(r.bodies.second),
-                                                             options_.within);
+                r.by_witness =
+                    r.shift == 0 ? edge_witness_holds<NT, Exact>(r.shown, posed(r.bodies.first), posed(r.bodies.second),
+                                                                 options_.within)
+                                 : edge_witness_holds<NT, Exact>(r.shown, scaled_view(r.bodies.first, r.shift, nullptr),
+                                                                 scaled_view(r.bodies.second, r.shift, nullptr),
+                                                                 scaled_length(options_.within, r.shift));
             }
         });
         std::vector<std::size_t> left;
@@ -544,8 +677,10 @@ private:
                 const meeting contained = r.no_crossing ? r.shown : meeting{};
                 const witness_preference prefer =
                     r.persisting ? witness_preference::edges : witness_preference::cheapest;
-                r.shown = bodies_within<NT, Exact>(contained, view(r.bodies.first), view(r.bodies.second),
-                                                   options_.within, &r.by_witness, prefer);
+                r.shown = r.shift == 0
+                              ? bodies_within<NT, Exact>(contained, view(r.bodies.first), view(r.bodies.second),
+                                                         options_.within, &r.by_witness, prefer)
+                              : scaled_within(r, contained, &r.by_witness, prefer);
                 const bool located = r.shown && r.shown.how != meeting::kind::edges;
                 r.no_crossing = located && (r.by_witness || prefer == witness_preference::edges);
             }
@@ -555,22 +690,24 @@ private:
 
     // Step 4: this step's pairs (carried and tested), its contacts and
     // events; the moved marks cleared.
-    void gather(const std::vector<record>& tested) {
-        std::vector<record> all;
-        all.reserve(kept_.size() + tested.size());
-        std::merge(kept_.begin(), kept_.end(), tested.begin(), tested.end(), std::back_inserter(all),
-                   [](const record& l, const record& r) { return l.bodies < r.bodies; });
+    void gather() {
         last_.clear();
-        std::vector<body_pair> now;
+        std::vector<body_pair> now = std::move(spare_contacts_);  // (its capacity kept from step to step)
+        now.clear();
         witnesses_.clear();
-        for (const record& r : all) {
-            if (!r.shown) continue;
+        const auto take = [&](const record& r) {
+            if (!r.shown) return;
             last_.push_back(r);
             now.push_back(r.bodies);
             if (options_.witness)
                 witnesses_.push_back(witness_of(r.shown, shapes_[bodies_[r.bodies.first].shape]->shape,
                                                 shapes_[bodies_[r.bodies.second].shape]->shape));
-        }
+        };
+        // The carried and the tested pairs merged by pair (both sorted).
+        std::size_t c = 0, t = 0;
+        while (c < kept_.size() || t < tested_.size())
+            take(t == tested_.size() || (c < kept_.size() && kept_[c].bodies < tested_[t].bodies) ? kept_[c++]
+                                                                                                  : tested_[t++]);
         events_.clear();
         std::size_t i = 0, j = 0;
         while (i < contacts_.size() || j < now.size()) {
@@ -583,6 +720,7 @@ private:
                 ++j;
             }
         }
+        spare_contacts_ = std::move(contacts_);
         contacts_ = std::move(now);
         stats_.contacts += contacts_.size();
         for (body_id i2 : moved_) bodies_[i2].moved = false;
@@ -597,9 +735,12 @@ private:
     std::vector<body_pair> near_;                     // enlarged boxes meet, not both fixed; sorted
     std::size_t fixed_refits_ = 0, free_refits_ = 0;  // since the tree's last rebuild
     box_tree fixed_tree_, free_tree_;
-    std::vector<record> last_;  // the last step's pairs within the distance, sorted
-    std::vector<record> kept_;  // this step's carried pairs
+    std::map<std::pair<shape_id, int>, std::unique_ptr<polygon>> scaled_shapes_;  // scaled_shape's copies
+    std::vector<record> last_;    // the last step's pairs within the distance, sorted
+    std::vector<record> kept_;    // this step's carried pairs
+    std::vector<record> tested_;  // this step's candidates (kept for their capacity)
     std::vector<body_pair> contacts_;
+    std::vector<body_pair> spare_contacts_;  // the contacts of the step before last, for their capacity
     std::vector<contact_witness> witnesses_;
     std::vector<contact_event> events_;
     world_statistics stats_;

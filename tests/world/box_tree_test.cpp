@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: BSL-1.0
+// The box tree's joins (world/box_tree.hpp) against every pair of boxes
+// tested directly: self_join and join find each meeting pair once, and so do
+// their parts (self_join_parts, join_parts) however finely they are cut.
+// Random boxes of mixed sizes, points, empty boxes and repeated boxes.
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "influence2d/world/box_tree.hpp"
+#include "support/effort.hpp"
+#include "support/random.hpp"
+
+using namespace influence2d;
+
+namespace {
+
+using id_pair = std::pair<std::uint32_t, std::uint32_t>;
+
+std::vector<box> random_boxes(test_random::rng& g, std::size_t n) {
+    std::vector<box> out;
+    for (std::size_t k = 0; k < n; ++k) {
+        if (g.chance(0.03)) {
+            out.push_back(box{});  // empty: meets nothing
+            continue;
+        }
+        if (k > 0 && g.chance(0.05)) {
+            out.push_back(out[g.index(k)]);  // the same box again
+            continue;
+        }
+        const double x = g.uniform(-100, 100), y = g.uniform(-100, 100);
+        const double w = g.chance(0.1) ? 0 : g.chance(0.05) ? g.uniform(0, 80) : g.uniform(0, 6);
+        const double h = g.chance(0.1) ? 0 : g.uniform(0, 6);
+        out.push_back(box{x, y, x + w, y + h});
+    }
+    return out;
+}
+
+std::vector<std::uint32_t> ids_of(std::size_t n, std::uint32_t offset) {
+    std::vector<std::uint32_t> ids(n);
+    for (std::size_t k = 0; k < n; ++k) ids[k] = static_cast<std::uint32_t>(k) * 3 + offset;
+    return ids;
+}
+
+id_pair ordered(std::uint32_t i, std::uint32_t j) { return {std::min(i, j), std::max(i, j)}; }
+
+}  // namespace
+
+TEST_CASE("box_tree: joins and their parts find each meeting pair once", "[box_tree]") {
+    const int rounds = test_effort::scaled(12);
+    std::size_t self_pairs = 0, cross_pairs = 0;
+    for (int round = 0; round < rounds; ++round) {
+        test_random::rng g(static_cast<std::uint64_t>(900 + round));
+        const std::size_t n = 1 + g.index(round < 3 ? 20 : 3000), m = 1 + g.index(round < 3 ? 20 : 500);
+        const std::vector<box> a = random_boxes(g, n), b = random_boxes(g, m);
+        const std::vector<std::uint32_t> a_ids = ids_of(n, 0), b_ids = ids_of(m, 1);
+        box_tree ta, tb;
+        ta.rebuild(a, a_ids);
+        tb.rebuild(b, b_ids);
+
+        std::vector<id_pair> want_self, want_cross;
+        for (std::size_t i = 0; i < n; ++i) {
+            for (std::size_t j = i + 1; j < n; ++j)
+                if (boxes_overlap(a[i], a[j])) want_self.push_back(ordered(a_ids[i], a_ids[j]));
+            for (std::size_t j = 0; j < m; ++j)
+                if (boxes_overlap(a[i], b[j])) want_cross.push_back({a_ids[i], b_ids[j]});
+        }
+        std::sort(want_self.begin(), want_self.end());
+        std::sort(want_cross.begin(), want_cross.end());
+        self_pairs += want_self.size();
+        cross_pairs += want_cross.size();
+
+        INFO("round " << round << ", " << n << " and " << m << " boxes");
+        std::vector<id_pair> got;
+        ta.self_join([&](std::uint32_t i, std::uint32_t j) { got.push_back(ordered(i, j)); });
+        std::sort(got.begin(), got.end());
+        CHECK(got == want_self);
+        got.clear();
+        ta.join(tb, [&](std::uint32_t i, std::uint32_t j) { got.push_back({i, j}); });
+        std::sort(got.begin(), got.end());
+        CHECK(got == want_cross);
+
+        for (const std::size_t wanted :
+             {std::size_t{1}, std::size_t{2}, std::size_t{7}, std::size_t{64}, std::size_t{100000}}) {
+            INFO("parts wanted " << wanted);
+            const std::vector<box_tree::join_part> parts = ta.self_join_parts(wanted);
+            got.clear();
+            for (const box_tree::join_part& p : parts)
+                ta.join_part_pairs(p, ta, [&](std::uint32_t i, std::uint32_t j) { got.push_back(ordered(i, j)); });
+            std::sort(got.begin(), got.end());
+            CHECK(got == want_self);
+            if (n >= 8 * wanted) CHECK(parts.size() >= wanted);
+
+            const std::vector<box_tree::join_part> cross = ta.join_parts(tb, wanted);
+            got.clear();
+            for (const box_tree::join_part& p : cross)
+                ta.join_part_pairs(p, tb, [&](std::uint32_t i, std::uint32_t j) { got.push_back({i, j}); });
+            std::sort(got.begin(), got.end());
+            CHECK(got == want_cross);
+        }
+    }
+    INFO("pairs: " << self_pairs << " within, " << cross_pairs << " across");
+    CHECK(self_pairs > 1000);
+    CHECK(cross_pairs > 100);
+}
+
+TEST_CASE("box_tree: an empty tree has no parts", "[box_tree]") {
+    box_tree empty, one;
+    one.rebuild({box{0, 0, 1, 1}}, {7});
+    CHECK(empty.self_join_parts(8).empty());
+    CHECK(empty.join_parts(one, 8).empty());
+    CHECK(one.join_parts(empty, 8).empty());
+    const std::vector<box_tree::join_part> parts = one.self_join_parts(8);
+    std::size_t found = 0;
+    for (const box_tree::join_part& p : parts)
+        one.join_part_pairs(p, one, [&](std::uint32_t, std::uint32_t) { ++found; });
+    CHECK(found == 0);
+}
