@@ -34,6 +34,7 @@ struct collide_options {
     bool witness = false;
     bool separation = false;   ///< add the separation at every pose
     bool continuous = false;   ///< a frame collides when the motion into it meets A
+    sweep_options motion;      ///< how the motions of --continuous turn
     std::string static_poses;  ///< the static polygon's poses too, one per frame (empty: A unmoved)
     unsigned threads = 0;      ///< 0: every hardware thread
     std::string out;
@@ -185,7 +186,7 @@ collide_run run_queries(const collide_options& o, const number_type& type, const
     // Continuous: frame k > 0 also collides when the motion from pose k - 1
     // meets A at some time between the poses.
     if (o.continuous) {
-        out.contact_seconds = seconds_taken([&] { out.contacts = type.contacts(in.a, in.b, in.poses); });
+        out.contact_seconds = seconds_taken([&] { out.contacts = type.contacts(in.a, in.b, in.poses, o.motion); });
         for (std::size_t k = 0; k < out.contacts.size(); ++k)
             if (out.contacts[k].contact && !r.frames[k + 1].collides) {
                 r.frames[k + 1].collides = true;
@@ -302,11 +303,13 @@ void register_collide(CLI::App& app) {
                   "(static feature : moving feature, as v<vertex> or e<edge> in input numbering, or "
                   "interior); the summary gives the least separation. Exact (to the nearest double "
                   "within one unit in the last place) in the exact, certified and interval types");
-    sub->add_flag("--continuous", o->continuous,
-                  "Treat consecutive poses as motions (translation and angle linear in time): frame k "
-                  "also collides when the polygons meet at some time between pose k - 1 and pose k "
-                  "(tunneling caught); FRAMES.csv gets the column contact_t, the earliest contact time "
-                  "in that motion. With --distance 0 only");
+    CLI::Option* continuous =
+        sub->add_flag("--continuous", o->continuous,
+                      "Treat consecutive poses as motions (translation and angle linear in time): frame k "
+                      "also collides when the polygons meet at some time between pose k - 1 and pose k "
+                      "(tunneling caught); FRAMES.csv gets the column contact_t, the earliest contact time "
+                      "in that motion. With --distance 0 only");
+    add_motion_option(sub, o->motion.model)->needs(continuous);
     sub->add_option("--static-poses", o->static_poses,
                     "Poses of the static polygon too, one per frame (the format of POSES.csv): frame k "
                     "asks A posed by its k-th pose against B posed by its own. The exact, certified and "

@@ -86,20 +86,22 @@ inline std::vector<separation_row> certified_separations(const polygon& a, const
 
 /// The first contact of each motion from poses[k] to poses[k + 1], in NT.
 template <class NT>
-std::vector<contact_row> contacts_in(const polygon& a, const polygon& b, const std::vector<pose>& poses) {
+std::vector<contact_row> contacts_in(const polygon& a, const polygon& b, const std::vector<pose>& poses,
+                                     const sweep_options& options) {
     std::vector<contact_row> rows;
     for (std::size_t k = 0; k + 1 < poses.size(); ++k) {
-        const contact_result<NT> r = first_contact<NT>(a, b, poses[k], poses[k + 1]);
+        const contact_result<NT> r = first_contact<NT>(a, b, poses[k], poses[k + 1], options);
         rows.push_back({r.contact, r.contact ? time_as_double(r.time) : 0.0, r.static_feature, r.moving_feature});
     }
     return rows;
 }
 
 /// The first contact of each motion, certified.
-inline std::vector<contact_row> certified_contacts(const polygon& a, const polygon& b, const std::vector<pose>& poses) {
+inline std::vector<contact_row> certified_contacts(const polygon& a, const polygon& b, const std::vector<pose>& poses,
+                                                   const sweep_options& options) {
     std::vector<contact_row> rows;
     for (std::size_t k = 0; k + 1 < poses.size(); ++k) {
-        const contact_result<double> r = certified_first_contact(a, b, poses[k], poses[k + 1]);
+        const contact_result<double> r = certified_first_contact(a, b, poses[k], poses[k + 1], options);
         rows.push_back({r.contact, r.contact ? r.time : 0.0, r.static_feature, r.moving_feature});
     }
     return rows;

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -26,6 +27,7 @@
 #include "influence2d/detect/result.hpp"
 #include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/exact/interval_detector.hpp"
+#include "influence2d/motion/motion.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/number/multiprecision.hpp"
 #include "influence2d/query/batch.hpp"
@@ -144,7 +146,8 @@ struct number_type {
     std::vector<separation_row> (*separations)(const polygon&, const polygon&, const std::vector<pose>&);
     /// The first contact of the motion between each two consecutive poses
     /// (`sweep`, `collide --continuous`).
-    std::vector<contact_row> (*contacts)(const polygon&, const polygon&, const std::vector<pose>&);
+    std::vector<contact_row> (*contacts)(const polygon&, const polygon&, const std::vector<pose>&,
+                                         const sweep_options&);
     /// Whether A and B, each posed in the world, meet, both posed exactly
     /// (`collide --static-poses`); nullptr for a rounded type, which runs
     /// its detector on B's pose relative to A composed in double.
@@ -212,6 +215,22 @@ inline CLI::Option* add_number_type_option(CLI::App* sub, std::string& value) {
         ->capture_default_str()
         ->check(CLI::IsMember(number_type_names()))
         ->type_name("TYPE");
+}
+
+/// The option --motion: how a motion that turns moves (docs/sweep.md):
+/// angle-linear (the default) or rational.
+inline CLI::Option* add_motion_option(CLI::App* sub, turning_model& value) {
+    const std::map<std::string, turning_model> models{{"angle-linear", turning_model::angle_linear},
+                                                      {"rational", turning_model::rational}};
+    return sub
+        ->add_option("--motion", value,
+                     "How a motion that turns moves: angle-linear (the angle linear in time; contact within "
+                     "1e-9 by conservative advancement) or rational (the tangent of half the turn linear in "
+                     "time, in pieces of at most a quarter turn; contact exact in the exact and certified types, "
+                     "see docs/sweep.md). Translations are the same in both")
+        ->transform(CLI::CheckedTransformer(models, CLI::ignore_case))
+        ->type_name("MODEL")
+        ->default_str("angle-linear");
 }
 
 }  // namespace influence2d::cli

@@ -23,6 +23,7 @@ namespace {
 struct sweep_cli_options {
     scene_options scene;
     std::string number_type = default_number_type;
+    sweep_options motion;
     std::string out;
 };
 
@@ -50,7 +51,7 @@ void run_sweep(const sweep_cli_options& o) {
                                     (in.poses.size() == 1 ? "" : "s") +
                                     ": a motion needs two (motion k goes from pose k to pose k + 1)");
     std::vector<contact_row> rows;
-    const double seconds = seconds_taken([&] { rows = type.contacts(in.a, in.b, in.poses); });
+    const double seconds = seconds_taken([&] { rows = type.contacts(in.a, in.b, in.poses, o.motion); });
     if (!o.out.empty()) write_output(o.out, contacts_csv(rows));
 
     std::size_t contacts = 0, first = 0;
@@ -66,6 +67,7 @@ void run_sweep(const sweep_cli_options& o) {
                          : std::string("none"))
             << "\n"
             << "number type:     " << o.number_type << "\n"
+            << "turning motion:  " << (o.motion.model == turning_model::rational ? "rational" : "angle-linear") << "\n"
             << "time per motion: " << fixed(seconds * 1e6 / static_cast<double>(rows.size()), 3) << " us   (total "
             << fixed(seconds * 1e3, seconds * 1e3 >= 1 ? 1 : 3) << " ms)\n";
     if (!o.out.empty()) summary << "contacts written: " << shown_name(o.out, true) << "\n";
@@ -78,12 +80,14 @@ void register_sweep(CLI::App& app) {
     CLI::App* sub =
         app.add_subcommand("sweep",
                            "First contact along motions: motion k moves the moving polygon from pose k to pose k + 1 "
-                           "(translation linear in time, angle linear in time); for each, whether the polygons meet at "
-                           "some time in [0, 1] and the earliest such time, with the features that touch first. Exact "
-                           "for translations in the exact and certified types; for motions that turn, never after the "
-                           "true first contact (contact within 1e-9, see docs/sweep.md).");
+                           "(translation linear in time; angle linear in time, or the rational model of --motion); "
+                           "for each, whether the polygons meet at some time in [0, 1] and the earliest such time, "
+                           "with the features that touch first. Exact for translations and for the rational model in "
+                           "the exact and certified types; for angle-linear motions that turn, never after the true "
+                           "first contact (contact within 1e-9, see docs/sweep.md).");
     add_scene_options(sub, o->scene);
     add_number_type_option(sub, o->number_type);
+    add_motion_option(sub, o->motion.model);
     sub->add_option("--out", o->out,
                     "Write one CSV line per motion (motion,contact,t,static_feature,moving_feature; "
                     "features as v<vertex> or e<edge> in input numbering, or interior) to this file; it "

@@ -4,7 +4,8 @@
 // --separation` (the column equals the library's certified separation,
 // written to 17 digits), `sweep` (CONTACTS.csv, the same contact in every
 // number type), `collide --static-poses` (both polygons moving: the frames
-// of the relative poses) and their refusals (exit 2, a message naming the
+// of the relative poses), `--motion rational` (turning motions exactly, the
+// library's answer) and their refusals (exit 2, a message naming the
 // place, no output file).
 
 #include <catch2/catch.hpp>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "influence2d/distance/separation.hpp"
+#include "influence2d/exact/certified_first_contact.hpp"
 #include "influence2d/exact/certified_separation.hpp"
 #include "influence2d/io/csv.hpp"
 #include "influence2d/io/wkt.hpp"
@@ -94,6 +96,45 @@ TEST_CASE("cli: sweep writes the first contact of every motion", "[cli][sweep]")
     CHECK(to_stdout.err.find("contacts:        1") != std::string::npos);
 }
 
+TEST_CASE("cli: sweep and collide --continuous --motion rational answer turning motions exactly", "[cli][sweep]") {
+    const temp_dir dir;
+    const char* bar_wkt = "POLYGON((-0.1 -2.5, 0.1 -2.5, 0.1 2.5, -0.1 2.5, -0.1 -2.5))";
+    const char* far_wall_wkt = "POLYGON((2 -5, 3 -5, 3 5, 2 5, 2 -5))";
+    const auto wall = dir.file("wall.wkt", far_wall_wkt), bar = dir.file("bar.wkt", bar_wkt);
+    const std::vector<pose> turns = {{0, 0, 0}, {0.2, 0, -1}};
+    const auto poses = dir.file("poses.csv", poses_csv(turns));
+    // The library's answer: the bar's top reaches the wall's left side
+    // while it turns by -1 radian.
+    const polygon a = read_wkt(far_wall_wkt), b = read_wkt(bar_wkt);
+    const sweep_options rational{1e-9, turning_model::rational};
+    const contact_result<double> want = certified_first_contact(a, b, turns[0], turns[1], rational);
+    REQUIRE(want.contact);
+    const std::string common =
+        "--static " + quote(wall.string()) + " --moving " + quote(bar.string()) + " --poses " + quote(poses.string());
+    for (const char* type : {"exact", "certified", "interval", "double"}) {
+        INFO(type);
+        const run_result r = run_cli(dir, "sweep " + common + " --number-type " + type + " --motion rational --out " +
+                                              quote((dir / "c.csv").string()));
+        REQUIRE(r.exit_code == 0);
+        CHECK(r.out.find("turning motion:  rational\n") != std::string::npos);
+        const std::string csv = slurp(dir / "c.csv");
+        if (std::string(type) != "double")
+            CHECK(csv == "motion,contact,t,static_feature,moving_feature\n0,1," + seventeen(want.time) + ",e3,v2\n");
+        else
+            CHECK(csv.find("\n0,1,") != std::string::npos);  // (its time rounds)
+        const run_result c =
+            run_cli(dir, "collide " + common + " --number-type " + type +
+                             " --threads 1 --continuous --motion rational --out " + quote((dir / "f.csv").string()));
+        REQUIRE(c.exit_code == 0);
+        if (std::string(type) != "double")
+            CHECK(slurp(dir / "f.csv") == "frame,collides,contact_t\n0,0,\n1,1," + seventeen(want.time) + "\n");
+    }
+    // The angle-linear model answers within its tolerance: another time.
+    const run_result linear = run_cli(dir, "sweep " + common + " --number-type exact --out -");
+    REQUIRE(linear.exit_code == 0);
+    CHECK(linear.out.find("0,1," + seventeen(want.time)) == std::string::npos);
+}
+
 TEST_CASE("cli: sweep and collide --continuous refuse what they cannot answer", "[cli][sweep][input]") {
     const temp_dir dir;
     const auto wall = dir.file("wall.wkt", wall_wkt), square = dir.file("square.wkt", square_wkt);
@@ -115,6 +156,8 @@ TEST_CASE("cli: sweep and collide --continuous refuse what they cannot answer", 
          "--continuous asks whether the polygons meet between poses"},
         {"collide " + scene + " --trajectory linear --continuous --algorithm paper", "not --algorithm paper"},
         {"collide " + scene + " --trajectory linear --separation --algorithm paper", "not --algorithm paper"},
+        {"sweep " + scene + " --poses " + quote(one.string()) + " --motion spiral", "--motion: Check spiral value"},
+        {"collide " + scene + " --trajectory linear --motion rational", "--motion requires --continuous"},
     };
     for (const refusal& r : refusals) {
         INFO(r.args);

@@ -36,6 +36,7 @@
 #include "influence2d/scene/prepared.hpp"
 
 #include "influence2d/motion/motion.hpp"
+#include "influence2d/motion/rational_turn.hpp"
 #include "influence2d/motion/translation_events.hpp"
 #include "influence2d/motion/turning.hpp"
 
@@ -62,7 +63,10 @@ namespace influence2d {
 ///
 /// Time O((n + m) log(n + m) + k) for k pairs of overlapping swept boxes.
 /// A motion that turns is answered by conservative advancement with a
-/// tolerance (docs/sweep.md, "Motions that turn"). NT needs division for
+/// tolerance (docs/sweep.md, "Motions that turn"), or, with
+/// sweep_options::model rational, in the rational model by the exact roots
+/// of its contact cubics (rational_first_contact: exact when NT is, the
+/// time rounded to the nearest double). NT needs division for
 /// the time of the result (every number type of the library but certified
 /// and interval: certified_first_contact is the filtered route). In
 /// float, double or long double, a motion whose largest coordinate lies outside
@@ -83,6 +87,10 @@ contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose&
             return first_contact<NT>(a.scaled_by_power_of_two(k), b.scaled_by_power_of_two(k),
                                      scaled_by_power_of_two(from, k), scaled_by_power_of_two(to, k), scaled);
         }
+    }
+    if (from.theta != to.theta && options.model == turning_model::rational) {
+        const contact_result<double> t = rational_first_contact<NT>(a, b, from, to);
+        return {t.contact, number_traits<NT>::from_double(t.time), t.static_feature, t.moving_feature};
     }
     if (from.theta != to.theta) return turning_first_contact<NT>(a, b, from, to, options);
     contact_result<NT> r;
@@ -110,7 +118,8 @@ contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose&
 /// time is rounded from its exact value (one site evaluated exactly). For
 /// a motion that turns: the answer of first_contact<Exact> (the same
 /// steps, the stop decided on separation<Exact>'s exact distance;
-/// docs/sweep.md). A motion whose largest coordinate lies outside double's
+/// docs/sweep.md); in the rational model rational_first_contact<Exact>,
+/// whose pairs are sifted in `certified` first. A motion whose largest coordinate lies outside double's
 /// safe window (core/range_scaling.hpp), where the filter's bounds in double
 /// lose their hold (products near the subnormals, or beyond the range), is
 /// answered on its input scaled by a power of two, the tolerance with it,
@@ -129,6 +138,8 @@ contact_result<double> filtered_first_contact(const polygon& a, const polygon& b
         return filtered_first_contact<Exact>(a.scaled_by_power_of_two(k), b.scaled_by_power_of_two(k),
                                              scaled_by_power_of_two(from, k), scaled_by_power_of_two(to, k), scaled);
     }
+    if (from.theta != to.theta && options.model == turning_model::rational)
+        return rational_first_contact<Exact>(a, b, from, to);
     if (from.theta != to.theta) return filtered_turning_first_contact<Exact>(a, b, from, to, options);
     contact_result<double> r;
     const auto met = fallback<>::run([&] { return meeting_at_start<certified>(a, b, from, m.start); },

@@ -4,6 +4,8 @@
 /// What a motion query answers and takes: a motion of B between two poses,
 /// its first contact, the options.
 
+#include <cstdint>
+
 #include "influence2d/core/feature.hpp"
 #include "influence2d/core/pose.hpp"
 
@@ -27,6 +29,18 @@ struct contact_result {
     feature moving_feature{};
 };
 
+/// How a motion that turns moves between its two poses (docs/sweep.md).
+enum class turning_model : std::uint8_t {
+    /// The angle linear in time, from.theta + t (to.theta - from.theta);
+    /// contact within sweep_options::tolerance, by conservative advancement.
+    angle_linear,
+    /// The rotation's cosine and sine rational in time: the tangent of half
+    /// the turn since the start linear in time (in pieces of at most a
+    /// quarter turn, rational_pieces in motion/rational_turn.hpp); contact
+    /// exact in an exact number type.
+    rational
+};
+
 /// Options of first_contact.
 struct sweep_options {
     /// For motions that turn: contact is reported at the first step where
@@ -36,6 +50,8 @@ struct sweep_options {
     /// tolerance of polygons of size 1 to 10^4, and far above the rounding
     /// of the posing (about 10^-16 times the scene's size) for them.
     double tolerance = 1e-9;
+    /// How a motion that turns moves (a translation is the same in both).
+    turning_model model = turning_model::angle_linear;
 };
 
 /// The pose of B at time t of the motion from `from` to `to`, as

@@ -1,0 +1,471 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// The first contact of a turning motion in the rational model, exactly
+/// (docs/sweep.md, "The rational model"): B turns by a rotation whose
+/// cosine and sine are rational functions of time, so that every contact
+/// of a vertex with an edge is a root of a cubic whose coefficients are
+/// exact in the input's doubles.
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "influence2d/core/box.hpp"
+#include "influence2d/core/feature.hpp"
+#include "influence2d/core/invalid_input.hpp"
+#include "influence2d/core/point.hpp"
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/core/pose.hpp"
+#include "influence2d/influence/bounds.hpp"
+#include "influence2d/number/certified.hpp"
+#include "influence2d/number/traits.hpp"
+#include "influence2d/predicates/contact_time.hpp"
+#include "influence2d/predicates/distance.hpp"
+#include "influence2d/predicates/filters.hpp"
+#include "influence2d/predicates/polynomial_roots.hpp"
+#include "influence2d/query/placed_meet.hpp"
+#include "influence2d/scene/placed_polygon.hpp"
+
+#include "influence2d/motion/motion.hpp"
+#include "influence2d/motion/translation_events.hpp"
+
+namespace influence2d {
+
+/// One piece of a rational turning motion (rational_pieces): for t in
+/// [t0, t1], with tau = (t - t0) / (t1 - t0) and u = w tau, B is turned by
+/// R(c, s) M(u) / (1 + u^2), M(u) = [[1 - u^2, -2u], [2u, 1 - u^2]] (the
+/// rotation by 2 atan(u) after the piece's base rotation (c, s)), and
+/// translated by from + t (to - from).
+struct rational_piece {
+    double c = 1;   ///< cos of the piece's base angle, in double
+    double s = 0;   ///< sin of the piece's base angle, in double
+    double w = 0;   ///< tan of half the piece's turn, in double
+    double t0 = 0;  ///< the piece's start: j / k
+    double t1 = 1;  ///< the piece's end: (j + 1) / k
+};
+
+/// The pieces of the rational motion from `from` to `to` (docs/sweep.md):
+/// k pieces of equal turn, k the least power of two with |to.theta -
+/// from.theta| / k <= pi / 2 (so that |w| <= 1); piece j starts at the
+/// angle from.theta + j (to.theta - from.theta) / k (its cosine and sine in
+/// double; piece 0's are rotation_pose(from)'s, so the motion starts at the
+/// pose every other query takes for `from`) and turns by w = tan((to.theta
+/// - from.theta) / 2k) in double. Times j / k are exact doubles. Throws
+/// invalid_input for a turn of more than 2^20 quarter turns.
+inline std::vector<rational_piece> rational_pieces(const pose& from, const pose& to) {
+    const double turn = to.theta - from.theta;
+    constexpr double quarter = 1.5707963267948966;  // pi / 2 rounded; a piece may turn by a hair more
+    std::size_t k = 1;
+    while (std::fabs(turn) / static_cast<double>(k) > quarter) {
+        k *= 2;
+        if (k > (std::size_t{1} << 20))
+            throw invalid_input("first_contact: the motion turns by " + std::to_string(turn) +
+                                " radians, more than the rational model's 2^20 quarter turns");
+    }
+    std::vector<rational_piece> out;
+    const double step = turn / static_cast<double>(k);
+    const double w = std::tan(step / 2);
+    for (std::size_t j = 0; j < k; ++j) {
+        const double angle = j == 0 ? from.theta : from.theta + static_cast<double>(j) * step;
+        out.push_back({std::cos(angle), std::sin(angle), w, static_cast<double>(j) / static_cast<double>(k),
+                       static_cast<double>(j + 1) / static_cast<double>(k)});
+    }
+    return out;
+}
+
+namespace rational_turn_detail {
+
+template <class NT>
+NT num(double x) {
+    return number_traits<NT>::from_double(x);
+}
+
+/// A point moving over a piece, scaled by h(tau) = 1 + w^2 tau^2 (> 0):
+/// x(tau) / h(tau), y(tau) / h(tau) its coordinates; x and y cubics.
+template <class NT>
+struct moving_point {
+    NT x[4];
+    NT y[4];
+};
+
+/// The cubics of a contact of a moving point P = (x, y) / (h l) with the
+/// fixed segment from p to q, l > 0 a constant: f = (q - p) x (P h l - p h
+/// l) (zero when P is on the segment's line), and the two conditions that P
+/// lies between the ends: lo = (q - p) . (P h l - p h l) >= 0, hi = |q -
+/// p|^2 h l - lo >= 0. (l is 1 for B's vertex in A's frame; for A's vertex
+/// in B's frame it is c^2 + s^2 of the piece's base rotation, which the
+/// doubles c and s leave a hair off 1: the frame is turned back by the
+/// adjugate R^T = (c^2 + s^2) R^-1, exactly.)
+template <class NT>
+struct contact_cubics {
+    polynomial<NT> f, lo, hi;
+};
+
+template <class NT>
+contact_cubics<NT> cubics_of(const moving_point<NT>& m, const NT& w2, const NT& l, const point<double>& p,
+                             const point<double>& q) {
+    const NT ex = num<NT>(q.x) - num<NT>(p.x), ey = num<NT>(q.y) - num<NT>(p.y);
+    const NT px = NT(num<NT>(p.x) * l), py = NT(num<NT>(p.y) * l);
+    contact_cubics<NT> out;
+    NT yx[4], yy[4];
+    for (int k = 0; k < 4; ++k) {
+        yx[k] = m.x[k];
+        yy[k] = m.y[k];
+    }
+    // P h l - p h l, h = 1 + w^2 tau^2.
+    yx[0] = NT(yx[0] - px);
+    yy[0] = NT(yy[0] - py);
+    yx[2] = NT(yx[2] - w2 * px);
+    yy[2] = NT(yy[2] - w2 * py);
+    const NT e2 = NT((ex * ex + ey * ey) * l);
+    for (int k = 0; k < 4; ++k) {
+        out.f.c.push_back(NT(ex * yy[k] - ey * yx[k]));
+        out.lo.c.push_back(NT(ex * yx[k] + ey * yy[k]));
+        out.hi.c.push_back(NT(-out.lo.c[static_cast<std::size_t>(k)]));
+    }
+    out.hi.c[0] = NT(out.hi.c[0] + e2);
+    out.hi.c[2] = NT(out.hi.c[2] + w2 * e2);
+    out.f.trimmed();
+    out.lo.trimmed();
+    out.hi.trimmed();
+    return out;
+}
+
+/// The piece's translation from + t (to - from) at t = t0 + tau (t1 - t0):
+/// a0 + a1 tau, exact in NT.
+template <class NT>
+struct piece_translation {
+    point<NT> a0, a1;
+};
+
+template <class NT>
+piece_translation<NT> translation_of(const rational_piece& piece, const pose& from, const pose& to) {
+    const NT dx = NT(num<NT>(to.tx) - num<NT>(from.tx)), dy = NT(num<NT>(to.ty) - num<NT>(from.ty));
+    const NT t0 = num<NT>(piece.t0), span = num<NT>(piece.t1 - piece.t0);  // (powers of two: exact)
+    return {{NT(num<NT>(from.tx) + t0 * dx), NT(num<NT>(from.ty) + t0 * dy)}, {NT(span * dx), NT(span * dy)}};
+}
+
+/// B's vertex v in A's frame over the piece: R(c, s) M(w tau) v + h (a0 + a1 tau).
+template <class NT>
+moving_point<NT> moving_vertex(const rational_piece& piece, const piece_translation<NT>& t, const point<double>& v) {
+    const NT w = num<NT>(piece.w), w2 = NT(w * w), c = num<NT>(piece.c), s = num<NT>(piece.s);
+    const NT vx = num<NT>(v.x), vy = num<NT>(v.y);
+    // M(u) v = (vx - 2 vy u - vx u^2, vy + 2 vx u - vy u^2), u = w tau.
+    const NT mx[3] = {vx, NT(-(vy + vy) * w), NT(-vx * w2)};
+    const NT my[3] = {vy, NT((vx + vx) * w), NT(-vy * w2)};
+    moving_point<NT> m;
+    const NT zero = num<NT>(0);
+    for (int k = 0; k < 4; ++k) {
+        m.x[k] = zero;
+        m.y[k] = zero;
+    }
+    for (int k = 0; k < 3; ++k) {
+        m.x[k] = NT(c * mx[k] - s * my[k]);
+        m.y[k] = NT(s * mx[k] + c * my[k]);
+    }
+    // h (a0 + a1 tau) = a0 + a1 tau + w^2 a0 tau^2 + w^2 a1 tau^3.
+    m.x[0] = NT(m.x[0] + t.a0.x);
+    m.y[0] = NT(m.y[0] + t.a0.y);
+    m.x[1] = NT(m.x[1] + t.a1.x);
+    m.y[1] = NT(m.y[1] + t.a1.y);
+    m.x[2] = NT(m.x[2] + w2 * t.a0.x);
+    m.y[2] = NT(m.y[2] + w2 * t.a0.y);
+    m.x[3] = NT(w2 * t.a1.x);
+    m.y[3] = NT(w2 * t.a1.y);
+    return m;
+}
+
+/// A's vertex q in B's frame over the piece, times h (c^2 + s^2): M(-w tau)
+/// R(c, s)^T (q - a0 - a1 tau) (the adjugates of M and of R turn back).
+template <class NT>
+moving_point<NT> moving_static_vertex(const rational_piece& piece, const piece_translation<NT>& t,
+                                      const point<double>& q) {
+    const NT w = num<NT>(piece.w), w2 = NT(w * w), c = num<NT>(piece.c), s = num<NT>(piece.s);
+    const NT qx = NT(num<NT>(q.x) - t.a0.x), qy = NT(num<NT>(q.y) - t.a0.y);
+    // v(tau) = R^T (q - a0) - R^T a1 tau = v0 + v1 tau.
+    const NT v0x = NT(c * qx + s * qy), v0y = NT(c * qy - s * qx);
+    const NT v1x = NT(-(c * t.a1.x + s * t.a1.y)), v1y = NT(-(c * t.a1.y - s * t.a1.x));
+    // M(-u) v = (vx + 2u vy - u^2 vx, vy - 2u vx - u^2 vy), u = w tau.
+    const NT w_2 = NT(w + w);
+    moving_point<NT> m;
+    m.x[0] = v0x;
+    m.x[1] = NT(v1x + w_2 * v0y);
+    m.x[2] = NT(w_2 * v1y - w2 * v0x);
+    m.x[3] = NT(-w2 * v1x);
+    m.y[0] = v0y;
+    m.y[1] = NT(v1y - w_2 * v0x);
+    m.y[2] = NT(-w_2 * v1x - w2 * v0y);
+    m.y[3] = NT(-w2 * v1y);
+    return m;
+}
+
+/// Whether the cubic f certainly has no root in [0, 1]: its Bernstein
+/// coefficients on [0, 1] (times 3) all of one strict sign, their signs
+/// taken in Filter (a filtered type throws uncertain_sign when it cannot
+/// tell: the pair is then kept).
+template <class Filter>
+bool no_root_in_unit(const polynomial<Filter>& f) {
+    using tr = number_traits<Filter>;
+    const Filter zero = tr::from_double(0);
+    const Filter a0 = f.c.size() > 0 ? f.c[0] : zero, a1 = f.c.size() > 1 ? f.c[1] : zero,
+                 a2 = f.c.size() > 2 ? f.c[2] : zero, a3 = f.c.size() > 3 ? f.c[3] : zero;
+    const Filter three_a0 = Filter(a0 + a0 + a0);
+    const Filter b[4] = {three_a0, Filter(three_a0 + a1), Filter(three_a0 + a1 + a1 + a2),
+                         Filter((a0 + a1 + a2 + a3) * tr::from_double(3))};
+    const int first = tr::sign(b[0]);
+    if (first == 0) return false;
+    for (int k = 1; k < 4; ++k)
+        if (tr::sign(b[k]) != first) return false;
+    return true;
+}
+
+/// The relative slack of arc_box and of the swept boxes: their corners
+/// computed in double with a few roundings each (the turn's ends: two
+/// products and a sum after a quotient by h, about 8u; the bulge: a square
+/// root and a quotient, about 4u), each at most u = 2^-53 times the
+/// magnitudes involved, below 2^-48 of the radius; 2^-40 leaves a factor
+/// of 256.
+inline constexpr double arc_box_slack = 0x1p-40;
+
+/// The box that holds every place of the point p turned from angle 0 by up
+/// to the piece's turn about the origin, after the base rotation (c, s):
+/// the box of its two ends grown by the arc's bulge over its chord,
+/// |p| (1 - cos(theta / 2)) = |p| (1 - 1 / sqrt(1 + w^2)), and by the
+/// filters' slack. (`turned` for A's vertex in B's frame: turned the other
+/// way, after the inverse base rotation.)
+inline box arc_box(const rational_piece& piece, point<double> p, bool inverse) {
+    const double w = piece.w, h = 1 + w * w;
+    const double c = piece.c, s = inverse ? -piece.s : piece.s;
+    box b;
+    if (!inverse) {
+        b.add({c * p.x - s * p.y, s * p.x + c * p.y});
+        const double mx = ((1 - w * w) * p.x - 2 * w * p.y) / h, my = (2 * w * p.x + (1 - w * w) * p.y) / h;
+        b.add({c * mx - s * my, s * mx + c * my});
+    } else {
+        const point<double> r{c * p.x - s * p.y, s * p.x + c * p.y};
+        b.add(r);
+        b.add({((1 - w * w) * r.x + 2 * w * r.y) / h, (-2 * w * r.x + (1 - w * w) * r.y) / h});
+    }
+    const double radius = std::fabs(p.x) + std::fabs(p.y);
+    return b.inflated(radius * (1 - 1 / std::sqrt(h)) + arc_box_slack * radius + std::numeric_limits<double>::min());
+}
+
+/// A pair of features that touch first, found in a piece: its site, its
+/// cubic's Sturm sequence and the bracket of the root.
+template <class NT>
+struct piece_contact {
+    sweep::contact_site site;
+    std::vector<polynomial<NT>> sequence;
+    isolated_root<NT> root;
+};
+
+/// The earliest root in (0, 1] of the cubics' f at which lo and hi are >= 0
+/// (in (0, 1) when `open_end`: the next piece starts at 1), bracketed; none
+/// when there is none (or f is identically zero: the point slides along the
+/// segment's line, and reaches the segment only at an end, a vertex of the
+/// polygon, where another pair's f finds the contact).
+template <class NT>
+std::optional<std::pair<std::vector<polynomial<NT>>, isolated_root<NT>>> earliest_root(const contact_cubics<NT>& k,
+                                                                                       bool open_end) {
+    if (k.f.degree() < 1) return std::nullopt;  // identically zero, or a non-zero constant
+    std::vector<polynomial<NT>> s = sturm_sequence(k.f);
+    const NT one = num<NT>(1);
+    const bool root_at_end = open_end && k.f.sign_at(one) == 0;
+    for (isolated_root<NT> r : isolate_roots(s, num<NT>(0), one)) {
+        if (root_at_end && compare_values<NT>(r.high, one) == 0) break;  // (the bracket's root is 1, its last)
+        if (sign_at_root(k.lo, s, r) >= 0 && sign_at_root(k.hi, s, r) >= 0) return std::make_pair(std::move(s), r);
+    }
+    return std::nullopt;
+}
+
+/// The regions of A and of B at a piece's start (B's vertices given in NT)
+/// meeting, with their features; none when apart.
+template <class NT>
+std::optional<std::pair<feature, feature>> meeting_at_piece_start(const polygon& a, const polygon& b,
+                                                                  const rational_piece& piece,
+                                                                  const piece_translation<NT>& t, double scale) {
+    std::vector<point<NT>> vertices;
+    vertices.reserve(b.size());
+    const NT c = num<NT>(piece.c), s = num<NT>(piece.s);
+    for (const point<double>& v : b.vertices()) {
+        const NT x = num<NT>(v.x), y = num<NT>(v.y);
+        vertices.push_back({NT(c * x - s * y + t.a0.x), NT(s * x + c * y + t.a0.y)});
+    }
+    placed_polygon<NT> pa(a), pb(b, vertices);
+    const meeting met = placed_meet(pa, pb, posing_margin<NT>(scale));
+    if (!met) return std::nullopt;
+    return sweep::meeting_features(pa, pb, met);
+}
+
+/// The time t0 + tau (t1 - t0) of the root bracketed by r, rounded to the
+/// nearest double: the bracket halved until both its ends round to one
+/// double, or the root is found at the midpoint of two (ties to even).
+template <class NT>
+double rounded_time(const rational_piece& piece, const std::vector<polynomial<NT>>& s, isolated_root<NT> r) {
+    using tr = number_traits<NT>;
+    const NT t0 = num<NT>(piece.t0), span = num<NT>(piece.t1 - piece.t0);
+    const auto time_of = [&](const NT& tau) { return NT(t0 + tau * span); };
+    const auto nearest = [](const NT& x) {
+        if constexpr (tr::category == number_category::floating)
+            return static_cast<double>(x);
+        else
+            return nearest_double(x);
+    };
+    for (int halvings = 0;; ++halvings) {
+        const double lo = nearest(time_of(r.low)), hi = nearest(time_of(r.high));
+        if (lo == hi) return lo;
+        if constexpr (tr::category == number_category::floating) {
+            if (halvings > 2200) return hi;  // (rounded arithmetic: the bracket stopped shrinking)
+        } else if (std::nextafter(lo, hi) == hi) {
+            // The midpoint of the two doubles, in tau, a root: a tie.
+            const NT mid_tau = NT((NT(NT(num<NT>(lo) + num<NT>(hi)) * num<NT>(0.5)) - t0) / span);
+            if (s[0].sign_at(mid_tau) == 0) return even_of(lo, hi);
+        }
+        halve(s, r);
+    }
+}
+
+}  // namespace rational_turn_detail
+
+/// The first contact of B moving from `from` to `to` against the static A
+/// in the rational model (docs/sweep.md): the earliest time t in [0, 1] at
+/// which the closed regions meet, with the features that touch then;
+/// exact when NT is an exact field (the time rounded to the nearest
+/// double), rounded in a floating NT. Filter decides which vertex-edge
+/// pairs cannot touch in a piece (certified for an exact NT: its doubt
+/// only keeps a pair).
+///
+///   pieces <- rational_pieces(from, to)
+///   for each piece, in order:
+///     A and B at the piece's start meet (the one-shot query, B's vertices
+///       posed exactly):                      time t0, the features met
+///     for each vertex of B and edge of A, and each vertex of A and edge
+///     of B (in B's frame), whose boxes over the piece meet (arc_box):
+///       f <- the cubic of the vertex on the edge's line; skip when its
+///            Bernstein coefficients on [0, 1] have one sign (in Filter)
+///       its earliest root in (0, 1] at which the vertex lies on the
+///       closed segment (Sturm sequences, bisection; exact signs)
+///     the earliest of those roots (ties: site_before):  the first contact
+///   none
+///
+/// NT needs division (exact_rational, or a floating type). Throws
+/// invalid_input for a turn of more than 2^20 quarter turns.
+template <class NT, class Filter = std::conditional_t<is_exact_v<NT>, certified, NT>>
+contact_result<double> rational_first_contact(const polygon& a, const polygon& b, const pose& from, const pose& to) {
+    using namespace rational_turn_detail;
+    const double scale = coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) + std::fabs(from.ty) +
+                         std::fabs(to.tx) + std::fabs(to.ty);
+    contact_result<double> r;
+    const std::vector<rational_piece> pieces = rational_pieces(from, to);
+    for (const rational_piece& piece : pieces) {
+        const bool last = &piece == &pieces.back();
+        const piece_translation<NT> t = translation_of<NT>(piece, from, to);
+        if (const auto met = meeting_at_piece_start<NT>(a, b, piece, t, scale)) {
+            r.contact = true;
+            r.time = piece.t0;
+            std::tie(r.static_feature, r.moving_feature) = *met;
+            return r;
+        }
+        // The translation's box over the piece, in double.
+        box moved;
+        const piece_translation<double> td = translation_of<double>(piece, from, to);
+        moved.add(td.a0);
+        moved.add({td.a0.x + td.a1.x, td.a0.y + td.a1.y});
+        const double slack = arc_box_slack * scale + std::numeric_limits<double>::min();
+        const piece_translation<Filter> tf = translation_of<Filter>(piece, from, to);
+        const Filter wf = num<Filter>(piece.w);
+        // The factor l of cubics_of: 1 in A's frame, c^2 + s^2 in B's.
+        const NT one = num<NT>(1), base = NT(num<NT>(piece.c) * num<NT>(piece.c) + num<NT>(piece.s) * num<NT>(piece.s));
+        const Filter one_f = num<Filter>(1), base_f = Filter(num<Filter>(piece.c) * num<Filter>(piece.c) +
+                                                             num<Filter>(piece.s) * num<Filter>(piece.s));
+
+        std::optional<piece_contact<NT>> best;
+        const auto consider = [&](const sweep::contact_site& site, const moving_point<NT>& m, const NT& l,
+                                  const point<double>& p, const point<double>& q) {
+            auto found = earliest_root(cubics_of(m, NT(num<NT>(piece.w) * num<NT>(piece.w)), l, p, q), !last);
+            if (!found) return;
+            piece_contact<NT> c{site, std::move(found->first), found->second};
+            if (best) {
+                const int order = compare_roots(c.sequence, c.root, best->sequence, best->root);
+                if (order > 0 || (order == 0 && !sweep::site_before(site, best->site))) return;
+            }
+            best = std::move(c);
+        };
+        const auto kept_by_filter = [&](const moving_point<Filter>& m, const Filter& l, const point<double>& p,
+                                        const point<double>& q) {
+            try {
+                return !no_root_in_unit(cubics_of(m, Filter(wf * wf), l, p, q).f);
+            } catch (const uncertain_sign&) {
+                return true;
+            }
+        };
+        // B's vertices against A's edges, in A's frame.
+        std::vector<box> a_edges(a.size());
+        for (std::size_t e = 0; e < a.size(); ++e) {
+            a_edges[e].add(a.vertex(e));
+            a_edges[e].add(a.vertex(a.next(e)));
+        }
+        for (std::size_t v = 0; v < b.size(); ++v) {
+            const box turned = arc_box(piece, b.vertex(v), false);
+            const box swept{turned.min_x + moved.min_x - slack, turned.min_y + moved.min_y - slack,
+                            turned.max_x + moved.max_x + slack, turned.max_y + moved.max_y + slack};
+            std::optional<moving_point<Filter>> mf;
+            std::optional<moving_point<NT>> m;
+            for (std::size_t e = 0; e < a.size(); ++e) {
+                if (!boxes_overlap(swept, a_edges[e])) continue;
+                if (!mf) mf = moving_vertex<Filter>(piece, tf, b.vertex(v));
+                if (!kept_by_filter(*mf, one_f, a.vertex(e), a.vertex(a.next(e)))) continue;
+                if (!m) m = moving_vertex<NT>(piece, t, b.vertex(v));
+                consider({true, static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(e)}, *m, one, a.vertex(e),
+                         a.vertex(a.next(e)));
+            }
+        }
+        // A's vertices against B's edges, in B's frame: q - translation,
+        // turned back.
+        std::vector<box> b_edges(b.size());
+        for (std::size_t e = 0; e < b.size(); ++e) {
+            b_edges[e].add(b.vertex(e));
+            b_edges[e].add(b.vertex(b.next(e)));
+        }
+        for (std::size_t v = 0; v < a.size(); ++v) {
+            // q - (a0 + a1 tau) lies in the box of its two ends; each of
+            // those turned back lies in its arc_box, and so does every
+            // point between them turned by the same angle.
+            const point<double> q = a.vertex(v);
+            box swept;
+            for (const point<double>& shift : {td.a0, point<double>{td.a0.x + td.a1.x, td.a0.y + td.a1.y}}) {
+                const box turned = arc_box(piece, {q.x - shift.x, q.y - shift.y}, true);
+                swept.add({turned.min_x, turned.min_y});
+                swept.add({turned.max_x, turned.max_y});
+            }
+            swept = swept.inflated(slack);
+            std::optional<moving_point<Filter>> mf;
+            std::optional<moving_point<NT>> m;
+            for (std::size_t e = 0; e < b.size(); ++e) {
+                if (!boxes_overlap(swept, b_edges[e])) continue;
+                if (!mf) mf = moving_static_vertex<Filter>(piece, tf, q);
+                if (!kept_by_filter(*mf, base_f, b.vertex(e), b.vertex(b.next(e)))) continue;
+                if (!m) m = moving_static_vertex<NT>(piece, t, q);
+                consider({false, static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(e)}, *m, base, b.vertex(e),
+                         b.vertex(b.next(e)));
+            }
+        }
+        if (best) {
+            r.contact = true;
+            r.time = rounded_time(piece, best->sequence, best->root);
+            std::tie(r.static_feature, r.moving_feature) = sweep::site_features(a, b, best->site);
+            return r;
+        }
+    }
+    return r;
+}
+
+}  // namespace influence2d

@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// Where a polynomial of low degree vanishes in an interval, and the sign of
+/// another polynomial there: the exact root questions of the rational
+/// turning motions (motion/rational_turn.hpp, docs/sweep.md).
+///
+/// Roots are isolated by Sturm sequences (the number of distinct real roots
+/// in (a, b] is the drop in sign changes of the sequence from a to b) and
+/// bisection at the midpoints of the interval, so every decision is the
+/// sign of a polynomial at a rational point. In an exact field NT every
+/// answer is exact: a root is never computed, only bracketed, and two
+/// polynomials share a root exactly when their greatest common divisor
+/// vanishes there. In a floating NT the same steps round.
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include "influence2d/number/traits.hpp"
+
+namespace influence2d {
+
+/// A polynomial in one variable: c[k] is the coefficient of x^k; no
+/// trailing zero coefficient (the zero polynomial has none).
+template <class NT>
+struct polynomial {
+    std::vector<NT> c;  ///< coefficients, lowest degree first
+
+    /// The degree; -1 for the zero polynomial.
+    int degree() const { return static_cast<int>(c.size()) - 1; }
+
+    /// The value at x (Horner).
+    NT at(const NT& x) const {
+        NT v = number_traits<NT>::from_double(0);
+        for (std::size_t k = c.size(); k-- > 0;) v = NT(v * x + c[k]);
+        return v;
+    }
+
+    /// The sign of the value at x.
+    int sign_at(const NT& x) const { return c.empty() ? 0 : number_traits<NT>::sign(at(x)); }
+
+    /// Drops trailing coefficients that are zero (exactly, in NT).
+    polynomial& trimmed() {
+        while (!c.empty() && number_traits<NT>::sign(c.back()) == 0) c.pop_back();
+        return *this;
+    }
+};
+
+/// The derivative.
+template <class NT>
+polynomial<NT> derivative(const polynomial<NT>& p) {
+    polynomial<NT> d;
+    for (std::size_t k = 1; k < p.c.size(); ++k) d.c.push_back(NT(p.c[k] * number_traits<NT>::from_double(double(k))));
+    d.trimmed();
+    return d;
+}
+
+/// The remainder of p divided by q (q not zero), in a field NT.
+template <class NT>
+polynomial<NT> remainder(polynomial<NT> p, const polynomial<NT>& q) {
+    const int dq = q.degree();
+    while (p.degree() >= dq) {
+        const std::size_t shift = static_cast<std::size_t>(p.degree() - dq);
+        const NT factor = p.c.back() / q.c.back();
+        for (std::size_t k = 0; k < q.c.size(); ++k) p.c[k + shift] = NT(p.c[k + shift] - factor * q.c[k]);
+        p.c.pop_back();  // (its coefficient is now zero, whatever rounding left)
+        p.trimmed();
+    }
+    return p;
+}
+
+/// A greatest common divisor of p and q (Euclid's algorithm, in a field
+/// NT): the zero polynomial when both are zero; a non-zero constant when
+/// they share no root.
+template <class NT>
+polynomial<NT> common_divisor(polynomial<NT> p, polynomial<NT> q) {
+    while (q.degree() >= 0) {
+        polynomial<NT> r = remainder(p, q);
+        p = std::move(q);
+        q = std::move(r);
+    }
+    return p;
+}
+
+/// The Sturm sequence of p (not zero): p, p', then the negated remainders,
+/// down to a greatest common divisor of p and p'.
+template <class NT>
+std::vector<polynomial<NT>> sturm_sequence(const polynomial<NT>& p) {
+    std::vector<polynomial<NT>> s{p};
+    polynomial<NT> d = derivative(p);
+    while (d.degree() >= 0) {
+        s.push_back(d);
+        polynomial<NT> r = remainder(s[s.size() - 2], s.back());
+        for (NT& x : r.c) x = NT(-x);
+        d = std::move(r);
+    }
+    return s;
+}
+
+/// The number of sign changes of a Sturm sequence at x (zeros skipped).
+template <class NT>
+int sign_changes(const std::vector<polynomial<NT>>& s, const NT& x) {
+    int changes = 0, last = 0;
+    for (const polynomial<NT>& p : s) {
+        const int v = p.sign_at(x);
+        if (v == 0) continue;
+        if (last != 0 && v != last) ++changes;
+        last = v;
+    }
+    return changes;
+}
+
+/// The number of distinct real roots of s[0] in (a, b], a < b (Sturm's
+/// theorem: it holds whether or not a and b are roots, the sequence ending
+/// at the greatest common divisor of s[0] and its derivative).
+template <class NT>
+int roots_between(const std::vector<polynomial<NT>>& s, const NT& a, const NT& b) {
+    return sign_changes(s, a) - sign_changes(s, b);
+}
+
+/// How many times a bracket is halved at most in a floating NT, whose
+/// rounded signs may never settle a question an exact NT would: double's
+/// midpoints stop moving after some 2,100 halvings of [0, 1] (1,074 bits
+/// below 1, and the exponents' range); beyond it the answer is the one the
+/// bracket gives. An exact NT halves until the question is settled, which
+/// it always is (the roots compared differ, or are found equal).
+inline constexpr int rounded_halvings = 2200;
+
+/// A root of a polynomial bracketed alone: the only root of `sequence[0]`
+/// in (low, high].
+template <class NT>
+struct isolated_root {
+    NT low;   ///< excluded
+    NT high;  ///< included
+};
+
+/// Halves the bracket of the only root of s[0] in (r.low, r.high]: keeps
+/// the half that holds it.
+template <class NT>
+void halve(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r) {
+    const NT mid = NT((r.low + r.high) * number_traits<NT>::from_double(0.5));
+    if (roots_between(s, r.low, mid) > 0)
+        r.high = mid;
+    else
+        r.low = mid;
+}
+
+/// The roots of s[0] in (a, b], a < b, in increasing order, each bracketed
+/// alone (bisection until each bracket holds one root).
+template <class NT>
+std::vector<isolated_root<NT>> isolate_roots(const std::vector<polynomial<NT>>& s, const NT& a, const NT& b) {
+    std::vector<isolated_root<NT>> out;
+    std::vector<std::pair<isolated_root<NT>, int>> todo{{{a, b}, roots_between(s, a, b)}};
+    // Depth first, the lower half first: brackets come out in order.
+    while (!todo.empty()) {
+        auto [r, n] = todo.back();
+        todo.pop_back();
+        if (n <= 0) continue;
+        if (n == 1) {
+            out.push_back(r);
+            continue;
+        }
+        const NT mid = NT((r.low + r.high) * number_traits<NT>::from_double(0.5));
+        if (!is_exact_v<NT> && (compare_values<NT>(mid, r.low) == 0 || compare_values<NT>(mid, r.high) == 0)) {
+            out.push_back(r);  // (rounded: the bracket cannot be cut)
+            continue;
+        }
+        const int left = roots_between(s, r.low, mid);
+        todo.push_back({{mid, r.high}, n - left});
+        todo.push_back({{r.low, mid}, left});
+    }
+    return out;
+}
+
+/// Whether q vanishes at the root of s[0] bracketed by r: q and s[0] share
+/// a root in the bracket (their greatest common divisor has one there).
+template <class NT>
+bool vanishes_at(const polynomial<NT>& q, const std::vector<polynomial<NT>>& s, const isolated_root<NT>& r) {
+    if (q.degree() < 0) return true;
+    const polynomial<NT> g = common_divisor(s[0], q);
+    if (g.degree() < 1) return false;
+    return roots_between(sturm_sequence(g), r.low, r.high) > 0;
+}
+
+/// The sign of q at the root of s[0] bracketed by r (-1, 0 or +1): 0 when
+/// they share it; else the bracket is halved until q has no root in it,
+/// and q's sign at its upper end is q's sign at the root. `r` is left
+/// narrowed.
+template <class NT>
+int sign_at_root(const polynomial<NT>& q, const std::vector<polynomial<NT>>& s, isolated_root<NT>& r) {
+    if (vanishes_at(q, s, r)) return 0;
+    const std::vector<polynomial<NT>> sq = sturm_sequence(q);
+    for (int k = 0; roots_between(sq, r.low, r.high) > 0 && (is_exact_v<NT> || k < rounded_halvings); ++k) halve(s, r);
+    return q.sign_at(r.high);
+}
+
+/// The sign of x - y for the roots x of s[0] bracketed by r and y of t[0]
+/// bracketed by u (-1, 0 or +1): 0 when the polynomials share a root in
+/// both brackets; else the brackets are halved until they are apart. Both
+/// are left narrowed.
+template <class NT>
+int compare_roots(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r, const std::vector<polynomial<NT>>& t,
+                  isolated_root<NT>& u) {
+    const auto below = [](const isolated_root<NT>& l, const isolated_root<NT>& h) {
+        return compare_values<NT>(l.high, h.low) <= 0;
+    };
+    if (below(r, u)) return -1;
+    if (below(u, r)) return 1;
+    const polynomial<NT> g = common_divisor(s[0], t[0]);
+    if (g.degree() >= 1) {
+        // A shared root in the overlap of the brackets is both roots.
+        const NT lo = compare_values<NT>(r.low, u.low) >= 0 ? r.low : u.low;
+        const NT hi = compare_values<NT>(r.high, u.high) <= 0 ? r.high : u.high;
+        if (compare_values<NT>(lo, hi) < 0) {
+            const std::vector<polynomial<NT>> sg = sturm_sequence(g);
+            if (roots_between(sg, lo, hi) > 0 && roots_between(s, lo, hi) > 0 && roots_between(t, lo, hi) > 0) {
+                // x and y both lie in (lo, hi]; so does a root z of g, which
+                // is a root of both: z = x and z = y, each being its
+                // polynomial's only root in its bracket.
+                return 0;
+            }
+        }
+    }
+    for (int k = 0; is_exact_v<NT> || k < rounded_halvings; ++k) {
+        halve(s, r);
+        halve(t, u);
+        if (below(r, u)) return -1;
+        if (below(u, r)) return 1;
+    }
+    return 0;  // (rounded: the brackets stopped parting)
+}
+
+}  // namespace influence2d

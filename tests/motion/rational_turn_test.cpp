@@ -1,0 +1,238 @@
+// SPDX-License-Identifier: BSL-1.0
+// First contact of turning motions in the rational model
+// (motion/rational_turn.hpp) against an independent exact check on CGAL's
+// Cartesian kernel over exact rationals: the motion's pose at a rational
+// time computed here from the model's definition (docs/sweep.md: pieces of
+// at most a quarter turn, the tangent of half the turn since a piece's
+// start linear in time), B placed exactly there, and whether the regions
+// meet decided by CGAL's own predicates (support/exact_regions.hpp). The
+// reported time must have the regions apart at the double before it and
+// at every sampled time before that, and meeting at the double after it
+// (or, for a contact that only grazes, the reported vertex on the reported
+// edge within a hair); a motion reported free must be apart at every
+// sampled time. The certified route must give the exact answer, time and
+// features alike.
+
+#include <catch2/catch.hpp>
+
+#include <CGAL/squared_distance_2.h>
+
+#include <cmath>
+#include <vector>
+
+#include "influence2d/exact/certified_first_contact.hpp"
+#include "influence2d/motion/first_contact.hpp"
+#include "influence2d/number/cgal.hpp"
+#include "support/effort.hpp"
+#include "support/exact_regions.hpp"
+#include "support/random_scenes.hpp"
+#include "support/shapes.hpp"
+
+using namespace influence2d;
+using test_exact::FT;
+using test_exact::point_2;
+
+namespace {
+
+const sweep_options rational{1e-9, turning_model::rational};
+
+/// B placed exactly at time t (a double in [0, 1]) of the rational motion
+/// from `from` to `to`, from the model's definition: k pieces, k the least
+/// power of two with |turn| / k <= pi / 2 (the double 1.5707963267948966);
+/// piece j, for t in [j / k, (j + 1) / k), starts at the angle from.theta +
+/// j (turn / k) (from.theta itself for j = 0), cosine and sine in double,
+/// and turns by 2 atan(u), u = tan(turn / 2k) (in double) times the
+/// fraction of the piece gone; the translation is from + t (to - from).
+test_exact::placed_shape placed_at(const polygon& b, const pose& from, const pose& to, double t) {
+    const double turn = to.theta - from.theta;
+    double k = 1;
+    while (std::fabs(turn) / k > 1.5707963267948966) k *= 2;
+    const double step = turn / k;
+    const double j = std::min(std::floor(t * k), k - 1);
+    const double angle = j == 0 ? from.theta : from.theta + j * step;
+    const FT c(std::cos(angle)), s(std::sin(angle)), w(std::tan(step / 2));
+    const FT tau = (FT(t) - FT(j / k)) * FT(k);
+    const FT u = w * tau, h = 1 + u * u;
+    const FT tx = FT(from.tx) + FT(t) * (FT(to.tx) - FT(from.tx)), ty = FT(from.ty) + FT(t) * (FT(to.ty) - FT(from.ty));
+    std::vector<point_2> pts;
+    for (const point<double>& v : b.vertices()) {
+        const FT mx = (FT(v.x) * (1 - u * u) - 2 * u * FT(v.y)) / h, my = (2 * u * FT(v.x) + FT(v.y) * (1 - u * u)) / h;
+        pts.emplace_back(c * mx - s * my + tx, s * mx + c * my + ty);
+    }
+    return test_exact::placed_shape(b, std::move(pts));
+}
+
+bool meet_at(const polygon& a, const polygon& b, const pose& from, const pose& to, double t) {
+    return test_exact::regions_meet(test_exact::place(a, pose{}), placed_at(b, from, to, t));
+}
+
+/// The squared distance between the reported vertex and edge at time t.
+FT feature_gap(const polygon& a, const polygon& b, const pose& from, const pose& to, const contact_result<double>& r) {
+    const test_exact::placed_shape pa = test_exact::place(a, pose{}), pb = placed_at(b, from, to, r.time);
+    const auto stored_vertex = [](const polygon& p, std::size_t input) {
+        for (std::size_t i = 0; i < p.size(); ++i)
+            if (input_vertex(p, i) == input) return i;
+        return std::size_t{0};
+    };
+    const auto stored_edge = [](const polygon& p, std::size_t input) {
+        for (std::size_t i = 0; i < p.size(); ++i)
+            if (p.source_edge(i) == input) return i;
+        return std::size_t{0};
+    };
+    if (r.moving_feature.kind == feature_kind::vertex) {
+        const std::size_t v = stored_vertex(b, r.moving_feature.index), e = stored_edge(a, r.static_feature.index);
+        return CGAL::squared_distance(pb.v[v], test_exact::segment_2(pa.v[e], pa.end(e)));
+    }
+    const std::size_t v = stored_vertex(a, r.static_feature.index), e = stored_edge(b, r.moving_feature.index);
+    return CGAL::squared_distance(pa.v[v], test_exact::segment_2(pb.v[e], pb.end(e)));
+}
+
+/// The counts of a check, for the non-vacuity checks.
+struct tally {
+    std::size_t motions = 0, contacts = 0, at_start = 0, grazing = 0, free = 0, double_differs = 0,
+                double_time_differs = 0;
+};
+
+/// Checks one motion against the exact reference; `samples` times before
+/// the contact (or over the whole motion) must be apart.
+void check_motion(const polygon& a, const polygon& b, const pose& from, const pose& to, int samples, tally& n) {
+    INFO("from (" << from.tx << ", " << from.ty << ", " << from.theta << ") to (" << to.tx << ", " << to.ty << ", "
+                  << to.theta << ")");
+    const contact_result<exact_rational> e = first_contact<exact_rational>(a, b, from, to, rational);
+    const contact_result<double> c = certified_first_contact(a, b, from, to, rational);
+    const contact_result<double> d = first_contact<double>(a, b, from, to, rational);
+    const double time = CGAL::to_double(e.time);
+    ++n.motions;
+    CHECK(c.contact == e.contact);
+    CHECK(c.time == time);
+    CHECK(c.static_feature.kind == e.static_feature.kind);
+    CHECK(c.static_feature.index == e.static_feature.index);
+    CHECK(c.moving_feature.index == e.moving_feature.index);
+    n.double_differs += d.contact != e.contact;
+    n.double_time_differs += e.contact && d.contact && d.time != time;
+    if (!e.contact) {
+        ++n.free;
+        for (int i = 0; i <= samples; ++i) {
+            INFO("sample " << i);
+            CHECK_FALSE(meet_at(a, b, from, to, double(i) / samples));
+        }
+        return;
+    }
+    ++n.contacts;
+    if (time == 0) {
+        ++n.at_start;
+        CHECK(meet_at(a, b, from, to, 0));
+        return;
+    }
+    CHECK_FALSE(meet_at(a, b, from, to, std::nextafter(time, 0.0)));
+    for (int i = 0; i < samples; ++i) {
+        INFO("sample " << i);
+        CHECK_FALSE(meet_at(a, b, from, to, time * i / samples));
+    }
+    const double after = std::min(std::nextafter(time, 2.0), 1.0);
+    if (!meet_at(a, b, from, to, after) && !meet_at(a, b, from, to, time)) {
+        // Grazing: the regions touch at the exact time alone (and are
+        // apart again a little later); the reported vertex lies on the
+        // reported edge at the nearest double, within its rounding.
+        ++n.grazing;
+        CHECK_FALSE(meet_at(a, b, from, to, std::min(time + 1e-9, 1.0)));  // and leave again
+        const double scale = coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) + std::fabs(to.tx) +
+                             std::fabs(from.ty) + std::fabs(to.ty);
+        CHECK(feature_gap(a, b, from, to, contact_result<double>{true, time, e.static_feature, e.moving_feature}) <=
+              FT(scale * 0x1p-48) * FT(scale * 0x1p-48));
+    }
+}
+
+}  // namespace
+
+TEST_CASE("rational turning: random multipolygons and stars against the exact reference", "[rational_turn]") {
+    const int scenes = test_effort::scaled(24);
+    tally n;
+    for (int scene = 0; scene < scenes; ++scene) {
+        test_random::rng g(static_cast<std::uint64_t>(3100 + scene));
+        const polygon a = test_scenes::random_multi(g, 8, 6).to_polygon();
+        const polygon b = polygon({{test_scenes::star(g, {0, 0}, 0.5, 2.5, 5 + g.index(8)), ring_role::outer}});
+        for (int k = 0; k < 4; ++k) {
+            // From a place around A, towards its middle by up to twice the
+            // way there, turning by a little or by up to four pieces.
+            const pose from{g.uniform(-14, 14), g.uniform(-14, 14), g.uniform(-3, 3)};
+            const double turn = k == 0 ? g.uniform(-0.3, 0.3) : g.uniform(-5, 5), go = g.uniform(0, 2);
+            const pose to{from.tx * (1 - go) + g.uniform(-2, 2), from.ty * (1 - go) + g.uniform(-2, 2),
+                          from.theta + turn};
+            check_motion(a, b, from, to, 200, n);
+            check_motion(b, a, from, to, 50, n);  // the roles swapped: the multipolygon turns
+        }
+    }
+    INFO("motions " << n.motions << ", contacts " << n.contacts << " (at the start " << n.at_start << ", grazing "
+                    << n.grazing << "), free " << n.free << ", double's answers unlike the exact ones "
+                    << n.double_differs);
+    CHECK(n.contacts > n.at_start + n.motions / 4);
+    CHECK(n.free > 0);
+    CHECK(n.at_start > 0);
+    WARN("motions " << n.motions << ", contacts " << n.contacts << " (at the start " << n.at_start << ", grazing "
+                    << n.grazing << "), free " << n.free << ", double's answers unlike the exact ones "
+                    << n.double_differs << ", times " << n.double_time_differs);
+}
+
+TEST_CASE("rational turning: a vertex grazing an edge, sliding along one, touching at the start", "[rational_turn]") {
+    tally n;
+    // B's vertex (3, 4) turned about the origin reaches y = 5 exactly at
+    // u = 1/3 (the tangent of half of pi/2 minus its angle's half) and
+    // falls back: a contact of one instant, a double root of its cubic.
+    const polygon lid({test_shapes::square_ring(-10, 5, 20)});  // y in [5, 25]
+    const polygon tri({test_shapes::ring({{0, 0}, {3, 4}, {-1, 1}})});
+    const pose start{0, 0, 0};
+    for (const double turn : {1.0, 1.4, -1.0, 3.0}) {
+        INFO("turn " << turn);
+        const pose end{0, 0, turn};
+        const contact_result<exact_rational> e = first_contact<exact_rational>(lid, tri, start, end, rational);
+        CHECK(e.contact == (turn > 0.65));  // u = tan(turn / 2) (one piece) reaches 1/3 when turn > 2 atan(1/3)
+        check_motion(lid, tri, start, end, 200, n);
+    }
+    CHECK(n.grazing > 0);
+
+    // B's vertex at its own origin slides along A's top edge's line (y = 0)
+    // while B turns a little about it, and reaches A's corner (-10, 0)
+    // exactly halfway.
+    const polygon block({test_shapes::square_ring(-10, -20, 20)});  // [-10, 10] x [-20, 0]
+    const polygon spike({test_shapes::ring({{0, 0}, {1, 5}, {-1, 5}})});
+    const contact_result<exact_rational> slide =
+        first_contact<exact_rational>(block, spike, {-20, 0, -0.1}, {0, 0, 0.1}, rational);
+    CHECK(slide.contact);
+    CHECK(slide.time == exact_rational(0.5));
+    check_motion(block, spike, {-20, 0, -0.1}, {0, 0, 0.1}, 200, n);
+    // Touching at the start.
+    const contact_result<exact_rational> touching =
+        first_contact<exact_rational>(block, spike, {5, 0, 0}, {5, 3, 1}, rational);
+    CHECK(touching.contact);
+    CHECK(touching.time == exact_rational(0));
+}
+
+TEST_CASE("rational turning: far from 1 in scale, the same answers", "[rational_turn]") {
+    const int scenes = test_effort::scaled(6);
+    std::size_t contacts = 0;
+    for (int scene = 0; scene < scenes; ++scene) {
+        test_random::rng g(static_cast<std::uint64_t>(3300 + scene));
+        const polygon a = test_scenes::random_multi(g, 8, 4).to_polygon();
+        const polygon b = polygon({{test_scenes::star(g, {0, 0}, 0.5, 2.5, 7), ring_role::outer}});
+        const pose from{g.uniform(-12, 12), g.uniform(-12, 12), g.uniform(-3, 3)};
+        const pose to{from.tx + g.uniform(-8, 8), from.ty + g.uniform(-8, 8), from.theta + g.uniform(-3, 3)};
+        const contact_result<exact_rational> e = first_contact<exact_rational>(a, b, from, to, rational);
+        const contact_result<double> d = first_contact<double>(a, b, from, to, rational);
+        contacts += e.contact;
+        for (const int k : {-600, 600}) {
+            INFO("scene " << scene << ", scale 2^" << k);
+            const polygon as = a.scaled_by_power_of_two(k), bs = b.scaled_by_power_of_two(k);
+            const pose fs{std::ldexp(from.tx, k), std::ldexp(from.ty, k), from.theta},
+                ts{std::ldexp(to.tx, k), std::ldexp(to.ty, k), to.theta};
+            const contact_result<double> c = certified_first_contact(as, bs, fs, ts, rational);
+            CHECK(c.contact == e.contact);
+            CHECK(c.time == CGAL::to_double(e.time));
+            CHECK(c.static_feature.index == e.static_feature.index);
+            const contact_result<double> ds = first_contact<double>(as, bs, fs, ts, rational);
+            CHECK(ds.contact == d.contact);
+            CHECK(ds.time == d.time);
+        }
+    }
+    CHECK(contacts > 0);
+}
