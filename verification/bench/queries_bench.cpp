@@ -125,11 +125,13 @@ void separation_certified_once(benchmark::State& state, const cell& c) {
     }
 }
 
-void first_contact_double(benchmark::State& state, const cell& c, bool turning) {
+void first_contact_double(benchmark::State& state, const cell& c, bool turning,
+                          turning_model model = turning_model::angle_linear) {
     const auto motions = motions_of(c, turning);
+    const sweep_options options{sweep_options{}.tolerance, model};
     std::size_t k = 0, contacts = 0, asked = 0;
     for (auto _ : state) {
-        const auto r = first_contact<double>(c.a(), c.b(), motions[k].first, motions[k].second);
+        const auto r = first_contact<double>(c.a(), c.b(), motions[k].first, motions[k].second, options);
         contacts += r.contact;
         ++asked;
         benchmark::DoNotOptimize(r.time);
@@ -138,13 +140,19 @@ void first_contact_double(benchmark::State& state, const cell& c, bool turning) 
     state.counters["contacts"] = static_cast<double>(contacts) / static_cast<double>(std::max<std::size_t>(asked, 1));
 }
 
-void first_contact_certified(benchmark::State& state, const cell& c) {
-    const auto motions = motions_of(c, false);
-    std::size_t k = 0;
+void first_contact_certified(benchmark::State& state, const cell& c, bool turning = false,
+                             turning_model model = turning_model::angle_linear) {
+    const auto motions = motions_of(c, turning);
+    const sweep_options options{sweep_options{}.tolerance, model};
+    std::size_t k = 0, contacts = 0, asked = 0;
     for (auto _ : state) {
-        benchmark::DoNotOptimize(certified_first_contact(c.a(), c.b(), motions[k].first, motions[k].second).time);
+        const auto r = certified_first_contact(c.a(), c.b(), motions[k].first, motions[k].second, options);
+        contacts += r.contact;
+        ++asked;
+        benchmark::DoNotOptimize(r.time);
         k = (k + 1) % motions.size();
     }
+    state.counters["contacts"] = static_cast<double>(contacts) / static_cast<double>(std::max<std::size_t>(asked, 1));
 }
 
 #if INFLUENCE2D_HAVE_GEOS
@@ -242,11 +250,22 @@ void register_query_benchmarks() {
         benchmark::RegisterBenchmark(("separation/geos_prepared/" + c.name()).c_str(), separation_geos, c, true);
 #endif
         benchmark::RegisterBenchmark(("first_contact/double/" + c.name()).c_str(), first_contact_double, c, false);
-        benchmark::RegisterBenchmark(("first_contact/certified/" + c.name()).c_str(), first_contact_certified, c);
+        benchmark::RegisterBenchmark(("first_contact/certified/" + c.name()).c_str(), first_contact_certified, c, false,
+                                     turning_model::angle_linear);
+    }
+    // Motions that turn: the angle-linear model's advancement and the
+    // rational model's exact roots.
+    for (const cell& c : {cell{"convex", 8, 8}, cell{"contour", 64, 64}}) {
+        benchmark::RegisterBenchmark(("first_contact_turning/double/" + c.name()).c_str(), first_contact_double, c,
+                                     true, turning_model::angle_linear);
+        benchmark::RegisterBenchmark(("first_contact_turning/certified/" + c.name()).c_str(), first_contact_certified,
+                                     c, true, turning_model::angle_linear);
+        benchmark::RegisterBenchmark(("first_contact_turning/rational_double/" + c.name()).c_str(),
+                                     first_contact_double, c, true, turning_model::rational);
+        benchmark::RegisterBenchmark(("first_contact_turning/rational_certified/" + c.name()).c_str(),
+                                     first_contact_certified, c, true, turning_model::rational);
     }
     const cell small{"convex", 8, 8};
-    benchmark::RegisterBenchmark(("first_contact_turning/double/" + small.name()).c_str(), first_contact_double, small,
-                                 true);
 #if INFLUENCE2D_HAVE_BOX2D
     benchmark::RegisterBenchmark(("first_contact/box2d/" + small.name()).c_str(), first_contact_box2d, small, false);
     benchmark::RegisterBenchmark(("first_contact_turning/box2d/" + small.name()).c_str(), first_contact_box2d, small,

@@ -7,6 +7,8 @@
 /// of a vertex with an edge is a root of a cubic whose coefficients are
 /// exact in the input's doubles.
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -26,6 +28,7 @@
 #include "influence2d/core/pose.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/number/certified.hpp"
+#include "influence2d/number/fallback.hpp"
 #include "influence2d/number/traits.hpp"
 #include "influence2d/predicates/contact_time.hpp"
 #include "influence2d/predicates/distance.hpp"
@@ -109,12 +112,17 @@ struct contact_cubics {
     polynomial<NT> f, lo, hi;
 };
 
+/// The coefficients of f, lo and hi (contact_cubics), lowest degree first,
+/// untrimmed.
 template <class NT>
-contact_cubics<NT> cubics_of(const moving_point<NT>& m, const NT& w2, const NT& l, const point<double>& p,
-                             const point<double>& q) {
+using cubic_coefficients = std::array<std::array<NT, 4>, 3>;
+
+template <class NT>
+cubic_coefficients<NT> coefficients_of(const moving_point<NT>& m, const NT& w2, const NT& l, const point<double>& p,
+                                       const point<double>& q) {
     const NT ex = num<NT>(q.x) - num<NT>(p.x), ey = num<NT>(q.y) - num<NT>(p.y);
     const NT px = NT(num<NT>(p.x) * l), py = NT(num<NT>(p.y) * l);
-    contact_cubics<NT> out;
+    cubic_coefficients<NT> out;
     NT yx[4], yy[4];
     for (int k = 0; k < 4; ++k) {
         yx[k] = m.x[k];
@@ -126,16 +134,25 @@ contact_cubics<NT> cubics_of(const moving_point<NT>& m, const NT& w2, const NT& 
     yx[2] = NT(yx[2] - w2 * px);
     yy[2] = NT(yy[2] - w2 * py);
     const NT e2 = NT((ex * ex + ey * ey) * l);
-    for (int k = 0; k < 4; ++k) {
-        out.f.c.push_back(NT(ex * yy[k] - ey * yx[k]));
-        out.lo.c.push_back(NT(ex * yx[k] + ey * yy[k]));
-        out.hi.c.push_back(NT(-out.lo.c[static_cast<std::size_t>(k)]));
+    for (std::size_t k = 0; k < 4; ++k) {
+        out[0][k] = NT(ex * yy[k] - ey * yx[k]);
+        out[1][k] = NT(ex * yx[k] + ey * yy[k]);
+        out[2][k] = NT(-out[1][k]);
     }
-    out.hi.c[0] = NT(out.hi.c[0] + e2);
-    out.hi.c[2] = NT(out.hi.c[2] + w2 * e2);
-    out.f.trimmed();
-    out.lo.trimmed();
-    out.hi.trimmed();
+    out[2][0] = NT(out[2][0] + e2);
+    out[2][2] = NT(out[2][2] + w2 * e2);
+    return out;
+}
+
+template <class NT>
+contact_cubics<NT> cubics_of(const moving_point<NT>& m, const NT& w2, const NT& l, const point<double>& p,
+                             const point<double>& q) {
+    const cubic_coefficients<NT> k = coefficients_of(m, w2, l, p, q);
+    contact_cubics<NT> out;
+    for (auto [poly, c] : {std::pair{&out.f, &k[0]}, std::pair{&out.lo, &k[1]}, std::pair{&out.hi, &k[2]}}) {
+        poly->c.assign(c->begin(), c->end());
+        poly->trimmed();
+    }
     return out;
 }
 
@@ -207,25 +224,68 @@ moving_point<NT> moving_static_vertex(const rational_piece& piece, const piece_t
     return m;
 }
 
-/// Whether the cubic f certainly has no root in [0, 1]: its Bernstein
-/// coefficients on [0, 1] (times 3) all of one strict sign, their signs
-/// taken in Filter (a filtered type throws uncertain_sign when it cannot
-/// tell: the pair is then kept).
+/// A cubic's Bernstein coefficients on an interval (times a positive
+/// constant): the cubic lies in their convex hull there, and equals the
+/// first and the last at the interval's ends.
 template <class Filter>
-bool no_root_in_unit(const polynomial<Filter>& f) {
-    using tr = number_traits<Filter>;
-    const Filter zero = tr::from_double(0);
-    const Filter a0 = f.c.size() > 0 ? f.c[0] : zero, a1 = f.c.size() > 1 ? f.c[1] : zero,
-                 a2 = f.c.size() > 2 ? f.c[2] : zero, a3 = f.c.size() > 3 ? f.c[3] : zero;
+using bernstein = std::array<Filter, 4>;
+
+/// The Bernstein coefficients on [0, 1], times 3, of the cubic a0 + a1 x +
+/// a2 x^2 + a3 x^3: 3 a0, 3 a0 + a1, 3 a0 + 2 a1 + a2, 3 (a0 + a1 + a2 + a3).
+template <class Filter>
+bernstein<Filter> bernstein_of(const std::array<Filter, 4>& a) {
+    const Filter &a0 = a[0], &a1 = a[1], &a2 = a[2], &a3 = a[3];
     const Filter three_a0 = Filter(a0 + a0 + a0);
-    const Filter b[4] = {three_a0, Filter(three_a0 + a1), Filter(three_a0 + a1 + a1 + a2),
-                         Filter((a0 + a1 + a2 + a3) * tr::from_double(3))};
-    const int first = tr::sign(b[0]);
-    if (first == 0) return false;
-    for (int k = 1; k < 4; ++k)
-        if (tr::sign(b[k]) != first) return false;
-    return true;
+    return {three_a0, Filter(three_a0 + a1), Filter(three_a0 + a1 + a1 + a2),
+            Filter((a0 + a1 + a2 + a3) * num<Filter>(3))};
 }
+
+/// The coefficients on the two halves of the interval (de Casteljau at 1/2).
+template <class Filter>
+std::pair<bernstein<Filter>, bernstein<Filter>> halves(const bernstein<Filter>& b) {
+    const Filter half = num<Filter>(0.5);
+    const Filter b01 = Filter((b[0] + b[1]) * half), b12 = Filter((b[1] + b[2]) * half),
+                 b23 = Filter((b[2] + b[3]) * half);
+    const Filter b012 = Filter((b01 + b12) * half), b123 = Filter((b12 + b23) * half);
+    const Filter mid = Filter((b012 + b123) * half);
+    return {{b[0], b01, b012, mid}, {mid, b123, b23, b[3]}};
+}
+
+/// Whether every coefficient certainly has the strict sign `sign` (a
+/// filtered type's doubt: no).
+template <class Filter>
+bool all_of_sign(const bernstein<Filter>& b, int sign) {
+    try {
+        for (const Filter& x : b)
+            if (number_traits<Filter>::sign(x) != sign) return false;
+        return true;
+    } catch (const uncertain_sign&) {
+        return false;
+    }
+}
+
+/// Where in [from, to] the cubics (their Bernstein coefficients there) may
+/// show a contact, the interval cut in halves up to `depth` times: the
+/// start of the first part in which f may vanish while lo and hi may both
+/// be >= 0; none when no part may (f of one strict sign there, or lo or hi
+/// negative throughout).
+template <class Filter>
+std::optional<double> first_possible(const bernstein<Filter>& f, const bernstein<Filter>& lo,
+                                     const bernstein<Filter>& hi, double from, double to, int depth) {
+    if (all_of_sign(f, 1) || all_of_sign(f, -1) || all_of_sign(lo, -1) || all_of_sign(hi, -1)) return std::nullopt;
+    if (depth == 0) return from;
+    const double mid = from + (to - from) / 2;  // (dyadic: exact)
+    const auto [f0, f1] = halves(f);
+    const auto [lo0, lo1] = halves(lo);
+    const auto [hi0, hi1] = halves(hi);
+    if (const auto left = first_possible(f0, lo0, hi0, from, mid, depth - 1)) return left;
+    return first_possible(f1, lo1, hi1, mid, to, depth - 1);
+}
+
+/// How many times first_possible halves [0, 1]: down to parts of 1/16 of a
+/// piece, where a vertex that crosses an edge's line beyond the edge's ends
+/// is mostly told apart (each halving costs the halves of three cubics).
+inline constexpr int sifting_depth = 4;
 
 /// The relative slack of arc_box and of the swept boxes: their corners
 /// computed in double with a few roundings each (the turn's ends: two
@@ -235,27 +295,74 @@ bool no_root_in_unit(const polynomial<Filter>& f) {
 /// of 256.
 inline constexpr double arc_box_slack = 0x1p-40;
 
-/// The box that holds every place of the point p turned from angle 0 by up
-/// to the piece's turn about the origin, after the base rotation (c, s):
-/// the box of its two ends grown by the arc's bulge over its chord,
-/// |p| (1 - cos(theta / 2)) = |p| (1 - 1 / sqrt(1 + w^2)), and by the
-/// filters' slack. (`turned` for A's vertex in B's frame: turned the other
-/// way, after the inverse base rotation.)
-inline box arc_box(const rational_piece& piece, point<double> p, bool inverse) {
-    const double w = piece.w, h = 1 + w * w;
+/// The box that holds every place of the point p over the part [ua, ub] of
+/// the piece's half-angle tangent u, turned about the origin after the
+/// base rotation (c, s): the box of its two ends grown by the arc's bulge
+/// over its chord, |p| (1 - cos(theta / 2)) = |p| (1 - 1 / sqrt(1 + v^2)),
+/// v = tan(theta / 2) = (ub - ua) / (1 + ua ub) for the arc's angle theta,
+/// and by the filters' slack. (`inverse` for A's vertex in B's frame:
+/// turned the other way, after the inverse base rotation.)
+inline box arc_box(const rational_piece& piece, point<double> p, bool inverse, double ua, double ub) {
     const double c = piece.c, s = inverse ? -piece.s : piece.s;
     box b;
-    if (!inverse) {
-        b.add({c * p.x - s * p.y, s * p.x + c * p.y});
-        const double mx = ((1 - w * w) * p.x - 2 * w * p.y) / h, my = (2 * w * p.x + (1 - w * w) * p.y) / h;
-        b.add({c * mx - s * my, s * mx + c * my});
-    } else {
-        const point<double> r{c * p.x - s * p.y, s * p.x + c * p.y};
-        b.add(r);
-        b.add({((1 - w * w) * r.x + 2 * w * r.y) / h, (-2 * w * r.x + (1 - w * w) * r.y) / h});
+    for (const double u : {ua, ub}) {
+        const double h = 1 + u * u;
+        if (!inverse) {
+            const double mx = ((1 - u * u) * p.x - 2 * u * p.y) / h, my = (2 * u * p.x + (1 - u * u) * p.y) / h;
+            b.add({c * mx - s * my, s * mx + c * my});
+        } else {
+            const point<double> r{c * p.x - s * p.y, s * p.x + c * p.y};
+            b.add({((1 - u * u) * r.x + 2 * u * r.y) / h, (-2 * u * r.x + (1 - u * u) * r.y) / h});
+        }
     }
-    const double radius = std::fabs(p.x) + std::fabs(p.y);
-    return b.inflated(radius * (1 - 1 / std::sqrt(h)) + arc_box_slack * radius + std::numeric_limits<double>::min());
+    const double v = std::fabs(ub - ua) / (1 + ua * ub), radius = std::fabs(p.x) + std::fabs(p.y);
+    return b.inflated(radius * (1 - 1 / std::sqrt(1 + v * v)) + arc_box_slack * radius +
+                      std::numeric_limits<double>::min());
+}
+
+/// How many parts of equal time the boxes of a piece's vertices are made
+/// over (swept_parts): a quarter turn's arc boxed whole is as wide as its
+/// radius; a quarter of it a quarter as wide, so that fewer edges meet it.
+inline constexpr int box_parts = 4;
+
+/// The boxes of a point over the box_parts parts of the piece: the point
+/// turned (arc_box) plus the translation over the same part (`shift` at
+/// tau is a0 + a1 tau; subtracted for A's vertex in B's frame), grown by
+/// the slack.
+inline std::array<box, box_parts> swept_parts(const rational_piece& piece, point<double> p, bool inverse,
+                                              const piece_translation<double>& shift, double slack) {
+    std::array<box, box_parts> out;
+    for (int k = 0; k < box_parts; ++k) {
+        const double t0 = double(k) / box_parts, t1 = double(k + 1) / box_parts;
+        const point<double> s0{shift.a0.x + t0 * shift.a1.x, shift.a0.y + t0 * shift.a1.y},
+            s1{shift.a0.x + t1 * shift.a1.x, shift.a0.y + t1 * shift.a1.y};
+        box& b = out[static_cast<std::size_t>(k)];
+        if (!inverse) {
+            const box turned = arc_box(piece, p, false, piece.w * t0, piece.w * t1);
+            for (const point<double>& sh : {s0, s1}) {
+                b.add({turned.min_x + sh.x, turned.min_y + sh.y});
+                b.add({turned.max_x + sh.x, turned.max_y + sh.y});
+            }
+        } else {
+            // q - shift lies between its two ends; each of them turned back
+            // lies in its arc_box, and so does every point between them
+            // turned by the same angle.
+            for (const point<double>& sh : {s0, s1}) {
+                const box turned = arc_box(piece, {p.x - sh.x, p.y - sh.y}, true, piece.w * t0, piece.w * t1);
+                b.add({turned.min_x, turned.min_y});
+                b.add({turned.max_x, turned.max_y});
+            }
+        }
+        b = b.inflated(slack);
+    }
+    return out;
+}
+
+/// The start (tau) of the first part whose box meets `edge`, or none.
+inline std::optional<double> first_part_meeting(const std::array<box, box_parts>& parts, const box& edge) {
+    for (int k = 0; k < box_parts; ++k)
+        if (boxes_overlap(parts[static_cast<std::size_t>(k)], edge)) return double(k) / box_parts;
+    return std::nullopt;
 }
 
 /// A pair of features that touch first, found in a piece: its site, its
@@ -267,20 +374,22 @@ struct piece_contact {
     isolated_root<NT> root;
 };
 
-/// The earliest root in (0, 1] of the cubics' f at which lo and hi are >= 0
-/// (in (0, 1) when `open_end`: the next piece starts at 1), bracketed; none
+/// The earliest root in (after, 1] of the cubics' f at which lo and hi are
+/// >= 0 (in (after, 1) when `open_end`: the next piece starts at 1),
+/// bracketed; none
 /// when there is none (or f is identically zero: the point slides along the
 /// segment's line, and reaches the segment only at an end, a vertex of the
 /// polygon, where another pair's f finds the contact).
 template <class NT>
 std::optional<std::pair<std::vector<polynomial<NT>>, isolated_root<NT>>> earliest_root(const contact_cubics<NT>& k,
-                                                                                       bool open_end) {
+                                                                                       double after, bool open_end) {
     if (k.f.degree() < 1) return std::nullopt;  // identically zero, or a non-zero constant
     std::vector<polynomial<NT>> s = sturm_sequence(k.f);
     const NT one = num<NT>(1);
     const bool root_at_end = open_end && k.f.sign_at(one) == 0;
-    for (isolated_root<NT> r : isolate_roots(s, num<NT>(0), one)) {
+    for (isolated_root<NT> r : isolate_roots(s, num<NT>(after), one)) {
         if (root_at_end && compare_values<NT>(r.high, one) == 0) break;  // (the bracket's root is 1, its last)
+        narrowed_by_double(s, r);  // (cheap: the signs below and the rounding then take a step or two)
         if (sign_at_root(k.lo, s, r) >= 0 && sign_at_root(k.hi, s, r) >= 0) return std::make_pair(std::move(s), r);
     }
     return std::nullopt;
@@ -346,14 +455,22 @@ double rounded_time(const rational_piece& piece, const std::vector<polynomial<NT
 ///   pieces <- rational_pieces(from, to)
 ///   for each piece, in order:
 ///     A and B at the piece's start meet (the one-shot query, B's vertices
-///       posed exactly):                      time t0, the features met
+///       posed exactly; in Filter first):     time t0, the features met
 ///     for each vertex of B and edge of A, and each vertex of A and edge
-///     of B (in B's frame), whose boxes over the piece meet (arc_box):
-///       f <- the cubic of the vertex on the edge's line; skip when its
-///            Bernstein coefficients on [0, 1] have one sign (in Filter)
-///       its earliest root in (0, 1] at which the vertex lies on the
-///       closed segment (Sturm sequences, bisection; exact signs)
-///     the earliest of those roots (ties: site_before):  the first contact
+///     of B (in B's frame), whose boxes over a quarter of the piece meet
+///     (swept_parts: arcs boxed by their ends and bulge, plus the
+///     translation):
+///       f, lo, hi <- the cubics of the vertex on the edge's line and
+///            between its ends, in Filter; kept with the start of the first
+///            sixteenth of the piece where f may vanish while lo and hi may
+///            be >= 0 (their Bernstein coefficients, halved four times), or
+///            of the first quarter whose box meets the edge, the later
+///     for the kept pairs in order of that start, while it is not after
+///     the best root found:
+///       the earliest root of f after the start at which lo, hi >= 0, in NT
+///       (Sturm sequences, bisection; exact signs); the best so far when
+///       earlier (ties: site_before)
+///     a best root:                                      the first contact
 ///   none
 ///
 /// NT needs division (exact_rational, or a floating type). Throws
@@ -368,95 +485,103 @@ contact_result<double> rational_first_contact(const polygon& a, const polygon& b
     for (const rational_piece& piece : pieces) {
         const bool last = &piece == &pieces.back();
         const piece_translation<NT> t = translation_of<NT>(piece, from, to);
-        if (const auto met = meeting_at_piece_start<NT>(a, b, piece, t, scale)) {
+        const auto met = [&] {
+            if constexpr (std::is_same_v<Filter, NT>) {
+                return meeting_at_piece_start<NT>(a, b, piece, t, scale);
+            } else {
+                // In Filter first, in NT when a sign is in doubt.
+                return fallback<>::run(
+                    [&] {
+                        return meeting_at_piece_start<Filter>(a, b, piece, translation_of<Filter>(piece, from, to),
+                                                              scale);
+                    },
+                    [&] { return meeting_at_piece_start<NT>(a, b, piece, t, scale); });
+            }
+        }();
+        if (met) {
             r.contact = true;
             r.time = piece.t0;
             std::tie(r.static_feature, r.moving_feature) = *met;
             return r;
         }
-        // The translation's box over the piece, in double.
-        box moved;
+        // The translation over the piece, in double (for the boxes).
         const piece_translation<double> td = translation_of<double>(piece, from, to);
-        moved.add(td.a0);
-        moved.add({td.a0.x + td.a1.x, td.a0.y + td.a1.y});
         const double slack = arc_box_slack * scale + std::numeric_limits<double>::min();
         const piece_translation<Filter> tf = translation_of<Filter>(piece, from, to);
-        const Filter wf = num<Filter>(piece.w);
+        const Filter wf = num<Filter>(piece.w), w2f = Filter(wf * wf);
         // The factor l of cubics_of: 1 in A's frame, c^2 + s^2 in B's.
         const NT one = num<NT>(1), base = NT(num<NT>(piece.c) * num<NT>(piece.c) + num<NT>(piece.s) * num<NT>(piece.s));
         const Filter one_f = num<Filter>(1), base_f = Filter(num<Filter>(piece.c) * num<Filter>(piece.c) +
                                                              num<Filter>(piece.s) * num<Filter>(piece.s));
 
+        // Each pair whose boxes over the piece meet, sifted in Filter: where
+        // in the piece its contact may be (first_possible), or none.
+        struct candidate {
+            sweep::contact_site site;
+            double after;  // no contact of the pair at or before this tau
+        };
+        std::vector<candidate> kept;
+        const auto sift = [&](const sweep::contact_site& site, const moving_point<Filter>& m, const Filter& l,
+                              const point<double>& p, const point<double>& q, double from_box) {
+            const cubic_coefficients<Filter> k = coefficients_of(m, w2f, l, p, q);
+            if (const std::optional<double> at =
+                    first_possible(bernstein_of(k[0]), bernstein_of(k[1]), bernstein_of(k[2]), 0.0, 1.0, sifting_depth))
+                kept.push_back({site, std::max(*at, from_box)});
+        };
+        // B's vertices against A's edges, in A's frame; A's vertices against
+        // B's edges, in B's frame (q less the translation, turned back).
+        for (const bool moving : {true, false}) {
+            const polygon &vertices = moving ? b : a, &edges = moving ? a : b;
+            std::vector<box> edge_boxes(edges.size());
+            for (std::size_t e = 0; e < edges.size(); ++e) {
+                edge_boxes[e].add(edges.vertex(e));
+                edge_boxes[e].add(edges.vertex(edges.next(e)));
+            }
+            for (std::size_t v = 0; v < vertices.size(); ++v) {
+                const std::array<box, box_parts> parts = swept_parts(piece, vertices.vertex(v), !moving, td, slack);
+                box whole;
+                for (const box& part : parts) {
+                    whole.add({part.min_x, part.min_y});
+                    whole.add({part.max_x, part.max_y});
+                }
+                std::optional<moving_point<Filter>> mf;
+                for (std::size_t e = 0; e < edges.size(); ++e) {
+                    if (!boxes_overlap(whole, edge_boxes[e])) continue;
+                    const std::optional<double> from_box = first_part_meeting(parts, edge_boxes[e]);
+                    if (!from_box) continue;
+                    if (!mf)
+                        mf = moving ? moving_vertex<Filter>(piece, tf, vertices.vertex(v))
+                                    : moving_static_vertex<Filter>(piece, tf, vertices.vertex(v));
+                    sift({moving, static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(e)}, *mf,
+                         moving ? one_f : base_f, edges.vertex(e), edges.vertex(edges.next(e)), *from_box);
+                }
+            }
+        }
+        // The kept pairs in order of where their contact may start; the
+        // earliest root among them, in NT, each pair's roots sought after
+        // its start only; the pairs that start after the best root found
+        // so far are left.
+        std::sort(kept.begin(), kept.end(), [](const candidate& x, const candidate& y) {
+            return x.after != y.after ? x.after < y.after : sweep::site_before(x.site, y.site);
+        });
         std::optional<piece_contact<NT>> best;
-        const auto consider = [&](const sweep::contact_site& site, const moving_point<NT>& m, const NT& l,
-                                  const point<double>& p, const point<double>& q) {
-            auto found = earliest_root(cubics_of(m, NT(num<NT>(piece.w) * num<NT>(piece.w)), l, p, q), !last);
-            if (!found) return;
-            piece_contact<NT> c{site, std::move(found->first), found->second};
+        const NT w2 = NT(num<NT>(piece.w) * num<NT>(piece.w));
+        for (const candidate& c : kept) {
+            if (best && compare_values<NT>(num<NT>(c.after), best->root.high) > 0) break;
+            const moving_point<NT> m = c.site.moving_vertex
+                                           ? moving_vertex<NT>(piece, t, b.vertex(c.site.vertex))
+                                           : moving_static_vertex<NT>(piece, t, a.vertex(c.site.vertex));
+            const polygon& edges = c.site.moving_vertex ? a : b;
+            auto found = earliest_root(cubics_of(m, w2, c.site.moving_vertex ? one : base, edges.vertex(c.site.edge),
+                                                 edges.vertex(edges.next(c.site.edge))),
+                                       c.after, !last);
+            if (!found) continue;
+            piece_contact<NT> contact{c.site, std::move(found->first), found->second};
             if (best) {
-                const int order = compare_roots(c.sequence, c.root, best->sequence, best->root);
-                if (order > 0 || (order == 0 && !sweep::site_before(site, best->site))) return;
+                const int order = compare_roots(contact.sequence, contact.root, best->sequence, best->root);
+                if (order > 0 || (order == 0 && !sweep::site_before(c.site, best->site))) continue;
             }
-            best = std::move(c);
-        };
-        const auto kept_by_filter = [&](const moving_point<Filter>& m, const Filter& l, const point<double>& p,
-                                        const point<double>& q) {
-            try {
-                return !no_root_in_unit(cubics_of(m, Filter(wf * wf), l, p, q).f);
-            } catch (const uncertain_sign&) {
-                return true;
-            }
-        };
-        // B's vertices against A's edges, in A's frame.
-        std::vector<box> a_edges(a.size());
-        for (std::size_t e = 0; e < a.size(); ++e) {
-            a_edges[e].add(a.vertex(e));
-            a_edges[e].add(a.vertex(a.next(e)));
-        }
-        for (std::size_t v = 0; v < b.size(); ++v) {
-            const box turned = arc_box(piece, b.vertex(v), false);
-            const box swept{turned.min_x + moved.min_x - slack, turned.min_y + moved.min_y - slack,
-                            turned.max_x + moved.max_x + slack, turned.max_y + moved.max_y + slack};
-            std::optional<moving_point<Filter>> mf;
-            std::optional<moving_point<NT>> m;
-            for (std::size_t e = 0; e < a.size(); ++e) {
-                if (!boxes_overlap(swept, a_edges[e])) continue;
-                if (!mf) mf = moving_vertex<Filter>(piece, tf, b.vertex(v));
-                if (!kept_by_filter(*mf, one_f, a.vertex(e), a.vertex(a.next(e)))) continue;
-                if (!m) m = moving_vertex<NT>(piece, t, b.vertex(v));
-                consider({true, static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(e)}, *m, one, a.vertex(e),
-                         a.vertex(a.next(e)));
-            }
-        }
-        // A's vertices against B's edges, in B's frame: q - translation,
-        // turned back.
-        std::vector<box> b_edges(b.size());
-        for (std::size_t e = 0; e < b.size(); ++e) {
-            b_edges[e].add(b.vertex(e));
-            b_edges[e].add(b.vertex(b.next(e)));
-        }
-        for (std::size_t v = 0; v < a.size(); ++v) {
-            // q - (a0 + a1 tau) lies in the box of its two ends; each of
-            // those turned back lies in its arc_box, and so does every
-            // point between them turned by the same angle.
-            const point<double> q = a.vertex(v);
-            box swept;
-            for (const point<double>& shift : {td.a0, point<double>{td.a0.x + td.a1.x, td.a0.y + td.a1.y}}) {
-                const box turned = arc_box(piece, {q.x - shift.x, q.y - shift.y}, true);
-                swept.add({turned.min_x, turned.min_y});
-                swept.add({turned.max_x, turned.max_y});
-            }
-            swept = swept.inflated(slack);
-            std::optional<moving_point<Filter>> mf;
-            std::optional<moving_point<NT>> m;
-            for (std::size_t e = 0; e < b.size(); ++e) {
-                if (!boxes_overlap(swept, b_edges[e])) continue;
-                if (!mf) mf = moving_static_vertex<Filter>(piece, tf, q);
-                if (!kept_by_filter(*mf, base_f, b.vertex(e), b.vertex(b.next(e)))) continue;
-                if (!m) m = moving_static_vertex<NT>(piece, t, q);
-                consider({false, static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(e)}, *m, base, b.vertex(e),
-                         b.vertex(b.next(e)));
-            }
+            best = std::move(contact);
         }
         if (best) {
             r.contact = true;

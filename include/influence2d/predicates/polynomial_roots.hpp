@@ -13,7 +13,9 @@
 /// polynomials share a root exactly when their greatest common divisor
 /// vanishes there. In a floating NT the same steps round.
 
+#include <cmath>
 #include <cstddef>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -173,6 +175,63 @@ std::vector<isolated_root<NT>> isolate_roots(const std::vector<polynomial<NT>>& 
     return out;
 }
 
+/// Narrows the bracket r of the only root of s[0] in it to a few units in
+/// the last place of double: the root sought by bisection in double (on
+/// s[0]'s coefficients rounded), then the narrow bracket around it checked
+/// exactly to hold a root of s[0] (roots_between). False, r unchanged,
+/// when the check fails (s[0] does not change sign in double across the
+/// bracket: a root of even multiplicity, or values lost in rounding).
+template <class NT>
+bool narrowed_by_double(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r) {
+    using tr = number_traits<NT>;
+    std::vector<double> c;
+    for (const NT& x : s[0].c) c.push_back(tr::to_double(x));
+    const auto value = [&c](double x) {
+        double v = 0;
+        for (std::size_t k = c.size(); k-- > 0;) v = v * x + c[k];
+        return v;
+    };
+    double lo = tr::to_double(r.low), hi = tr::to_double(r.high);
+    const double v_lo = value(lo), v_hi = value(hi);
+    if (!(v_lo < 0 && v_hi > 0) && !(v_lo > 0 && v_hi < 0)) return false;
+    const bool rising = v_hi > 0;
+    for (;;) {
+        const double mid = lo + (hi - lo) / 2;
+        if (!(mid > lo && mid < hi)) break;
+        (((value(mid) > 0) == rising) ? hi : lo) = mid;
+    }
+    // The root within a few units of [lo, hi], inside r: (lo', hi'].
+    for (int step = 0; step < 4; ++step) {
+        lo = std::nextafter(lo, -1.0);
+        hi = std::nextafter(hi, 2.0);
+    }
+    const NT nlo = compare_values<NT>(tr::from_double(lo), r.low) > 0 ? NT(tr::from_double(lo)) : r.low;
+    const NT nhi = compare_values<NT>(tr::from_double(hi), r.high) < 0 ? NT(tr::from_double(hi)) : r.high;
+    if (compare_values<NT>(nlo, nhi) >= 0 || roots_between(s, nlo, nhi) != 1) return false;
+    r = {nlo, nhi};
+    return true;
+}
+
+/// The sign of q at the root bracketed by r when q's value at the bracket's
+/// upper end exceeds what q can change across the bracket (its width times
+/// the sum of k |q_k|, which bounds |q'| on [-1, 1]); none otherwise.
+template <class NT>
+std::optional<int> sign_by_slope(const polynomial<NT>& q, const isolated_root<NT>& r) {
+    using tr = number_traits<NT>;
+    if (q.degree() < 0) return 0;
+    const NT v = q.at(r.high);
+    const int sign = tr::sign(v);
+    if (sign == 0) return std::nullopt;
+    NT slope = tr::from_double(0);
+    for (std::size_t k = 1; k < q.c.size(); ++k) {
+        const NT ck = tr::sign(q.c[k]) < 0 ? NT(-q.c[k]) : q.c[k];
+        slope = NT(slope + ck * tr::from_double(static_cast<double>(k)));
+    }
+    const NT change = NT(slope * NT(r.high - r.low));
+    if (compare_values<NT>(sign < 0 ? NT(-v) : v, change) > 0) return sign;
+    return std::nullopt;
+}
+
 /// Whether q vanishes at the root of s[0] bracketed by r: q and s[0] share
 /// a root in the bracket (their greatest common divisor has one there).
 template <class NT>
@@ -183,12 +242,15 @@ bool vanishes_at(const polynomial<NT>& q, const std::vector<polynomial<NT>>& s, 
     return roots_between(sturm_sequence(g), r.low, r.high) > 0;
 }
 
-/// The sign of q at the root of s[0] bracketed by r (-1, 0 or +1): 0 when
+/// The sign of q at the root of s[0] bracketed by r (-1, 0 or +1), for a
+/// bracket within [-1, 1]: at once when q's value at the upper end
+/// outweighs its slope across the bracket (sign_by_slope); else 0 when
 /// they share it; else the bracket is halved until q has no root in it,
 /// and q's sign at its upper end is q's sign at the root. `r` is left
 /// narrowed.
 template <class NT>
 int sign_at_root(const polynomial<NT>& q, const std::vector<polynomial<NT>>& s, isolated_root<NT>& r) {
+    if (const std::optional<int> quick = sign_by_slope(q, r)) return *quick;
     if (vanishes_at(q, s, r)) return 0;
     const std::vector<polynomial<NT>> sq = sturm_sequence(q);
     for (int k = 0; roots_between(sq, r.low, r.high) > 0 && (is_exact_v<NT> || k < rounded_halvings); ++k) halve(s, r);
