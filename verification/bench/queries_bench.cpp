@@ -249,7 +249,8 @@ void register_query_benchmarks() {
         benchmark::RegisterBenchmark(("separation/geos/" + c.name()).c_str(), separation_geos, c, false);
         benchmark::RegisterBenchmark(("separation/geos_prepared/" + c.name()).c_str(), separation_geos, c, true);
 #endif
-        benchmark::RegisterBenchmark(("first_contact/double/" + c.name()).c_str(), first_contact_double, c, false);
+        benchmark::RegisterBenchmark(("first_contact/double/" + c.name()).c_str(), first_contact_double, c, false,
+                                     turning_model::angle_linear);
         benchmark::RegisterBenchmark(("first_contact/certified/" + c.name()).c_str(), first_contact_certified, c, false,
                                      turning_model::angle_linear);
     }
