@@ -485,17 +485,14 @@ contact_result<double> rational_first_contact(const polygon& a, const polygon& b
     for (const rational_piece& piece : pieces) {
         const bool last = &piece == &pieces.back();
         const piece_translation<NT> t = translation_of<NT>(piece, from, to);
+        const piece_translation<Filter> tf = translation_of<Filter>(piece, from, to);
         const auto met = [&] {
             if constexpr (std::is_same_v<Filter, NT>) {
                 return meeting_at_piece_start<NT>(a, b, piece, t, scale);
             } else {
                 // In Filter first, in NT when a sign is in doubt.
-                return fallback<>::run(
-                    [&] {
-                        return meeting_at_piece_start<Filter>(a, b, piece, translation_of<Filter>(piece, from, to),
-                                                              scale);
-                    },
-                    [&] { return meeting_at_piece_start<NT>(a, b, piece, t, scale); });
+                return fallback<>::run([&] { return meeting_at_piece_start<Filter>(a, b, piece, tf, scale); },
+                                       [&] { return meeting_at_piece_start<NT>(a, b, piece, t, scale); });
             }
         }();
         if (met) {
@@ -507,7 +504,6 @@ contact_result<double> rational_first_contact(const polygon& a, const polygon& b
         // The translation over the piece, in double (for the boxes).
         const piece_translation<double> td = translation_of<double>(piece, from, to);
         const double slack = arc_box_slack * scale + std::numeric_limits<double>::min();
-        const piece_translation<Filter> tf = translation_of<Filter>(piece, from, to);
         const Filter wf = num<Filter>(piece.w), w2f = Filter(wf * wf);
         // The factor l of cubics_of: 1 in A's frame, c^2 + s^2 in B's.
         const NT one = num<NT>(1), base = NT(num<NT>(piece.c) * num<NT>(piece.c) + num<NT>(piece.s) * num<NT>(piece.s));

@@ -401,14 +401,28 @@ private:
         by(by_second, pairs, [](const body_pair& p) { return p.first; });
     }
 
+    // The parts' items appended to `to`, part after part (the parallel
+    // passes' results in the serial pass's order).
+    template <class T>
+    static void append_in_order(const std::vector<std::vector<T>>& parts, std::vector<T>& to) {
+        std::size_t total = to.size();
+        for (const std::vector<T>& v : parts) total += v.size();
+        to.reserve(total);
+        for (const std::vector<T>& v : parts) to.insert(to.end(), v.begin(), v.end());
+    }
+
     // Step 2a: the near pairs (enlarged boxes meet), sorted: those of the
     // escaped bodies found again, the others kept.
     void update_near() {
         if (escaped_.empty()) return;
         std::vector<body_pair> found;
-        const auto add = [&](std::uint32_t i, std::uint32_t j) {
-            if (i != j) found.push_back({std::min(i, j), std::max(i, j)});
+        // Adds the pair of i and j (not the same body), ordered, to `to`.
+        const auto adding_to = [](std::vector<body_pair>& to) {
+            return [&to](std::uint32_t i, std::uint32_t j) {
+                if (i != j) to.push_back({std::min(i, j), std::max(i, j)});
+            };
         };
+        const auto add = adding_to(found);
         const bool most = escaped_.size() * 4 >= free_tree_.size() + fixed_tree_.size();
         const unsigned threads = bodies_.size() < parallel_join_bodies ? 1u : batch_threads(options_.threads);
         if (most && threads > 1) {
@@ -421,16 +435,9 @@ private:
             std::vector<std::vector<body_pair>> part_pairs(parts.size());
             run_in_chunks(parts.size(), threads, 1, [&](std::size_t first, std::size_t last) {
                 for (std::size_t k = first; k < last; ++k)
-                    free_tree_.join_part_pairs(parts[k], k < own ? free_tree_ : fixed_tree_,
-                                               [&](std::uint32_t i, std::uint32_t j) {
-                                                   if (i != j)
-                                                       part_pairs[k].push_back({std::min(i, j), std::max(i, j)});
-                                               });
+                    free_tree_.join_part_pairs(parts[k], k < own ? free_tree_ : fixed_tree_, adding_to(part_pairs[k]));
             });
-            std::size_t total = 0;
-            for (const std::vector<body_pair>& v : part_pairs) total += v.size();
-            found.reserve(total);
-            for (const std::vector<body_pair>& v : part_pairs) found.insert(found.end(), v.begin(), v.end());
+            append_in_order(part_pairs, found);
         } else if (most) {
             free_tree_.self_join(add);
             free_tree_.join(fixed_tree_, add);
@@ -484,11 +491,9 @@ private:
                     shifted_in[k] =
                         candidates_in(near_.size() * k / blocks, near_.size() * (k + 1) / blocks, tested[k], kept[k]);
             });
-            for (std::size_t k = 0; k < blocks; ++k) {
-                tested_.insert(tested_.end(), tested[k].begin(), tested[k].end());
-                kept_.insert(kept_.end(), kept[k].begin(), kept[k].end());
-                shifted = shifted || shifted_in[k];
-            }
+            append_in_order(tested, tested_);
+            append_in_order(kept, kept_);
+            shifted = std::find(shifted_in.begin(), shifted_in.end(), 1) != shifted_in.end();
         }
         if (shifted)
             for (const record& r : tested_)
