@@ -72,18 +72,31 @@ def separation(a, b, poses, number_type="certified", threads=0, features=False):
     }
 
 
-def first_contact(a, b, start_poses, end_poses, number_type="certified", threads=0):
+def first_contact(a, b, start_poses, end_poses, number_type="certified", threads=0, motion="angle-linear"):
     """The first contact of B moving from each start pose to its end pose
-    (a translation when the angles are equal; a turn otherwise, within the
-    library's tolerance) with A: a bool array (whether they meet at some
-    time in [0, 1]) and a float64 array (the earliest such time, rounded to
-    the nearest double; NaN where they never meet).
+    with A: a bool array (whether they meet at some time in [0, 1]) and a
+    float64 array (the earliest such time, rounded to the nearest double;
+    NaN where they never meet).
+
+    The translation is linear in time. A motion whose angles differ turns
+    as ``motion`` says:
+
+    - ``"angle-linear"``: the angle linear in time; contact reported within
+      the library's tolerance of 1e-9 (never after the true first contact);
+    - ``"rational"``: the tangent of half the turn since the start linear in
+      time, in pieces of at most a quarter turn (the README's definition);
+      exact in the ``"certified"`` and ``"exact"`` types.
 
     >>> import numpy as np
     >>> a = "POLYGON ((0 0, 2 0, 2 2, 0 2, 0 0))"
     >>> b = "POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))"
     >>> first_contact(a, b, np.array([[4.0, 0.0, 0.0], [4.0, 5.0, 0.0]]), np.array([[0.0, 0.0, 0.0], [0.0, 5.0, 0.0]]))
     (array([ True, False]), array([0.5, nan]))
+    >>> start, end = np.array([[2.5, 0.5, 0.0]]), np.array([[2.5, 0.5, np.pi]])
+    >>> first_contact(a, b, start, end)  # touches after a sixth of the half turn
+    (array([ True]), array([0.16666667]))
+    >>> first_contact(a, b, start, end, motion="rational")  # t = tan(pi / 12) / tan(pi / 4) / 2
+    (array([ True]), array([0.1339746]))
     """
     return _core.first_contact(as_polygon(a, "a")._p, as_polygon(b, "b")._p, as_poses(start_poses, "start_poses"),
-                               as_poses(end_poses, "end_poses"), number_type, threads)
+                               as_poses(end_poses, "end_poses"), number_type, motion, threads)

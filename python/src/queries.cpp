@@ -177,8 +177,17 @@ py::tuple separation(const py_polygon& a, const py_polygon& b, const py::array& 
                           arrays.moving_index, arrays.static_point, arrays.moving_point);
 }
 
+/// The turning model named `name` ("angle-linear", "rational"); throws
+/// invalid_input naming it otherwise.
+turning_model turning_model_of(const std::string& name) {
+    if (name == "angle-linear") return turning_model::angle_linear;
+    if (name == "rational") return turning_model::rational;
+    throw invalid_input("motion '" + name + "' is not a turning model: expected 'angle-linear' or 'rational'");
+}
+
 void first_contact_into(const polygon& a, const polygon& b, const pose_rows& from, const pose_rows& to,
-                        number_kind kind, unsigned threads, bool* contact, double* time) {
+                        number_kind kind, const sweep_options& options, unsigned threads, bool* contact,
+                        double* time) {
     run_in_blocks(from.count, threads, [&](std::size_t first, std::size_t last) {
         for (std::size_t k = first; k < last; ++k) {
             const pose &p = from.rows[k], &q = to.rows[k];
@@ -186,19 +195,19 @@ void first_contact_into(const polygon& a, const polygon& b, const pose_rows& fro
             double t = 0;
             switch (kind) {
             case number_kind::certified_type: {
-                const contact_result<double> r = certified_first_contact(a, b, p, q);
+                const contact_result<double> r = certified_first_contact(a, b, p, q, options);
                 c = r.contact;
                 t = r.time;
                 break;
             }
             case number_kind::double_type: {
-                const contact_result<double> r = first_contact<double>(a, b, p, q);
+                const contact_result<double> r = first_contact<double>(a, b, p, q, options);
                 c = r.contact;
                 t = r.time;
                 break;
             }
             case number_kind::exact_type: {
-                const contact_result<exact_rational> r = first_contact<exact_rational>(a, b, p, q);
+                const contact_result<exact_rational> r = first_contact<exact_rational>(a, b, p, q, options);
                 c = r.contact;
                 if (c) t = nearest_double(time_fraction<exact_rational>{r.time, exact_rational(1)});
                 break;
@@ -211,8 +220,10 @@ void first_contact_into(const polygon& a, const polygon& b, const pose_rows& fro
 }
 
 py::tuple first_contact_batch(const py_polygon& a, const py_polygon& b, const py::array& start, const py::array& end,
-                              const std::string& number_type, long threads) {
+                              const std::string& number_type, const std::string& motion, long threads) {
     const number_kind kind = number_kind_of(number_type);
+    sweep_options options;
+    options.model = turning_model_of(motion);
     const unsigned t = threads_of(threads);
     const pose_rows from = pose_rows_of(start, "start_poses");
     const pose_rows to = pose_rows_of(end, "end_poses");
@@ -225,7 +236,7 @@ py::tuple first_contact_batch(const py_polygon& a, const py_polygon& b, const py
     double* tm = time.mutable_data();
     {
         py::gil_scoped_release release;
-        first_contact_into(a.shape, b.shape, from, to, kind, t, c, tm);
+        first_contact_into(a.shape, b.shape, from, to, kind, options, t, c, tm);
     }
     return py::make_tuple(contact, time);
 }
@@ -238,7 +249,7 @@ void bind_queries(py::module_& m) {
     m.def("separation", &separation, py::arg("a"), py::arg("b"), py::arg("poses"), py::arg("number_type"),
           py::arg("threads"));
     m.def("first_contact", &first_contact_batch, py::arg("a"), py::arg("b"), py::arg("start_poses"),
-          py::arg("end_poses"), py::arg("number_type"), py::arg("threads"));
+          py::arg("end_poses"), py::arg("number_type"), py::arg("motion"), py::arg("threads"));
 }
 
 }  // namespace influence2d::python

@@ -108,3 +108,38 @@ def regions_meet(a_rings, b_rings):
 def intersects(a_geom, b_geom, pose):
     """The exact answer of influence2d.intersects for one pose."""
     return regions_meet(oriented(rings_of(a_geom)), posed(oriented(rings_of(b_geom)), pose))
+
+
+def rational_turn_transform(start, end, t):
+    """B's rotation (c, s) and translation (tx, ty) at time t of the motion
+    from `start` to `end` in the rational turning model, as Fractions: the
+    turn cut into k pieces, k the least power of two with |turn| / k at most
+    pi / 2 rounded; piece j starts at the double angle start.theta + j * step
+    (piece 0 at start.theta) and turns by 2 atan(u), u = w tau, w =
+    tan(step / 2) in double, tau = (t - j / k) k; the translation is
+    start + t (end - start). The piece of t is the one with j / k <= t <
+    (j + 1) / k (the last piece includes t = 1)."""
+    turn = end[2] - start[2]
+    k = 1
+    while abs(turn) / k > 1.5707963267948966:
+        k *= 2
+    step = turn / k
+    w = Fraction(math.tan(step / 2))
+    t = Fraction(t)
+    j = min(int(t * k), k - 1)
+    angle = start[2] if j == 0 else start[2] + j * step
+    c0, s0 = Fraction(math.cos(angle)), Fraction(math.sin(angle))
+    u = w * (t - Fraction(j, k)) * k
+    h = 1 + u * u
+    mc, ms = (1 - u * u) / h, 2 * u / h
+    c, s = c0 * mc - s0 * ms, s0 * mc + c0 * ms
+    tx = Fraction(start[0]) + t * (Fraction(end[0]) - Fraction(start[0]))
+    ty = Fraction(start[1]) + t * (Fraction(end[1]) - Fraction(start[1]))
+    return c, s, tx, ty
+
+
+def meet_in_rational_turn(a_geom, b_geom, start, end, t):
+    """Whether A and B meet at time t of B's rational turning motion."""
+    c, s, tx, ty = rational_turn_transform(start, end, t)
+    b_rings = [[(c * x - s * y + tx, s * x + c * y + ty) for x, y in ring] for ring in oriented(rings_of(b_geom))]
+    return regions_meet(oriented(rings_of(a_geom)), b_rings)

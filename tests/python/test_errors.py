@@ -118,6 +118,8 @@ def test_bad_options():
     raises("within is nan", influence2d.Detector, A, B, within=math.nan)
     raises("distance", influence2d.pairs, [A, B], within=-1.0)
     raises("one end pose per start pose", influence2d.first_contact, A, B, np.zeros((2, 3)), np.zeros((3, 3)))
+    raises("motion 'linear' is not a turning model", influence2d.first_contact, A, B, np.zeros((1, 3)),
+           np.zeros((1, 3)), motion="linear")
     raises(r"pose: expected one pose", influence2d.Detector(A, B).witness, np.zeros((2, 3)))
 
 

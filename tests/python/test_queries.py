@@ -3,6 +3,7 @@
 reference (exact_reference.py, rational arithmetic without the library),
 shapely away from contact, and the influence2d tool of the same build."""
 
+import functools
 import math
 
 import numpy as np
@@ -208,6 +209,66 @@ def test_first_contact_matches_the_tool(tool, tmp_path, rng):
     poses = np.array([[rng.uniform(-3, 3), rng.uniform(-3, 3), 0.0] for _ in range(41)])
     rows = tool_frames(tool, tmp_path, a, b, poses, "--number-type", "certified", "--continuous")
     contact, t = influence2d.first_contact(a, b, poses[:-1], poses[1:])
+    for k, cols in enumerate(rows[1:]):
+        assert (cols[2] != "") == contact[k]
+        if contact[k]:
+            assert float(cols[2]) == t[k]
+
+
+def turning_motions(np_rng, count):
+    """Motions that start 1.7 to 2.6 from A's origin, move toward it by up to
+    1.2 and turn by up to 1.5 turns (pieces of a quarter turn and more): most
+    meet A on the way, few at the start."""
+    r, phi = np_rng.uniform(1.7, 2.6, count), np_rng.uniform(0, 2 * np.pi, count)
+    theta = np_rng.uniform(-3, 3, count)
+    start = np.column_stack([r * np.cos(phi), r * np.sin(phi), theta])
+    closer = 1 - np_rng.uniform(0, 1.2, count) / r
+    end = np.column_stack([start[:, 0] * closer, start[:, 1] * closer, theta + np_rng.uniform(-9.5, 9.5, count)])
+    return start, end
+
+
+def test_first_contact_rational_model_against_exact_reference(np_rng, rng):
+    """The rational model's contact, checked without the library
+    (exact_reference.meet_in_rational_turn): apart at the double before the
+    reported time and at 12 times sampled before it, meeting at the double
+    after it; a motion reported free is apart at 25 sampled times. The
+    certified and exact types give the same answers; double the same yes/no
+    here; angle-linear gives other times."""
+    a = star_polygon(rng, 12)
+    b = star_polygon(rng, 8, radius=0.6)
+    start, end = turning_motions(np_rng, 40)
+    contact, t = influence2d.first_contact(a, b, start, end, motion="rational")
+    contact_x, t_x = influence2d.first_contact(a, b, start, end, number_type="exact", motion="rational")
+    assert (contact == contact_x).all() and np.array_equal(t, t_x, equal_nan=True)
+    meet = functools.partial(exact_reference.meet_in_rational_turn, a, b)
+    later = 0
+    for k in range(len(start)):
+        s, e = start[k], end[k]
+        if not contact[k]:
+            assert not any(meet(s, e, x) for x in np.linspace(0, 1, 25))
+            continue
+        if t[k] == 0:
+            assert meet(s, e, 0.0)
+            continue
+        later += 1
+        assert meet(s, e, np.nextafter(t[k], 2.0))
+        assert not meet(s, e, np.nextafter(t[k], -1.0))
+        assert not any(meet(s, e, x) for x in np.linspace(0, t[k], 12, endpoint=False))
+    assert later >= 8 and (~contact).sum() >= 2
+    contact_d, _ = influence2d.first_contact(a, b, start, end, number_type="double", motion="rational")
+    assert (contact_d == contact).all()
+    _, t_linear = influence2d.first_contact(a, b, start, end)
+    assert (t_linear[contact & (t > 0)] != t[contact & (t > 0)]).any()
+
+
+def test_first_contact_rational_matches_the_tool(tool, tmp_path, rng):
+    a = star_polygon(rng, 12)
+    b = star_polygon(rng, 8, radius=0.5)
+    poses = np.array([[rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(-6, 6)] for _ in range(31)])
+    rows = tool_frames(tool, tmp_path, a, b, poses, "--number-type", "certified", "--continuous", "--motion",
+                       "rational")
+    contact, t = influence2d.first_contact(a, b, poses[:-1], poses[1:], motion="rational")
+    assert contact.sum() >= 3
     for k, cols in enumerate(rows[1:]):
         assert (cols[2] != "") == contact[k]
         if contact[k]:
