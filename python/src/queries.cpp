@@ -186,8 +186,7 @@ turning_model turning_model_of(const std::string& name) {
 }
 
 void first_contact_into(const polygon& a, const polygon& b, const pose_rows& from, const pose_rows& to,
-                        number_kind kind, const sweep_options& options, unsigned threads, bool* contact,
-                        double* time) {
+                        number_kind kind, const sweep_options& options, unsigned threads, bool* contact, double* time) {
     run_in_blocks(from.count, threads, [&](std::size_t first, std::size_t last) {
         for (std::size_t k = first; k < last; ++k) {
             const pose &p = from.rows[k], &q = to.rows[k];

@@ -771,3 +771,37 @@ TEST_CASE("sweep: certified first contact far from 1 in scale answers as at scal
     const polygon touching = ring({{-far, -far}, {far, -far}, {0, 0}});
     CHECK(certified_first_contact(touching, block, from, to).contact);
 }
+
+TEST_CASE("sweep: turning motions far from 1 in scale, certified as exact", "[sweep][turning]") {
+    // The families' turning motions scaled by 2^e, the tolerance with them:
+    // exact rationals and certified take the same steps (both scaled into
+    // double's window when every coordinate scales exactly; at 2^-1040,
+    // where the subnormals round the coordinates, both unscaled, the double
+    // probe handing over to the exact one where its squared distance leaves
+    // double's range), so the same time and features; none throws.
+    using test_shapes::scaled;
+    std::size_t later = 0, free = 0;
+    for (int e : {-1040, -1000, 600}) {
+        family_motions({8}, {8}, test_effort::scaled(2), 0x7a11ULL + static_cast<std::uint64_t>(e + 2000), 1.5,
+                       [&](const polygon& a, const polygon& b, const pose& from, const pose& to) {
+                           INFO("scale 2^" << e);
+                           const polygon sa = scaled(a, e), sb = scaled(b, e);
+                           const pose f = scaled_by_power_of_two(from, e), t = scaled_by_power_of_two(to, e);
+                           sweep_options o;
+                           o.tolerance = std::ldexp(1e-9, e);
+                           const contact_result<double> r = certified_first_contact(sa, sb, f, t, o);
+                           const contact_result<exact_rational> x = first_contact<exact_rational>(sa, sb, f, t, o);
+                           CHECK(x.contact == r.contact);
+                           free += !r.contact;
+                           if (!x.contact) return;
+                           later += r.time > 0;
+                           CHECK(nearest_double(x.time) == r.time);
+                           CHECK(x.static_feature.kind == r.static_feature.kind);
+                           CHECK(x.static_feature.index == r.static_feature.index);
+                           CHECK(x.moving_feature.kind == r.moving_feature.kind);
+                           CHECK(x.moving_feature.index == r.moving_feature.index);
+                       });
+    }
+    CHECK(later > 0);
+    CHECK(free > 0);
+}

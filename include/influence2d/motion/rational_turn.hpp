@@ -35,6 +35,7 @@
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/predicates/polynomial_roots.hpp"
 #include "influence2d/query/placed_meet.hpp"
+#include "influence2d/scene/edge_boxes.hpp"
 #include "influence2d/scene/placed_polygon.hpp"
 
 #include "influence2d/motion/motion.hpp"
@@ -358,6 +359,11 @@ inline std::array<box, box_parts> swept_parts(const rational_piece& piece, point
     return out;
 }
 
+/// A box as an entry of sweep_along_x, numbered k.
+inline edge_box sweep_entry(const box& b, std::size_t k) {
+    return {b.min_x, b.max_x, b.min_y, b.max_y, static_cast<std::uint32_t>(k)};
+}
+
 /// The start (tau) of the first part whose box meets `edge`, or none.
 inline std::optional<double> first_part_meeting(const std::array<box, box_parts>& parts, const box& edge) {
     for (int k = 0; k < box_parts; ++k)
@@ -459,7 +465,8 @@ double rounded_time(const rational_piece& piece, const std::vector<polynomial<NT
 ///     for each vertex of B and edge of A, and each vertex of A and edge
 ///     of B (in B's frame), whose boxes over a quarter of the piece meet
 ///     (swept_parts: arcs boxed by their ends and bulge, plus the
-///     translation):
+///     translation; the pairs whose boxes over the whole piece overlap found
+///     first by sort and sweep along x):
 ///       f, lo, hi <- the cubics of the vertex on the edge's line and
 ///            between its ends, in Filter; kept with the start of the first
 ///            sixteenth of the piece where f may vanish while lo and hi may
@@ -525,33 +532,46 @@ contact_result<double> rational_first_contact(const polygon& a, const polygon& b
                 kept.push_back({site, std::max(*at, from_box)});
         };
         // B's vertices against A's edges, in A's frame; A's vertices against
-        // B's edges, in B's frame (q less the translation, turned back).
+        // B's edges, in B's frame (q less the translation, turned back): the
+        // pairs whose boxes over the whole piece overlap (sort and sweep
+        // along x, sweep_along_x), then their quarters.
         for (const bool moving : {true, false}) {
             const polygon &vertices = moving ? b : a, &edges = moving ? a : b;
             std::vector<box> edge_boxes(edges.size());
+            std::vector<edge_box> edge_order(edges.size()), vertex_order(vertices.size());
             for (std::size_t e = 0; e < edges.size(); ++e) {
                 edge_boxes[e].add(edges.vertex(e));
                 edge_boxes[e].add(edges.vertex(edges.next(e)));
+                edge_order[e] = sweep_entry(edge_boxes[e], e);
             }
+            std::vector<std::array<box, box_parts>> parts(vertices.size());
             for (std::size_t v = 0; v < vertices.size(); ++v) {
-                const std::array<box, box_parts> parts = swept_parts(piece, vertices.vertex(v), !moving, td, slack);
+                parts[v] = swept_parts(piece, vertices.vertex(v), !moving, td, slack);
                 box whole;
-                for (const box& part : parts) {
+                for (const box& part : parts[v]) {
                     whole.add({part.min_x, part.min_y});
                     whole.add({part.max_x, part.max_y});
                 }
-                std::optional<moving_point<Filter>> mf;
-                for (std::size_t e = 0; e < edges.size(); ++e) {
-                    if (!boxes_overlap(whole, edge_boxes[e])) continue;
-                    const std::optional<double> from_box = first_part_meeting(parts, edge_boxes[e]);
-                    if (!from_box) continue;
-                    if (!mf)
-                        mf = moving ? moving_vertex<Filter>(piece, tf, vertices.vertex(v))
-                                    : moving_static_vertex<Filter>(piece, tf, vertices.vertex(v));
-                    sift({moving, static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(e)}, *mf,
-                         moving ? one_f : base_f, edges.vertex(e), edges.vertex(edges.next(e)), *from_box);
-                }
+                vertex_order[v] = sweep_entry(whole, v);
             }
+            const auto by_min_x = [](const edge_box& l, const edge_box& m) { return l.min_x < m.min_x; };
+            std::sort(edge_order.begin(), edge_order.end(), by_min_x);
+            std::sort(vertex_order.begin(), vertex_order.end(), by_min_x);
+            std::vector<std::optional<moving_point<Filter>>> mf(vertices.size());
+            sweep_along_x(
+                vertex_order, 0, vertex_order.size(), edge_order, 0, edge_order.size(),
+                [](const edge_box& k) -> const edge_box& { return k; },
+                [&](std::size_t i, std::size_t j) {
+                    const std::size_t v = vertex_order[i].edge, e = edge_order[j].edge;
+                    const std::optional<double> from_box = first_part_meeting(parts[v], edge_boxes[e]);
+                    if (!from_box) return false;
+                    if (!mf[v])
+                        mf[v] = moving ? moving_vertex<Filter>(piece, tf, vertices.vertex(v))
+                                       : moving_static_vertex<Filter>(piece, tf, vertices.vertex(v));
+                    sift({moving, static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(e)}, *mf[v],
+                         moving ? one_f : base_f, edges.vertex(e), edges.vertex(edges.next(e)), *from_box);
+                    return false;
+                });
         }
         // The kept pairs in order of where their contact may start; the
         // earliest root among them, in NT, each pair's roots sought after

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <type_traits>
@@ -21,6 +22,7 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/core/range_scaling.hpp"
 #include "influence2d/distance/separation.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/number/certified.hpp"
@@ -155,6 +157,21 @@ probe_result probe_of(separation_query<NT>& query, const pose& p) {
     return {distance_of<NT>(s.squared_distance), s.static_feature, s.moving_feature};
 }
 
+/// A probe on the coarse separation query in double that falls back to
+/// `fine` at a pose where double cannot hold the squared distance (the
+/// query's std::range_error: the polygons' coordinates outside double's safe
+/// window, and their distance underflowing or overflowing once scaled back).
+/// The fine probe's error is at most the coarse one's, so advance's bounds
+/// hold for either.
+template <class Fine>
+probe_result coarse_probe(separation_query<double>& coarse, const pose& p, Fine&& fine) {
+    try {
+        return probe_of(coarse, p);
+    } catch (const std::range_error&) {
+        return fine(p);
+    }
+}
+
 /// The result of a turning motion from advance's answer.
 template <class NT>
 contact_result<NT> turning_result(const std::optional<std::pair<double, probe_result>>& found) {
@@ -171,8 +188,12 @@ contact_result<NT> turning_result(const std::optional<std::pair<double, probe_re
 /// advancement on separation queries (both polygons prepared once, each
 /// search started from the last closest pair). A floating NT steps on its
 /// own query. An exact NT steps on the query in double (with its error
-/// bound) and, once that would stop, on its own exact query: the stop is
-/// decided on exact distances.
+/// bound; coarse_probe) and, once that would stop, on its own exact query:
+/// the stop is decided on exact distances. A motion whose largest coordinate
+/// lies outside double's safe window is answered there on its input scaled
+/// by a power of two, the tolerance with it, when every coordinate scales
+/// exactly (as filtered_first_contact does, so that both take the same
+/// steps).
 template <class NT>
 contact_result<NT> turning_first_contact(const polygon& a, const polygon& b, const pose& from, const pose& to,
                                          const sweep_options& options) {
@@ -183,15 +204,21 @@ contact_result<NT> turning_first_contact(const polygon& a, const polygon& b, con
         return turning_result<NT>(
             advance(b, from, to, options.tolerance, separation_error<NT>(scale), probe, false, 0, probe));
     } else {
+        if (const int k = range_shift<double>(a, b, from, to); k != 0 && scales_exactly(a, b, k, from, to)) {
+            sweep_options scaled = options;
+            scaled.tolerance = scaled_length(options.tolerance, k);
+            return turning_first_contact<NT>(a.scaled_by_power_of_two(k), b.scaled_by_power_of_two(k),
+                                             scaled_by_power_of_two(from, k), scaled_by_power_of_two(to, k), scaled);
+        }
         separation_query<double> coarse(a, b);
-        std::optional<separation_query<NT>> fine;
+        std::optional<separation_query<NT>> fine_query;
+        const auto fine = [&](const pose& p) {
+            if (!fine_query) fine_query.emplace(a, b);
+            return probe_of(*fine_query, p);
+        };
         return turning_result<NT>(advance(
             b, from, to, options.tolerance, separation_error<double>(scale),
-            [&](const pose& p) { return probe_of(coarse, p); }, true, 0,
-            [&](const pose& p) {
-                if (!fine) fine.emplace(a, b);
-                return probe_of(*fine, p);
-            }));
+            [&](const pose& p) { return coarse_probe(coarse, p, fine); }, true, 0, fine));
     }
 }
 
@@ -203,13 +230,13 @@ template <class Exact>
 contact_result<double> filtered_turning_first_contact(const polygon& a, const polygon& b, const pose& from,
                                                       const pose& to, const sweep_options& options) {
     separation_query<double> coarse(a, b);
+    const auto fine = [&](const pose& p) {
+        const separation_result<Exact> s = separation<Exact>(a, b, p);
+        return probe_result{distance_of<Exact>(s.squared_distance), s.static_feature, s.moving_feature};
+    };
     return turning_result<double>(advance(
         b, from, to, options.tolerance, separation_error<double>(motion_scale(a, b, from, to)),
-        [&](const pose& p) { return probe_of(coarse, p); }, true, 0,
-        [&](const pose& p) {
-            const separation_result<Exact> s = separation<Exact>(a, b, p);
-            return probe_result{distance_of<Exact>(s.squared_distance), s.static_feature, s.moving_feature};
-        }));
+        [&](const pose& p) { return coarse_probe(coarse, p, fine); }, true, 0, fine));
 }
 
 }  // namespace sweep
