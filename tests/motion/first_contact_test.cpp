@@ -167,6 +167,18 @@ std::pair<pose, pose> random_translation(const polygon& a, const polygon& b, tes
     return {test_scenes::aimed(cb, start, theta), test_scenes::aimed(cb, end, theta)};
 }
 
+/// Checks that the exact contact x and the certified one r are the same:
+/// contact, the time rounded, the features.
+void check_same_contact(const contact_result<exact_rational>& x, const contact_result<double>& r) {
+    CHECK(x.contact == r.contact);
+    if (!x.contact) return;
+    CHECK(nearest_double(x.time) == r.time);
+    CHECK(x.static_feature.kind == r.static_feature.kind);
+    CHECK(x.static_feature.index == r.static_feature.index);
+    CHECK(x.moving_feature.kind == r.moving_feature.kind);
+    CHECK(x.moving_feature.index == r.moving_feature.index);
+}
+
 /// Calls check(a, b, from, to) for `motions` random translations
 /// (random_translation) of every family's A of n vertices against its B of
 /// m, for n in `as` and m in `bs` (renumbered), B turned over the motion by
@@ -742,17 +754,7 @@ TEST_CASE("sweep: certified first contact far from 1 in scale answers as at scal
                            CHECK(r.moving_feature.kind == one.moving_feature.kind);
                            CHECK(r.moving_feature.index == one.moving_feature.index);
                            // The exact query, never scaled.
-                           {
-                               const contact_result<exact_rational> x = first_contact<exact_rational>(sa, sb, f, t);
-                               CHECK(x.contact == r.contact);
-                               if (x.contact) {
-                                   CHECK(nearest_double(x.time) == r.time);
-                                   CHECK(x.static_feature.kind == r.static_feature.kind);
-                                   CHECK(x.static_feature.index == r.static_feature.index);
-                                   CHECK(x.moving_feature.kind == r.moving_feature.kind);
-                                   CHECK(x.moving_feature.index == r.moving_feature.index);
-                               }
-                           }
+                           check_same_contact(first_contact<exact_rational>(sa, sb, f, t), r);
                        }
                    });
     CHECK(contacts > 0);
@@ -791,15 +793,9 @@ TEST_CASE("sweep: turning motions far from 1 in scale, certified as exact", "[sw
                            o.tolerance = std::ldexp(1e-9, e);
                            const contact_result<double> r = certified_first_contact(sa, sb, f, t, o);
                            const contact_result<exact_rational> x = first_contact<exact_rational>(sa, sb, f, t, o);
-                           CHECK(x.contact == r.contact);
+                           check_same_contact(x, r);
                            free += !r.contact;
-                           if (!x.contact) return;
-                           later += r.time > 0;
-                           CHECK(nearest_double(x.time) == r.time);
-                           CHECK(x.static_feature.kind == r.static_feature.kind);
-                           CHECK(x.static_feature.index == r.static_feature.index);
-                           CHECK(x.moving_feature.kind == r.moving_feature.kind);
-                           CHECK(x.moving_feature.index == r.moving_feature.index);
+                           later += r.contact && r.time > 0;
                        });
     }
     CHECK(later > 0);
