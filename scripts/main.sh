@@ -73,10 +73,10 @@ done
 echo
 echo "per-frame answers: $out/*.csv"
 echo
-echo "precision study (short run: every decision of the method, the separation and the first contact, in every number type against exact):"
+echo "precision study (short run: every decision of the method, the separation and the first contact along translations and turns, in every number type against exact):"
 "$tool" study --quick --out "$out/study" --regressions "$out/regressions" >"$out/study.log"
 sed -n '/^## What this means/,/^## /p' "$out/study/study.md" | sed '$d'
-grep '^`separation`\|^`first_contact`' "$out/study/study.md"
+grep '^`separation`\|^`first_contact`\|^`turning_' "$out/study/study.md"
 echo
 echo "tables and plots: $out/study/study.md, $out/study/*.svg"
 echo

@@ -225,14 +225,22 @@ std::string query_summary(const study_result& r, const std::string& query) {
 std::string queries_md(const study_result& r, const study_cli_options& o) {
     if (r.query_rows.empty()) return "";
     std::string s = "## Queries: error against time\n\n";
-    s += "The separation at a pose (`separation`) and the first contact along a translation (`first_contact`), "
-         "asked of every type through the library's public API on the first " +
+    s += "The separation at a pose (`separation`), the first contact along a translation (`first_contact`) and "
+         "along a motion that turns, in the rational model (`turning_rational`) and in the angle-linear one "
+         "(`turning_angle_linear`), asked of every type through the library's public API on the first " +
          std::to_string(std::min(o.query_frames, o.frames)) + " poses of each scene" +
          (std::count(r.families.begin(), r.families.end(), "large") ? " (16 on `large`)" : "") +
          ", and on as many translations: toward a pose along the ray from A's centroid through B's, from "
          "R_A + R_B farther out (ending on the pose, near contact); from a pose away along that ray; from one "
-         "pose's place to the next pose at its angle. The exact answers are `separation<exact_rational>` and "
-         "`first_contact<exact_rational>`; queries.csv has every family.\n\n"
+         "pose's place to the next pose at its angle. The turning motions are these two rays, turning on the way "
+         "by 0.3 to 2.8 radians, and a turn in place from the third pose. The exact answers are "
+         "`separation<exact_rational>` and `first_contact<exact_rational>` in the query's model; queries.csv has "
+         "every family. The rational model's exact answer is the true first contact of its motion (the time "
+         "rounded to the nearest double). The angle-linear model has no exact answer in closed form: its "
+         "reference is conservative advancement run in exact rationals (contact when the exact distance is "
+         "within the tolerance 1e-9, never after the true first contact), and a type differs when it stops "
+         "elsewhere; a floating type whose error bound is wider than the tolerance (quad and float128 use their "
+         "filters' margin, about 1e-9 times the scene's size) stops earlier.\n\n"
          "The floating types and exact answer through `separation_query<NT>` (the polygons prepared once per "
          "scene, not timed) and `first_contact<NT>`; certified and interval through "
          "`certified_separation_query` (the polygons prepared in double words once per scene, not timed; its "
@@ -453,12 +461,19 @@ std::string query_plot_script(const study_result& r, const fs::path& dir) {
         }
         if (lines.empty()) continue;
         s += data_block(query, lines);
-        const bool separation = k == query_kind::separation;
-        const std::string title = separation ? "separation" : "first contact";
+        // Filled and open points of one shape per query: circles, squares,
+        // triangles, diamonds.
+        const std::size_t shape = static_cast<std::size_t>(k);
+        const char* const filled[] = {"7", "5", "9", "13"};
+        const char* const open[] = {"6", "4", "8", "12"};
+        const std::string title = k == query_kind::separation         ? "separation"
+                                  : k == query_kind::first_contact    ? "first contact (translation)"
+                                  : k == query_kind::turning_rational ? "first contact (rational turn)"
+                                                                      : "first contact (angle-linear turn)";
         plot += std::string(plot.empty() ? "plot " : ", ") + "$" + query + " using 2:3 with points pointtype " +
-                (separation ? "7" : "5") + " pointsize 1.5 title '" + title + ": largest error', $" + query +
+                filled[shape] + " pointsize 1.5 title '" + title + ": largest error', $" + query +
                 " using 2:3:1 with labels rotate by 35 left offset char 0.6,0.6 notitle, $" + query +
-                " using 2:4 with points pointtype " + (separation ? "6" : "4") + " pointsize 1.5 title '" + title +
+                " using 2:4 with points pointtype " + open[shape] + " pointsize 1.5 title '" + title +
                 ": median error'";
     }
     if (plot.empty()) return "";
@@ -619,7 +634,8 @@ void register_study(CLI::App& app) {
         "study",
         "Compare the method's decisions (cone membership, mask, alpha-sign selection, extended-area candidates, "
         "edge pairs, containment, the final answer) and the queries (separation, first contact along a "
-        "translation) in every number type, and the final answer in the image-space baseline, with the exact "
+        "translation and along turning motions in both turning models) in every number type, and the final answer in "
+        "the image-space baseline, with the exact "
         "reference, and report error against run time: "
         "DIR/study.csv, DIR/stability.csv, DIR/queries.csv, DIR/raster.csv, DIR/study.md and plots (with gnuplot).");
     const std::string family_list = joined(default_study_families()), type_list = joined(mode_names(study_modes{}));

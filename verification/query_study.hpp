@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // The queries of the precision study (verification/study.hpp runs them): the
-// separation at a pose (distance/separation.hpp) and the first contact along a
-// translation (motion/first_contact.hpp), asked of each number type through the
-// library's public API, as the tool asks them (src/motion_queries.hpp):
+// separation at a pose (distance/separation.hpp), the first contact along a
+// translation, and the first contact along a motion that turns in each
+// turning model (motion/first_contact.hpp), asked of each number type through
+// the library's public API, as the tool asks them (src/motion_queries.hpp):
 //
 //   floating types, exact:  separation_query<NT> (A and B prepared once per
 //                           scene, not timed), first_contact<NT>
@@ -11,16 +12,24 @@
 //                           scene, not timed), certified_first_contact
 //                           (interval has no route of its own: as certified)
 //
-// and compared with the exact answers: separation<exact_rational> on the
-// prepared polygons (without the seeded search of separation_query) and
-// first_contact<exact_rational>. Per question:
+// and compared with the answers of exact rationals: separation<exact_rational>
+// on the prepared polygons (without the seeded search of separation_query) and
+// first_contact<exact_rational> in the same model. Per question:
 //
-//   separation     meet or not; the closest features; the relative error of
-//                  the distance, |d - D| / D, over the questions with D > 0
-//                  (d the root of the type's squared distance, taken exactly)
-//   first_contact  contact or not; the first features and the absolute
-//                  error of the earliest time, |t - T|, when both touch
-//                  (but not when both meet at the start, t = T = 0)
+//   separation            meet or not; the closest features; the relative
+//                         error of the distance, |d - D| / D, over the
+//                         questions with D > 0 (d the root of the type's
+//                         squared distance, taken exactly)
+//   first_contact         (a translation) contact or not; the first features
+//   turning_rational      and the absolute error of the earliest time,
+//   turning_angle_linear  |t - T|, when both touch (but not when both meet
+//                         at the start, t = T = 0)
+//
+// The rational model's reference is its exact answer (the time rounded to the
+// nearest double). The angle-linear model's is conservative advancement run in
+// exact rationals: its contact means "within the tolerance 1e-9" and its time
+// is never after the true first contact (docs/sweep.md); a type's difference
+// from it is a difference in that question, not from the true motion.
 //
 // A type that claims the exact answer must also give the exact value or its
 // documented rounding: the exact type the same squared distance, points and
@@ -57,11 +66,34 @@
 
 namespace influence2d::verification {
 
-enum class query_kind : std::uint8_t { separation, first_contact };
+/// The queries of the study: the separation at a pose; the first contact
+/// along a translation; along a motion that turns, in each turning model.
+enum class query_kind : std::uint8_t { separation, first_contact, turning_rational, turning_angle_linear };
 
-inline constexpr query_kind all_query_kinds[] = {query_kind::separation, query_kind::first_contact};
+inline constexpr query_kind all_query_kinds[] = {query_kind::separation, query_kind::first_contact,
+                                                 query_kind::turning_rational, query_kind::turning_angle_linear};
 
-inline const char* query_name(query_kind k) { return k == query_kind::separation ? "separation" : "first_contact"; }
+inline const char* query_name(query_kind k) {
+    switch (k) {
+    case query_kind::separation: return "separation";
+    case query_kind::first_contact: return "first_contact";
+    case query_kind::turning_rational: return "turning_rational";
+    case query_kind::turning_angle_linear: return "turning_angle_linear";
+    }
+    return "";
+}
+
+/// Whether the query asks about a motion that turns.
+inline bool asks_turn(query_kind k) {
+    return k == query_kind::turning_rational || k == query_kind::turning_angle_linear;
+}
+
+/// The options of a motion query: the turning model of a turning query.
+inline sweep_options sweep_options_of(query_kind k) {
+    sweep_options o;
+    o.model = k == query_kind::turning_rational ? turning_model::rational : turning_model::angle_linear;
+    return o;
+}
 
 inline std::optional<query_kind> query_from_name(std::string_view name) {
     for (query_kind k : all_query_kinds)
@@ -69,7 +101,8 @@ inline std::optional<query_kind> query_from_name(std::string_view name) {
     return std::nullopt;
 }
 
-/// A translation of B, from one pose to another of the same angle.
+/// A motion of B, from one pose to another: a translation when the angles
+/// are equal (study_translations), a turn otherwise (study_turns).
 struct translation {
     pose from, to;
 };
@@ -103,6 +136,31 @@ inline std::vector<translation> study_translations(const polygon& a, const polyg
         const double ux = length > 0 ? dx / length : 1, uy = length > 0 ? dy / length : 0;
         const pose away{near.tx + reach * ux, near.ty + reach * uy, near.theta};
         out.push_back(k % 3 == 0 ? translation{away, near} : translation{near, away});
+    }
+    return out;
+}
+
+/// The motions that turn of a scene, `count` of them, about its poses: as
+/// study_translations, each turning by a turn of 0.3 to 2.8 radians (spread
+/// by the golden ratio over k, alternating in sign; two pieces of the
+/// rational model from pi / 2), with, in turn:
+///   - a turn and a move toward pose k from R_A + R_B farther out, ending at
+///     pose k (a contact at or before t = 1 when pose k meets A);
+///   - a turn and a move from pose k away along that ray;
+///   - a turn in place from pose k, about B's origin.
+inline std::vector<translation> study_turns(const polygon& a, const polygon& b, const std::vector<pose>& poses,
+                                            std::size_t count) {
+    std::vector<translation> out = study_translations(a, b, poses, count);
+    for (std::size_t k = 0; k < out.size(); ++k) {
+        const double spread = static_cast<double>(k) * 0.6180339887498949;
+        const double turn = (k % 2 == 0 ? 1 : -1) * (0.3 + 2.5 * (spread - std::floor(spread)));
+        const pose& near = poses[k];
+        if (k % 3 == 0)
+            out[k].from.theta = near.theta - turn;
+        else if (k % 3 == 1)
+            out[k].to.theta = near.theta + turn;
+        else
+            out[k] = {near, {near.tx, near.ty, near.theta + turn}};
     }
     return out;
 }
@@ -260,8 +318,8 @@ public:
         }
         return separation_(q);
     }
-    contact_result<NT> first_contact(const translation& m) {
-        return influence2d::first_contact<NT>(a_, b_, m.from, m.to);
+    contact_result<NT> first_contact(const translation& m, query_kind k) {
+        return influence2d::first_contact<NT>(a_, b_, m.from, m.to, sweep_options_of(k));
     }
 
 private:
@@ -278,7 +336,9 @@ public:
     query_route(const polygon& a, const polygon& b) : a_(a), b_(b), separation_(a, b) {}
 
     certified_separation_result separation(const pose& q) { return separation_(q); }
-    contact_result<double> first_contact(const translation& m) { return certified_first_contact(a_, b_, m.from, m.to); }
+    contact_result<double> first_contact(const translation& m, query_kind k) {
+        return certified_first_contact(a_, b_, m.from, m.to, sweep_options_of(k));
+    }
 
 private:
     const polygon& a_;
@@ -287,7 +347,7 @@ private:
 };
 
 /// The exact answers of one scene: separation<exact_rational> on A and B
-/// prepared once, first_contact<exact_rational>.
+/// prepared once, first_contact<exact_rational> in the query's model.
 class query_reference {
 public:
     query_reference(const polygon& a, const polygon& b)
@@ -299,8 +359,8 @@ public:
     separation_result<exact_rational> separation(const pose& q) const {
         return influence2d::separation<exact_rational>(*prepared_a_, *prepared_b_, q);
     }
-    contact_result<exact_rational> first_contact(const translation& m) const {
-        return influence2d::first_contact<exact_rational>(a_, b_, m.from, m.to);
+    contact_result<exact_rational> first_contact(const translation& m, query_kind k) const {
+        return influence2d::first_contact<exact_rational>(a_, b_, m.from, m.to, sweep_options_of(k));
     }
 
 private:
@@ -376,7 +436,7 @@ std::string answer_text(const contact_result<NT>& r, digits d = digits::rounded)
 inline std::string exact_answer_text(const polygon& a, const polygon& b, query_kind k, const translation& motion) {
     const query_reference exact(a, b);
     if (k == query_kind::separation) return answer_text(exact.separation(motion.from), digits::exact);
-    return answer_text(exact.first_contact(motion), digits::exact);
+    return answer_text(exact.first_contact(motion, k), digits::exact);
 }
 
 /// A route's answer to one question of a query on A and B alone (fresh
@@ -391,8 +451,8 @@ std::pair<query_outcome, std::string> fresh_answer(const polygon& a, const polyg
         const auto got = route.separation(motion.from);
         return {compare_answer(got, exact.separation(motion.from), Route::claim), answer_text(got, digits::exact)};
     }
-    const auto got = route.first_contact(motion);
-    return {compare_answer(got, exact.first_contact(motion), Route::claim), answer_text(got, digits::exact)};
+    const auto got = route.first_contact(motion, k);
+    return {compare_answer(got, exact.first_contact(motion, k), Route::claim), answer_text(got, digits::exact)};
 }
 
 }  // namespace influence2d::verification

@@ -351,11 +351,13 @@ inline std::string question_text(decision_kind k, const query& q) {
     return "pose " + pose_text(q.placement);
 }
 
-/// The question of a query as text: a pose (the separation; motion.from) or
-/// a translation.
+/// The question of a query as text: a pose (the separation; motion.from), a
+/// translation or a turn (in the query's model).
 inline std::string question_text(query_kind k, const translation& motion) {
     if (k == query_kind::separation) return "pose " + pose_text(motion.from);
-    return "translation from " + pose_text(motion.from) + " to " + pose_text(motion.to);
+    const std::string span = "from " + pose_text(motion.from) + " to " + pose_text(motion.to);
+    if (k == query_kind::first_contact) return "translation " + span;
+    return std::string(k == query_kind::turning_rational ? "rational" : "angle-linear") + " turn " + span;
 }
 
 // --- Reproducible cases ---------------------------------------------------
@@ -813,7 +815,8 @@ private:
     void run_queries(const study_case& c, std::index_sequence<I...>) {
         if (o_.queries.empty()) return;
         const std::size_t n = std::min(c.poses.size(), query_questions(c));
-        const std::vector<translation> motions = study_translations(c.a, c.b, c.poses, n);
+        const std::vector<translation> translations = study_translations(c.a, c.b, c.poses, n);
+        const std::vector<translation> turns = study_turns(c.a, c.b, c.poses, n);
         query_reference exact(c.a, c.b);
         std::tuple<std::optional<typename Modes::route_type>...> routes;
         ((selected_[I] ? set_up_route(I, std::get<I>(routes), c) : void()), ...);
@@ -830,10 +833,11 @@ private:
                     }
                     (ask<Modes>(I, std::get<I>(routes), c, k, questions, expected), ...);
                 } else {
+                    const std::vector<translation>& motions = asks_turn(k) ? turns : translations;
                     questions.assign(motions.begin() + static_cast<std::ptrdiff_t>(first),
                                      motions.begin() + static_cast<std::ptrdiff_t>(last));
                     std::vector<contact_result<exact_rational>> expected;
-                    for (const translation& m : questions) expected.push_back(exact.first_contact(m));
+                    for (const translation& m : questions) expected.push_back(exact.first_contact(m, k));
                     (ask<Modes>(I, std::get<I>(routes), c, k, questions, expected), ...);
                 }
             }
@@ -856,7 +860,7 @@ private:
             if constexpr (std::is_same_v<Exact, separation_result<exact_rational>>)
                 return route->separation(q.from);
             else
-                return route->first_contact(q);
+                return route->first_contact(q, k);
         };
         std::vector<decltype(answer_of(questions.front()))> got;
         got.reserve(questions.size());

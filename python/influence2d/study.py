@@ -27,8 +27,9 @@ def study(families=None, types=None, decisions=None, queries=None, cases=1, fram
     (queries.csv), ``stability`` (stability.csv, the offset and scale
     sweeps), ``summaries`` (per type: questions, fallbacks) and ``examples``
     (disagreements kept). ``families``, ``types``, ``decisions`` default to
-    the command's defaults (``study_names()``); ``queries`` to both
-    separation and first_contact (``[]``: neither). The defaults of
+    the command's defaults (``study_names()``); ``queries`` to all of
+    separation, first_contact, turning_rational and turning_angle_linear
+    (``[]``: none). The defaults of
     ``cases`` and ``frames`` are the command's ``--quick`` run.
 
     >>> t = study(families=["convex"], types=["double", "certified"], decisions=["collides"], queries=[],

@@ -155,11 +155,15 @@ TEST_CASE("study: the queries' section, and no disagreement of the types that cl
     REQUIRE(r.exit_code == 0);
     CHECK(r.out.find("separation per number type") != std::string::npos);
     CHECK(r.out.find("first_contact per number type") != std::string::npos);
+    CHECK(r.out.find("turning_rational per number type") != std::string::npos);
+    CHECK(r.out.find("turning_angle_linear per number type") != std::string::npos);
 
     const std::string md = slurp(dir / "out" / "study.md");
     CHECK(md.find("## Queries: error against time") != std::string::npos);
     CHECK(md.find("### separation") != std::string::npos);
     CHECK(md.find("### first_contact") != std::string::npos);
+    CHECK(md.find("### turning_rational") != std::string::npos);
+    CHECK(md.find("### turning_angle_linear") != std::string::npos);
 
     const std::vector<std::string> rows = lines_of(slurp(dir / "out" / "queries.csv"));
     REQUIRE(!rows.empty());
@@ -174,12 +178,13 @@ TEST_CASE("study: the queries' section, and no disagreement of the types that cl
         differing[f[0] + " " + f[2]] += std::stoul(f[4]);
     }
     for (const std::string& type : mode_names(study_modes{}))
-        for (const char* query : {"separation", "first_contact"}) {
+        for (const char* query : {"separation", "first_contact", "turning_rational", "turning_angle_linear"}) {
             INFO(type << " " << query);
             CHECK(questions[type + " " + query] > 0);
             if (type == "certified" || type == "interval" || type == "exact") CHECK(differing[type + " " + query] == 0);
         }
     CHECK(differing["float separation"] > 0);  // the cliff is there
+    CHECK(differing["double turning_rational"] > 0);
     CHECK(!fs::exists(dir / "regressions"));
 }
 
@@ -201,6 +206,23 @@ TEST_CASE("study: a query's reproducible case reads back and is answered again",
     const replay_outcome ok = replay_regression(r);
     CHECK(ok.reference_agrees);
     CHECK(ok.disagreeing.empty());
+
+    // B turning by 1.5 radians in place, centred at (4.6, 2): its corner
+    // (-0.5, 0.5), sqrt(1/2) from the centre, reaches A's side x = 4 after
+    // a turn of about 0.228 radians: at t about 0.123 in the rational model,
+    // 0.152 in the angle-linear one.
+    const translation turn{{4.6, 2, 0}, {4.6, 2, 1.5}};
+    const std::string turn_text = exact_answer_text(a, b, query_kind::turning_rational, turn);
+    CHECK(turn_text.rfind("contact at ", 0) == 0);
+    CHECK(turn_text != exact_answer_text(a, b, query_kind::turning_angle_linear, turn));
+    const regression_case tr = parse_regression(
+        query_regression_json(a, b, query_kind::turning_rational, turn, "certified", turn_text, "no contact"),
+        "<text>");
+    REQUIRE(tr.asked == query_kind::turning_rational);
+    CHECK(tr.motion.to.theta == 1.5);
+    const replay_outcome turned = replay_regression(tr);
+    CHECK(turned.reference_agrees);
+    CHECK(turned.disagreeing.empty());
 
     const translation apart{{5.5, 2, 0}, {5.5, 2, 0}};
     const regression_case s = parse_regression(
