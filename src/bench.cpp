@@ -5,7 +5,8 @@
 // bench.md (per workload: our speed-up over the fastest peer per cell,
 // certified against double, one-shot against each peer, the preparation of
 // each method, the targets, peak memory) and heat maps in the style of the
-// paper's Figure 12.
+// paper's Figure 12; then the study of motions that turn
+// (verification/turning_study.hpp): turning.csv and its section of bench.md.
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +21,8 @@
 #include "verification/time_study.hpp"
 #include "verification/time_study_cells.hpp"
 #include "verification/time_study_report.hpp"
+#include "verification/turning_study.hpp"
+#include "verification/turning_study_report.hpp"
 
 namespace influence2d::cli {
 
@@ -32,6 +35,7 @@ struct bench_cli_options {
     std::vector<std::string> types, trajectories, methods;
     std::vector<std::size_t> sizes;
     std::size_t circular_frames = 90000, linear_frames = 9000, random_frames = 20000;
+    std::size_t turning_motions = turning_study_options{}.motions;
     double budget = 0.25;
     std::uint64_t seed = default_family_seed;
     std::string out = "bench";
@@ -294,17 +298,32 @@ void run_bench_command(bench_cli_options o, Given given, const std::string& comm
                    done, p.cell % 16 == 0);
         };
     }
+    turning_study_options to;
+    to.motions = o.quick && !given("--turning-motions") ? 32 : o.turning_motions;
+    if (o.quick) {
+        to.cells = {{"convex", 8, 8}, {"contour", 64, 64}};
+        to.seconds = 0.05;
+    }
+    to.seed = o.seed;
     const time_study_result r = run_time_study(so);
+    const std::vector<turning_row> turning = to.motions ? run_turning_study(to) : std::vector<turning_row>{};
     write_atomically(dir / "bench.csv", bench_csv(r));
     if (!r.work.empty()) write_atomically(dir / "bench_work.csv", work_csv(r));
-    const std::string md = time_study_markdown(r, so, command);
+    if (!turning.empty()) write_atomically(dir / "turning.csv", turning_csv(turning));
+    const std::string turning_md = turning_markdown(turning, to);
+    const std::string md = time_study_markdown(r, so, command) + turning_md;
     write_atomically(dir / "bench.md", md);
     write_heat_maps(r, so, dir);
     write_speedup_plots(r, so, dir);
     const std::size_t targets = md.find("## Targets"), end = md.find("\n## ", targets + 1);
     std::cout << md.substr(targets, end - targets) << "\nwritten: " << (dir / "bench.csv").string() << ", "
               << (dir / "bench.md").string() << ", heat maps " << (dir / "heatmap_*.png").string() << ", speed-up maps "
-              << (dir / "speedup_*.png").string() << "\n";
+              << (dir / "speedup_*.png").string() << (turning.empty() ? "" : ", " + (dir / "turning.csv").string())
+              << "\n";
+    if (!turning.empty())
+        std::cout << "\nturning motions (" << to.motions
+                  << " per cell; misses and inventions against the exact answer of each model):\n\n"
+                  << turning_md.substr(turning_md.find("### "));
 }
 
 /// The methods for --help, from the registry: name, forms, what it needs.
@@ -362,6 +381,12 @@ void configure_bench(CLI::App& app) {
         ->capture_default_str()
         ->check(CLI::Range(1e-3, 1e6))
         ->type_name("S");
+    sub->add_option("--turning-motions", o->turning_motions,
+                    "Motions that turn per cell of the turning study (convex 8x8, contour 64x64, starred "
+                    "256x256; with --quick 32 motions, the first two cells), or 0 for none")
+        ->capture_default_str()
+        ->check(CLI::Range(std::size_t{0}, std::size_t{1} << 24))
+        ->type_name("N");
     sub->add_option("--seed", o->seed, "Seed of the family polygons and of the random poses")
         ->capture_default_str()
         ->type_name("S");

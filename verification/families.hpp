@@ -65,6 +65,14 @@ inline std::string family_name(family f) {
     throw std::invalid_argument("family_name: unknown family");
 }
 
+/// The family of a name (family_name's inverse): convex, starred,
+/// irregular, contour, hole. Throws std::invalid_argument for another name.
+inline family family_of(const std::string& name) {
+    for (family f : all_families)
+        if (family_name(f) == name) return f;
+    throw std::invalid_argument("unknown polygon type: " + name);
+}
+
 namespace family_detail {
 
 constexpr double enclosing_radius = 50;

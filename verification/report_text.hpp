@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 // The text of the studies' reports: numbers in a fixed or a general format,
-// rates as percentages, lists of names.
+// rates as percentages, lists of names, the median that summarises repeated
+// timings.
 
 #include <algorithm>
+#include <cstddef>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -43,6 +45,13 @@ inline std::string joined(const std::vector<std::string>& names) {
 /// Whether `name` is one of `names`.
 inline bool has_name(const std::vector<std::string>& names, const std::string& name) {
     return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+/// The median of some values (0 for none).
+inline double median_of(std::vector<double> v) {
+    if (v.empty()) return 0;
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    return v[v.size() / 2];
 }
 
 }  // namespace influence2d::verification

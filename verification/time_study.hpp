@@ -397,14 +397,6 @@ void with_form(const std::string& m, const std::string& trajectory, G&& g) {
 
 }  // namespace time_study_detail
 
-/// The polygon family of a time study type (convex, starred, irregular,
-/// contour, hole).
-inline family family_of(const std::string& name) {
-    for (family f : all_families)
-        if (family_name(f) == name) return f;
-    throw std::invalid_argument("unknown polygon type: " + name);
-}
-
 /// Calls f(d) with method m's form for the workload built for A and B.
 template <class F>
 void with_method(const std::string& m, const std::string& trajectory, const polygon& a, const polygon& b, F&& f) {

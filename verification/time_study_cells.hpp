@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "verification/report_text.hpp"
 #include "verification/time_study.hpp"
 
 namespace influence2d::verification {
@@ -121,13 +122,6 @@ inline approximate_summary approximate_over_cells(const cell_table& cells, const
         a.certified_ns = std::exp(log_certified / static_cast<double>(a.cells));
     }
     return a;
-}
-
-/// The median of some values (0 for none).
-inline double median_of(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-    return v[v.size() / 2];
 }
 
 /// The double detector's counters on a cell (nullptr when it did not run there).

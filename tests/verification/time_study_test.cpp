@@ -350,6 +350,12 @@ TEST_CASE("time study: the command writes the table, the summary and the heat ma
         CHECK(std::stod(prep.substr(0, prep.find(','))) > 0);  // preparation_seconds
     }
     const std::string md = slurp(dir / "out" / "bench.md");
+    // The turning study, --quick: convex 8x8 (Box2D's time of impact too)
+    // and contour 64x64, the library's four routes and two samplings.
+    const std::size_t geos = method_available("geos") ? 2 : 0;
+    CHECK(lines_of(slurp(dir / "out" / "turning.csv")).size() == 1 + 2 * (4 + geos) + box2d);
+    CHECK(md.find("## Turning motions") != std::string::npos);
+    CHECK(r.out.find("turning motions (32 per cell") != std::string::npos);
     CHECK(md.find("## Speed-up of the double mode over the fastest peer") != std::string::npos);
     CHECK(md.find("### convex, one-shot") != std::string::npos);
     CHECK(md.find("## Certified over double") != std::string::npos);
