@@ -65,7 +65,10 @@ struct frame_extras {
             v += x;
             first = false;
         };
-        if (contacts) put(f > 0 && (*contacts)[f - 1].contact ? general((*contacts)[f - 1].t, 17) : std::string());
+        if (contacts) {
+            const contact_row* c = f > 0 ? &(*contacts)[f - 1] : nullptr;
+            put(c && c->contact ? general(c->t, 17) : c && c->step_limit ? std::string("limit") : std::string());
+        }
         if (separations) {
             const separation_row& r = (*separations)[f];
             put(general(r.distance, 17));
@@ -230,6 +233,11 @@ void report_results(const collide_options& o, const collide_run& result) {
             << (r.frames.empty() ? std::string("n/a")
                                  : fixed(r.seconds * 1e6 / static_cast<double>(r.frames.size()), 3) + " us")
             << "   (total " << fixed(total_ms, total_ms >= 1 ? 1 : 3) << " ms)\n";
+    std::size_t limited = 0;
+    for (const contact_row& c : result.contacts) limited += c.step_limit;
+    if (limited)
+        summary << "step limit:      " << limited << " motion" << (limited == 1 ? "" : "s")
+                << " undecided after --max-steps " << o.motion.max_steps << " steps (contact_t 'limit')\n";
     if (o.continuous)
         summary << "between poses:   " << result.between
                 << " frames whose motion meets the static polygon only between the poses\n"
@@ -308,8 +316,10 @@ void register_collide(CLI::App& app) {
                       "Treat consecutive poses as motions (translation and angle linear in time): frame k "
                       "also collides when the polygons meet at some time between pose k - 1 and pose k "
                       "(tunneling caught); FRAMES.csv gets the column contact_t, the earliest contact time "
-                      "in that motion. With --distance 0 only");
-    add_motion_option(sub, o->motion.model)->needs(continuous);
+                      "in that motion ('limit' for a motion left undecided at --max-steps). With --distance 0 "
+                      "only");
+    add_motion_options(sub, o->motion)->needs(continuous);
+    sub->get_option("--max-steps")->needs(continuous);
     sub->add_option("--static-poses", o->static_poses,
                     "Poses of the static polygon too, one per frame (the format of POSES.csv): frame k "
                     "asks A posed by its k-th pose against B posed by its own. The exact, certified and "

@@ -35,10 +35,17 @@ struct separation_row {
 /// One motion's first contact as the tool reports it.
 struct contact_row {
     bool contact = false;
-    double t = 0;  ///< the earliest contact time (meaningful with contact)
+    double t = 0;  ///< the earliest contact time (with contact), or where the step limit stopped
     feature static_feature{feature_kind::vertex, 0};
     feature moving_feature{feature_kind::vertex, 0};
+    bool step_limit = false;  ///< undecided after t (contact_result::step_limit)
 };
+
+/// A motion's row from its first contact (the time already a double).
+template <class NT>
+contact_row row_of(const contact_result<NT>& r, double time) {
+    return {r.contact, r.contact || r.step_limit ? time : 0.0, r.static_feature, r.moving_feature, r.step_limit};
+}
 
 /// A feature as the tool writes it: v<number> for a vertex, e<number> for an
 /// edge (input numbering, rings one after another), "interior" for the region.
@@ -91,7 +98,7 @@ std::vector<contact_row> contacts_in(const polygon& a, const polygon& b, const s
     std::vector<contact_row> rows;
     for (std::size_t k = 0; k + 1 < poses.size(); ++k) {
         const contact_result<NT> r = first_contact<NT>(a, b, poses[k], poses[k + 1], options);
-        rows.push_back({r.contact, r.contact ? time_as_double(r.time) : 0.0, r.static_feature, r.moving_feature});
+        rows.push_back(row_of(r, time_as_double(r.time)));
     }
     return rows;
 }
@@ -102,7 +109,7 @@ inline std::vector<contact_row> certified_contacts(const polygon& a, const polyg
     std::vector<contact_row> rows;
     for (std::size_t k = 0; k + 1 < poses.size(); ++k) {
         const contact_result<double> r = certified_first_contact(a, b, poses[k], poses[k + 1], options);
-        rows.push_back({r.contact, r.contact ? r.time : 0.0, r.static_feature, r.moving_feature});
+        rows.push_back(row_of(r, r.time));
     }
     return rows;
 }

@@ -217,13 +217,21 @@ inline CLI::Option* add_number_type_option(CLI::App* sub, std::string& value) {
         ->type_name("TYPE");
 }
 
-/// The option --motion: how a motion that turns moves (docs/sweep.md):
-/// angle-linear (the default) or rational.
-inline CLI::Option* add_motion_option(CLI::App* sub, turning_model& value) {
+/// The options --motion (how a motion that turns moves, docs/sweep.md:
+/// angle-linear, the default, or rational) and --max-steps (the
+/// angle-linear model's step limit); the first returned.
+inline CLI::Option* add_motion_options(CLI::App* sub, sweep_options& value) {
     const std::map<std::string, turning_model> models{{"angle-linear", turning_model::angle_linear},
                                                       {"rational", turning_model::rational}};
+    sub->add_option("--max-steps", value.max_steps,
+                    "Steps of conservative advancement (angle-linear motions that turn) before a motion is "
+                    "reported undecided (contact 'limit', t where it stopped: no contact before), 0 for no "
+                    "limit")
+        ->capture_default_str()
+        ->check(CLI::Range(std::size_t{0}, std::size_t{1} << 40))
+        ->type_name("N");
     return sub
-        ->add_option("--motion", value,
+        ->add_option("--motion", value.model,
                      "How a motion that turns moves: angle-linear (the angle linear in time; contact within "
                      "1e-9 by conservative advancement) or rational (the tangent of half the turn linear in "
                      "time, in pieces of at most a quarter turn; contact exact in the exact and certified types, "

@@ -28,8 +28,9 @@ struct sweep_cli_options {
 };
 
 /// CONTACTS.csv: `motion,contact,t,static_feature,moving_feature`, t and
-/// the features empty for a motion without contact; t with 17 significant
-/// digits (the double read back is the one written).
+/// the features empty for a motion without contact; contact `limit` and t
+/// where the step limit stopped for a motion left undecided; t with 17
+/// significant digits (the double read back is the one written).
 std::string contacts_csv(const std::vector<contact_row>& rows) {
     std::string s = "motion,contact,t,static_feature,moving_feature\n";
     for (std::size_t k = 0; k < rows.size(); ++k) {
@@ -37,7 +38,8 @@ std::string contacts_csv(const std::vector<contact_row>& rows) {
         s += std::to_string(k) +
              (r.contact ? ",1," + general(r.t, 17) + "," + feature_text(r.static_feature) + "," +
                               feature_text(r.moving_feature)
-                        : std::string(",0,,,")) +
+              : r.step_limit ? ",limit," + general(r.t, 17) + ",,"
+                             : std::string(",0,,,")) +
              "\n";
     }
     return s;
@@ -54,9 +56,11 @@ void run_sweep(const sweep_cli_options& o) {
     const double seconds = seconds_taken([&] { rows = type.contacts(in.a, in.b, in.poses, o.motion); });
     if (!o.out.empty()) write_output(o.out, contacts_csv(rows));
 
-    std::size_t contacts = 0, first = 0;
-    for (std::size_t k = 0; k < rows.size(); ++k)
+    std::size_t contacts = 0, first = 0, limited = 0;
+    for (std::size_t k = 0; k < rows.size(); ++k) {
         if (rows[k].contact && contacts++ == 0) first = k;
+        limited += rows[k].step_limit;
+    }
     std::ostream& summary = is_standard_stream(o.out) ? std::cerr : std::cout;
     summary << "motions:         " << rows.size() << "\n"
             << "contacts:        " << contacts << "\n"
@@ -67,8 +71,11 @@ void run_sweep(const sweep_cli_options& o) {
                          : std::string("none"))
             << "\n"
             << "number type:     " << o.number_type << "\n"
-            << "turning motion:  " << (o.motion.model == turning_model::rational ? "rational" : "angle-linear") << "\n"
-            << "time per motion: " << fixed(seconds * 1e6 / static_cast<double>(rows.size()), 3) << " us   (total "
+            << "turning motion:  " << (o.motion.model == turning_model::rational ? "rational" : "angle-linear") << "\n";
+    if (limited)
+        summary << "step limit:      " << limited << " motion" << (limited == 1 ? "" : "s")
+                << " undecided after --max-steps " << o.motion.max_steps << " steps (contact 'limit')\n";
+    summary << "time per motion: " << fixed(seconds * 1e6 / static_cast<double>(rows.size()), 3) << " us   (total "
             << fixed(seconds * 1e3, seconds * 1e3 >= 1 ? 1 : 3) << " ms)\n";
     if (!o.out.empty()) summary << "contacts written: " << shown_name(o.out, true) << "\n";
 }
@@ -87,7 +94,7 @@ void register_sweep(CLI::App& app) {
                            "first contact (contact within 1e-9, see docs/sweep.md).");
     add_scene_options(sub, o->scene);
     add_number_type_option(sub, o->number_type);
-    add_motion_option(sub, o->motion.model);
+    add_motion_options(sub, o->motion);
     sub->add_option("--out", o->out,
                     "Write one CSV line per motion (motion,contact,t,static_feature,moving_feature; "
                     "features as v<vertex> or e<edge> in input numbering, or interior) to this file; it "

@@ -72,7 +72,8 @@ def separation(a, b, poses, number_type="certified", threads=0, features=False):
     }
 
 
-def first_contact(a, b, start_poses, end_poses, number_type="certified", threads=0, motion="angle-linear"):
+def first_contact(a, b, start_poses, end_poses, number_type="certified", threads=0, motion="angle-linear",
+                  max_steps=100000, undecided=False):
     """The first contact of B moving from each start pose to its end pose
     with A: a bool array (whether they meet at some time in [0, 1]) and a
     float64 array (the earliest such time, rounded to the nearest double;
@@ -82,7 +83,12 @@ def first_contact(a, b, start_poses, end_poses, number_type="certified", threads
     as ``motion`` says:
 
     - ``"angle-linear"``: the angle linear in time; contact reported within
-      the library's tolerance of 1e-9 (never after the true first contact);
+      the library's tolerance of 1e-9 (never after the true first contact),
+      by conservative advancement of at most ``max_steps`` steps (0: no
+      limit). A motion that grazes A for long may reach the limit: it is
+      then reported without contact, and with ``undecided=True`` a third
+      bool array marks it (its time is then where the advancement stopped:
+      no contact before it, none decided after);
     - ``"rational"``: the tangent of half the turn since the start linear in
       time, in pieces of at most a quarter turn (the README's definition);
       exact in the ``"certified"`` and ``"exact"`` types.
@@ -97,6 +103,12 @@ def first_contact(a, b, start_poses, end_poses, number_type="certified", threads
     (array([ True]), array([0.16666667]))
     >>> first_contact(a, b, start, end, motion="rational")  # t = tan(pi / 12) / tan(pi / 4) / 2
     (array([ True]), array([0.1339746]))
+    >>> first_contact(a, b, start, end, max_steps=2, undecided=True)  # two steps do not reach it
+    (array([False]), array([0.11253954]), array([ True]))
     """
-    return _core.first_contact(as_polygon(a, "a")._p, as_polygon(b, "b")._p, as_poses(start_poses, "start_poses"),
-                               as_poses(end_poses, "end_poses"), number_type, motion, threads)
+    contact, time, limited = _core.first_contact(as_polygon(a, "a")._p, as_polygon(b, "b")._p,
+                                                 as_poses(start_poses, "start_poses"), as_poses(end_poses, "end_poses"),
+                                                 number_type, motion, threads, max_steps)
+    if undecided:
+        return contact, time, limited
+    return contact, np.where(limited, np.nan, time)

@@ -185,44 +185,39 @@ turning_model turning_model_of(const std::string& name) {
     throw invalid_input("motion '" + name + "' is not a turning model: expected 'angle-linear' or 'rational'");
 }
 
+/// Each motion's contact, time (NaN without contact; where the step limit
+/// stopped for a motion it left undecided) and whether it was left so.
 void first_contact_into(const polygon& a, const polygon& b, const pose_rows& from, const pose_rows& to,
-                        number_kind kind, const sweep_options& options, unsigned threads, bool* contact, double* time) {
+                        number_kind kind, const sweep_options& options, unsigned threads, bool* contact, double* time,
+                        bool* limited) {
     run_in_blocks(from.count, threads, [&](std::size_t first, std::size_t last) {
         for (std::size_t k = first; k < last; ++k) {
             const pose &p = from.rows[k], &q = to.rows[k];
-            bool c = false;
-            double t = 0;
+            contact_result<double> r;
             switch (kind) {
-            case number_kind::certified_type: {
-                const contact_result<double> r = certified_first_contact(a, b, p, q, options);
-                c = r.contact;
-                t = r.time;
-                break;
-            }
-            case number_kind::double_type: {
-                const contact_result<double> r = first_contact<double>(a, b, p, q, options);
-                c = r.contact;
-                t = r.time;
-                break;
-            }
+            case number_kind::certified_type: r = certified_first_contact(a, b, p, q, options); break;
+            case number_kind::double_type: r = first_contact<double>(a, b, p, q, options); break;
             case number_kind::exact_type: {
-                const contact_result<exact_rational> r = first_contact<exact_rational>(a, b, p, q, options);
-                c = r.contact;
-                if (c) t = nearest_double(time_fraction<exact_rational>{r.time, exact_rational(1)});
+                const contact_result<exact_rational> x = first_contact<exact_rational>(a, b, p, q, options);
+                r = {x.contact, nearest_double(time_fraction<exact_rational>{x.time, exact_rational(1)}),
+                     x.static_feature, x.moving_feature, x.step_limit};
                 break;
             }
             }
-            contact[k] = c;
-            time[k] = c ? t : std::numeric_limits<double>::quiet_NaN();
+            contact[k] = r.contact;
+            limited[k] = r.step_limit;
+            time[k] = r.contact || r.step_limit ? r.time : std::numeric_limits<double>::quiet_NaN();
         }
     });
 }
 
 py::tuple first_contact_batch(const py_polygon& a, const py_polygon& b, const py::array& start, const py::array& end,
-                              const std::string& number_type, const std::string& motion, long threads) {
+                              const std::string& number_type, const std::string& motion, long threads, long max_steps) {
     const number_kind kind = number_kind_of(number_type);
     sweep_options options;
     options.model = turning_model_of(motion);
+    if (max_steps < 0) throw invalid_input("max_steps is " + std::to_string(max_steps) + ": expected 0 or more");
+    options.max_steps = static_cast<std::size_t>(max_steps);
     const unsigned t = threads_of(threads);
     const pose_rows from = pose_rows_of(start, "start_poses");
     const pose_rows to = pose_rows_of(end, "end_poses");
@@ -231,13 +226,15 @@ py::tuple first_contact_batch(const py_polygon& a, const py_polygon& b, const py
                             std::to_string(to.count) + ": expected one end pose per start pose");
     py::array_t<bool> contact(static_cast<py::ssize_t>(from.count));
     py::array_t<double> time(static_cast<py::ssize_t>(from.count));
+    py::array_t<bool> limited(static_cast<py::ssize_t>(from.count));
     bool* c = contact.mutable_data();
     double* tm = time.mutable_data();
+    bool* lim = limited.mutable_data();
     {
         py::gil_scoped_release release;
-        first_contact_into(a.shape, b.shape, from, to, kind, options, t, c, tm);
+        first_contact_into(a.shape, b.shape, from, to, kind, options, t, c, tm, lim);
     }
-    return py::make_tuple(contact, time);
+    return py::make_tuple(contact, time, limited);
 }
 
 }  // namespace
@@ -248,7 +245,7 @@ void bind_queries(py::module_& m) {
     m.def("separation", &separation, py::arg("a"), py::arg("b"), py::arg("poses"), py::arg("number_type"),
           py::arg("threads"));
     m.def("first_contact", &first_contact_batch, py::arg("a"), py::arg("b"), py::arg("start_poses"),
-          py::arg("end_poses"), py::arg("number_type"), py::arg("motion"), py::arg("threads"));
+          py::arg("end_poses"), py::arg("number_type"), py::arg("motion"), py::arg("threads"), py::arg("max_steps"));
 }
 
 }  // namespace influence2d::python

@@ -135,6 +135,40 @@ TEST_CASE("cli: sweep and collide --continuous --motion rational answer turning 
     CHECK(linear.out.find("0,1," + seventeen(want.time)) == std::string::npos);
 }
 
+TEST_CASE("cli: sweep and collide --continuous report a motion left undecided at --max-steps", "[cli][sweep]") {
+    // A unit square slides 3e-9 above the top of a 4 x 4 square while
+    // turning by 1e-12: conservative advancement would take billions of
+    // steps (tests/motion/first_contact_test.cpp); the library's own answer
+    // at 1,000 steps is the tool's.
+    const temp_dir dir;
+    const char* a_wkt = "POLYGON((0 0, 4 0, 4 4, 0 4, 0 0))";
+    const char* b_wkt = "POLYGON((-0.5 -0.5, 0.5 -0.5, 0.5 0.5, -0.5 0.5, -0.5 -0.5))";
+    const auto a_file = dir.file("a.wkt", a_wkt), b_file = dir.file("b.wkt", b_wkt);
+    const std::vector<pose> motion = {{-2, 4.5 + 3e-9, 0}, {6, 4.5 + 3e-9, 1e-12}};
+    const auto poses = dir.file("poses.csv", poses_csv(motion));
+    sweep_options o;
+    o.max_steps = 1000;
+    const contact_result<double> want =
+        certified_first_contact(read_wkt(a_wkt), read_wkt(b_wkt), motion[0], motion[1], o);
+    REQUIRE(want.step_limit);
+    const std::string common = "--static " + quote(a_file.string()) + " --moving " + quote(b_file.string()) +
+                               " --poses " + quote(poses.string()) + " --max-steps 1000 --number-type certified";
+    const run_result r = run_cli(dir, "sweep " + common + " --out " + quote((dir / "c.csv").string()));
+    REQUIRE(r.exit_code == 0);
+    CHECK(slurp(dir / "c.csv") ==
+          "motion,contact,t,static_feature,moving_feature\n0,limit," + seventeen(want.time) + ",,\n");
+    CHECK(r.out.find("step limit:      1 motion undecided after --max-steps 1000 steps") != std::string::npos);
+    const run_result c = run_cli(dir, "collide " + common + " --continuous --out " + quote((dir / "f.csv").string()));
+    REQUIRE(c.exit_code == 0);
+    CHECK(slurp(dir / "f.csv") == "frame,collides,contact_t\n0,0,\n1,0,limit\n");
+    CHECK(c.out.find("step limit:      1 motion") != std::string::npos);
+    // Without the option the default limit (100,000 steps) stops it too.
+    const run_result d = run_cli(dir, "sweep --static " + quote(a_file.string()) + " --moving " +
+                                          quote(b_file.string()) + " --poses " + quote(poses.string()) + " --out -");
+    REQUIRE(d.exit_code == 0);
+    CHECK(d.out.find("\n0,limit,") != std::string::npos);
+}
+
 TEST_CASE("cli: sweep and collide --continuous refuse what they cannot answer", "[cli][sweep][input]") {
     const temp_dir dir;
     const auto wall = dir.file("wall.wkt", wall_wkt), square = dir.file("square.wkt", square_wkt);
@@ -158,6 +192,8 @@ TEST_CASE("cli: sweep and collide --continuous refuse what they cannot answer", 
         {"collide " + scene + " --trajectory linear --separation --algorithm paper", "not --algorithm paper"},
         {"sweep " + scene + " --poses " + quote(one.string()) + " --motion spiral", "--motion: Check spiral value"},
         {"collide " + scene + " --trajectory linear --motion rational", "--motion requires --continuous"},
+        {"collide " + scene + " --trajectory linear --max-steps 10", "--max-steps requires --continuous"},
+        {"sweep " + scene + " --poses " + quote(one.string()) + " --max-steps -1", "--max-steps"},
     };
     for (const refusal& r : refusals) {
         INFO(r.args);

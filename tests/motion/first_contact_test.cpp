@@ -801,3 +801,44 @@ TEST_CASE("sweep: turning motions far from 1 in scale, certified as exact", "[sw
     CHECK(later > 0);
     CHECK(free > 0);
 }
+
+TEST_CASE("sweep: a motion grazing for long stops at the step limit, undecided", "[sweep][turning]") {
+    // B, a unit square, slides 3e-9 above A's top side from x = -2 to x = 6
+    // while turning by 1e-12: once over A (from t = 0.1875, B's right side at
+    // x = 0) the distance stays near 3e-9, above the tolerance of 1e-9, so
+    // each step of conservative advancement gains about 3e-10 of the
+    // motion: billions of steps.
+    const polygon a = square(0, 0, 4, 4), b = square(-0.5, -0.5, 0.5, 0.5);
+    const double y = 4.5 + 3e-9;
+    const pose from{-2, y, 0}, to{6, y, 1e-12};
+    sweep_options o;
+    o.max_steps = 1000;
+    const contact_result<double> d = first_contact<double>(a, b, from, to, o);
+    CHECK_FALSE(d.contact);
+    CHECK(d.step_limit);
+    CHECK(d.time > 0.1875);
+    CHECK(d.time < 0.19);
+    const contact_result<double> c = certified_first_contact(a, b, from, to, o);
+    const contact_result<exact_rational> x = first_contact<exact_rational>(a, b, from, to, o);
+    CHECK_FALSE(c.contact);
+    CHECK(c.step_limit);
+    CHECK(x.step_limit);
+    CHECK(nearest_double(x.time) == c.time);
+    CHECK(c.time > 0.1875);
+    // With a tolerance above the gap it touches on reaching A; the rational model
+    // has no steps and answers exactly: B never meets A.
+    o.tolerance = 1e-8;
+    const contact_result<double> near = certified_first_contact(a, b, from, to, o);
+    CHECK(near.contact);
+    CHECK_FALSE(near.step_limit);
+    CHECK(near.time == Approx(0.1875).margin(1e-6));
+    o.tolerance = 1e-9;
+    o.model = turning_model::rational;
+    const contact_result<double> exact = certified_first_contact(a, b, from, to, o);
+    CHECK_FALSE(exact.contact);
+    CHECK_FALSE(exact.step_limit);
+    // A motion that meets A is decided well within the default limit.
+    const contact_result<double> head_on = certified_first_contact(a, b, {-2, 2, 0}, {6, 2, 1}, sweep_options{});
+    CHECK(head_on.contact);
+    CHECK_FALSE(head_on.step_limit);
+}

@@ -120,6 +120,7 @@ def test_bad_options():
     raises("one end pose per start pose", influence2d.first_contact, A, B, np.zeros((2, 3)), np.zeros((3, 3)))
     raises("motion 'linear' is not a turning model", influence2d.first_contact, A, B, np.zeros((1, 3)),
            np.zeros((1, 3)), motion="linear")
+    raises("max_steps is -1", influence2d.first_contact, A, B, np.zeros((1, 3)), np.zeros((1, 3)), max_steps=-1)
     raises(r"pose: expected one pose", influence2d.Detector(A, B).witness, np.zeros((2, 3)))
 
 

@@ -275,6 +275,25 @@ def test_first_contact_rational_matches_the_tool(tool, tmp_path, rng):
             assert float(cols[2]) == t[k]
 
 
+def test_first_contact_step_limit_leaves_a_grazing_motion_undecided():
+    """A unit square slides 3e-9 above a 4 x 4 square while turning by
+    1e-12: within max_steps the advancement cannot decide (no contact
+    before the time it reached); the rational model answers no contact."""
+    a = "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))"
+    b = "POLYGON ((-0.5 -0.5, 0.5 -0.5, 0.5 0.5, -0.5 0.5, -0.5 -0.5))"
+    start = np.array([[-2.0, 4.5 + 3e-9, 0.0], [-2.0, 2.0, 0.0]])
+    end = np.array([[6.0, 4.5 + 3e-9, 1e-12], [6.0, 2.0, 1.0]])
+    for number_type in ("double", "certified", "exact"):
+        contact, t, undecided = influence2d.first_contact(a, b, start, end, number_type=number_type, max_steps=1000,
+                                                          undecided=True)
+        assert contact.tolist() == [False, True] and undecided.tolist() == [True, False]
+        assert 0.1875 < t[0] < 0.19  # B's right side passes over A's corner at 0.1875
+        contact, t = influence2d.first_contact(a, b, start, end, number_type=number_type, max_steps=1000)
+        assert math.isnan(t[0]) and not contact[0]
+    contact, t = influence2d.first_contact(a, b, start, end, motion="rational")
+    assert contact.tolist() == [False, True]
+
+
 def test_detector_keeps_its_state_across_calls(np_rng, rng):
     """Frames split over many calls answer as one call (and as intersects)."""
     a = star_polygon(rng, 40)

@@ -4,6 +4,7 @@
 /// What a motion query answers and takes: a motion of B between two poses,
 /// its first contact, the options.
 
+#include <cstddef>
 #include <cstdint>
 
 #include "influence2d/core/feature.hpp"
@@ -18,7 +19,8 @@ struct contact_result {
     /// that turns: come within the tolerance of sweep_options).
     bool contact = false;
     /// The earliest such time: 0 when they meet at the start; exact in an
-    /// exact NT for a translation; 0 when there is no contact.
+    /// exact NT for a translation; 0 when there is no contact (but see
+    /// step_limit).
     NT time{};
     /// A's feature that B touches first: an edge (B's vertex on it), a
     /// vertex (on B's edge), or, when the regions already meet at the start
@@ -27,6 +29,12 @@ struct contact_result {
     feature static_feature{};
     /// B's feature in that contact, as static_feature.
     feature moving_feature{};
+    /// For a motion that turns in the angle-linear model: conservative
+    /// advancement took sweep_options::max_steps steps without deciding (a
+    /// motion that stays within a small multiple of the tolerance for long).
+    /// Then `contact` is false, `time` is where it stopped: no contact in
+    /// [0, time], none decided after.
+    bool step_limit = false;
 };
 
 /// How a motion that turns moves between its two poses (docs/sweep.md).
@@ -52,6 +60,12 @@ struct sweep_options {
     double tolerance = 1e-9;
     /// How a motion that turns moves (a translation is the same in both).
     turning_model model = turning_model::angle_linear;
+    /// For motions that turn in the angle-linear model: the most steps of
+    /// conservative advancement before the query gives up with
+    /// contact_result::step_limit (0: no limit). A step costs one separation
+    /// query; most motions take tens of steps, a motion that grazes A within a
+    /// few times the tolerance may take about its length over the tolerance.
+    std::size_t max_steps = 100000;
 };
 
 /// The pose of B at time t of the motion from `from` to `to`, as

@@ -88,6 +88,15 @@ struct probe_result {
     feature moving_feature{};  ///< B's feature at that distance
 };
 
+/// Where conservative advancement stopped: at a contact (`contact`), at the
+/// step limit (`limited`, no contact up to t), or at t = 1 without contact.
+struct advance_result {
+    bool contact = false;  ///< the distance came within the tolerance at t
+    bool limited = false;  ///< the step limit stopped it at t, undecided after
+    double t = 0;          ///< where it stopped
+    probe_result at{};     ///< the probe at t (with contact)
+};
+
 /// The earliest time of conservative advancement along the motion from
 /// `from` to `to` (docs/sweep.md, "Motions that turn"). A probe gives the
 /// distance between A and B posed by a pose (within one unit in the last
@@ -108,14 +117,14 @@ struct probe_result {
 ///       if L <= tol:  if coarse and refining: switch to fine, again at t
 ///                     else contact at t
 ///       if t = 1:     none
+///       if max_steps probes taken (max_steps > 0):  limited at t
 ///       t <- min(1, t + (L - resolution / 2) / v, rounded down)
 ///
 /// Until the returned t the distance stays above resolution / 2 > 0: no
 /// step passes a contact. Each step advances by at least 2^-51.
 template <class Coarse, class Fine>
-std::optional<std::pair<double, probe_result>> advance(const polygon& b, const pose& from, const pose& to,
-                                                       double tolerance, double coarse_error, Coarse&& coarse,
-                                                       bool refine, double fine_error, Fine&& fine) {
+advance_result advance(const polygon& b, const pose& from, const pose& to, double tolerance, std::size_t max_steps,
+                       double coarse_error, Coarse&& coarse, bool refine, double fine_error, Fine&& fine) {
     const double r = bounding_radius(b, {0, 0});
     const double turn = std::fabs(to.theta - from.theta);
     const double v = (std::hypot(to.tx - from.tx, to.ty - from.ty) + turn * r) * (1 + speed_widening);
@@ -125,7 +134,7 @@ std::optional<std::pair<double, probe_result>> advance(const polygon& b, const p
     const double tol = std::max(tolerance, resolution);
     bool fine_stage = false;
     double t = 0;
-    for (;;) {
+    for (std::size_t probes = 1;; ++probes) {
         const pose p = motion_pose(from, to, t);
         probe_result at = fine_stage ? fine(p) : coarse(p);
         const double lower = at.distance * (1 - distance_shrinking) - (fine_stage ? fine_error : coarse_error) - delta;
@@ -134,9 +143,10 @@ std::optional<std::pair<double, probe_result>> advance(const polygon& b, const p
                 fine_stage = true;
                 continue;
             }
-            return std::make_pair(t, at);
+            return {true, false, t, at};
         }
-        if (t == 1) return std::nullopt;
+        if (t == 1) return {};
+        if (max_steps != 0 && probes >= max_steps) return {false, true, t, {}};
         const double step = (lower - resolution / 2) / v * (1 - distance_shrinking);
         t = std::min(1.0, t + step);
     }
@@ -174,13 +184,15 @@ probe_result coarse_probe(separation_query<double>& coarse, const pose& p, Fine&
 
 /// The result of a turning motion from advance's answer.
 template <class NT>
-contact_result<NT> turning_result(const std::optional<std::pair<double, probe_result>>& found) {
+contact_result<NT> turning_result(const advance_result& found) {
     contact_result<NT> r;
-    if (!found) return r;
+    r.step_limit = found.limited;
+    if (found.limited) r.time = number_traits<NT>::from_double(found.t);
+    if (!found.contact) return r;
     r.contact = true;
-    r.time = number_traits<NT>::from_double(found->first);
-    r.static_feature = found->second.static_feature;
-    r.moving_feature = found->second.moving_feature;
+    r.time = number_traits<NT>::from_double(found.t);
+    r.static_feature = found.at.static_feature;
+    r.moving_feature = found.at.moving_feature;
     return r;
 }
 
@@ -201,8 +213,8 @@ contact_result<NT> turning_first_contact(const polygon& a, const polygon& b, con
     if constexpr (number_traits<NT>::category == number_category::floating) {
         separation_query<NT> query(a, b);
         const auto probe = [&](const pose& p) { return probe_of(query, p); };
-        return turning_result<NT>(
-            advance(b, from, to, options.tolerance, separation_error<NT>(scale), probe, false, 0, probe));
+        return turning_result<NT>(advance(b, from, to, options.tolerance, options.max_steps,
+                                          separation_error<NT>(scale), probe, false, 0, probe));
     } else {
         if (const int k = range_shift<double>(a, b, from, to); k != 0 && scales_exactly(a, b, k, from, to)) {
             sweep_options scaled = options;
@@ -217,7 +229,7 @@ contact_result<NT> turning_first_contact(const polygon& a, const polygon& b, con
             return probe_of(*fine_query, p);
         };
         return turning_result<NT>(advance(
-            b, from, to, options.tolerance, separation_error<double>(scale),
+            b, from, to, options.tolerance, options.max_steps, separation_error<double>(scale),
             [&](const pose& p) { return coarse_probe(coarse, p, fine); }, true, 0, fine));
     }
 }
@@ -235,7 +247,7 @@ contact_result<double> filtered_turning_first_contact(const polygon& a, const po
         return probe_result{distance_of<Exact>(s.squared_distance), s.static_feature, s.moving_feature};
     };
     return turning_result<double>(advance(
-        b, from, to, options.tolerance, separation_error<double>(motion_scale(a, b, from, to)),
+        b, from, to, options.tolerance, options.max_steps, separation_error<double>(motion_scale(a, b, from, to)),
         [&](const pose& p) { return coarse_probe(coarse, p, fine); }, true, 0, fine));
 }
 
