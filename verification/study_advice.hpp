@@ -40,7 +40,7 @@ inline std::string number_type_advice(const study_result& r) {
         const decision_tally& c = collides.at(t->number_type);
         s += " " + t->number_type + ": " + percent(c.rate()) + " wrong at " + fixed(c.ns_per_query(), 0) + " ns (" +
              times(t->number_type) + ").";
-        if (c.disagreements == 0)
+        if (c.disagreements == 0 && predicates.count(t->number_type))  // (predicates asked)
             sound_floats += (sound_floats.empty() ? "" : ", ") + t->number_type + " (" +
                             percent(predicates.at(t->number_type).rate()) + ")";
     }

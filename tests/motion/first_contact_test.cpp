@@ -837,6 +837,14 @@ TEST_CASE("sweep: a motion grazing for long stops at the step limit, undecided",
     const contact_result<double> exact = certified_first_contact(a, b, from, to, o);
     CHECK_FALSE(exact.contact);
     CHECK_FALSE(exact.step_limit);
+    // long double advances on its own distances, within its own error bound
+    // (2^-51 of the scene's size, not the 4e-8 of its filters' margin, which
+    // would call the 3e-9 gap a contact).
+    sweep_options linear;
+    linear.max_steps = 1000;
+    const contact_result<long double> l = first_contact<long double>(a, b, from, to, linear);
+    CHECK_FALSE(l.contact);
+    CHECK(l.step_limit);
     // A motion that meets A is decided well within the default limit.
     const contact_result<double> head_on = certified_first_contact(a, b, {-2, 2, 0}, {6, 2, 1}, sweep_options{});
     CHECK(head_on.contact);

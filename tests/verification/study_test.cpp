@@ -372,3 +372,20 @@ TEST_CASE("study: --decisions selects the kinds, and large keeps every pose only
     CHECK(bad.exit_code == 2);
     CHECK(bad.err.find("guess") != std::string::npos);
 }
+
+TEST_CASE("study: the final answer alone, in a type whose answers are all right, is reported",
+          "[verification][study][cli]") {
+    // quad answers every collides question of the convex scene rightly; with
+    // no predicate decision asked, the advice has no predicate rate to give
+    // it (that once ended the run with "map::at").
+    const temp_dir dir;
+    const auto r = run_cli(dir,
+                           "study --families convex --types double,quad --cases 1 --frames 20 --decisions "
+                           "collides --queries none --raster none --out " +
+                               quote((dir / "out").string()));
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const std::string md = slurp(dir / "out" / "study.md");
+    CHECK(md.find("quad: 0 wrong at") != std::string::npos);
+    CHECK(md.find("their predicates disagreed") == std::string::npos);
+}

@@ -68,16 +68,28 @@ inline constexpr double distance_shrinking = 0x1p-50;
 /// The bound of the error of separation<NT>'s distance against the exact
 /// distance at the same pose, given the scene's size `scale` (the largest
 /// coordinates of A and of B plus the translations): 0 for an exact NT (its
-/// distance is exact before distance_of rounds it); for double the bound
-/// distance/separation.hpp states, 2^-40 scale; for another floating NT its
-/// filters' margin, posing_margin (four times filter_slack times scale: 1e-9
-/// for long double and quad, far above their rounding; 1e-4 for float).
+/// distance is exact before distance_of rounds it); for a binary floating NT
+/// at least as fine as double whose std::numeric_limits give its p
+/// significand bits (double, long double, quad) the bound
+/// distance/separation.hpp states for double, 2^-40 scale = 8192 u scale,
+/// in NT's own unit u = 2^-p: 2^(13 - p) scale (docs/separation.md: the
+/// posing and the products round by multiples of u, about 45u scale in
+/// all); for another floating NT (float; GCC's __float128, whose
+/// std::numeric_limits strict C++ does not give) its filters' margin,
+/// posing_margin (four times filter_slack times scale: 4e-12 for
+/// __float128, 1e-4 for float).
 template <class NT>
 double separation_error(double scale) {
     using tr = number_traits<NT>;
-    if constexpr (tr::category != number_category::floating) return 0;
-    if constexpr (std::is_same_v<NT, double>) return 0x1p-40 * scale;
-    return posing_margin<NT>(scale);
+    using limits = std::numeric_limits<NT>;
+    if constexpr (tr::category != number_category::floating) {
+        return 0;
+    } else if constexpr (limits::is_specialized && limits::radix == 2 &&
+                         limits::digits >= std::numeric_limits<double>::digits) {
+        return std::ldexp(scale, 13 - limits::digits);
+    } else {
+        return posing_margin<NT>(scale);
+    }
 }
 
 /// The distance at one time of a turning motion, with the features that
