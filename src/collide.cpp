@@ -233,11 +233,7 @@ void report_results(const collide_options& o, const collide_run& result) {
             << (r.frames.empty() ? std::string("n/a")
                                  : fixed(r.seconds * 1e6 / static_cast<double>(r.frames.size()), 3) + " us")
             << "   (total " << fixed(total_ms, total_ms >= 1 ? 1 : 3) << " ms)\n";
-    std::size_t limited = 0;
-    for (const contact_row& c : result.contacts) limited += c.step_limit;
-    if (limited)
-        summary << "step limit:      " << limited << " motion" << (limited == 1 ? "" : "s")
-                << " undecided after --max-steps " << o.motion.max_steps << " steps (contact_t 'limit')\n";
+    summary << step_limit_line(result.contacts, o.motion.max_steps, "contact_t");
     if (o.continuous)
         summary << "between poses:   " << result.between
                 << " frames whose motion meets the static polygon only between the poses\n"

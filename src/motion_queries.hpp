@@ -47,6 +47,17 @@ contact_row row_of(const contact_result<NT>& r, double time) {
     return {r.contact, r.contact || r.step_limit ? time : 0.0, r.static_feature, r.moving_feature, r.step_limit};
 }
 
+/// The summary line on the motions the step limit left undecided, written
+/// `marked` in the output; empty when there are none.
+inline std::string step_limit_line(const std::vector<contact_row>& rows, std::size_t max_steps,
+                                   const std::string& marked) {
+    std::size_t limited = 0;
+    for (const contact_row& r : rows) limited += r.step_limit;
+    if (!limited) return "";
+    return "step limit:      " + std::to_string(limited) + " motion" + (limited == 1 ? "" : "s") +
+           " undecided after --max-steps " + std::to_string(max_steps) + " steps (" + marked + " 'limit')\n";
+}
+
 /// A feature as the tool writes it: v<number> for a vertex, e<number> for an
 /// edge (input numbering, rings one after another), "interior" for the region.
 inline std::string feature_text(const feature& f) {

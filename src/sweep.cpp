@@ -56,11 +56,9 @@ void run_sweep(const sweep_cli_options& o) {
     const double seconds = seconds_taken([&] { rows = type.contacts(in.a, in.b, in.poses, o.motion); });
     if (!o.out.empty()) write_output(o.out, contacts_csv(rows));
 
-    std::size_t contacts = 0, first = 0, limited = 0;
-    for (std::size_t k = 0; k < rows.size(); ++k) {
+    std::size_t contacts = 0, first = 0;
+    for (std::size_t k = 0; k < rows.size(); ++k)
         if (rows[k].contact && contacts++ == 0) first = k;
-        limited += rows[k].step_limit;
-    }
     std::ostream& summary = is_standard_stream(o.out) ? std::cerr : std::cout;
     summary << "motions:         " << rows.size() << "\n"
             << "contacts:        " << contacts << "\n"
@@ -71,11 +69,9 @@ void run_sweep(const sweep_cli_options& o) {
                          : std::string("none"))
             << "\n"
             << "number type:     " << o.number_type << "\n"
-            << "turning motion:  " << (o.motion.model == turning_model::rational ? "rational" : "angle-linear") << "\n";
-    if (limited)
-        summary << "step limit:      " << limited << " motion" << (limited == 1 ? "" : "s")
-                << " undecided after --max-steps " << o.motion.max_steps << " steps (contact 'limit')\n";
-    summary << "time per motion: " << fixed(seconds * 1e6 / static_cast<double>(rows.size()), 3) << " us   (total "
+            << "turning motion:  " << (o.motion.model == turning_model::rational ? "rational" : "angle-linear") << "\n"
+            << step_limit_line(rows, o.motion.max_steps, "contact")
+            << "time per motion: " << fixed(seconds * 1e6 / static_cast<double>(rows.size()), 3) << " us   (total "
             << fixed(seconds * 1e3, seconds * 1e3 >= 1 ? 1 : 3) << " ms)\n";
     if (!o.out.empty()) summary << "contacts written: " << shown_name(o.out, true) << "\n";
 }

@@ -79,6 +79,7 @@
 #include "verification/heap_meter.hpp"
 #include "verification/peers.hpp"
 #include "verification/raster.hpp"
+#include "verification/report_text.hpp"
 
 namespace influence2d::verification {
 
@@ -457,12 +458,6 @@ std::size_t stride_for(D& d, const std::vector<pose>& poses, double budget) {
     return static_cast<std::size_t>(std::ceil(whole / budget));
 }
 
-/// The median of some seconds (reordered).
-inline double median(std::vector<double>& s) {
-    std::nth_element(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(s.size() / 2), s.end());
-    return s[s.size() / 2];
-}
-
 /// Whether rounds of turns go on: until every method has at least 3 samples
 /// (an odd number) and `seconds` of them, or 101.
 inline bool more_rounds(std::size_t round, const std::map<std::string, std::vector<double>>& samples, double seconds) {
@@ -545,7 +540,7 @@ inline std::map<std::string, timed_passes> time_repeated(const time_study_option
             });
     for (const std::string& m : modes) {
         out[m].passes = seconds[m].size();
-        out[m].median = median(seconds[m]);
+        out[m].median = median_of(seconds[m]);
     }
     return out;
 }
@@ -562,7 +557,7 @@ inline std::map<std::string, std::pair<double, std::size_t>> time_preparation(co
     for (std::size_t round = 0; !methods.empty() && more_rounds(round, seconds, o.preparation_seconds); ++round)
         for (const std::string& m : methods) seconds[m].push_back(build_seconds(m, trajectory, a, b));
     std::map<std::string, std::pair<double, std::size_t>> out;
-    for (auto& [m, s] : seconds) out[m] = {median(s), s.size()};
+    for (auto& [m, s] : seconds) out[m] = {median_of(s), s.size()};
     return out;
 }
 

@@ -77,7 +77,7 @@ inline constexpr double distance_shrinking = 0x1p-50;
 /// all); for another floating NT (float; GCC's __float128, whose
 /// std::numeric_limits strict C++ does not give) its filters' margin,
 /// posing_margin (four times filter_slack times scale: 4e-12 for
-/// __float128, 1e-4 for float).
+/// __float128, 4e-4 for float).
 template <class NT>
 double separation_error(double scale) {
     using tr = number_traits<NT>;
