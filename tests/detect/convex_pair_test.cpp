@@ -22,20 +22,10 @@ namespace {
 
 polygon one_ring(std::vector<point<double>> v) { return polygon({ring(std::move(v))}); }
 
-/// A convex polygon of n vertices at sorted random angles on an ellipse
-/// about c (axes rx, ry), turned by phi; its doubles need not be convex
-/// (is_convex_polygon decides).
+/// A convex polygon of n vertices on an ellipse (test_shapes::ellipse_points);
+/// its doubles need not be convex (is_convex_polygon decides).
 polygon ellipse_polygon(test_random::rng& r, std::size_t n, point<double> c, double rx, double ry) {
-    std::vector<double> angles(n);
-    for (double& a : angles) a = r.uniform(0, 6.283185307179586);
-    std::sort(angles.begin(), angles.end());
-    const double phi = r.uniform(0, 3.14159);
-    std::vector<point<double>> v;
-    for (double a : angles) {
-        const double x = rx * std::cos(a), y = ry * std::sin(a);
-        v.push_back({c.x + std::cos(phi) * x - std::sin(phi) * y, c.y + std::sin(phi) * x + std::cos(phi) * y});
-    }
-    return one_ring(v);
+    return one_ring(test_shapes::ellipse_points(r, n, c, rx, ry));
 }
 
 /// Small convex polygons with integer vertices (posed by integer

@@ -34,6 +34,7 @@
 #include "influence2d/motion/trajectory.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/predicates/contact_time.hpp"
+#include "influence2d/predicates/convexity.hpp"
 
 namespace {
 
@@ -545,10 +546,13 @@ struct turning_tally {
 /// than the first sampled one and with no sampled contact before it; at the
 /// reported time the exact distance is within the tolerance; certified
 /// takes the same steps as exact_rational (the same time and features);
-/// double reports a contact whenever a sample meets.
-void check_turning(const polygon& a, const polygon& b, const pose& from, const pose& to, turning_tally& t) {
-    INFO(describe(a, b, from, to));
-    const sweep_options options;
+/// double reports a contact whenever a sample meets. (The distance at the
+/// reported time is within the tolerance times 1 + `slack`: a tolerance
+/// below the motion's resolution, which grows with its coordinates, is
+/// raised to it; docs/sweep.md.)
+void check_turning(const polygon& a, const polygon& b, const pose& from, const pose& to, turning_tally& t,
+                   const sweep_options& options = {}, double slack = 1e-12) {
+    INFO(describe(a, b, from, to) << ", tolerance " << options.tolerance);
     const contact_result<exact_rational> ex = first_contact<exact_rational>(a, b, from, to, options);
     const contact_result<double> ce = certified_first_contact(a, b, from, to, options);
     const contact_result<double> db = first_contact<double>(a, b, from, to, options);
@@ -568,11 +572,13 @@ void check_turning(const polygon& a, const polygon& b, const pose& from, const p
     }
     if (!ex.contact) return;
     ++t.reported;
+    // Meeting at the start: double says so too.
+    if (ex.time == 0) CHECK((db.contact && db.time == 0));
     const double time = CGAL::to_double(ex.time);
     CHECK(ex.time == exact_rational(time));
     for (int k = 0; k <= samples && static_cast<double>(k) / samples < time; ++k)
         CHECK_FALSE(intersects<exact_rational>(a, b, motion_pose(from, to, static_cast<double>(k) / samples)));
-    CHECK(certified_separation(a, b, motion_pose(from, to, time)).distance <= options.tolerance * (1 + 1e-12));
+    CHECK(certified_separation(a, b, motion_pose(from, to, time)).distance <= options.tolerance * (1 + slack));
     CHECK(ce.time == time);
     CHECK(ce.static_feature.kind == ex.static_feature.kind);
     CHECK(ce.static_feature.index == ex.static_feature.index);
@@ -624,6 +630,55 @@ TEST_CASE("sweep: motions that turn against dense sampling with the exact query"
     WARN("motions that turn: " << t.motions << " motions, " << t.sampled << " with a sampled contact, " << t.reported
                                << " reported");
     CHECK(t.sampled > t.motions / 4);
+    CHECK(t.reported < t.motions);
+}
+
+TEST_CASE("sweep: convex pairs turning on their own probe, against dense sampling", "[sweep][turning][reference]") {
+    // Two convex polygons (on ellipses, of 3 to 16 vertices, sizes from 2^-8
+    // to 2^8, far from the origin or not) step on convex_gap and each
+    // vertex's own approach: every motion against dense sampling with the
+    // exact query, certified as exact, in both roles; touching and sliding
+    // exactly; B turning in place about a point inside A's reach.
+    test_random::rng g(0xc0c0ULL);
+    turning_tally t;
+    const int scenes = test_effort::scaled(24);
+    for (int k = 0; k < scenes; ++k) {
+        const double size = std::ldexp(1.0, static_cast<int>(g.uniform(-8, 8)));
+        const point<double> offset = g.chance(0.3) ? point<double>{1e5 * size, -3e5 * size} : point<double>{0, 0};
+        const polygon a = ring(test_shapes::ellipse_points(g, 3 + static_cast<std::size_t>(g.uniform(0, 14)), offset,
+                                                           size, size * g.uniform(0.1, 1)));
+        const polygon b = ring(test_shapes::ellipse_points(g, 3 + static_cast<std::size_t>(g.uniform(0, 14)), {0, 0},
+                                                           size * g.uniform(0.2, 1.5), size * g.uniform(0.05, 1)));
+        if (!is_convex_polygon(a) || !is_convex_polygon(b)) continue;
+        const double reach = test_poses::reach(a, b);
+        for (int f = 0; f < 3; ++f) {
+            auto [from, to] = random_translation(a, b, g, reach);
+            to.theta = from.theta + g.uniform(-3, 3);
+            // Far from the origin the motion's resolution (a few ulps of
+            // its coordinates) exceeds 1e-9: a tolerance of 2^-30 times its
+            // size stands above it.
+            sweep_options o;
+            if (offset.x != 0) o.tolerance = 0x1p-30 * sweep::motion_scale(a, b, from, to);
+            const double slack = offset.x != 0 ? 0x1p-16 : 1e-12;
+            check_turning(a, b, from, to, t, o, slack);
+            // The roles swapped: B at rest, A moving along the same poses
+            // (a motion of its own).
+            check_turning(b, a, from, to, t, o, slack);
+            // Turning in place.
+            to = from;
+            to.theta = from.theta + g.uniform(-6, 6);
+            check_turning(a, b, from, to, t, o, slack);
+        }
+    }
+    // A square sliding along another's top side, touching it exactly, and
+    // turning by a hair as it goes: contact at the start.
+    const polygon floor = square(0, 0, 4, 4), box = square(-0.5, -0.5, 0.5, 0.5);
+    check_turning(floor, box, {1, 4.5, 0}, {3, 4.5, 1e-9}, t);
+    // Corner first onto the floor's top side, turning through the touch.
+    check_turning(floor, box, {2, 6, 0.6}, {2, 4, 0.9}, t);
+    WARN("convex pairs turning: " << t.motions << " motions, " << t.sampled << " with a sampled contact, " << t.reported
+                                  << " reported");
+    CHECK(t.sampled > t.motions / 5);
     CHECK(t.reported < t.motions);
 }
 
@@ -808,7 +863,10 @@ TEST_CASE("sweep: a motion grazing for long stops at the step limit, undecided",
     // x = 0) the distance stays near 3e-9, above the tolerance of 1e-9, so
     // each step of conservative advancement gains about 3e-10 of the
     // motion: billions of steps.
-    const polygon a = square(0, 0, 4, 4), b = square(-0.5, -0.5, 0.5, 0.5);
+    // A is notched below, far from the motion, so that it is not convex
+    // (two convex polygons step by their own bound: below).
+    const polygon a = ring({{0, 0}, {1.5, 0}, {1.5, 1}, {2.5, 1}, {2.5, 0}, {4, 0}, {4, 4}, {0, 4}}),
+                  b = square(-0.5, -0.5, 0.5, 0.5);
     const double y = 4.5 + 3e-9;
     const pose from{-2, y, 0}, to{6, y, 1e-12};
     sweep_options o;
@@ -849,4 +907,25 @@ TEST_CASE("sweep: a motion grazing for long stops at the step limit, undecided",
     const contact_result<double> head_on = certified_first_contact(a, b, {-2, 2, 0}, {6, 2, 1}, sweep_options{});
     CHECK(head_on.contact);
     CHECK_FALSE(head_on.step_limit);
+    // Over A without its notch (two convex polygons), the step of each
+    // vertex's own approach: B turning by 1e-12 comes towards A's top at
+    // most at 1e-12 times its radius, so the grazing is passed in a few
+    // steps, apart, in double, certified and exact alike.
+    const polygon convex = square(0, 0, 4, 4);
+    sweep_options few;
+    few.max_steps = 20;
+    for (const contact_result<double>& r :
+         {first_contact<double>(convex, b, from, to, few), certified_first_contact(convex, b, from, to, few)}) {
+        CHECK_FALSE(r.contact);
+        CHECK_FALSE(r.step_limit);
+    }
+    const contact_result<exact_rational> cx = first_contact<exact_rational>(convex, b, from, to, few);
+    CHECK_FALSE(cx.contact);
+    CHECK_FALSE(cx.step_limit);
+    // The same slide 3e-9 lower meets A (touching its top side).
+    const pose low_from{-2, 4.5, 0}, low_to{6, 4.5, 1e-12};
+    const contact_result<double> touch = certified_first_contact(convex, b, low_from, low_to, few);
+    CHECK(touch.contact);
+    CHECK(touch.time <= 0.1875);
+    CHECK(touch.time == Approx(0.1875).margin(1e-9));
 }

@@ -2,12 +2,14 @@
 #pragma once
 // Small polygons for the unit tests.
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <vector>
 
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "support/random.hpp"
 
 namespace test_shapes {
 
@@ -27,6 +29,23 @@ point<NT> pt(double x, double y) {
 
 inline ring_input ring(std::vector<point<double>> v, ring_role role = ring_role::outer) {
     return ring_input{std::move(v), role};
+}
+
+/// n points at sorted random angles on an ellipse about c (axes rx, ry),
+/// turned by a random angle: a convex polygon's vertices, counter-clockwise,
+/// but for the rounding of their doubles (is_convex_polygon decides).
+inline std::vector<point<double>> ellipse_points(test_random::rng& r, std::size_t n, point<double> c, double rx,
+                                                 double ry) {
+    std::vector<double> angles(n);
+    for (double& a : angles) a = r.uniform(0, 6.283185307179586);
+    std::sort(angles.begin(), angles.end());
+    const double phi = r.uniform(0, 3.14159);
+    std::vector<point<double>> v;
+    for (double a : angles) {
+        const double x = rx * std::cos(a), y = ry * std::sin(a);
+        v.push_back({c.x + std::cos(phi) * x - std::sin(phi) * y, c.y + std::sin(phi) * x + std::cos(phi) * y});
+    }
+    return v;
 }
 
 /// The axis-parallel square [x, x+s] x [y, y+s], counter-clockwise from (x, y).

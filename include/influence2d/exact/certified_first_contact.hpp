@@ -6,6 +6,7 @@
 
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/exact/certified_separation.hpp"
 #include "influence2d/motion/first_contact.hpp"
 #include "influence2d/number/cgal.hpp"
 
@@ -15,10 +16,12 @@ namespace influence2d {
 /// its time rounded to the nearest double, with its exact features, at
 /// nearly double's cost: filtered_first_contact in exact rationals (each
 /// event computed and compared in `certified`, and again exactly only when
-/// its signs are not certain). Throws as first_contact.
+/// its signs are not certain; a motion that turns decided on
+/// certified_separation_query, the exact separation in double words where
+/// their bounds settle it). Throws as first_contact.
 inline contact_result<double> certified_first_contact(const polygon& a, const polygon& b, const pose& from,
                                                       const pose& to, const sweep_options& options = {}) {
-    return filtered_first_contact<exact_rational>(a, b, from, to, options);
+    return filtered_first_contact<exact_rational, certified_separation_query>(a, b, from, to, options);
 }
 
 }  // namespace influence2d

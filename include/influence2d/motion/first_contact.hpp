@@ -126,8 +126,10 @@ contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose&
 /// when every coordinate scales exactly (scales_exactly): the same question,
 /// so the same exact time and features. Throws as first_contact.
 /// certified_first_contact (exact/certified_first_contact.hpp) is this
-/// query in exact rationals.
-template <class Exact>
+/// query in exact rationals. `Fine` is the exact separation query of a
+/// motion that turns (filtered_turning_first_contact; void: separation<Exact>
+/// at each pose).
+template <class Exact, class Fine = void>
 contact_result<double> filtered_first_contact(const polygon& a, const polygon& b, const pose& from, const pose& to,
                                               const sweep_options& options = {}) {
     using namespace sweep;
@@ -135,12 +137,13 @@ contact_result<double> filtered_first_contact(const polygon& a, const polygon& b
     if (const int k = range_shift<double>(a, b, from, to); k != 0 && scales_exactly(a, b, k, from, to)) {
         sweep_options scaled = options;
         scaled.tolerance = scaled_length(options.tolerance, k);
-        return filtered_first_contact<Exact>(a.scaled_by_power_of_two(k), b.scaled_by_power_of_two(k),
-                                             scaled_by_power_of_two(from, k), scaled_by_power_of_two(to, k), scaled);
+        return filtered_first_contact<Exact, Fine>(a.scaled_by_power_of_two(k), b.scaled_by_power_of_two(k),
+                                                   scaled_by_power_of_two(from, k), scaled_by_power_of_two(to, k),
+                                                   scaled);
     }
     if (from.theta != to.theta && options.model == turning_model::rational)
         return rational_first_contact<Exact>(a, b, from, to);
-    if (from.theta != to.theta) return filtered_turning_first_contact<Exact>(a, b, from, to, options);
+    if (from.theta != to.theta) return filtered_turning_first_contact<Exact, Fine>(a, b, from, to, options);
     contact_result<double> r;
     const auto met = fallback<>::run([&] { return meeting_at_start<certified>(a, b, from, m.start); },
                                      [&] { return meeting_at_start<Exact>(a, b, from, m.start); });

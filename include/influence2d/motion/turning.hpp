@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -23,11 +24,13 @@
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/core/range_scaling.hpp"
+#include "influence2d/distance/convex_gap.hpp"
 #include "influence2d/distance/separation.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/number/certified.hpp"
 #include "influence2d/number/fallback.hpp"
 #include "influence2d/predicates/contact_time.hpp"
+#include "influence2d/predicates/convexity.hpp"
 #include "influence2d/predicates/orientation.hpp"
 #include "influence2d/query/intersects.hpp"
 #include "influence2d/query/placed_meet.hpp"
@@ -58,6 +61,20 @@ inline constexpr double motion_rounding = 0x1p-48;
 /// 2^-52), r is already an upper bound (bounding_radius); 2^-48 covers the
 /// few roundings of the sum with room.
 inline constexpr double speed_widening = 0x1p-48;
+
+/// The relative lowering of a vertex's derivative along an axis
+/// (convex_probe::largest_step), in units of the speed bound v times
+/// 1 + |theta0| + |theta1|: the probe's angle is within
+/// 2^-51 (|theta0| + |theta1| + 1) of the exact motion's (motion_rounding),
+/// which turns r_j, hence moves its derivative by that times v; a_j's own
+/// evaluation rounds by a few ulps of v. 2^-48 covers both with a factor of
+/// four.
+inline constexpr double derivative_slack = 0x1p-48;
+
+/// The relative shrinking of convex_probe::largest_step's root: its square
+/// root, products and divisions round by at most 8 ulps in all; 2^-48 is
+/// four times that.
+inline constexpr double step_shrinking = 0x1p-48;
 
 /// The relative shrinking that turns a distance within one unit in the last
 /// place of the true one (distance_of in an exact NT, certified_separation)
@@ -98,6 +115,10 @@ struct probe_result {
     double distance = 0;       ///< within one ulp of the separation's distance
     feature static_feature{};  ///< A's feature at that distance
     feature moving_feature{};  ///< B's feature at that distance
+    /// A direction n from A towards B along which `distance` is at most the
+    /// gap between the projections of A and of posed B on n / |n| (within
+    /// the probe's error), or (0, 0) when the probe knows none.
+    point<double> axis{0, 0};
 };
 
 /// Where conservative advancement stopped: at a contact (`contact`), at the
@@ -108,6 +129,29 @@ struct advance_result {
     double t = 0;          ///< where it stopped
     probe_result at{};     ///< the probe at t (with contact)
 };
+
+/// A bound of the speed at which the gap between the projections of A and
+/// of B on the axis n / |n| (n from A towards B) shrinks along the motion
+/// from `from` to `to`, given `sweep` = |theta1 - theta0| r (the turn's
+/// speed bound) and v (the speed bound of every point of B): A stays; a
+/// point p of B moves at T1 - T0 plus the turn's part, below sweep in
+/// length, so its projection comes towards A at most at
+/// sweep - n.(T1 - T0) / |n|. The roundings of that difference (a few ulps
+/// of v) are covered by widening it and adding speed_widening v; never
+/// more than v.
+inline double approach_speed(const point<double>& n, const pose& from, const pose& to, double sweep, double v) {
+    const double along = (n.x * (to.tx - from.tx) + n.y * (to.ty - from.ty)) / std::hypot(n.x, n.y);
+    return std::max(0.0, sweep - along) * (1 + speed_widening) + speed_widening * v;
+}
+
+/// Whether a coarse probe of type P bounds the step after its own probes
+/// (convex_probe::largest_step).
+template <class P, class = void>
+struct steps_by_vertices : std::false_type {};
+template <class P>
+struct steps_by_vertices<P, std::void_t<decltype(std::declval<const std::decay_t<P>&>().largest_step(
+                                0.0, std::declval<const pose&>(), std::declval<const pose&>(), 0.0, 0.0))>>
+    : std::true_type {};
 
 /// The earliest time of conservative advancement along the motion from
 /// `from` to `to` (docs/sweep.md, "Motions that turn"). A probe gives the
@@ -130,10 +174,17 @@ struct advance_result {
 ///                     else contact at t
 ///       if t = 1:     none
 ///       if max_steps probes taken (max_steps > 0):  limited at t
-///       t <- min(1, t + (L - resolution / 2) / v, rounded down)
+///       s <- v; with the probe's axis n:  s <- min(v, approach_speed(n))
+///       h <- (L - resolution / 2) / s
+///       with the axis, a coarse probe that bounds its own step
+///           (convex_probe::largest_step):  h <- max(h, its step)
+///       t <- min(1, t + h, rounded down)
 ///
 /// Until the returned t the distance stays above resolution / 2 > 0: no
-/// step passes a contact. Each step advances by at least 2^-51.
+/// step passes a contact. With an axis n, L bounds the gap of the
+/// projections on n, which bounds the distance from below at every time and
+/// shrinks no faster than approach_speed(n); largest_step keeps that gap
+/// above resolution / 2 too. Each step advances by at least 2^-51.
 template <class Coarse, class Fine>
 advance_result advance(const polygon& b, const pose& from, const pose& to, double tolerance, std::size_t max_steps,
                        double coarse_error, Coarse&& coarse, bool refine, double fine_error, Fine&& fine) {
@@ -159,7 +210,12 @@ advance_result advance(const polygon& b, const pose& from, const pose& to, doubl
         }
         if (t == 1) return {};
         if (max_steps != 0 && probes >= max_steps) return {false, true, t, {}};
-        const double step = (lower - resolution / 2) / v * (1 - distance_shrinking);
+        const bool axis = at.axis.x != 0 || at.axis.y != 0;
+        const double speed = axis ? std::min(v, approach_speed(at.axis, from, to, turn * r, v)) : v;
+        double step = (lower - resolution / 2) / speed * (1 - distance_shrinking);
+        if constexpr (steps_by_vertices<Coarse>::value)
+            if (axis && !fine_stage)
+                step = std::max(step, coarse.largest_step(at.distance - lower + resolution / 2, from, to, r, v));
         t = std::min(1.0, t + step);
     }
 }
@@ -194,6 +250,168 @@ probe_result coarse_probe(separation_query<double>& coarse, const pose& p, Fine&
     }
 }
 
+/// The most vertices of either polygon for which conservative advancement
+/// probes a pair of convex polygons by convex_gap: its support points take
+/// every vertex (linear in the vertices per iteration), which beyond a few
+/// dozen vertices costs more than the separation query's trees.
+inline constexpr std::size_t convex_probe_vertices = 64;
+
+/// The most edge pairs convex_probe searches for a certain crossing where
+/// convex_gap finds the polygons meeting (a few orientation tests each);
+/// the separation query it saves is prepared and searched in about 2 us on
+/// 8-gons (the turning study's convex motions that meet at their start took
+/// 2.3 us in double with the query, 0.56 us with the search).
+inline constexpr std::size_t crossing_search_pairs = 256;
+
+/// Whether the motion of B against A is probed by convex_probe: both
+/// polygons one convex ring (is_convex_polygon, exact) of at most
+/// convex_probe_vertices vertices, and every coordinate of the motion in
+/// double's safe window (range_shift 0), where convex_gap's bounds hold
+/// relative to the scene's size.
+inline bool convex_probe_applies(const polygon& a, const polygon& b, const pose& from, const pose& to) {
+    return a.size() <= convex_probe_vertices && b.size() <= convex_probe_vertices &&
+           range_shift<double>(a, b, from, to) == 0 && is_convex_polygon(a) && is_convex_polygon(b);
+}
+
+/// A probe of conservative advancement for two convex polygons: B's
+/// vertices posed in double, then convex_gap from the last probe's axis.
+/// Its distance is convex_gap's lower bound, with the axis; the search
+/// stops when its bounds come within a quarter of separation_error<double>
+/// of each other, so that the distance is within separation_error<double>
+/// of the exact one (the coarse error advance takes for the separation
+/// query in double). Where the search does not converge with the polygons
+/// apart (they meet or nearly: the triangle of the simplex holds the
+/// origin; rounding stalls it), an edge pair that certainly crosses
+/// (certain_crossing) gives distance 0; a pose where none does, or whose
+/// nearest features are not two neighbouring vertices of one polygon
+/// (collinear vertices), is asked of `general` (a probe on the separation
+/// query) instead.
+///
+/// Features: a simplex of one vertex of B - A is a vertex pair; of two,
+/// sharing A's vertex, that vertex and B's edge between the two (sharing
+/// B's, the converse); of two that share neither, the two edges (parallel).
+template <class General>
+class convex_probe {
+public:
+    /// A probe for A and B (both convex; convex_probe_applies), `scale` the
+    /// motion's size (motion_scale), `general` the probe where this one
+    /// cannot answer.
+    convex_probe(const polygon& a, const polygon& b, double scale, General general)
+        : a_shape_(a), b_shape_(b), scale_(scale), b_scale_(coordinate_scale(b)), general_(std::move(general)) {
+        for (std::size_t i = 0; i < a.size(); ++i) a_.push_back(a.vertex(i));
+        posed_.resize(b.size());
+    }
+
+    /// The distance at pose p (see the class comment).
+    probe_result operator()(const pose& p) {
+        last_ = rotation_pose(p);
+        for (std::size_t j = 0; j < posed_.size(); ++j) posed_[j] = last_.template apply<double>(b_shape_.vertex(j));
+        const convex_gap_result g = convex_gap(a_.data(), a_.size(), posed_.data(), posed_.size(), scale_,
+                                               separation_error<double>(scale_) / 4, axis_);
+        if (!g.converged || !(g.lower > 0)) {
+            if (const std::optional<probe_result> crossing = certain_crossing(p)) return *crossing;
+            return general_(p);
+        }
+        probe_result r;
+        if (!features(g, r)) return general_(p);
+        axis_ = g.axis;
+        r.distance = g.lower;
+        r.axis = g.axis;
+        return r;
+    }
+
+    /// After a probe that returned an axis n (unit n^ = n / |n|): a step h
+    /// of the exact motion from the probe's time along which the gap of the
+    /// projections on n^ stays above `slack` below its value there (slack:
+    /// the probe's error, the posing's rounding and the margin advance
+    /// keeps). Each vertex j of B, turned by the probe's angle to r_j,
+    /// projects to f_j = n^.(T + r_j) - max_i n^.a_i; along the motion
+    /// its derivative is a_j = n^.(T1 - T0) + (theta1 - theta0) n^.J r_j
+    /// (J the right angle) and its second derivative
+    /// -(theta1 - theta0)^2 n^.R r_j, at least -k with
+    /// k = (theta1 - theta0)^2 r / 2 times two, r bounding |r_j|; so
+    /// f_j(t + h) >= f_j(t) + a_j h - k h^2 (Taylor, with Lagrange's
+    /// remainder), above f_j - e_j where e_j = f_j - slack > 0 as long as
+    ///     h <= h_j = 2 e_j / (sqrt(a_j^2 + 4 k e_j) - a_j)
+    /// (the larger root, in the form that does not cancel; infinite when
+    /// k = 0 and a_j >= 0). The step is the least h_j shrunk by
+    /// step_shrinking; a_j is lowered by derivative_slack (the roundings
+    /// of a_j and of the probe's angle) and k raised by speed_widening.
+    /// Unlike approach_speed's bound, the derivative is the vertex's own:
+    /// a motion that turns towards A slowly steps far.
+    double largest_step(double slack, const pose& from, const pose& to, double r, double v) const {
+        const double turn = to.theta - from.theta;
+        const point<double> shift{to.tx - from.tx, to.ty - from.ty};
+        const double norm = std::hypot(axis_.x, axis_.y);
+        const point<double> n{axis_.x / norm, axis_.y / norm};
+        double reach = -HUGE_VAL;
+        for (const point<double>& a : a_) reach = std::max(reach, n.x * a.x + n.y * a.y);
+        const double k = turn * turn * r / 2 * (1 + speed_widening);
+        const double lowered = derivative_slack * v * (1 + std::fabs(from.theta) + std::fabs(to.theta));
+        const double drift = n.x * shift.x + n.y * shift.y;
+        double step = HUGE_VAL;
+        for (std::size_t j = 0; j < posed_.size(); ++j) {
+            const double e = n.x * posed_[j].x + n.y * posed_[j].y - reach - slack;
+            if (!(e > 0)) return 0;
+            const point<double>& b = b_shape_.vertex(j);
+            const point<double> turned{last_.c * b.x - last_.s * b.y, last_.s * b.x + last_.c * b.y};
+            const double a = drift + turn * (n.y * turned.x - n.x * turned.y) - lowered;
+            const double below = std::sqrt(a * a + 4 * k * e) - a;
+            if (below > 0) step = std::min(step, 2 * e / below);
+        }
+        return step * (1 - step_shrinking);
+    }
+
+private:
+    // At the last probe's pose p, the first edge of A and the first of B
+    // (in that order) that certainly cross (segments_must_cross, B's posed
+    // vertices within posing_error of their exact places), as a probe at
+    // distance 0 with those edges, or none: none crosses for certain (one
+    // polygon inside the other, or edges that only touch), or there are
+    // more than crossing_search_pairs edge pairs.
+    std::optional<probe_result> certain_crossing(const pose& p) const {
+        if (a_.size() * posed_.size() > crossing_search_pairs) return std::nullopt;
+        const double delta = posing_error(b_scale_, p.tx, p.ty);
+        for (std::size_t i = 0; i < a_.size(); ++i) {
+            const point<double>&a0 = a_[i], &a1 = a_[a_shape_.next(i)];
+            for (std::size_t j = 0; j < posed_.size(); ++j)
+                if (segments_must_cross(a0, a1, posed_[j], posed_[b_shape_.next(j)], delta))
+                    return probe_result{0,
+                                        {feature_kind::edge, a_shape_.source_edge(i)},
+                                        {feature_kind::edge, b_shape_.source_edge(j)},
+                                        {0, 0}};
+        }
+        return std::nullopt;
+    }
+
+    // The features of g's simplex into r; false when two of its vertices on
+    // one polygon are not neighbours.
+    bool features(const convex_gap_result& g, probe_result& r) const {
+        const difference_vertex &p = g.simplex[0], &q = g.simplex[g.points - 1];
+        const auto side = [](const polygon& shape, std::uint32_t i, std::uint32_t j, feature& f) {
+            if (i == j) {
+                f = {feature_kind::vertex, input_vertex(shape, i)};
+                return true;
+            }
+            const std::size_t e = shape.next(i) == j ? i : shape.next(j) == i ? j : shape.size();
+            if (e == shape.size()) return false;
+            f = {feature_kind::edge, shape.source_edge(e)};
+            return true;
+        };
+        return side(a_shape_, p.i, q.i, r.static_feature) && side(b_shape_, p.j, q.j, r.moving_feature);
+    }
+
+    const polygon& a_shape_;
+    const polygon& b_shape_;
+    double scale_;
+    double b_scale_;  // B's largest coordinate (posing_error)
+    General general_;
+    std::vector<point<double>> a_;
+    std::vector<point<double>> posed_;  // B's vertices at the last probe
+    rotation_pose last_{pose{}};        // the last probe's pose
+    point<double> axis_{0, 0};          // the last axis found
+};
+
 /// The result of a turning motion from advance's answer.
 template <class NT>
 contact_result<NT> turning_result(const advance_result& found) {
@@ -218,13 +436,48 @@ contact_result<NT> turning_result(const advance_result& found) {
 /// by a power of two, the tolerance with it, when every coordinate scales
 /// exactly (as filtered_first_contact does, so that both take the same
 /// steps).
+/// Advance with a refining stage: the coarse probe `general` (on the
+/// separation query in double, coarse_probe), or a convex_probe over it
+/// when convex_probe_applies, then `fine`.
+template <class General, class Fine>
+advance_result advance_refined(const polygon& a, const polygon& b, const pose& from, const pose& to,
+                               const sweep_options& options, General&& general, Fine&& fine) {
+    const double scale = motion_scale(a, b, from, to), error = separation_error<double>(scale);
+    if (convex_probe_applies(a, b, from, to))
+        return advance(b, from, to, options.tolerance, options.max_steps, error,
+                       convex_probe(a, b, scale, std::ref(general)), true, 0, fine);
+    return advance(b, from, to, options.tolerance, options.max_steps, error, general, true, 0, fine);
+}
+
+/// The first contact of a motion that turns, in NT: conservative
+/// advancement on separation queries (both polygons prepared once, each
+/// search started from the last closest pair), or for two small convex
+/// polygons on convex_probe (the separation query where it does not
+/// converge). A floating NT steps on its own query (double on convex_probe
+/// where it applies). An exact NT steps on the query in double (with its
+/// error bound; coarse_probe), or convex_probe, and, once that would stop,
+/// on its own exact query: the stop is decided on exact distances. A motion
+/// whose largest coordinate lies outside double's safe window is answered
+/// there on its input scaled by a power of two, the tolerance with it, when
+/// every coordinate scales exactly (as filtered_first_contact does, so that
+/// both take the same steps).
 template <class NT>
 contact_result<NT> turning_first_contact(const polygon& a, const polygon& b, const pose& from, const pose& to,
                                          const sweep_options& options) {
     const double scale = motion_scale(a, b, from, to);
     if constexpr (number_traits<NT>::category == number_category::floating) {
-        separation_query<NT> query(a, b);
-        const auto probe = [&](const pose& p) { return probe_of(query, p); };
+        std::optional<separation_query<NT>> query;
+        const auto probe = [&](const pose& p) {
+            if (!query) query.emplace(a, b);
+            return probe_of(*query, p);
+        };
+        if constexpr (std::is_same_v<NT, double>) {
+            if (convex_probe_applies(a, b, from, to)) {
+                convex_probe convex(a, b, scale, probe);
+                return turning_result<NT>(advance(b, from, to, options.tolerance, options.max_steps,
+                                                  separation_error<NT>(scale), convex, false, 0, convex));
+            }
+        }
         return turning_result<NT>(advance(b, from, to, options.tolerance, options.max_steps,
                                           separation_error<NT>(scale), probe, false, 0, probe));
     } else {
@@ -234,33 +487,49 @@ contact_result<NT> turning_first_contact(const polygon& a, const polygon& b, con
             return turning_first_contact<NT>(a.scaled_by_power_of_two(k), b.scaled_by_power_of_two(k),
                                              scaled_by_power_of_two(from, k), scaled_by_power_of_two(to, k), scaled);
         }
-        separation_query<double> coarse(a, b);
+        std::optional<separation_query<double>> coarse;
         std::optional<separation_query<NT>> fine_query;
         const auto fine = [&](const pose& p) {
             if (!fine_query) fine_query.emplace(a, b);
             return probe_of(*fine_query, p);
         };
-        return turning_result<NT>(advance(
-            b, from, to, options.tolerance, options.max_steps, separation_error<double>(scale),
-            [&](const pose& p) { return coarse_probe(coarse, p, fine); }, true, 0, fine));
+        const auto general = [&](const pose& p) {
+            if (!coarse) coarse.emplace(a, b);
+            return coarse_probe(*coarse, p, fine);
+        };
+        return turning_result<NT>(advance_refined(a, b, from, to, options, general, fine));
     }
 }
 
 /// As turning_first_contact in the exact field Exact, the fine probe being
-/// separation<Exact> on the polygons (the exact distance within one ulp and
-/// the exact features, its phase 3 filtered): the same steps, so the same
-/// answer.
-template <class Exact>
+/// a query of type Fine made on the first pose that needs it, `Fine(a, b)`,
+/// whose answer at a pose has the exact distance rounded as distance_of
+/// rounds it (`distance`) and the exact features (certified_separation_query,
+/// exact/certified_separation.hpp: the query in double words, in exact
+/// rationals where their bounds leave a sign in doubt); with Fine void,
+/// separation<Exact> on the polygons at each pose. Either gives the exact
+/// route's distances: the same steps, so the same answer.
+template <class Exact, class Fine = void>
 contact_result<double> filtered_turning_first_contact(const polygon& a, const polygon& b, const pose& from,
                                                       const pose& to, const sweep_options& options) {
-    separation_query<double> coarse(a, b);
+    std::optional<separation_query<double>> coarse;
+    using fine_query = std::conditional_t<std::is_void_v<Fine>, int, Fine>;
+    std::optional<fine_query> query;
     const auto fine = [&](const pose& p) {
-        const separation_result<Exact> s = separation<Exact>(a, b, p);
-        return probe_result{distance_of<Exact>(s.squared_distance), s.static_feature, s.moving_feature};
+        if constexpr (std::is_void_v<Fine>) {
+            const separation_result<Exact> s = separation<Exact>(a, b, p);
+            return probe_result{distance_of<Exact>(s.squared_distance), s.static_feature, s.moving_feature};
+        } else {
+            if (!query) query.emplace(a, b);
+            const auto s = (*query)(p);
+            return probe_result{s.distance, s.static_feature, s.moving_feature};
+        }
     };
-    return turning_result<double>(advance(
-        b, from, to, options.tolerance, options.max_steps, separation_error<double>(motion_scale(a, b, from, to)),
-        [&](const pose& p) { return coarse_probe(coarse, p, fine); }, true, 0, fine));
+    const auto general = [&](const pose& p) {
+        if (!coarse) coarse.emplace(a, b);
+        return coarse_probe(*coarse, p, fine);
+    };
+    return turning_result<double>(advance_refined(a, b, from, to, options, general, fine));
 }
 
 }  // namespace sweep

@@ -18,9 +18,11 @@
 namespace influence2d {
 
 /// The exact orientation of three points with finite double coordinates
-/// (exact_sum::orientation_sign; orientation() in double rounds).
+/// (orientation_of_doubles: the determinant in double when it exceeds its
+/// error bound, else exact_sum::orientation_sign; orientation() in double
+/// rounds).
 inline int exact_orientation(const point<double>& a, const point<double>& b, const point<double>& c) {
-    return exact_sum::orientation_sign(a.x, a.y, b.x, b.y, c.x, c.y);
+    return orientation_of_doubles(a.x, a.y, b.x, b.y, c.x, c.y);
 }
 
 /// Whether q lies on the closed segment [a, b] (exact).
