@@ -104,7 +104,7 @@ def first_contact(a, b, start_poses, end_poses, number_type="certified", threads
     >>> first_contact(a, b, start, end, motion="rational")  # t = tan(pi / 12) / tan(pi / 4) / 2
     (array([ True]), array([0.1339746]))
     >>> first_contact(a, b, start, end, max_steps=2, undecided=True)  # two steps do not reach it
-    (array([False]), array([0.11253954]), array([ True]))
+    (array([False]), array([0.12464294]), array([ True]))
     """
     contact, time, limited = _core.first_contact(as_polygon(a, "a")._p, as_polygon(b, "b")._p,
                                                  as_poses(start_poses, "start_poses"), as_poses(end_poses, "end_poses"),

@@ -85,7 +85,17 @@ void check_gap(const std::vector<point<double>>& a, const std::vector<point<doub
     for (const bool swapped : {false, true}) {
         const std::vector<point<double>>&p = swapped ? b : a, &q = swapped ? a : b;
         const double tolerance = 0x1p-42 * scale;
-        const convex_gap_result g = convex_gap(p.data(), p.size(), q.data(), q.size(), scale, tolerance, {0, 0});
+        const convex_gap_result g = convex_gap(p.data(), p.size(), q.data(), q.size(), scale, tolerance, {});
+        // Started from a simplex of another search (any vertex pairs): the
+        // same guarantees.
+        convex_gap_result seed;
+        seed.points = 2;
+        seed.simplex[0] = {static_cast<std::uint32_t>(p.size() - 1), 0, {}};
+        seed.simplex[1] = {0, static_cast<std::uint32_t>(q.size() - 1), {}};
+        const convex_gap_result h = convex_gap(p.data(), p.size(), q.data(), q.size(), scale, tolerance, seed);
+        CHECK(test_exact::at_most_root(Q(h.lower), d2));
+        CHECK(test_exact::at_least_root(Q(h.upper), d2));
+        if (d2 > 0 && CGAL::to_double(d2) > 1e-20 * scale * scale) CHECK(h.converged);
         ++t.pairs;
         INFO("swapped " << swapped << ", lower " << g.lower << ", upper " << g.upper << ", exact "
                         << std::sqrt(CGAL::to_double(d2)));

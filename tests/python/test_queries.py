@@ -276,10 +276,12 @@ def test_first_contact_rational_matches_the_tool(tool, tmp_path, rng):
 
 
 def test_first_contact_step_limit_leaves_a_grazing_motion_undecided():
-    """A unit square slides 3e-9 above a 4 x 4 square while turning by
-    1e-12: within max_steps the advancement cannot decide (no contact
-    before the time it reached); the rational model answers no contact."""
-    a = "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))"
+    """A unit square slides 3e-9 above a 4 x 4 square (notched below, so
+    not convex) while turning by 1e-12: within max_steps the advancement
+    cannot decide (no contact before the time it reached); the rational
+    model answers no contact. Without the notch the two convex polygons
+    step by their vertices' own approach and decide it, apart."""
+    a = "POLYGON ((0 0, 1.5 0, 1.5 1, 2.5 1, 2.5 0, 4 0, 4 4, 0 4, 0 0))"
     b = "POLYGON ((-0.5 -0.5, 0.5 -0.5, 0.5 0.5, -0.5 0.5, -0.5 -0.5))"
     start = np.array([[-2.0, 4.5 + 3e-9, 0.0], [-2.0, 2.0, 0.0]])
     end = np.array([[6.0, 4.5 + 3e-9, 1e-12], [6.0, 2.0, 1.0]])
@@ -292,6 +294,11 @@ def test_first_contact_step_limit_leaves_a_grazing_motion_undecided():
         assert math.isnan(t[0]) and not contact[0]
     contact, t = influence2d.first_contact(a, b, start, end, motion="rational")
     assert contact.tolist() == [False, True]
+    square = "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))"
+    for number_type in ("double", "certified", "exact"):
+        contact, t, undecided = influence2d.first_contact(square, b, start, end, number_type=number_type,
+                                                          max_steps=20, undecided=True)
+        assert contact.tolist() == [False, True] and undecided.tolist() == [False, False]
 
 
 def test_detector_keeps_its_state_across_calls(np_rng, rng):

@@ -111,14 +111,18 @@ inline bool holds_origin(const point<double>& p, const point<double>& q, const p
 }  // namespace convex_gap_detail
 
 /// Bounds of the distance between the convex hulls of A's vertices `a` and
-/// of B's `b` (doubles), `scale` bounding their coordinates, from the
-/// direction `start` (any; the last call's axis is a good one). The bounds
-/// hold whatever the rounding: `lower` is the gap of the projections on an
-/// axis (a lower bound for any two sets, minus its rounding) and `upper`
-/// the length of a point of B - A (plus its rounding). The distance between
-/// the hulls is the distance between A and B when both are convex.
+/// of B's `b` (doubles), `scale` bounding their coordinates, starting from
+/// the simplex of `from` (its vertex pairs; a search of the same polygons
+/// at a nearby pose, whose simplex is likely to be the answer's; none when
+/// from.points is 0). The bounds hold whatever the rounding: `lower` is the
+/// gap of the projections on an axis (a lower bound for any two sets, minus
+/// its rounding) and `upper` the length of a point of B - A (plus its
+/// rounding). The distance between the hulls is the distance between A and
+/// B when both are convex.
 ///
-///   v <- the support point of B - A along -start; simplex {v}
+///   simplex <- from's vertex pairs at these coordinates, v its point
+///              nearest the origin (its ends that v needs kept); with none,
+///              the vertex of B - A least along a_0 - b_0
 ///   loop (at most convex_gap_iterations_per_vertex (|a| + |b|) times):
 ///       w <- the support point of B - A least along v
 ///       lower <- max(lower, v.w / |v|); upper <- |v|
@@ -130,14 +134,30 @@ inline bool holds_origin(const point<double>& p, const point<double>& q, const p
 ///            simplex vertex; simplex <- that segment's ends that v needs
 ///
 inline convex_gap_result convex_gap(const point<double>* a, std::size_t na, const point<double>* b, std::size_t nb,
-                                    double scale, double tolerance, point<double> start) {
+                                    double scale, double tolerance, const convex_gap_result& from) {
     namespace d = convex_gap_detail;
     convex_gap_result r;
     const double rounding = convex_gap_rounding * scale;
-    if (start.x == 0 && start.y == 0) start = {b[0].x - a[0].x, b[0].y - a[0].y};
-    r.simplex[0] = d::support(a, na, b, nb, {-start.x, -start.y});
-    r.points = 1;
-    point<double> v = r.simplex[0].w;
+    point<double> v;
+    if (from.points == 0) {
+        r.simplex[0] = d::support(a, na, b, nb, {a[0].x - b[0].x, a[0].y - b[0].y});
+        r.points = 1;
+        v = r.simplex[0].w;
+    } else {
+        // The last simplex's vertex pairs at these coordinates.
+        for (std::size_t k = 0; k < from.points; ++k) {
+            const std::uint32_t i = from.simplex[k].i, j = from.simplex[k].j;
+            r.simplex[k] = {i, j, {b[j].x - a[i].x, b[j].y - a[i].y}};
+        }
+        r.points = from.points;
+        v = r.simplex[0].w;
+        if (r.points == 2) {
+            double l = 0;
+            v = d::nearest_on_segment(r.simplex[0].w, r.simplex[1].w, l);
+            if (l == 1) r.simplex[0] = r.simplex[1];
+            if (l == 0 || l == 1) r.points = 1;
+        }
+    }
     double best = -HUGE_VAL;
     const std::size_t most = convex_gap_iterations_per_vertex * (na + nb);
     for (std::size_t k = 0; k < most; ++k) {

@@ -17,11 +17,11 @@ namespace influence2d {
 /// nearly double's cost: filtered_first_contact in exact rationals (each
 /// event computed and compared in `certified`, and again exactly only when
 /// its signs are not certain; a motion that turns decided on
-/// certified_separation_query, the exact separation in double words where
-/// their bounds settle it). Throws as first_contact.
+/// certified_separation, the exact separation in double words where their
+/// bounds settle it). Throws as first_contact.
 inline contact_result<double> certified_first_contact(const polygon& a, const polygon& b, const pose& from,
                                                       const pose& to, const sweep_options& options = {}) {
-    return filtered_first_contact<exact_rational, certified_separation_query>(a, b, from, to, options);
+    return filtered_first_contact<exact_rational, certified_separation_of>(a, b, from, to, options);
 }
 
 }  // namespace influence2d

@@ -104,6 +104,14 @@ inline certified_separation_result certified_separation(const polygon& a, const 
                            [&] { return certified_separation_detail::rounded(separation<exact_rational>(a, b, q)); });
 }
 
+/// certified_separation as a function object.
+struct certified_separation_of {
+    /// certified_separation(a, b, q).
+    certified_separation_result operator()(const polygon& a, const polygon& b, const pose& q) const {
+        return certified_separation(a, b, q);
+    }
+};
+
 /// certified_separation over many poses of one pair: A and B prepared once in
 /// double words (their edge trees, A's cone index for the ring vertices'
 /// locations), each pose's search seeded by the last closest pair

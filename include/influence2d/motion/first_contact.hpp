@@ -126,9 +126,8 @@ contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose&
 /// when every coordinate scales exactly (scales_exactly): the same question,
 /// so the same exact time and features. Throws as first_contact.
 /// certified_first_contact (exact/certified_first_contact.hpp) is this
-/// query in exact rationals. `Fine` is the exact separation query of a
-/// motion that turns (filtered_turning_first_contact; void: separation<Exact>
-/// at each pose).
+/// query in exact rationals. `Fine` is the exact separation of a motion that
+/// turns (filtered_turning_first_contact; void: separation<Exact>).
 template <class Exact, class Fine = void>
 contact_result<double> filtered_first_contact(const polygon& a, const polygon& b, const pose& from, const pose& to,
                                               const sweep_options& options = {}) {

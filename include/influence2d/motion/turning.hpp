@@ -274,7 +274,7 @@ inline bool convex_probe_applies(const polygon& a, const polygon& b, const pose&
 }
 
 /// A probe of conservative advancement for two convex polygons: B's
-/// vertices posed in double, then convex_gap from the last probe's axis.
+/// vertices posed in double, then convex_gap from the last search's simplex.
 /// Its distance is convex_gap's lower bound, with the axis; the search
 /// stops when its bounds come within a quarter of separation_error<double>
 /// of each other, so that the distance is within separation_error<double>
@@ -307,7 +307,7 @@ public:
         last_ = rotation_pose(p);
         for (std::size_t j = 0; j < posed_.size(); ++j) posed_[j] = last_.template apply<double>(b_shape_.vertex(j));
         const convex_gap_result g = convex_gap(a_.data(), a_.size(), posed_.data(), posed_.size(), scale_,
-                                               separation_error<double>(scale_) / 4, axis_);
+                                               separation_error<double>(scale_) / 4, last_gap_);
         if (!g.converged || !(g.lower > 0)) {
             if (const std::optional<probe_result> crossing = certain_crossing(p)) return *crossing;
             return general_(p);
@@ -315,6 +315,7 @@ public:
         probe_result r;
         if (!features(g, r)) return general_(p);
         axis_ = g.axis;
+        last_gap_ = g;
         r.distance = g.lower;
         r.axis = g.axis;
         return r;
@@ -410,6 +411,7 @@ private:
     std::vector<point<double>> posed_;  // B's vertices at the last probe
     rotation_pose last_{pose{}};        // the last probe's pose
     point<double> axis_{0, 0};          // the last axis found
+    convex_gap_result last_gap_;        // the last converged search (its simplex starts the next)
 };
 
 /// The result of a turning motion from advance's answer.
@@ -502,26 +504,22 @@ contact_result<NT> turning_first_contact(const polygon& a, const polygon& b, con
 }
 
 /// As turning_first_contact in the exact field Exact, the fine probe being
-/// a query of type Fine made on the first pose that needs it, `Fine(a, b)`,
-/// whose answer at a pose has the exact distance rounded as distance_of
-/// rounds it (`distance`) and the exact features (certified_separation_query,
-/// exact/certified_separation.hpp: the query in double words, in exact
-/// rationals where their bounds leave a sign in doubt); with Fine void,
-/// separation<Exact> on the polygons at each pose. Either gives the exact
-/// route's distances: the same steps, so the same answer.
+/// `Fine{}(a, b, p)`, whose answer has the exact distance rounded as
+/// distance_of rounds it (`distance`) and the exact features
+/// (certified_separation_of, exact/certified_separation.hpp: the separation
+/// in double words, in exact rationals where their bounds leave a sign in
+/// doubt); with Fine void, separation<Exact> on the polygons. Either gives
+/// the exact route's distances: the same steps, so the same answer.
 template <class Exact, class Fine = void>
 contact_result<double> filtered_turning_first_contact(const polygon& a, const polygon& b, const pose& from,
                                                       const pose& to, const sweep_options& options) {
     std::optional<separation_query<double>> coarse;
-    using fine_query = std::conditional_t<std::is_void_v<Fine>, int, Fine>;
-    std::optional<fine_query> query;
     const auto fine = [&](const pose& p) {
         if constexpr (std::is_void_v<Fine>) {
             const separation_result<Exact> s = separation<Exact>(a, b, p);
             return probe_result{distance_of<Exact>(s.squared_distance), s.static_feature, s.moving_feature};
         } else {
-            if (!query) query.emplace(a, b);
-            const auto s = (*query)(p);
+            const auto s = Fine{}(a, b, p);
             return probe_result{s.distance, s.static_feature, s.moving_feature};
         }
     };
