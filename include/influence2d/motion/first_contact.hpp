@@ -36,6 +36,7 @@
 #include "influence2d/scene/prepared.hpp"
 
 #include "influence2d/motion/motion.hpp"
+#include "influence2d/motion/rational_apart.hpp"
 #include "influence2d/motion/rational_turn.hpp"
 #include "influence2d/motion/translation_events.hpp"
 #include "influence2d/motion/turning.hpp"
@@ -66,7 +67,9 @@ namespace influence2d {
 /// tolerance (docs/sweep.md, "Motions that turn"), or, with
 /// sweep_options::model rational, in the rational model by the exact roots
 /// of its contact cubics (rational_first_contact: exact when NT is, the
-/// time rounded to the nearest double). NT needs division for
+/// time rounded to the nearest double), two convex polygons that
+/// rational_apart proves apart along the whole motion answered at once
+/// (no contact, in every NT). NT needs division for
 /// the time of the result (every number type of the library but certified
 /// and interval: certified_first_contact is the filtered route). In
 /// float, double or long double, a motion whose largest coordinate lies outside
@@ -89,6 +92,7 @@ contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose&
         }
     }
     if (from.theta != to.theta && options.model == turning_model::rational) {
+        if (rational_apart(a, b, from, to)) return contact_result<NT>{};
         const contact_result<double> t = rational_first_contact<NT>(a, b, from, to);
         return {t.contact, number_traits<NT>::from_double(t.time), t.static_feature, t.moving_feature};
     }
@@ -119,7 +123,8 @@ contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose&
 /// a motion that turns: the answer of first_contact<Exact> (the same
 /// steps, the stop decided on separation<Exact>'s exact distance;
 /// docs/sweep.md); in the rational model rational_first_contact<Exact>,
-/// whose pairs are sifted in `certified` first. A motion whose largest coordinate lies outside double's
+/// whose pairs are sifted in `certified` first (after rational_apart, as
+/// first_contact). A motion whose largest coordinate lies outside double's
 /// safe window (core/range_scaling.hpp), where the filter's bounds in double
 /// lose their hold (products near the subnormals, or beyond the range), is
 /// answered on its input scaled by a power of two, the tolerance with it,
@@ -141,7 +146,8 @@ contact_result<double> filtered_first_contact(const polygon& a, const polygon& b
                                                    scaled);
     }
     if (from.theta != to.theta && options.model == turning_model::rational)
-        return rational_first_contact<Exact>(a, b, from, to);
+        return rational_apart(a, b, from, to) ? contact_result<double>{}
+                                              : rational_first_contact<Exact>(a, b, from, to);
     if (from.theta != to.theta) return filtered_turning_first_contact<Exact, Fine>(a, b, from, to, options);
     contact_result<double> r;
     const auto met = fallback<>::run([&] { return meeting_at_start<certified>(a, b, from, m.start); },

@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// Whether a motion that turns in the rational model certainly keeps two
+/// convex polygons apart: conservative advancement on convex_gap along each
+/// piece (docs/sweep.md, "Convex pairs").
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "influence2d/core/point.hpp"
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/core/pose.hpp"
+#include "influence2d/distance/convex_gap.hpp"
+#include "influence2d/influence/bounds.hpp"
+#include "influence2d/predicates/distance.hpp"
+
+#include "influence2d/motion/rational_turn.hpp"
+#include "influence2d/motion/turning.hpp"
+
+namespace influence2d {
+
+namespace sweep {
+
+/// The bound, per coordinate, of the distance between a vertex of B posed
+/// in double at a piece's time tau (rational_apart's posing) and its place
+/// on the exact motion at that tau, relative to r + |T0|_1 + |T1|_1 (r:
+/// B's largest distance from its origin; T0, T1: the translations): u = w
+/// tau rounds once (|w|, tau <= 1: 2^-53); the turn's cosine and sine
+/// (1 - u^2) / (1 + u^2) and 2u / (1 + u^2) then round by a few ulps and
+/// move with u by at most 2 |du|, so the turned vertex is within
+/// 2^-49 r of the exact one; the base rotation (c, s), |c|, |s| <= 1, and
+/// its roundings double that and add 3 ulps of r; the time
+/// t0 + tau (t1 - t0) and the translation T0 + t (T1 - T0) round by
+/// 2^-51 (|T0|_1 + |T1|_1). 2^-46 covers the sum with a factor of four.
+inline constexpr double rational_pose_rounding = 0x1p-46;
+
+/// The least distance, relative to the scene's size, at which rational_apart
+/// still advances: a motion that comes closer is left to the exact search
+/// (each step there advances by about the distance over the speed, so
+/// following a contact down to the rounding would cost more probes than the
+/// search saves).
+inline constexpr double rational_apart_floor = 0x1p-10;
+
+/// The most probes rational_apart takes per piece.
+inline constexpr std::size_t rational_apart_probes = 64;
+
+/// Whether the rational motion of B from `from` to `to` (rational_pieces)
+/// certainly keeps A and B apart, both convex and in double's safe window
+/// (convex_probe_applies): false means nothing (they may meet).
+///
+///   r <- B's vertices' largest distance from its origin
+///   delta <- rational_pose_rounding (r + |T0|_1 + |T1|_1)
+///   for each piece (c, s, w, t0, t1), tau from 0 to 1:
+///       v <- |T1 - T0| (t1 - t0) + 2 |w| r, widened     (no point of B faster in tau:
+///            the turn 2 atan(w tau) moves at most at 2 |w|, and (c, s) scales by
+///            sqrt(c^2 + s^2) < 1 + 2^-52)
+///       loop (at most rational_apart_probes times):
+///           B's vertices posed in double at tau; g <- convex_gap from the last simplex
+///           L <- g's lower bound - 1.5 delta - 4 v 2^-52   (a lower bound of the exact
+///                motion's distance over [tau - the rounding of tau, tau])
+///           if g did not converge or L <= floor:  false
+///           if tau = 1:  next piece
+///           s <- min(v, the speed along g's axis: 2 |w| r less B's translation towards A)
+///           tau <- min(1, tau + L / s, a little less)
+///   true
+inline bool rational_apart(const polygon& a, const polygon& b, const pose& from, const pose& to) {
+    if (from.theta == to.theta || !convex_probe_applies(a, b, from, to)) return false;
+    const double r = bounding_radius(b, {0, 0});
+    const double scale = motion_scale(a, b, from, to);
+    const double delta =
+        rational_pose_rounding * (r + std::fabs(from.tx) + std::fabs(from.ty) + std::fabs(to.tx) + std::fabs(to.ty));
+    const double floor = rational_apart_floor * scale;
+    const point<double> shift{to.tx - from.tx, to.ty - from.ty};
+    std::vector<point<double>> av, posed(b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) av.push_back(a.vertex(i));
+    convex_gap_result last;
+    for (const rational_piece& piece : rational_pieces(from, to)) {
+        const double span = piece.t1 - piece.t0, sweep = 2 * std::fabs(piece.w) * r * (1 + speed_widening);
+        const double v = (std::hypot(shift.x, shift.y) * span + sweep) * (1 + speed_widening);
+        double tau = 0;
+        for (std::size_t probe = 0;; ++probe) {
+            if (probe == rational_apart_probes) return false;
+            const double u = piece.w * tau, h = 1 + u * u, c2 = (1 - u * u) / h, s2 = 2 * u / h;
+            const double t = piece.t0 + tau * span;
+            const point<double> move{from.tx + t * shift.x, from.ty + t * shift.y};
+            for (std::size_t j = 0; j < posed.size(); ++j) {
+                const point<double>& q = b.vertex(j);
+                const double x = c2 * q.x - s2 * q.y, y = s2 * q.x + c2 * q.y;
+                posed[j] = {piece.c * x - piece.s * y + move.x, piece.s * x + piece.c * y + move.y};
+            }
+            const convex_gap_result g = convex_gap(av.data(), av.size(), posed.data(), posed.size(), scale,
+                                                   separation_error<double>(scale) / 4, last);
+            const double lower = g.lower - posing_spread * delta - 4 * v * 0x1p-52;
+            if (!g.converged || !(lower > floor)) return false;
+            last = g;
+            if (tau == 1) break;
+            const double n = std::hypot(g.axis.x, g.axis.y);
+            const double along = (g.axis.x * shift.x + g.axis.y * shift.y) / n * span;
+            const double speed = std::min(v, std::max(0.0, sweep - along) * (1 + speed_widening) + speed_widening * v);
+            tau = std::min(1.0, tau + lower / speed * (1 - distance_shrinking));
+        }
+    }
+    return true;
+}
+
+}  // namespace sweep
+
+}  // namespace influence2d
