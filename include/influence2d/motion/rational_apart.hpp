@@ -63,7 +63,7 @@ inline constexpr std::size_t rational_apart_probes = 64;
 ///                motion's distance over [tau - the rounding of tau, tau])
 ///           if g did not converge or L <= floor:  false
 ///           if tau = 1:  next piece
-///           s <- min(v, the speed along g's axis: 2 |w| r less B's translation towards A)
+///           s <- min(v, approach_speed along g's axis: 2 |w| r less B's translation towards A)
 ///           tau <- min(1, tau + L / s, a little less)
 ///   true
 inline bool rational_apart(const polygon& a, const polygon& b, const pose& from, const pose& to) {
@@ -97,9 +97,7 @@ inline bool rational_apart(const polygon& a, const polygon& b, const pose& from,
             if (!g.converged || !(lower > floor)) return false;
             last = g;
             if (tau == 1) break;
-            const double n = std::hypot(g.axis.x, g.axis.y);
-            const double along = (g.axis.x * shift.x + g.axis.y * shift.y) / n * span;
-            const double speed = std::min(v, std::max(0.0, sweep - along) * (1 + speed_widening) + speed_widening * v);
+            const double speed = std::min(v, approach_speed(g.axis, {shift.x * span, shift.y * span}, sweep, v));
             tau = std::min(1.0, tau + lower / speed * (1 - distance_shrinking));
         }
     }

@@ -131,16 +131,16 @@ struct advance_result {
 };
 
 /// A bound of the speed at which the gap between the projections of A and
-/// of B on the axis n / |n| (n from A towards B) shrinks along the motion
-/// from `from` to `to`, given `sweep` = |theta1 - theta0| r (the turn's
-/// speed bound) and v (the speed bound of every point of B): A stays; a
-/// point p of B moves at T1 - T0 plus the turn's part, below sweep in
-/// length, so its projection comes towards A at most at
-/// sweep - n.(T1 - T0) / |n|. The roundings of that difference (a few ulps
-/// of v) are covered by widening it and adding speed_widening v; never
-/// more than v.
-inline double approach_speed(const point<double>& n, const pose& from, const pose& to, double sweep, double v) {
-    const double along = (n.x * (to.tx - from.tx) + n.y * (to.ty - from.ty)) / std::hypot(n.x, n.y);
+/// of B on the axis n / |n| (n from A towards B) shrinks along a motion
+/// whose translation moves at `shift` (T1 - T0 per unit of its time), given
+/// `sweep` (the turn's speed bound: |theta1 - theta0| r) and v (the speed
+/// bound of every point of B): A stays; a point p of B moves at `shift`
+/// plus the turn's part, below sweep in length, so its projection comes
+/// towards A at most at sweep - n.shift / |n|. The roundings of that
+/// difference (a few ulps of v) are covered by widening it and adding
+/// speed_widening v; never more than v.
+inline double approach_speed(const point<double>& n, const point<double>& shift, double sweep, double v) {
+    const double along = (n.x * shift.x + n.y * shift.y) / std::hypot(n.x, n.y);
     return std::max(0.0, sweep - along) * (1 + speed_widening) + speed_widening * v;
 }
 
@@ -211,7 +211,8 @@ advance_result advance(const polygon& b, const pose& from, const pose& to, doubl
         if (t == 1) return {};
         if (max_steps != 0 && probes >= max_steps) return {false, true, t, {}};
         const bool axis = at.axis.x != 0 || at.axis.y != 0;
-        const double speed = axis ? std::min(v, approach_speed(at.axis, from, to, turn * r, v)) : v;
+        const double speed =
+            axis ? std::min(v, approach_speed(at.axis, {to.tx - from.tx, to.ty - from.ty}, turn * r, v)) : v;
         double step = (lower - resolution / 2) / speed * (1 - distance_shrinking);
         if constexpr (steps_by_vertices<Coarse>::value)
             if (axis && !fine_stage)
@@ -314,7 +315,6 @@ public:
         }
         probe_result r;
         if (!features(g, r)) return general_(p);
-        axis_ = g.axis;
         last_gap_ = g;
         r.distance = g.lower;
         r.axis = g.axis;
@@ -343,8 +343,9 @@ public:
     double largest_step(double slack, const pose& from, const pose& to, double r, double v) const {
         const double turn = to.theta - from.theta;
         const point<double> shift{to.tx - from.tx, to.ty - from.ty};
-        const double norm = std::hypot(axis_.x, axis_.y);
-        const point<double> n{axis_.x / norm, axis_.y / norm};
+        const point<double>& axis = last_gap_.axis;
+        const double norm = std::hypot(axis.x, axis.y);
+        const point<double> n{axis.x / norm, axis.y / norm};
         double reach = -HUGE_VAL;
         for (const point<double>& a : a_) reach = std::max(reach, n.x * a.x + n.y * a.y);
         const double k = turn * turn * r / 2 * (1 + speed_widening);
@@ -410,8 +411,7 @@ private:
     std::vector<point<double>> a_;
     std::vector<point<double>> posed_;  // B's vertices at the last probe
     rotation_pose last_{pose{}};        // the last probe's pose
-    point<double> axis_{0, 0};          // the last axis found
-    convex_gap_result last_gap_;        // the last converged search (its simplex starts the next)
+    convex_gap_result last_gap_;        // the last converged search (its simplex starts the next; its axis)
 };
 
 /// The result of a turning motion from advance's answer.
@@ -428,16 +428,6 @@ contact_result<NT> turning_result(const advance_result& found) {
     return r;
 }
 
-/// The first contact of a motion that turns, in NT: conservative
-/// advancement on separation queries (both polygons prepared once, each
-/// search started from the last closest pair). A floating NT steps on its
-/// own query. An exact NT steps on the query in double (with its error
-/// bound; coarse_probe) and, once that would stop, on its own exact query:
-/// the stop is decided on exact distances. A motion whose largest coordinate
-/// lies outside double's safe window is answered there on its input scaled
-/// by a power of two, the tolerance with it, when every coordinate scales
-/// exactly (as filtered_first_contact does, so that both take the same
-/// steps).
 /// Advance with a refining stage: the coarse probe `general` (on the
 /// separation query in double, coarse_probe), or a convex_probe over it
 /// when convex_probe_applies, then `fine`.
