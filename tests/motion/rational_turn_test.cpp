@@ -18,6 +18,7 @@
 #include <CGAL/squared_distance_2.h>
 
 #include <cmath>
+#include <tuple>
 #include <vector>
 
 #include "influence2d/exact/certified_first_contact.hpp"
@@ -243,6 +244,33 @@ TEST_CASE("rational turning: a vertex grazing an edge, sliding along one, touchi
         check_motion(lid, tri, start, end, 200, n);
     }
     CHECK(n.grazing > 0);
+
+    // Tangent at a dyadic time, where bisection evaluates the cubic's Sturm
+    // sequence at its double root: B turns about its origin (0, r) by the
+    // angle whose half has tangent 1/2 (w = 1/2 exactly), and its vertex at
+    // radius r = sqrt(vx^2 + vy^2) reaches the bottom of its circle, (0, 0)
+    // on A's top edge, at u = 1/4 (tau 1/2: v = (-8, -15), r = 17) or at
+    // u = 1/2 (tau 1: v = (-4, -3), r = 5).
+    double half_turn = 2 * std::atan(0.5);
+    for (int k = 0; k < 8 && std::tan(half_turn / 2) != 0.5; ++k)
+        half_turn = std::nextafter(half_turn, std::tan(half_turn / 2) < 0.5 ? 4.0 : 0.0);
+    REQUIRE(std::tan(half_turn / 2) == 0.5);
+    const polygon floor({test_shapes::ring({{-30, -5}, {30, -5}, {30, 0}, {-30, 0}})});
+    for (const auto& [vx, vy, r, when] : {std::tuple{-8.0, -15.0, 17.0, 0.5}, std::tuple{-4.0, -3.0, 5.0, 1.0}}) {
+        INFO("tangent at " << when);
+        const polygon wheel({test_shapes::ring({{vx, vy}, {-vx, vy}, {0, 4}})});
+        const pose from{0, r, 0}, to{0, r, half_turn};
+        const contact_result<exact_rational> e = first_contact<exact_rational>(floor, wheel, from, to, rational);
+        CHECK(e.contact);
+        CHECK(e.time == exact_rational(when));
+        CHECK(e.moving_feature.kind == feature_kind::vertex);
+        CHECK(e.moving_feature.index == 0);
+        const contact_result<double> c = certified_first_contact(floor, wheel, from, to, rational);
+        CHECK(c.contact);
+        CHECK(c.time == when);
+        CHECK(first_contact<double>(floor, wheel, from, to, rational).contact);
+        check_motion(floor, wheel, from, to, 200, n);
+    }
 
     // B's vertex at its own origin slides along A's top edge's line (y = 0)
     // while B turns a little about it, and reaches A's corner (-10, 0)

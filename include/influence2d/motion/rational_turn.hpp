@@ -437,14 +437,15 @@ double rounded_time(const rational_piece& piece, const std::vector<polynomial<NT
     for (int halvings = 0;; ++halvings) {
         const double lo = nearest(time_of(r.low)), hi = nearest(time_of(r.high));
         if (lo == hi) return lo;
-        if constexpr (tr::category == number_category::floating) {
-            if (halvings > 2200) return hi;  // (rounded arithmetic: the bracket stopped shrinking)
-        } else if (std::nextafter(lo, hi) == hi) {
-            // The midpoint of the two doubles, in tau, a root: a tie.
-            const NT mid_tau = NT((NT(NT(num<NT>(lo) + num<NT>(hi)) * num<NT>(0.5)) - t0) / span);
-            if (s[0].sign_at(mid_tau) == 0) return even_of(lo, hi);
+        if constexpr (tr::category != number_category::floating) {
+            if (std::nextafter(lo, hi) == hi) {
+                // The midpoint of the two doubles, in tau, a root: a tie.
+                const NT mid_tau = NT((NT(NT(num<NT>(lo) + num<NT>(hi)) * num<NT>(0.5)) - t0) / span);
+                if (s[0].sign_at(mid_tau) == 0) return even_of(lo, hi);
+            }
         }
-        halve(s, r);
+        // (Rounded arithmetic: the bracket stopped shrinking.)
+        if (!halve(s, r) || halvings == rounded_halvings) return hi;
     }
 }
 

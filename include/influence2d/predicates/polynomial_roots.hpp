@@ -72,6 +72,26 @@ polynomial<NT> remainder(polynomial<NT> p, const polynomial<NT>& q) {
     return p;
 }
 
+/// The quotient of p divided by q (q not zero), in a field NT: exact when q
+/// divides p.
+template <class NT>
+polynomial<NT> quotient(polynomial<NT> p, const polynomial<NT>& q) {
+    const int dq = q.degree();
+    polynomial<NT> out;
+    if (p.degree() < dq) return out;
+    out.c.assign(static_cast<std::size_t>(p.degree() - dq + 1), number_traits<NT>::from_double(0));
+    while (p.degree() >= dq) {
+        const std::size_t shift = static_cast<std::size_t>(p.degree() - dq);
+        const NT factor = p.c.back() / q.c.back();
+        out.c[shift] = factor;
+        for (std::size_t k = 0; k < q.c.size(); ++k) p.c[k + shift] = NT(p.c[k + shift] - factor * q.c[k]);
+        p.c.pop_back();  // (its coefficient is now zero, whatever rounding left)
+        p.trimmed();
+    }
+    out.trimmed();
+    return out;
+}
+
 /// A greatest common divisor of p and q (Euclid's algorithm, in a field
 /// NT): the zero polynomial when both are zero; a non-zero constant when
 /// they share no root.
@@ -86,7 +106,11 @@ polynomial<NT> common_divisor(polynomial<NT> p, polynomial<NT> q) {
 }
 
 /// The Sturm sequence of p (not zero): p, p', then the negated remainders,
-/// down to a greatest common divisor of p and p'.
+/// down to a greatest common divisor g of p and p'; when g is not a
+/// constant (p has a multiple root), every member divided by g: the
+/// sequence of p / g, which has p's roots, each once, and whose members
+/// never all vanish at one point (at a multiple root of p they all would,
+/// and the count of sign changes there would be lost).
 template <class NT>
 std::vector<polynomial<NT>> sturm_sequence(const polynomial<NT>& p) {
     std::vector<polynomial<NT>> s{p};
@@ -96,6 +120,10 @@ std::vector<polynomial<NT>> sturm_sequence(const polynomial<NT>& p) {
         polynomial<NT> r = remainder(s[s.size() - 2], s.back());
         for (NT& x : r.c) x = NT(-x);
         d = std::move(r);
+    }
+    if (s.back().degree() >= 1) {
+        const polynomial<NT> g = s.back();
+        for (polynomial<NT>& member : s) member = quotient(member, g);
     }
     return s;
 }
@@ -114,8 +142,8 @@ int sign_changes(const std::vector<polynomial<NT>>& s, const NT& x) {
 }
 
 /// The number of distinct real roots of s[0] in (a, b], a < b (Sturm's
-/// theorem: it holds whether or not a and b are roots, the sequence ending
-/// at the greatest common divisor of s[0] and its derivative).
+/// theorem: it holds whether or not a and b are roots, s[0] having none of
+/// multiplicity above one: sturm_sequence).
 template <class NT>
 int roots_between(const std::vector<polynomial<NT>>& s, const NT& a, const NT& b) {
     return sign_changes(s, a) - sign_changes(s, b);
@@ -124,9 +152,10 @@ int roots_between(const std::vector<polynomial<NT>>& s, const NT& a, const NT& b
 /// How many times a bracket is halved at most in a floating NT, whose
 /// rounded signs may never settle a question an exact NT would: double's
 /// midpoints stop moving after some 2,100 halvings of [0, 1] (1,074 bits
-/// below 1, and the exponents' range); beyond it the answer is the one the
-/// bracket gives. An exact NT halves until the question is settled, which
-/// it always is (the roots compared differ, or are found equal).
+/// below 1, and the exponents' range); beyond it, or once a halving leaves
+/// the bracket as it was (halve), the answer is the one the bracket gives.
+/// An exact NT halves until the question is settled, which it always is
+/// (the roots compared differ, or are found equal).
 inline constexpr int rounded_halvings = 2200;
 
 /// A root of a polynomial bracketed alone: the only root of `sequence[0]`
@@ -138,14 +167,16 @@ struct isolated_root {
 };
 
 /// Halves the bracket of the only root of s[0] in (r.low, r.high]: keeps
-/// the half that holds it.
+/// the half that holds it. False when the bracket did not change (a
+/// floating NT's midpoint rounded to the end it replaces; never in an exact
+/// NT): halving it again would not change it either.
 template <class NT>
-void halve(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r) {
+bool halve(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r) {
     const NT mid = NT((r.low + r.high) * number_traits<NT>::from_double(0.5));
-    if (roots_between(s, r.low, mid) > 0)
-        r.high = mid;
-    else
-        r.low = mid;
+    NT& end = roots_between(s, r.low, mid) > 0 ? r.high : r.low;
+    const bool moved = compare_values<NT>(end, mid) != 0;
+    end = mid;
+    return moved;
 }
 
 /// The roots of s[0] in (a, b], a < b, in increasing order, each bracketed
@@ -180,7 +211,7 @@ std::vector<isolated_root<NT>> isolate_roots(const std::vector<polynomial<NT>>& 
 /// s[0]'s coefficients rounded), then the narrow bracket around it checked
 /// exactly to hold a root of s[0] (roots_between). False, r unchanged,
 /// when the check fails (s[0] does not change sign in double across the
-/// bracket: a root of even multiplicity, or values lost in rounding).
+/// bracket: its values lost in rounding).
 template <class NT>
 bool narrowed_by_double(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r) {
     using tr = number_traits<NT>;
@@ -253,7 +284,8 @@ int sign_at_root(const polynomial<NT>& q, const std::vector<polynomial<NT>>& s, 
     if (const std::optional<int> quick = sign_by_slope(q, r)) return *quick;
     if (vanishes_at(q, s, r)) return 0;
     const std::vector<polynomial<NT>> sq = sturm_sequence(q);
-    for (int k = 0; roots_between(sq, r.low, r.high) > 0 && (is_exact_v<NT> || k < rounded_halvings); ++k) halve(s, r);
+    for (int k = 0; roots_between(sq, r.low, r.high) > 0 && (is_exact_v<NT> || k < rounded_halvings); ++k)
+        if (!halve(s, r)) break;
     return q.sign_at(r.high);
 }
 
@@ -285,8 +317,8 @@ int compare_roots(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r, co
         }
     }
     for (int k = 0; is_exact_v<NT> || k < rounded_halvings; ++k) {
-        halve(s, r);
-        halve(t, u);
+        const bool moved = halve(s, r);
+        if (!halve(t, u) && !moved) break;
         if (below(r, u)) return -1;
         if (below(u, r)) return 1;
     }

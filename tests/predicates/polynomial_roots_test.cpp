@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: BSL-1.0
+// Root isolation by Sturm sequences and bisection: exact in an exact field,
+// and in double every loop stops once a halving leaves its bracket as it
+// was, whatever the rounding does to the signs.
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include "influence2d/number/cgal.hpp"
+#include "influence2d/predicates/polynomial_roots.hpp"
+
+using namespace influence2d;
+
+namespace {
+
+/// The polynomial (x - r0)(x - r1)... with the roots given.
+template <class NT>
+polynomial<NT> with_roots(const std::vector<double>& roots) {
+    polynomial<NT> p{{number_traits<NT>::from_double(1)}};
+    for (const double r : roots) {
+        polynomial<NT> q{std::vector<NT>(p.c.size() + 1, number_traits<NT>::from_double(0))};
+        for (std::size_t k = 0; k < p.c.size(); ++k) {
+            q.c[k + 1] = NT(q.c[k + 1] + p.c[k]);
+            q.c[k] = NT(q.c[k] - p.c[k] * number_traits<NT>::from_double(r));
+        }
+        p = q;
+    }
+    return p;
+}
+
+}  // namespace
+
+TEST_CASE("Sturm sequences isolate the roots of a cubic exactly", "[predicates][roots]") {
+    using NT = exact_rational;
+    const auto s = sturm_sequence(with_roots<NT>({0.25, 0.5, 0.75}));
+    CHECK(roots_between<NT>(s, 0, 1) == 3);
+    CHECK(roots_between<NT>(s, 0.25, 0.5) == 1);  // (a, b]: 0.5, not 0.25
+    CHECK(roots_between<NT>(s, 0.5, 0.625) == 0);
+    const auto roots = isolate_roots<NT>(s, 0, 1);
+    REQUIRE(roots.size() == 3);
+    const double expected[] = {0.25, 0.5, 0.75};
+    for (std::size_t k = 0; k < 3; ++k) {
+        CHECK(roots[k].low < NT(expected[k]));
+        CHECK(roots[k].high >= NT(expected[k]));
+        CHECK(roots_between(s, roots[k].low, roots[k].high) == 1);
+    }
+    // A double root counts once, and sign_at_root finds q = x - 1/2 zero
+    // there and x - 1/4 positive.
+    const auto d = sturm_sequence(with_roots<NT>({0.5, 0.5, 0.875}));
+    CHECK(roots_between<NT>(d, 0, 1) == 2);
+    auto twice = isolate_roots<NT>(d, 0, 1);
+    REQUIRE(twice.size() == 2);
+    CHECK(sign_at_root(with_roots<NT>({0.5}), d, twice[0]) == 0);
+    CHECK(sign_at_root(with_roots<NT>({0.25}), d, twice[0]) == 1);
+    CHECK(sign_at_root(with_roots<NT>({0.625}), d, twice[0]) == -1);
+    // Two cubics sharing the root 1/2 compare equal; 1/2 before 0.5 + 2^-52.
+    auto s1 = sturm_sequence(with_roots<NT>({0.5, 0.9}));
+    auto s2 = sturm_sequence(with_roots<NT>({0.5, 0.1, 0.95}));
+    auto s3 = sturm_sequence(with_roots<NT>({0.5 + std::ldexp(1.0, -52)}));
+    auto r1 = isolate_roots<NT>(s1, 0.25, 0.75).at(0), r2 = isolate_roots<NT>(s2, 0.25, 0.75).at(0),
+         r3 = isolate_roots<NT>(s3, 0.25, 0.75).at(0);
+    CHECK(compare_roots(s1, r1, s2, r2) == 0);
+    CHECK(compare_roots(s1, r1, s3, r3) == -1);
+    CHECK(compare_roots(s3, r3, s2, r2) == 1);
+}
+
+TEST_CASE("halving in double stops once the bracket no longer moves", "[predicates][roots]") {
+    // Exactly: every halving moves the bracket.
+    const auto se = sturm_sequence(with_roots<exact_rational>({0.3}));
+    isolated_root<exact_rational> re{0, 1};
+    for (int k = 0; k < 80; ++k) REQUIRE(halve(se, re));
+    CHECK(re.low < exact_rational(0.3));
+    CHECK(re.high >= exact_rational(0.3));
+    // In double: a bracket of two neighbouring doubles cannot be cut; halve
+    // says so and leaves it.
+    const auto s = sturm_sequence(with_roots<double>({0.3}));
+    isolated_root<double> r{0, 1};
+    int moved = 0;
+    while (halve(s, r)) REQUIRE(++moved < 200);
+    CHECK(moved >= 52);
+    CHECK(std::nextafter(r.low, 1.0) == r.high);
+    const isolated_root<double> stuck = r;
+    CHECK_FALSE(halve(s, r));
+    CHECK(r.low == stuck.low);
+    CHECK(r.high == stuck.high);
+    // compare_roots of two roots a rounding apart, which double's greatest
+    // common divisor does not find shared (x - 0.3 and 3x - 0.9, its
+    // constant rounded): the brackets are halved until they part or stop
+    // moving, and then they hold neighbouring doubles.
+    const auto t1 = sturm_sequence(with_roots<double>({0.3}));
+    const auto t2 = sturm_sequence(polynomial<double>{{-0.3 * 3, 3}});
+    REQUIRE(common_divisor(t1[0], t2[0]).degree() == 0);
+    auto r1 = isolate_roots<double>(t1, 0.25, 0.5).at(0), r2 = isolate_roots<double>(t2, 0.25, 0.5).at(0);
+    const int order = compare_roots(t1, r1, t2, r2);
+    if (order == 0) {
+        CHECK(std::nextafter(r1.low, 1.0) == r1.high);
+        CHECK(std::nextafter(r2.low, 1.0) == r2.high);
+    } else {
+        CHECK((r1.high <= r2.low || r2.high <= r1.low));
+    }
+    CHECK(r1.high - r1.low < 1e-15);
+}
