@@ -68,8 +68,9 @@ namespace influence2d {
 /// sweep_options::model rational, in the rational model by the exact roots
 /// of its contact cubics (rational_first_contact: exact when NT is, the
 /// time rounded to the nearest double), two convex polygons that
-/// rational_apart proves apart along the whole motion answered at once
-/// (no contact, in every NT). NT needs division for
+/// rational_advance proves apart along the whole motion answered at once
+/// (no contact, in every NT), and otherwise searched from where it stopped
+/// (rational_start). NT needs division for
 /// the time of the result (every number type of the library but certified
 /// and interval: certified_first_contact is the filtered route). In
 /// float, double or long double, a motion whose largest coordinate lies outside
@@ -92,8 +93,9 @@ contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose&
         }
     }
     if (from.theta != to.theta && options.model == turning_model::rational) {
-        if (rational_apart(a, b, from, to)) return contact_result<NT>{};
-        const contact_result<double> t = rational_first_contact<NT>(a, b, from, to);
+        const rational_progress free = rational_advance(a, b, from, to);
+        if (free.apart) return contact_result<NT>{};
+        const contact_result<double> t = rational_first_contact<NT>(a, b, from, to, free.start);
         return {t.contact, number_traits<NT>::from_double(t.time), t.static_feature, t.moving_feature};
     }
     if (from.theta != to.theta) return turning_first_contact<NT>(a, b, from, to, options);
@@ -123,7 +125,7 @@ contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose&
 /// a motion that turns: the answer of first_contact<Exact> (the same
 /// steps, the stop decided on separation<Exact>'s exact distance;
 /// docs/sweep.md); in the rational model rational_first_contact<Exact>,
-/// whose pairs are sifted in `certified` first (after rational_apart, as
+/// whose pairs are sifted in `certified` first (after rational_advance, as
 /// first_contact). A motion whose largest coordinate lies outside double's
 /// safe window (core/range_scaling.hpp), where the filter's bounds in double
 /// lose their hold (products near the subnormals, or beyond the range), is
@@ -145,9 +147,10 @@ contact_result<double> filtered_first_contact(const polygon& a, const polygon& b
                                                    scaled_by_power_of_two(from, k), scaled_by_power_of_two(to, k),
                                                    scaled);
     }
-    if (from.theta != to.theta && options.model == turning_model::rational)
-        return rational_apart(a, b, from, to) ? contact_result<double>{}
-                                              : rational_first_contact<Exact>(a, b, from, to);
+    if (from.theta != to.theta && options.model == turning_model::rational) {
+        const rational_progress free = rational_advance(a, b, from, to);
+        return free.apart ? contact_result<double>{} : rational_first_contact<Exact>(a, b, from, to, free.start);
+    }
     if (from.theta != to.theta) return filtered_turning_first_contact<Exact, Fine>(a, b, from, to, options);
     contact_result<double> r;
     const auto met = fallback<>::run([&] { return meeting_at_start<certified>(a, b, from, m.start); },

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
-/// Whether a motion that turns in the rational model certainly keeps two
+/// How much of a motion that turns in the rational model certainly keeps two
 /// convex polygons apart: conservative advancement on convex_gap along each
 /// piece (docs/sweep.md, "Convex pairs").
 
@@ -25,7 +25,7 @@ namespace influence2d {
 namespace sweep {
 
 /// The bound, per coordinate, of the distance between a vertex of B posed
-/// in double at a piece's time tau (rational_apart's posing) and its place
+/// in double at a piece's time tau (rational_advance's posing) and its place
 /// on the exact motion at that tau, relative to r + |T0|_1 + |T1|_1 (r:
 /// B's largest distance from its origin; T0, T1: the translations): u = w
 /// tau rounds once (|w|, tau <= 1: 2^-53); the turn's cosine and sine
@@ -37,19 +37,28 @@ namespace sweep {
 /// 2^-51 (|T0|_1 + |T1|_1). 2^-46 covers the sum with a factor of four.
 inline constexpr double rational_pose_rounding = 0x1p-46;
 
-/// The least distance, relative to the scene's size, at which rational_apart
+/// The least distance, relative to the scene's size, at which rational_advance
 /// still advances: a motion that comes closer is left to the exact search
 /// (each step there advances by about the distance over the speed, so
 /// following a contact down to the rounding would cost more probes than the
 /// search saves).
 inline constexpr double rational_apart_floor = 0x1p-10;
 
-/// The most probes rational_apart takes per piece.
+/// The most probes rational_advance takes per piece.
 inline constexpr std::size_t rational_apart_probes = 64;
 
-/// Whether the rational motion of B from `from` to `to` (rational_pieces)
-/// certainly keeps A and B apart, both convex and in double's safe window
-/// (convex_probe_applies): false means nothing (they may meet).
+/// How far rational_advance took a rational motion: the whole of it proven
+/// free, or where the search must start (rational_start: the motion proven
+/// free before it).
+struct rational_progress {
+    bool apart = false;    ///< the motion certainly keeps A and B apart
+    rational_start start;  ///< otherwise: free before this
+};
+
+/// How far conservative advancement proves the rational motion of B from
+/// `from` to `to` (rational_pieces) free, A and B convex and in double's
+/// safe window (convex_probe_applies; otherwise nothing is proven): the
+/// whole motion, or up to a place where they come within the floor.
 ///
 ///   r <- B's vertices' largest distance from its origin
 ///   delta <- rational_pose_rounding (r + |T0|_1 + |T1|_1)
@@ -61,13 +70,15 @@ inline constexpr std::size_t rational_apart_probes = 64;
 ///           B's vertices posed in double at tau; g <- convex_gap from the last simplex
 ///           L <- g's lower bound - 1.5 delta - 4 v 2^-52   (a lower bound of the exact
 ///                motion's distance over [tau - the rounding of tau, tau])
-///           if g did not converge or L <= floor:  false
+///           if g did not converge or L <= floor:  free before (this piece, tau)
 ///           if tau = 1:  next piece
 ///           s <- min(v, approach_speed along g's axis: 2 |w| r less B's translation towards A)
-///           tau <- min(1, tau + L / s, a little less)
-///   true
-inline bool rational_apart(const polygon& a, const polygon& b, const pose& from, const pose& to) {
-    if (from.theta == to.theta || !convex_probe_applies(a, b, from, to)) return false;
+///           tau <- min(1, tau + L / s, a little less)     (free up to it: the distance
+///                                                          falls by at most s a unit of tau)
+///   apart
+inline rational_progress rational_advance(const polygon& a, const polygon& b, const pose& from, const pose& to) {
+    rational_progress out;
+    if (from.theta == to.theta || !convex_probe_applies(a, b, from, to)) return out;
     const double r = bounding_radius(b, {0, 0});
     const double scale = motion_scale(a, b, from, to);
     const double delta =
@@ -77,12 +88,14 @@ inline bool rational_apart(const polygon& a, const polygon& b, const pose& from,
     std::vector<point<double>> av, posed(b.size());
     for (std::size_t i = 0; i < a.size(); ++i) av.push_back(a.vertex(i));
     convex_gap_result last;
-    for (const rational_piece& piece : rational_pieces(from, to)) {
+    const std::vector<rational_piece> pieces = rational_pieces(from, to);
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+        const rational_piece& piece = pieces[k];
         const double span = piece.t1 - piece.t0, sweep = 2 * std::fabs(piece.w) * r * (1 + speed_widening);
         const double v = (std::hypot(shift.x, shift.y) * span + sweep) * (1 + speed_widening);
         double tau = 0;
         for (std::size_t probe = 0;; ++probe) {
-            if (probe == rational_apart_probes) return false;
+            if (probe == rational_apart_probes) return out;
             const double u = piece.w * tau, h = 1 + u * u, c2 = (1 - u * u) / h, s2 = 2 * u / h;
             const double t = piece.t0 + tau * span;
             const point<double> move{from.tx + t * shift.x, from.ty + t * shift.y};
@@ -94,14 +107,26 @@ inline bool rational_apart(const polygon& a, const polygon& b, const pose& from,
             const convex_gap_result g = convex_gap(av.data(), av.size(), posed.data(), posed.size(), scale,
                                                    separation_error<double>(scale) / 4, last);
             const double lower = g.lower - posing_spread * delta - 4 * v * 0x1p-52;
-            if (!g.converged || !(lower > floor)) return false;
+            if (!g.converged || !(lower > floor)) return out;
             last = g;
             if (tau == 1) break;
             const double speed = std::min(v, approach_speed(g.axis, {shift.x * span, shift.y * span}, sweep, v));
             tau = std::min(1.0, tau + lower / speed * (1 - distance_shrinking));
+            out.start = {k, tau};
         }
+        // (The next piece starts at another formula's pose: its start is
+        // not proven.)
+        out.start = {k + 1, 0};
     }
-    return true;
+    out.apart = true;
+    return out;
+}
+
+/// Whether the rational motion of B from `from` to `to` certainly keeps the
+/// convex A and B apart (rational_advance proves all of it): false means
+/// nothing (they may meet).
+inline bool rational_apart(const polygon& a, const polygon& b, const pose& from, const pose& to) {
+    return rational_advance(a, b, from, to).apart;
 }
 
 }  // namespace sweep

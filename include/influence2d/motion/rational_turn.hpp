@@ -28,6 +28,8 @@
 #include "influence2d/core/pose.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/number/certified.hpp"
+#include "influence2d/number/double_word.hpp"
+#include "influence2d/number/exact_sum.hpp"
 #include "influence2d/number/fallback.hpp"
 #include "influence2d/number/traits.hpp"
 #include "influence2d/predicates/contact_time.hpp"
@@ -54,6 +56,14 @@ struct rational_piece {
     double w = 0;   ///< tan of half the piece's turn, in double
     double t0 = 0;  ///< the piece's start: j / k
     double t1 = 1;  ///< the piece's end: (j + 1) / k
+};
+
+/// Where rational_first_contact's search starts: the motion is known to keep
+/// the polygons apart before piece `piece`, and over [0, tau] of it when tau
+/// > 0 (sweep::rational_advance proves so much for convex pairs).
+struct rational_start {
+    std::size_t piece = 0;  ///< the first piece searched
+    double tau = 0;         ///< free through this tau of it (when > 0)
 };
 
 /// The pieces of the rational motion from `from` to `to` (docs/sweep.md):
@@ -268,19 +278,21 @@ bool all_of_sign(const bernstein<Filter>& b, int sign) {
 /// Where in [from, to] the cubics (their Bernstein coefficients there) may
 /// show a contact, the interval cut in halves up to `depth` times: the
 /// start of the first part in which f may vanish while lo and hi may both
-/// be >= 0; none when no part may (f of one strict sign there, or lo or hi
-/// negative throughout).
+/// be >= 0, the parts that end at or before `known` (free) left out; none
+/// when no part may (f of one strict sign there, or lo or hi negative
+/// throughout).
 template <class Filter>
 std::optional<double> first_possible(const bernstein<Filter>& f, const bernstein<Filter>& lo,
-                                     const bernstein<Filter>& hi, double from, double to, int depth) {
+                                     const bernstein<Filter>& hi, double from, double to, int depth, double known) {
+    if (to <= known) return std::nullopt;
     if (all_of_sign(f, 1) || all_of_sign(f, -1) || all_of_sign(lo, -1) || all_of_sign(hi, -1)) return std::nullopt;
     if (depth == 0) return from;
     const double mid = from + (to - from) / 2;  // (dyadic: exact)
     const auto [f0, f1] = halves(f);
     const auto [lo0, lo1] = halves(lo);
     const auto [hi0, hi1] = halves(hi);
-    if (const auto left = first_possible(f0, lo0, hi0, from, mid, depth - 1)) return left;
-    return first_possible(f1, lo1, hi1, mid, to, depth - 1);
+    if (const auto left = first_possible(f0, lo0, hi0, from, mid, depth - 1, known)) return left;
+    return first_possible(f1, lo1, hi1, mid, to, depth - 1, known);
 }
 
 /// How many times first_possible halves [0, 1]: down to parts of 1/16 of a
@@ -364,10 +376,16 @@ inline edge_box sweep_entry(const box& b, std::size_t k) {
     return {b.min_x, b.max_x, b.min_y, b.max_y, static_cast<std::uint32_t>(k)};
 }
 
-/// The start (tau) of the first part whose box meets `edge`, or none.
-inline std::optional<double> first_part_meeting(const std::array<box, box_parts>& parts, const box& edge) {
+/// Whether part k of box_parts ends at or before `known` (free).
+inline bool part_known_free(int k, double known) { return double(k + 1) / box_parts <= known; }
+
+/// The start (tau) of the first part whose box meets `edge`, the parts known
+/// free (part_known_free) left out, or none.
+inline std::optional<double> first_part_meeting(const std::array<box, box_parts>& parts, const box& edge,
+                                                double known) {
     for (int k = 0; k < box_parts; ++k)
-        if (boxes_overlap(parts[static_cast<std::size_t>(k)], edge)) return double(k) / box_parts;
+        if (!part_known_free(k, known) && boxes_overlap(parts[static_cast<std::size_t>(k)], edge))
+            return double(k) / box_parts;
     return std::nullopt;
 }
 
@@ -420,33 +438,113 @@ std::optional<std::pair<feature, feature>> meeting_at_piece_start(const polygon&
     return sweep::meeting_features(pa, pb, met);
 }
 
+/// A vertex-edge pair of a piece that the sifting keeps: no contact of it at
+/// or before `after` (a tau of the piece).
+struct kept_pair {
+    sweep::contact_site site;
+    double after;
+};
+
 /// The time t0 + tau (t1 - t0) of the root bracketed by r, rounded to the
-/// nearest double: the bracket halved until both its ends round to one
-/// double, or the root is found at the midpoint of two (ties to even).
+/// nearest double (ties to even). In a floating NT, the bracket halved until
+/// both its ends round to one double (or it stops moving). Otherwise
+/// exactly, by the root's side of the midpoints around a guess:
+///
+///   loop:
+///     d <- the double next to the bracket's middle, in time (to_double: a guess)
+///     m-, m+ <- the midpoints between d and its two neighbours, as taus
+///     the root at m- or at m+ (f vanishes there):     the even of the two doubles
+///     the root between m- and m+:                     d
+///     cut the bracket at m- or m+, on the root's side (halved when that
+///       midpoint lies outside it)
+///
+/// A side is a Sturm count within the bracket (or the bracket's own ends),
+/// so in double words (a filtered NT) it is certain unless the root lies
+/// within their bound of a midpoint; the bracket's ends are never rounded.
 template <class NT>
 double rounded_time(const rational_piece& piece, const std::vector<polynomial<NT>>& s, isolated_root<NT> r) {
     using tr = number_traits<NT>;
     const NT t0 = num<NT>(piece.t0), span = num<NT>(piece.t1 - piece.t0);
     const auto time_of = [&](const NT& tau) { return NT(t0 + tau * span); };
-    const auto nearest = [](const NT& x) {
-        if constexpr (tr::category == number_category::floating)
-            return static_cast<double>(x);
-        else
-            return nearest_double(x);
-    };
-    for (int halvings = 0;; ++halvings) {
-        const double lo = nearest(time_of(r.low)), hi = nearest(time_of(r.high));
-        if (lo == hi) return lo;
-        if constexpr (tr::category != number_category::floating) {
-            if (std::nextafter(lo, hi) == hi) {
-                // The midpoint of the two doubles, in tau, a root: a tie.
-                const NT mid_tau = NT((NT(NT(num<NT>(lo) + num<NT>(hi)) * num<NT>(0.5)) - t0) / span);
-                if (s[0].sign_at(mid_tau) == 0) return even_of(lo, hi);
-            }
+    if constexpr (tr::category == number_category::floating) {
+        for (int halvings = 0;; ++halvings) {
+            const double lo = static_cast<double>(time_of(r.low)), hi = static_cast<double>(time_of(r.high));
+            if (lo == hi) return lo;
+            // (Rounded arithmetic: the bracket stopped shrinking.)
+            if (!may_halve<NT>(halvings) || !halve(s, r)) return hi;
         }
-        // (Rounded arithmetic: the bracket stopped shrinking.)
-        if (!halve(s, r) || halvings == rounded_halvings) return hi;
+    } else {
+        const double inverse = 1 / (piece.t1 - piece.t0);  // (a power of two)
+        const NT half = num<NT>(0.5), inverse_span = num<NT>(inverse);
+        // The tau of the midpoint between the neighbouring doubles x < y:
+        // (x - t0) / span + (y - x) / (2 span), the sum of two doubles when
+        // the first is one (the second is: a power of two), so that a double
+        // word holds it exactly and two midpoints met twice compare equal.
+        const auto tau_between = [&](double x, double y) {
+            double from_start;
+            if (exact_sum::exact_double_sum(x * inverse, -piece.t0 * inverse, from_start))
+                return NT(num<NT>(from_start) + num<NT>((y - x) * 0.5 * inverse));
+            return NT(NT(NT(NT(num<NT>(x) + num<NT>(y)) * half) - t0) * inverse_span);
+        };
+        // The side of the root against tau: -1 below it, 0 at it, +1 above.
+        const auto side = [&](const NT& tau) {
+            if (compare_values<NT>(tau, r.low) <= 0) return 1;
+            if (compare_values<NT>(tau, r.high) > 0) return -1;
+            if (s[0].sign_at(tau) == 0) return 0;
+            return roots_between(s, r.low, tau) > 0 ? -1 : 1;
+        };
+        for (int k = 0;; ++k) {
+            const double d = tr::to_double(time_of(NT(NT(r.low + r.high) * half)));
+            const double below = std::nextafter(d, -HUGE_VAL), above = std::nextafter(d, HUGE_VAL);
+            const NT m_lo = tau_between(below, d), m_hi = tau_between(d, above);
+            const int at_lo = side(m_lo), at_hi = side(m_hi);
+            if (at_lo == 0) return even_of(below, d);
+            if (at_hi == 0) return even_of(d, above);
+            if (at_lo > 0 && at_hi < 0) return d;
+            may_halve<NT>(k);  // (a filtered NT that has not settled it: uncertain_sign)
+            if (at_lo < 0 && compare_values<NT>(m_lo, r.high) < 0)
+                r.high = m_lo;
+            else if (at_hi > 0 && compare_values<NT>(m_hi, r.low) > 0)
+                r.low = m_hi;
+            else
+                halve(s, r);
+        }
     }
+}
+
+/// The first contact among a piece's kept pairs, in R (sorted by `after`):
+/// the pair whose cubic f has the earliest root after its `after` at which
+/// lo and hi are >= 0 (earliest_root; ties: site_before), with that time
+/// rounded to the nearest double (rounded_time); none when no pair has one.
+/// The pairs whose `after` lies beyond the best root found are left.
+template <class R>
+std::optional<std::pair<sweep::contact_site, double>> earliest_kept_contact(const polygon& a, const polygon& b,
+                                                                            const pose& from, const pose& to,
+                                                                            const rational_piece& piece, bool last,
+                                                                            const std::vector<kept_pair>& kept) {
+    const piece_translation<R> t = translation_of<R>(piece, from, to);
+    // The factor l of cubics_of: 1 in A's frame, c^2 + s^2 in B's.
+    const R one = num<R>(1), base = R(num<R>(piece.c) * num<R>(piece.c) + num<R>(piece.s) * num<R>(piece.s));
+    const R w2 = R(num<R>(piece.w) * num<R>(piece.w));
+    std::optional<piece_contact<R>> best;
+    for (const kept_pair& c : kept) {
+        if (best && compare_values<R>(num<R>(c.after), best->root.high) > 0) break;
+        const moving_point<R> m = c.site.moving_vertex ? moving_vertex<R>(piece, t, b.vertex(c.site.vertex))
+                                                       : moving_static_vertex<R>(piece, t, a.vertex(c.site.vertex));
+        const polygon& edges = c.site.moving_vertex ? a : b;
+        auto found = earliest_root(cubics_of(m, w2, c.site.moving_vertex ? one : base, edges.vertex(c.site.edge),
+                                             edges.vertex(edges.next(c.site.edge))),
+                                   c.after, !last);
+        if (!found) continue;
+        piece_contact<R> contact{c.site, std::move(found->first), found->second};
+        if (best) {
+            const int order = compare_roots(contact.sequence, contact.root, best->sequence, best->root);
+            if (order > 0 || (order == 0 && !sweep::site_before(c.site, best->site))) continue;
+        }
+        best = std::move(contact);
+    }
+    if (!best) return std::nullopt;
+    return std::pair{best->site, rounded_time(piece, best->sequence, best->root)};
 }
 
 }  // namespace rational_turn_detail
@@ -460,41 +558,51 @@ double rounded_time(const rational_piece& piece, const std::vector<polynomial<NT
 /// only keeps a pair).
 ///
 ///   pieces <- rational_pieces(from, to)
-///   for each piece, in order:
-///     A and B at the piece's start meet (the one-shot query, B's vertices
-///       posed exactly; in Filter first):     time t0, the features met
+///   for each piece, in order, from `start` (the motion free before it):
+///     known <- start.tau in start's piece, else 0    (free through it)
+///     known = 0 and A and B at the piece's start meet (the one-shot query,
+///       B's vertices posed exactly; in Filter first):
+///                                               time t0, the features met
 ///     for each vertex of B and edge of A, and each vertex of A and edge
-///     of B (in B's frame), whose boxes over a quarter of the piece meet
-///     (swept_parts: arcs boxed by their ends and bulge, plus the
-///     translation; the pairs whose boxes over the whole piece overlap found
-///     first by sort and sweep along x):
+///     of B (in B's frame), whose boxes over a quarter of the piece not
+///     ending by `known` meet (swept_parts: arcs boxed by their ends and
+///     bulge, plus the translation; the pairs whose boxes over those
+///     quarters overlap found first by sort and sweep along x):
 ///       f, lo, hi <- the cubics of the vertex on the edge's line and
 ///            between its ends, in Filter; kept with the start of the first
-///            sixteenth of the piece where f may vanish while lo and hi may
-///            be >= 0 (their Bernstein coefficients, halved four times), or
-///            of the first quarter whose box meets the edge, the later
+///            sixteenth of the piece not ending by `known` where f may
+///            vanish while lo and hi may be >= 0 (their Bernstein
+///            coefficients, halved four times), of the first such quarter
+///            whose box meets the edge, or `known`, the latest
 ///     for the kept pairs in order of that start, while it is not after
 ///     the best root found:
-///       the earliest root of f after the start at which lo, hi >= 0, in NT
+///       the earliest root of f after the start at which lo, hi >= 0
 ///       (Sturm sequences, bisection; exact signs); the best so far when
 ///       earlier (ties: site_before)
-///     a best root:                                      the first contact
+///     a best root:          the first contact, its time rounded (rounded_time)
+///   (the roots, the comparisons and the rounding in double words first when
+///   NT is an exact field, all of them again in NT when a sign is in doubt)
 ///   none
 ///
 /// NT needs division (exact_rational, or a floating type). Throws
 /// invalid_input for a turn of more than 2^20 quarter turns.
 template <class NT, class Filter = std::conditional_t<is_exact_v<NT>, certified, NT>>
-contact_result<double> rational_first_contact(const polygon& a, const polygon& b, const pose& from, const pose& to) {
+contact_result<double> rational_first_contact(const polygon& a, const polygon& b, const pose& from, const pose& to,
+                                              const rational_start& start = {}) {
     using namespace rational_turn_detail;
     const double scale = coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) + std::fabs(from.ty) +
                          std::fabs(to.tx) + std::fabs(to.ty);
     contact_result<double> r;
     const std::vector<rational_piece> pieces = rational_pieces(from, to);
-    for (const rational_piece& piece : pieces) {
-        const bool last = &piece == &pieces.back();
+    for (std::size_t index = start.piece; index < pieces.size(); ++index) {
+        const rational_piece& piece = pieces[index];
+        const bool last = index + 1 == pieces.size();
+        const double known = index == start.piece ? start.tau : 0;
+        if (known >= 1) continue;
         const piece_translation<NT> t = translation_of<NT>(piece, from, to);
         const piece_translation<Filter> tf = translation_of<Filter>(piece, from, to);
-        const auto met = [&] {
+        const auto met = [&]() -> std::optional<std::pair<feature, feature>> {
+            if (known > 0) return std::nullopt;
             if constexpr (std::is_same_v<Filter, NT>) {
                 return meeting_at_piece_start<NT>(a, b, piece, t, scale);
             } else {
@@ -514,23 +622,18 @@ contact_result<double> rational_first_contact(const polygon& a, const polygon& b
         const double slack = arc_box_slack * scale + std::numeric_limits<double>::min();
         const Filter wf = num<Filter>(piece.w), w2f = Filter(wf * wf);
         // The factor l of cubics_of: 1 in A's frame, c^2 + s^2 in B's.
-        const NT one = num<NT>(1), base = NT(num<NT>(piece.c) * num<NT>(piece.c) + num<NT>(piece.s) * num<NT>(piece.s));
         const Filter one_f = num<Filter>(1), base_f = Filter(num<Filter>(piece.c) * num<Filter>(piece.c) +
                                                              num<Filter>(piece.s) * num<Filter>(piece.s));
 
         // Each pair whose boxes over the piece meet, sifted in Filter: where
         // in the piece its contact may be (first_possible), or none.
-        struct candidate {
-            sweep::contact_site site;
-            double after;  // no contact of the pair at or before this tau
-        };
-        std::vector<candidate> kept;
+        std::vector<kept_pair> kept;
         const auto sift = [&](const sweep::contact_site& site, const moving_point<Filter>& m, const Filter& l,
                               const point<double>& p, const point<double>& q, double from_box) {
             const cubic_coefficients<Filter> k = coefficients_of(m, w2f, l, p, q);
-            if (const std::optional<double> at =
-                    first_possible(bernstein_of(k[0]), bernstein_of(k[1]), bernstein_of(k[2]), 0.0, 1.0, sifting_depth))
-                kept.push_back({site, std::max(*at, from_box)});
+            if (const std::optional<double> at = first_possible(bernstein_of(k[0]), bernstein_of(k[1]),
+                                                                bernstein_of(k[2]), 0.0, 1.0, sifting_depth, known))
+                kept.push_back({site, std::max({*at, from_box, known})});
         };
         // B's vertices against A's edges, in A's frame; A's vertices against
         // B's edges, in B's frame (q less the translation, turned back): the
@@ -549,7 +652,9 @@ contact_result<double> rational_first_contact(const polygon& a, const polygon& b
             for (std::size_t v = 0; v < vertices.size(); ++v) {
                 parts[v] = swept_parts(piece, vertices.vertex(v), !moving, td, slack);
                 box whole;
-                for (const box& part : parts[v]) {
+                for (int k = 0; k < box_parts; ++k) {
+                    if (part_known_free(k, known)) continue;
+                    const box& part = parts[v][static_cast<std::size_t>(k)];
                     whole.add({part.min_x, part.min_y});
                     whole.add({part.max_x, part.max_y});
                 }
@@ -564,7 +669,7 @@ contact_result<double> rational_first_contact(const polygon& a, const polygon& b
                 [](const edge_box& k) -> const edge_box& { return k; },
                 [&](std::size_t i, std::size_t j) {
                     const std::size_t v = vertex_order[i].edge, e = edge_order[j].edge;
-                    const std::optional<double> from_box = first_part_meeting(parts[v], edge_boxes[e]);
+                    const std::optional<double> from_box = first_part_meeting(parts[v], edge_boxes[e], known);
                     if (!from_box) return false;
                     if (!mf[v])
                         mf[v] = moving ? moving_vertex<Filter>(piece, tf, vertices.vertex(v))
@@ -575,35 +680,25 @@ contact_result<double> rational_first_contact(const polygon& a, const polygon& b
                 });
         }
         // The kept pairs in order of where their contact may start; the
-        // earliest root among them, in NT, each pair's roots sought after
-        // its start only; the pairs that start after the best root found
-        // so far are left.
-        std::sort(kept.begin(), kept.end(), [](const candidate& x, const candidate& y) {
+        // earliest root among them (earliest_kept_contact): in double words
+        // first when NT is an exact field (their signs exact or none), in NT
+        // when one is in doubt.
+        std::sort(kept.begin(), kept.end(), [](const kept_pair& x, const kept_pair& y) {
             return x.after != y.after ? x.after < y.after : sweep::site_before(x.site, y.site);
         });
-        std::optional<piece_contact<NT>> best;
-        const NT w2 = NT(num<NT>(piece.w) * num<NT>(piece.w));
-        for (const candidate& c : kept) {
-            if (best && compare_values<NT>(num<NT>(c.after), best->root.high) > 0) break;
-            const moving_point<NT> m = c.site.moving_vertex
-                                           ? moving_vertex<NT>(piece, t, b.vertex(c.site.vertex))
-                                           : moving_static_vertex<NT>(piece, t, a.vertex(c.site.vertex));
-            const polygon& edges = c.site.moving_vertex ? a : b;
-            auto found = earliest_root(cubics_of(m, w2, c.site.moving_vertex ? one : base, edges.vertex(c.site.edge),
-                                                 edges.vertex(edges.next(c.site.edge))),
-                                       c.after, !last);
-            if (!found) continue;
-            piece_contact<NT> contact{c.site, std::move(found->first), found->second};
-            if (best) {
-                const int order = compare_roots(contact.sequence, contact.root, best->sequence, best->root);
-                if (order > 0 || (order == 0 && !sweep::site_before(c.site, best->site))) continue;
+        const auto found = [&] {
+            if constexpr (number_traits<NT>::category == number_category::exact) {
+                return fallback<>::run(
+                    [&] { return earliest_kept_contact<double_word>(a, b, from, to, piece, last, kept); },
+                    [&] { return earliest_kept_contact<NT>(a, b, from, to, piece, last, kept); });
+            } else {
+                return earliest_kept_contact<NT>(a, b, from, to, piece, last, kept);
             }
-            best = std::move(contact);
-        }
-        if (best) {
+        }();
+        if (found) {
             r.contact = true;
-            r.time = rounded_time(piece, best->sequence, best->root);
-            std::tie(r.static_feature, r.moving_feature) = sweep::site_features(a, b, best->site);
+            r.time = found->second;
+            std::tie(r.static_feature, r.moving_feature) = sweep::site_features(a, b, found->first);
             return r;
         }
     }

@@ -11,7 +11,8 @@
 /// sign of a polynomial at a rational point. In an exact field NT every
 /// answer is exact: a root is never computed, only bracketed, and two
 /// polynomials share a root exactly when their greatest common divisor
-/// vanishes there. In a floating NT the same steps round.
+/// vanishes there. In a filtered NT (double_word) every answer is the exact
+/// one or uncertain_sign. In a floating NT the same steps round.
 
 #include <cmath>
 #include <cstddef>
@@ -19,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "influence2d/number/certified.hpp"
 #include "influence2d/number/traits.hpp"
 
 namespace influence2d {
@@ -155,8 +157,26 @@ int roots_between(const std::vector<polynomial<NT>>& s, const NT& a, const NT& b
 /// below 1, and the exponents' range); beyond it, or once a halving leaves
 /// the bracket as it was (halve), the answer is the one the bracket gives.
 /// An exact NT halves until the question is settled, which it always is
-/// (the roots compared differ, or are found equal).
+/// (the roots compared differ, or are found equal); a filtered one (double
+/// words) raises uncertain_sign instead of a rounded answer (may_halve).
 inline constexpr int rounded_halvings = 2200;
+
+/// Whether a loop may halve its bracket for the k-th time (k from 0): always
+/// in an exact type; below rounded_halvings in a floating one (its answer
+/// then stands as the bracket gives it); in a filtered type below
+/// rounded_halvings, and then uncertain_sign: its answers must be the exact
+/// ones, and it has not settled this one.
+template <class NT>
+bool may_halve(int k) {
+    using tr = number_traits<NT>;
+    if constexpr (tr::category == number_category::exact) {
+        return true;
+    } else {
+        if (k < rounded_halvings) return true;
+        if constexpr (tr::category == number_category::filtered) throw uncertain_sign();
+        return false;
+    }
+}
 
 /// A root of a polynomial bracketed alone: the only root of `sequence[0]`
 /// in (low, high].
@@ -169,12 +189,14 @@ struct isolated_root {
 /// Halves the bracket of the only root of s[0] in (r.low, r.high]: keeps
 /// the half that holds it. False when the bracket did not change (a
 /// floating NT's midpoint rounded to the end it replaces; never in an exact
-/// NT): halving it again would not change it either.
+/// NT, and in a filtered one uncertain_sign instead): halving it again would
+/// not change it either.
 template <class NT>
 bool halve(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r) {
     const NT mid = NT((r.low + r.high) * number_traits<NT>::from_double(0.5));
     NT& end = roots_between(s, r.low, mid) > 0 ? r.high : r.low;
     const bool moved = compare_values<NT>(end, mid) != 0;
+    if (!moved && number_traits<NT>::category == number_category::filtered) throw uncertain_sign();
     end = mid;
     return moved;
 }
@@ -195,8 +217,12 @@ std::vector<isolated_root<NT>> isolate_roots(const std::vector<polynomial<NT>>& 
             continue;
         }
         const NT mid = NT((r.low + r.high) * number_traits<NT>::from_double(0.5));
-        if (!is_exact_v<NT> && (compare_values<NT>(mid, r.low) == 0 || compare_values<NT>(mid, r.high) == 0)) {
-            out.push_back(r);  // (rounded: the bracket cannot be cut)
+        if (number_traits<NT>::category != number_category::exact &&
+            (compare_values<NT>(mid, r.low) == 0 || compare_values<NT>(mid, r.high) == 0)) {
+            // The bracket cannot be cut: rounded, it stands; filtered, the
+            // answer is not settled.
+            if (number_traits<NT>::category == number_category::filtered) throw uncertain_sign();
+            out.push_back(r);
             continue;
         }
         const int left = roots_between(s, r.low, mid);
@@ -284,7 +310,7 @@ int sign_at_root(const polynomial<NT>& q, const std::vector<polynomial<NT>>& s, 
     if (const std::optional<int> quick = sign_by_slope(q, r)) return *quick;
     if (vanishes_at(q, s, r)) return 0;
     const std::vector<polynomial<NT>> sq = sturm_sequence(q);
-    for (int k = 0; roots_between(sq, r.low, r.high) > 0 && (is_exact_v<NT> || k < rounded_halvings); ++k)
+    for (int k = 0; roots_between(sq, r.low, r.high) > 0 && may_halve<NT>(k); ++k)
         if (!halve(s, r)) break;
     return q.sign_at(r.high);
 }
@@ -316,7 +342,7 @@ int compare_roots(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r, co
             }
         }
     }
-    for (int k = 0; is_exact_v<NT> || k < rounded_halvings; ++k) {
+    for (int k = 0; may_halve<NT>(k); ++k) {
         const bool moved = halve(s, r);
         if (!halve(t, u) && !moved) break;
         if (below(r, u)) return -1;
