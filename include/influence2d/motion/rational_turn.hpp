@@ -450,13 +450,15 @@ struct kept_pair {
 /// both its ends round to one double (or it stops moving). Otherwise
 /// exactly, by the root's side of the midpoints around a guess:
 ///
+///   d <- the double next to the bracket's middle, in time (to_double: a guess)
 ///   loop:
-///     d <- the double next to the bracket's middle, in time (to_double: a guess)
 ///     m-, m+ <- the midpoints between d and its two neighbours, as taus
 ///     the root at m- or at m+ (f vanishes there):     the even of the two doubles
 ///     the root between m- and m+:                     d
 ///     cut the bracket at m- or m+, on the root's side (halved when that
 ///       midpoint lies outside it)
+///     d <- the new bracket's guess, or d's neighbour on the root's side if
+///       the guess is not beyond it
 ///
 /// A side is a Sturm count within the bracket (or the bracket's own ends),
 /// so in double words (a filtered NT) it is certain unless the root lies
@@ -493,8 +495,9 @@ double rounded_time(const rational_piece& piece, const std::vector<polynomial<NT
             if (s[0].sign_at(tau) == 0) return 0;
             return roots_between(s, r.low, tau) > 0 ? -1 : 1;
         };
+        const auto guess = [&] { return tr::to_double(time_of(NT(NT(r.low + r.high) * half))); };
+        double d = guess();
         for (int k = 0;; ++k) {
-            const double d = tr::to_double(time_of(NT(NT(r.low + r.high) * half)));
             const double below = std::nextafter(d, -HUGE_VAL), above = std::nextafter(d, HUGE_VAL);
             const NT m_lo = tau_between(below, d), m_hi = tau_between(d, above);
             const int at_lo = side(m_lo), at_hi = side(m_hi);
@@ -508,6 +511,9 @@ double rounded_time(const rational_piece& piece, const std::vector<polynomial<NT
                 r.low = m_hi;
             else
                 halve(s, r);
+            // The next guess on the root's side of d (to_double may truncate:
+            // its guess alone could stay at d).
+            d = at_lo < 0 ? std::min(guess(), below) : std::max(guess(), above);
         }
     }
 }
