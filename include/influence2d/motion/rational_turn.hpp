@@ -504,7 +504,7 @@ double rounded_time(const rational_piece& piece, const std::vector<polynomial<NT
             if (at_lo == 0) return even_of(below, d);
             if (at_hi == 0) return even_of(d, above);
             if (at_lo > 0 && at_hi < 0) return d;
-            may_halve<NT>(k);  // (a filtered NT that has not settled it: uncertain_sign)
+            may_halve<NT>(k);  // (signs in doubt, not settled after so many: uncertain_sign)
             if (at_lo < 0 && compare_values<NT>(m_lo, r.high) < 0)
                 r.high = m_lo;
             else if (at_hi > 0 && compare_values<NT>(m_hi, r.low) > 0)

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstddef>
 #include <optional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -157,24 +158,34 @@ int roots_between(const std::vector<polynomial<NT>>& s, const NT& a, const NT& b
 /// below 1, and the exponents' range); beyond it, or once a halving leaves
 /// the bracket as it was (halve), the answer is the one the bracket gives.
 /// An exact NT halves until the question is settled, which it always is
-/// (the roots compared differ, or are found equal); a filtered one (double
-/// words) raises uncertain_sign instead of a rounded answer (may_halve).
+/// (the roots compared differ, or are found equal); one whose signs may be in
+/// doubt (double words) raises uncertain_sign instead of a rounded answer
+/// (may_halve).
 inline constexpr int rounded_halvings = 2200;
+
+/// Whether NT's signs may be in doubt, raising uncertain_sign: a filtered
+/// type whose traits tell a certain sign apart (try_sign: double_word,
+/// certified). CGAL's lazy numbers, filtered too, settle their doubts
+/// themselves, and halve as an exact field does.
+template <class NT, class = void>
+struct signs_may_be_in_doubt : std::false_type {};
+template <class NT>
+struct signs_may_be_in_doubt<NT, std::void_t<decltype(&number_traits<NT>::try_sign)>> : std::true_type {};
 
 /// Whether a loop may halve its bracket for the k-th time (k from 0): always
 /// in an exact type; below rounded_halvings in a floating one (its answer
-/// then stands as the bracket gives it); in a filtered type below
-/// rounded_halvings, and then uncertain_sign: its answers must be the exact
-/// ones, and it has not settled this one.
+/// then stands as the bracket gives it); in a type whose signs may be in
+/// doubt below rounded_halvings, and then uncertain_sign: its answers must
+/// be the exact ones, and it has not settled this one.
 template <class NT>
 bool may_halve(int k) {
-    using tr = number_traits<NT>;
-    if constexpr (tr::category == number_category::exact) {
-        return true;
-    } else {
+    if constexpr (signs_may_be_in_doubt<NT>::value) {
         if (k < rounded_halvings) return true;
-        if constexpr (tr::category == number_category::filtered) throw uncertain_sign();
-        return false;
+        throw uncertain_sign();
+    } else if constexpr (number_traits<NT>::category == number_category::floating) {
+        return k < rounded_halvings;
+    } else {
+        return true;
     }
 }
 
@@ -189,14 +200,14 @@ struct isolated_root {
 /// Halves the bracket of the only root of s[0] in (r.low, r.high]: keeps
 /// the half that holds it. False when the bracket did not change (a
 /// floating NT's midpoint rounded to the end it replaces; never in an exact
-/// NT, and in a filtered one uncertain_sign instead): halving it again would
-/// not change it either.
+/// NT, and uncertain_sign instead in one whose signs may be in doubt):
+/// halving it again would not change it either.
 template <class NT>
 bool halve(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r) {
     const NT mid = NT((r.low + r.high) * number_traits<NT>::from_double(0.5));
     NT& end = roots_between(s, r.low, mid) > 0 ? r.high : r.low;
     const bool moved = compare_values<NT>(end, mid) != 0;
-    if (!moved && number_traits<NT>::category == number_category::filtered) throw uncertain_sign();
+    if (!moved && signs_may_be_in_doubt<NT>::value) throw uncertain_sign();
     end = mid;
     return moved;
 }
@@ -217,11 +228,11 @@ std::vector<isolated_root<NT>> isolate_roots(const std::vector<polynomial<NT>>& 
             continue;
         }
         const NT mid = NT((r.low + r.high) * number_traits<NT>::from_double(0.5));
-        if (number_traits<NT>::category != number_category::exact &&
+        if ((!is_exact_v<NT> || signs_may_be_in_doubt<NT>::value) &&
             (compare_values<NT>(mid, r.low) == 0 || compare_values<NT>(mid, r.high) == 0)) {
-            // The bracket cannot be cut: rounded, it stands; filtered, the
+            // The bracket cannot be cut: rounded, it stands; in doubt, the
             // answer is not settled.
-            if (number_traits<NT>::category == number_category::filtered) throw uncertain_sign();
+            if (signs_may_be_in_doubt<NT>::value) throw uncertain_sign();
             out.push_back(r);
             continue;
         }
