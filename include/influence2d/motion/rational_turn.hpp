@@ -605,16 +605,18 @@ contact_result<double> rational_first_contact(const polygon& a, const polygon& b
         const bool last = index + 1 == pieces.size();
         const double known = index == start.piece ? start.tau : 0;
         if (known >= 1) continue;
-        const piece_translation<NT> t = translation_of<NT>(piece, from, to);
         const piece_translation<Filter> tf = translation_of<Filter>(piece, from, to);
         const auto met = [&]() -> std::optional<std::pair<feature, feature>> {
             if (known > 0) return std::nullopt;
             if constexpr (std::is_same_v<Filter, NT>) {
-                return meeting_at_piece_start<NT>(a, b, piece, t, scale);
+                return meeting_at_piece_start<NT>(a, b, piece, translation_of<NT>(piece, from, to), scale);
             } else {
                 // In Filter first, in NT when a sign is in doubt.
                 return fallback<>::run([&] { return meeting_at_piece_start<Filter>(a, b, piece, tf, scale); },
-                                       [&] { return meeting_at_piece_start<NT>(a, b, piece, t, scale); });
+                                       [&] {
+                                           return meeting_at_piece_start<NT>(
+                                               a, b, piece, translation_of<NT>(piece, from, to), scale);
+                                       });
             }
         }();
         if (met) {
