@@ -301,57 +301,80 @@ std::optional<double> first_possible(const bernstein<Filter>& f, const bernstein
 inline constexpr int sifting_depth = 4;
 
 /// The relative slack of arc_box and of the swept boxes: their corners
-/// computed in double with a few roundings each (the turn's ends: two
-/// products and a sum after a quotient by h, about 8u; the bulge: a square
-/// root and a quotient, about 4u), each at most u = 2^-53 times the
-/// magnitudes involved, below 2^-48 of the radius; 2^-40 leaves a factor
-/// of 256.
+/// computed in double with a few roundings each (the turn's ends: its
+/// cosine and sine, a quotient by h each, then two products and a sum,
+/// about 8u; the bulge: a square root and a quotient, about 4u), each at
+/// most u = 2^-53 times the magnitudes involved, below 2^-48 of the radius;
+/// 2^-40 leaves a factor of 256.
 inline constexpr double arc_box_slack = 0x1p-40;
-
-/// The box that holds every place of the point p over the part [ua, ub] of
-/// the piece's half-angle tangent u, turned about the origin after the
-/// base rotation (c, s): the box of its two ends grown by the arc's bulge
-/// over its chord, |p| (1 - cos(theta / 2)) = |p| (1 - 1 / sqrt(1 + v^2)),
-/// v = tan(theta / 2) = (ub - ua) / (1 + ua ub) for the arc's angle theta,
-/// and by the filters' slack. (`inverse` for A's vertex in B's frame:
-/// turned the other way, after the inverse base rotation.)
-inline box arc_box(const rational_piece& piece, point<double> p, bool inverse, double ua, double ub) {
-    const double c = piece.c, s = inverse ? -piece.s : piece.s;
-    box b;
-    for (const double u : {ua, ub}) {
-        const double h = 1 + u * u;
-        if (!inverse) {
-            const double mx = ((1 - u * u) * p.x - 2 * u * p.y) / h, my = (2 * u * p.x + (1 - u * u) * p.y) / h;
-            b.add({c * mx - s * my, s * mx + c * my});
-        } else {
-            const point<double> r{c * p.x - s * p.y, s * p.x + c * p.y};
-            b.add({((1 - u * u) * r.x + 2 * u * r.y) / h, (-2 * u * r.x + (1 - u * u) * r.y) / h});
-        }
-    }
-    const double v = std::fabs(ub - ua) / (1 + ua * ub), radius = std::fabs(p.x) + std::fabs(p.y);
-    return b.inflated(radius * (1 - 1 / std::sqrt(1 + v * v)) + arc_box_slack * radius +
-                      std::numeric_limits<double>::min());
-}
 
 /// How many parts of equal time the boxes of a piece's vertices are made
 /// over (swept_parts): a quarter turn's arc boxed whole is as wide as its
 /// radius; a quarter of it a quarter as wide, so that fewer edges meet it.
 inline constexpr int box_parts = 4;
 
+/// The turn of a piece at the ends of its box_parts parts, the same for
+/// every point: at u = w k / box_parts, the cosine (1 - u^2) / (1 + u^2)
+/// and the sine 2u / (1 + u^2) of the turn 2 atan(u); and each part's
+/// bulge factor 1 - 1 / sqrt(1 + v^2) (arc_box).
+struct part_turns {
+    std::array<double, box_parts + 1> cos, sin;
+    std::array<double, box_parts> bulge;
+};
+
+/// The part_turns of a piece.
+inline part_turns turns_of(const rational_piece& piece) {
+    part_turns out;
+    for (std::size_t k = 0; k <= std::size_t{box_parts}; ++k) {
+        const double u = piece.w * (double(k) / box_parts), h = 1 + u * u;
+        out.cos[k] = (1 - u * u) / h;
+        out.sin[k] = 2 * u / h;
+        if (k == 0) continue;
+        const double ua = piece.w * (double(k - 1) / box_parts);
+        const double v = std::fabs(u - ua) / (1 + ua * u);
+        out.bulge[k - 1] = 1 - 1 / std::sqrt(1 + v * v);
+    }
+    return out;
+}
+
+/// The box that holds every place of the point p over part k of the piece
+/// (u from w k / box_parts to w (k + 1) / box_parts), turned about the
+/// origin after the base rotation (c, s): the box of its two ends grown by
+/// the arc's bulge over its chord, |p| (1 - cos(theta / 2)) = |p| (1 - 1 /
+/// sqrt(1 + v^2)), v = tan(theta / 2) = (ub - ua) / (1 + ua ub) for the
+/// arc's angle theta, and by the filters' slack. (`inverse` for A's vertex
+/// in B's frame: turned the other way, after the inverse base rotation.)
+inline box arc_box(const rational_piece& piece, const part_turns& turns, point<double> p, bool inverse, std::size_t k) {
+    const double c = piece.c, s = inverse ? -piece.s : piece.s;
+    box b;
+    const point<double> r{c * p.x - s * p.y, s * p.x + c * p.y};
+    for (const std::size_t end : {k, k + 1}) {
+        const double tc = turns.cos[end], ts = turns.sin[end];
+        if (!inverse) {
+            const double mx = tc * p.x - ts * p.y, my = ts * p.x + tc * p.y;
+            b.add({c * mx - s * my, s * mx + c * my});
+        } else {
+            b.add({tc * r.x + ts * r.y, -ts * r.x + tc * r.y});
+        }
+    }
+    const double radius = std::fabs(p.x) + std::fabs(p.y);
+    return b.inflated(radius * turns.bulge[k] + arc_box_slack * radius + std::numeric_limits<double>::min());
+}
+
 /// The boxes of a point over the box_parts parts of the piece: the point
 /// turned (arc_box) plus the translation over the same part (`shift` at
 /// tau is a0 + a1 tau; subtracted for A's vertex in B's frame), grown by
 /// the slack.
-inline std::array<box, box_parts> swept_parts(const rational_piece& piece, point<double> p, bool inverse,
-                                              const piece_translation<double>& shift, double slack) {
+inline std::array<box, box_parts> swept_parts(const rational_piece& piece, const part_turns& turns, point<double> p,
+                                              bool inverse, const piece_translation<double>& shift, double slack) {
     std::array<box, box_parts> out;
-    for (int k = 0; k < box_parts; ++k) {
+    for (std::size_t k = 0; k < std::size_t{box_parts}; ++k) {
         const double t0 = double(k) / box_parts, t1 = double(k + 1) / box_parts;
         const point<double> s0{shift.a0.x + t0 * shift.a1.x, shift.a0.y + t0 * shift.a1.y},
             s1{shift.a0.x + t1 * shift.a1.x, shift.a0.y + t1 * shift.a1.y};
-        box& b = out[static_cast<std::size_t>(k)];
+        box& b = out[k];
         if (!inverse) {
-            const box turned = arc_box(piece, p, false, piece.w * t0, piece.w * t1);
+            const box turned = arc_box(piece, turns, p, false, k);
             for (const point<double>& sh : {s0, s1}) {
                 b.add({turned.min_x + sh.x, turned.min_y + sh.y});
                 b.add({turned.max_x + sh.x, turned.max_y + sh.y});
@@ -361,7 +384,7 @@ inline std::array<box, box_parts> swept_parts(const rational_piece& piece, point
             // lies in its arc_box, and so does every point between them
             // turned by the same angle.
             for (const point<double>& sh : {s0, s1}) {
-                const box turned = arc_box(piece, {p.x - sh.x, p.y - sh.y}, true, piece.w * t0, piece.w * t1);
+                const box turned = arc_box(piece, turns, {p.x - sh.x, p.y - sh.y}, true, k);
                 b.add({turned.min_x, turned.min_y});
                 b.add({turned.max_x, turned.max_y});
             }
@@ -628,6 +651,7 @@ contact_result<double> rational_first_contact(const polygon& a, const polygon& b
         // The translation over the piece, in double (for the boxes).
         const piece_translation<double> td = translation_of<double>(piece, from, to);
         const double slack = arc_box_slack * scale + std::numeric_limits<double>::min();
+        const part_turns turns = turns_of(piece);
         const Filter wf = num<Filter>(piece.w), w2f = Filter(wf * wf);
         // The factor l of cubics_of: 1 in A's frame, c^2 + s^2 in B's.
         const Filter one_f = num<Filter>(1), base_f = Filter(num<Filter>(piece.c) * num<Filter>(piece.c) +
@@ -658,7 +682,7 @@ contact_result<double> rational_first_contact(const polygon& a, const polygon& b
             }
             std::vector<std::array<box, box_parts>> parts(vertices.size());
             for (std::size_t v = 0; v < vertices.size(); ++v) {
-                parts[v] = swept_parts(piece, vertices.vertex(v), !moving, td, slack);
+                parts[v] = swept_parts(piece, turns, vertices.vertex(v), !moving, td, slack);
                 box whole;
                 for (int k = 0; k < box_parts; ++k) {
                     if (part_known_free(k, known)) continue;
