@@ -272,6 +272,22 @@ TEST_CASE("rational turning: a vertex grazing an edge, sliding along one, touchi
         check_motion(floor, wheel, from, to, 200, n);
     }
 
+    // A contact at a subnormal time, a quarter of its step above a double
+    // (the step 2^-1074 halves below the subnormals): B's vertex at its
+    // origin falls from y = a = 2^-1030 onto A's top edge (y = 0) and meets
+    // it at t = a / (a - b), rounded to a, not to a's neighbour above.
+    const double a_sub = std::ldexp(1.0, -1030), b_sub = -(1 - std::ldexp(1.0, -46));
+    const exact_rational t_sub = exact_rational(a_sub) / (exact_rational(a_sub) - exact_rational(b_sub));
+    const exact_rational up = exact_rational(std::nextafter(a_sub, 1.0));
+    REQUIRE(t_sub > exact_rational(a_sub));
+    REQUIRE(t_sub - exact_rational(a_sub) < up - t_sub);
+    const pose fall_from{0, a_sub, 0}, fall_to{0, b_sub, 0.001};
+    const polygon pin({test_shapes::ring({{0, 0}, {1, 2}, {-1, 2}})});
+    const contact_result<exact_rational> fall = first_contact<exact_rational>(floor, pin, fall_from, fall_to, rational);
+    CHECK(fall.contact);
+    CHECK(fall.time == exact_rational(a_sub));
+    CHECK(certified_first_contact(floor, pin, fall_from, fall_to, rational).time == a_sub);
+
     // B's vertex at its own origin slides along A's top edge's line (y = 0)
     // while B turns a little about it, and reaches A's corner (-10, 0)
     // exactly halfway.

@@ -503,12 +503,15 @@ double rounded_time(const rational_piece& piece, const std::vector<polynomial<NT
         const NT half = num<NT>(0.5), inverse_span = num<NT>(inverse);
         // The tau of the midpoint between the neighbouring doubles x < y:
         // (x - t0) / span + (y - x) / (2 span), the sum of two doubles when
-        // the first is one (the second is: a power of two), so that a double
-        // word holds it exactly and two midpoints met twice compare equal.
+        // both terms are (the second, a power of two, is unless it falls
+        // below the subnormals' step), so that a double word holds it
+        // exactly and two midpoints met twice compare equal; otherwise
+        // computed in NT.
         const auto tau_between = [&](double x, double y) {
+            const double gap = (y - x) * inverse, half_gap = gap / 2;
             double from_start;
-            if (exact_sum::exact_double_sum(x * inverse, -piece.t0 * inverse, from_start))
-                return NT(num<NT>(from_start) + num<NT>((y - x) * 0.5 * inverse));
+            if (half_gap + half_gap == gap && exact_sum::exact_double_sum(x * inverse, -piece.t0 * inverse, from_start))
+                return NT(num<NT>(from_start) + num<NT>(half_gap));
             return NT(NT(NT(NT(num<NT>(x) + num<NT>(y)) * half) - t0) * inverse_span);
         };
         // The side of the root against tau: -1 below it, 0 at it, +1 above.
