@@ -93,9 +93,7 @@ contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose&
         }
     }
     if (from.theta != to.theta && options.model == turning_model::rational) {
-        const rational_progress free = rational_advance(a, b, from, to);
-        if (free.apart) return contact_result<NT>{};
-        const contact_result<double> t = rational_first_contact<NT>(a, b, from, to, free.start);
+        const contact_result<double> t = advanced_rational_first_contact<NT>(a, b, from, to);
         return {t.contact, number_traits<NT>::from_double(t.time), t.static_feature, t.moving_feature};
     }
     if (from.theta != to.theta) return turning_first_contact<NT>(a, b, from, to, options);
@@ -147,10 +145,8 @@ contact_result<double> filtered_first_contact(const polygon& a, const polygon& b
                                                    scaled_by_power_of_two(from, k), scaled_by_power_of_two(to, k),
                                                    scaled);
     }
-    if (from.theta != to.theta && options.model == turning_model::rational) {
-        const rational_progress free = rational_advance(a, b, from, to);
-        return free.apart ? contact_result<double>{} : rational_first_contact<Exact>(a, b, from, to, free.start);
-    }
+    if (from.theta != to.theta && options.model == turning_model::rational)
+        return advanced_rational_first_contact<Exact>(a, b, from, to);
     if (from.theta != to.theta) return filtered_turning_first_contact<Exact, Fine>(a, b, from, to, options);
     contact_result<double> r;
     const auto met = fallback<>::run([&] { return meeting_at_start<certified>(a, b, from, m.start); },

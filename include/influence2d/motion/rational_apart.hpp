@@ -122,6 +122,16 @@ inline rational_progress rational_advance(const polygon& a, const polygon& b, co
     return out;
 }
 
+/// The first contact in the rational model (rational_first_contact<NT>),
+/// conservative advancement first (rational_advance): no contact when it
+/// proves the whole motion free, else the search from where it stopped.
+template <class NT>
+contact_result<double> advanced_rational_first_contact(const polygon& a, const polygon& b, const pose& from,
+                                                       const pose& to) {
+    const rational_progress free = rational_advance(a, b, from, to);
+    return free.apart ? contact_result<double>{} : rational_first_contact<NT>(a, b, from, to, free.start);
+}
+
 /// Whether the rational motion of B from `from` to `to` certainly keeps the
 /// convex A and B apart (rational_advance proves all of it): false means
 /// nothing (they may meet).
