@@ -12,6 +12,8 @@ scattered to the workers once and the tasks name them; a layer given as a
 dask collection is read and packed on the workers and stays there.
 """
 
+import pickle
+
 import numpy as np
 
 from . import _core
@@ -65,15 +67,21 @@ def _sequence(values, name):
 
 def _audit_chunk(items, start, max_per_kind, threads, columns):
     """The findings of one chunk (items as the audit reads them), each row
-    with its polygon's position in the whole layer: a frame of Python
-    objects (column types are inferred once, over the whole layer, as the
-    single-process audit infers them; a frame travels faster than rows),
+    with its polygon's position in the whole layer: a frame whose columns
+    pandas types from the chunk's rows as the single-process audit types
+    them from the layer's (numbers travel as arrays, not one object each),
     its texts as categories (each text sent once)."""
     import pandas as pd
     reports = _core.audit(items, "geoms", max_per_kind, threads)
     rows = [dict(polygon=start + k, **f) for k, r in enumerate(reports) for f in r["findings"]]
-    frame = pd.DataFrame(rows, columns=columns, dtype=object)
+    frame = pd.DataFrame(rows, columns=columns)
     return frame.astype({c: "category" for c in _AUDIT_TEXTS})
+
+
+def _audit_packed(packed, start, max_per_kind, threads, columns):
+    """_audit_chunk of a chunk sent pickled whole (one bytes object: Dask
+    sends a list of many items one by one, 20 times slower)."""
+    return _audit_chunk(pickle.loads(packed), start, max_per_kind, threads, columns)
 
 
 def _audit_partition(items, name, max_per_kind, threads, columns):
@@ -85,10 +93,20 @@ def _audit_partition(items, name, max_per_kind, threads, columns):
 
 def _audit_frame(frames):
     """The chunks' findings as one frame, typed as the single-process audit
-    types its columns (texts as objects, the others inferred)."""
+    types its columns: texts as objects; a column of numbers and None that
+    chunks typed apart (int64 in one, float64 or None only in another) as
+    float64, as pandas types such a column from all its values at once.
+    (The audit's other columns hold one kind of value each: bools, or
+    numbers in every row.)"""
     import pandas as pd
-    frame = pd.concat(frames, ignore_index=True)
-    return frame.astype({c: object for c in _AUDIT_TEXTS}).infer_objects()
+    for c in _AUDIT_TEXTS:  # (categories made one, so that pandas concatenates codes, not texts)
+        union = pd.api.types.union_categoricals([f[c] for f in frames]).categories
+        frames = [f.assign(**{c: f[c].cat.set_categories(union)}) for f in frames]
+    for c in frames[0].columns:
+        numeric = [f[c].dtype.kind in "if" for f in frames]
+        if any(numeric) and not all(numeric) and all(numeric[k] or f[c].isna().all() for k, f in enumerate(frames)):
+            frames = [f if numeric[k] else f.astype({c: float}) for k, f in enumerate(frames)]
+    return pd.concat(frames, ignore_index=True).astype({c: object for c in _AUDIT_TEXTS})
 
 
 def audit(geoms, client, chunk_size=1000, max_per_kind=50, threads=1):
@@ -132,8 +150,8 @@ def audit(geoms, client, chunk_size=1000, max_per_kind=50, threads=1):
     if not items:
         return pd.DataFrame([], columns=columns)
     starts = range(0, len(items), chunk_size)
-    chunks = client.scatter([items[s:s + chunk_size] for s in starts], hash=False)
-    tasks = [client.submit(_audit_chunk, c, s, max_per_kind, threads, columns, pure=False)
+    chunks = client.scatter([pickle.dumps(items[s:s + chunk_size], protocol=5) for s in starts], hash=False)
+    tasks = [client.submit(_audit_packed, c, s, max_per_kind, threads, columns, pure=False)
              for c, s in zip(chunks, starts)]
     found = [frame for frame in client.gather(tasks) if len(frame)]
     if not found:

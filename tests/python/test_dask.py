@@ -75,6 +75,25 @@ def test_audit_is_the_single_process_audit(client, rng, chunk_size):
     assert len(want) > len(layer) // 2
 
 
+def test_chunks_typed_apart_merge_as_the_rows_typed_at_once(rng):
+    # The audit's chunks are typed each by pandas, then merged: a column of
+    # numbers and None (ints in one chunk, None only or floats in another)
+    # must come out as pandas types all the rows at once; bools stay bools.
+    pools = [[1, 2], [None], [0.5, None], [3, None], [4]]
+    columns = ["polygon", "kind", "ring", "vertex", "x", "what", "effect", "rejects"]
+    for _ in range(300):
+        chosen = {c: [rng.choice(pools) for _ in range(3)] for c in ("ring", "vertex", "x")}
+        rows, frames = [], []
+        for part in range(3):
+            chunk = [dict(polygon=len(rows) + k, kind=rng.choice("ab"), what="w", effect=rng.choice("xyz"),
+                          rejects=rng.choice([True, False]), **{c: rng.choice(chosen[c][part]) for c in chosen})
+                     for k in range(rng.randint(1, 4))]
+            rows += chunk
+            frames.append(pd.DataFrame(chunk, columns=columns).astype({c: "category" for c in ("kind", "what",
+                                                                                            "effect")}))
+        pandas.testing.assert_frame_equal(influence2d.dask._audit_frame(frames), pd.DataFrame(rows, columns=columns))
+
+
 def test_audit_of_a_collection_read_on_the_workers(client, rng):
     import dask.bag
     layer = audit_layer_of(rng)
