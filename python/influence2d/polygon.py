@@ -162,6 +162,11 @@ def _offsets(offsets, name):
     a = np.asarray(offsets)
     if a.dtype.kind not in "iu":
         raise InvalidInput(f"{name}: expected integer offsets, got dtype {a.dtype}")
+    largest = np.uint64(np.iinfo(np.int64).max)  # (compared as uint64: as floats 2^63 and 2^63 - 1 are one)
+    if a.dtype.kind == "u" and a.size and a.max() > largest:  # (as int64 it would turn negative)
+        k = int(np.argmax(a > largest)) if a.ndim == 1 else None
+        at = f"[{k}]" if k is not None else ""
+        raise InvalidInput(f"{name}{at} is {a.max() if k is None else a[k]}: more than any offset can be")
     return a.astype(np.int64, copy=False)
 
 

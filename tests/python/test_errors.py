@@ -103,6 +103,10 @@ def test_bad_coords():
     raises(r"ring_offsets\[1\] is 9", Polygon.from_coords, xy, [0, 9])
     raises(r"ring_offsets\[2\] is 1, less than", Polygon.from_coords, xy, [0, 2, 1])
     raises("integer offsets", Polygon.from_coords, xy, [0.0, 4.0])
+    raises(r"ring_offsets\[1\] is 18446744073709551615: more than", Polygon.from_coords, xy,
+           np.array([0, 2**64 - 1], dtype=np.uint64))
+    raises(r"polygon_offsets\[1\] is 9223372036854775808: more than", Polygon.from_coords, xy, [0, 4],
+           np.array([0, 2**63], dtype=np.uint64))
     bad = xy.copy()
     bad[2, 1] = np.nan
     raises(r"coords\[2, 1\] is nan \(ring 0, vertex 2\)", Polygon.from_coords, bad, [0, 4])
