@@ -119,6 +119,10 @@ struct probe_result {
     /// gap between the projections of A and of posed B on n / |n| (within
     /// the probe's error), or (0, 0) when the probe knows none.
     point<double> axis{0, 0};
+    /// The regions certainly meet at the probe's exact pose (two edges
+    /// proven to cross there, the features): the distance is exactly 0,
+    /// whatever probe asks again.
+    bool meeting = false;
 };
 
 /// Where conservative advancement stopped: at a contact (`contact`), at the
@@ -170,7 +174,8 @@ struct steps_by_vertices<P, std::void_t<decltype(std::declval<const std::decay_t
 ///   loop:
 ///       L <- probe(motion_pose(t)) shrunk by an ulp, minus its error and delta
 ///           (a lower bound of the exact motion's distance at t)
-///       if L <= tol:  if coarse and refining: switch to fine, again at t
+///       if L <= tol:  if coarse, refining, and the probe did not prove the
+///                       regions meeting: switch to fine, again at t
 ///                     else contact at t
 ///       if t = 1:     none
 ///       if max_steps probes taken (max_steps > 0):  limited at t
@@ -202,7 +207,7 @@ advance_result advance(const polygon& b, const pose& from, const pose& to, doubl
         probe_result at = fine_stage ? fine(p) : coarse(p);
         const double lower = at.distance * (1 - distance_shrinking) - (fine_stage ? fine_error : coarse_error) - delta;
         if (lower <= tol) {
-            if (refine && !fine_stage) {
+            if (refine && !fine_stage && !at.meeting) {
                 fine_stage = true;
                 continue;
             }
@@ -368,7 +373,8 @@ private:
     // At the last probe's pose p, the first edge of A and the first of B
     // (in that order) that certainly cross (segments_must_cross, B's posed
     // vertices within posing_error of their exact places), as a probe at
-    // distance 0 with those edges, or none: none crosses for certain (one
+    // distance 0 with those edges, proven meeting (the exact regions at p
+    // cross there), or none: none crosses for certain (one
     // polygon inside the other, or edges that only touch), or there are
     // more than crossing_search_pairs edge pairs.
     std::optional<probe_result> certain_crossing(const pose& p) const {
@@ -381,7 +387,8 @@ private:
                     return probe_result{0,
                                         {feature_kind::edge, a_shape_.source_edge(i)},
                                         {feature_kind::edge, b_shape_.source_edge(j)},
-                                        {0, 0}};
+                                        {0, 0},
+                                        true};
         }
         return std::nullopt;
     }
@@ -448,7 +455,8 @@ advance_result advance_refined(const polygon& a, const polygon& b, const pose& f
 /// converge). A floating NT steps on its own query (double on convex_probe
 /// where it applies). An exact NT steps on the query in double (with its
 /// error bound; coarse_probe), or convex_probe, and, once that would stop,
-/// on its own exact query: the stop is decided on exact distances. A motion
+/// on its own exact query: the stop is decided on exact distances (a probe
+/// that proves two edges crossing is exact already: distance 0). A motion
 /// whose largest coordinate lies outside double's safe window is answered
 /// there on its input scaled by a power of two, the tolerance with it, when
 /// every coordinate scales exactly (as filtered_first_contact does, so that
