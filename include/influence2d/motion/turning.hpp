@@ -25,10 +25,13 @@
 #include "influence2d/core/pose.hpp"
 #include "influence2d/core/range_scaling.hpp"
 #include "influence2d/distance/convex_gap.hpp"
+#include "influence2d/distance/convex_nearest.hpp"
 #include "influence2d/distance/separation.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/number/certified.hpp"
+#include "influence2d/number/double_word.hpp"
 #include "influence2d/number/fallback.hpp"
+#include "influence2d/predicates/certain_nearest.hpp"
 #include "influence2d/predicates/contact_time.hpp"
 #include "influence2d/predicates/convexity.hpp"
 #include "influence2d/predicates/orientation.hpp"
@@ -501,6 +504,38 @@ contact_result<NT> turning_first_contact(const polygon& a, const polygon& b, con
     }
 }
 
+/// The exact distance at pose p between the convex A and B (convex_probe_applies)
+/// and their nearest features, when convex_gap's nearest pair there is
+/// proven the unique nearest one (nearest_convex_pair: in `certified`, in
+/// Exact when a sign is in doubt); its squared distance in double words,
+/// rounded by its bound as distance_of rounds the exact one
+/// (certain_nearest, for values in [word_floor, word_ceiling]), or in Exact
+/// when that rounding is in doubt. None when the proof fails (the polygons
+/// meet or touch, the nearest pair is not unique or not the candidate): the
+/// caller asks the separation then.
+template <class Exact>
+std::optional<probe_result> certified_convex_probe(const polygon& a, const polygon& b, const pose& p, double scale) {
+    std::vector<point<double>> av(a.size()), posed(b.size());
+    const rotation_pose placed(p);
+    for (std::size_t i = 0; i < a.size(); ++i) av[i] = a.vertex(i);
+    for (std::size_t j = 0; j < b.size(); ++j) posed[j] = placed.apply<double>(b.vertex(j));
+    const convex_gap_result hint =
+        convex_gap(av.data(), av.size(), posed.data(), posed.size(), scale, separation_error<double>(scale) / 4, {});
+    if (!hint.converged || !(hint.upper > 0)) return std::nullopt;
+    const std::optional<convex_nearest> n =
+        fallback<>::run([&] { return nearest_convex_pair<certified>(a, b, p, hint); },
+                        [&] { return nearest_convex_pair<Exact>(a, b, p, hint); });
+    if (!n) return std::nullopt;
+    const double distance = fallback<>::run(
+        [&] {
+            double squared;
+            if (!certain_nearest(nearest_pair_squared<double_word>(a, b, p, *n), squared)) throw uncertain_sign();
+            return std::sqrt(squared);
+        },
+        [&] { return distance_of<Exact>(nearest_pair_squared<Exact>(a, b, p, *n)); });
+    return probe_result{distance, n->static_feature, n->moving_feature};
+}
+
 /// As turning_first_contact in the exact field Exact, the fine probe being
 /// `Fine{}(a, b, p)`, whose answer has the exact distance rounded as
 /// distance_of rounds it (`distance`) and the exact features
@@ -512,7 +547,13 @@ template <class Exact, class Fine = void>
 contact_result<double> filtered_turning_first_contact(const polygon& a, const polygon& b, const pose& from,
                                                       const pose& to, const sweep_options& options) {
     std::optional<separation_query<double>> coarse;
+    std::optional<bool> convex;  // (convex_probe_applies, asked on the first fine probe)
     const auto fine = [&](const pose& p) {
+        if (!convex) convex = convex_probe_applies(a, b, from, to);
+        if (*convex)
+            if (const std::optional<probe_result> n =
+                    certified_convex_probe<Exact>(a, b, p, motion_scale(a, b, from, to)))
+                return *n;
         if constexpr (std::is_void_v<Fine>) {
             const separation_result<Exact> s = separation<Exact>(a, b, p);
             return probe_result{distance_of<Exact>(s.squared_distance), s.static_feature, s.moving_feature};

@@ -94,6 +94,13 @@ bool at_contact(const NT& squared) {
     return number_traits<NT>::sign(squared) == 0;
 }
 
+/// Whether q lies strictly beyond p along the direction d: (q - p).d > 0,
+/// the sign by number_traits.
+template <class NT>
+bool strictly_beyond(const point<NT>& p, const point<NT>& q, const point<NT>& d) {
+    return number_traits<NT>::sign(NT(NT(q.x - p.x) * d.x + NT(q.y - p.y) * d.y)) > 0;
+}
+
 /// Where a point lies on [a, b], given that it lies on it: start when it is
 /// a, end when it is b (and not a), else interior. Exact when NT is.
 template <class NT>
