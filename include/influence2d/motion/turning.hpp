@@ -542,7 +542,9 @@ std::optional<probe_result> certified_convex_probe(const polygon& a, const polyg
 /// (certified_separation_of, exact/certified_separation.hpp: the separation
 /// in double words, in exact rationals where their bounds leave a sign in
 /// doubt); with Fine void, separation<Exact> on the polygons. Either gives
-/// the exact route's distances: the same steps, so the same answer.
+/// the exact route's distances: the same steps, so the same answer. For
+/// two convex polygons (convex_probe_applies) certified_convex_probe answers
+/// first: a nearest pair proven unique is the one every exact route finds.
 template <class Exact, class Fine = void>
 contact_result<double> filtered_turning_first_contact(const polygon& a, const polygon& b, const pose& from,
                                                       const pose& to, const sweep_options& options) {
