@@ -347,7 +347,8 @@ inline part_turns turns_of(const rational_piece& piece) {
 inline box arc_box(const rational_piece& piece, const part_turns& turns, point<double> p, bool inverse, std::size_t k) {
     const double c = piece.c, s = inverse ? -piece.s : piece.s;
     box b;
-    const point<double> r{c * p.x - s * p.y, s * p.x + c * p.y};
+    // (For `inverse`: p after the inverse base rotation, turned back at each end below.)
+    const point<double> r = inverse ? point<double>{c * p.x - s * p.y, s * p.x + c * p.y} : p;
     for (const std::size_t end : {k, k + 1}) {
         const double tc = turns.cos[end], ts = turns.sin[end];
         if (!inverse) {
