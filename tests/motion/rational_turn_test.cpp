@@ -175,6 +175,55 @@ TEST_CASE("rational turning: random multipolygons and stars against the exact re
                     << n.double_differs << ", times " << n.double_time_differs);
 }
 
+/// The counts of check_against_whole_search.
+struct window_tally {
+    std::size_t guessed = 0, within = 0, beyond = 0, forced = 0;
+};
+
+/// Checks the certified answer of one convex motion against the exact
+/// search over whole pieces (rational_first_contact without advancement's
+/// start, free part or guessed window): the same contact and time, and
+/// the same features after the start (at the start either names features
+/// that meet there); counts where advancement's guess of the contact
+/// (rational_start::until) held it, and where the contact lay beyond; and
+/// the same answer from advancement's start with other guesses.
+void check_against_whole_search(const polygon& a, const polygon& b, const pose& from, const pose& to, window_tally& w) {
+    INFO("from (" << from.tx << ", " << from.ty << ", " << from.theta << ") to (" << to.tx << ", " << to.ty << ", "
+                  << to.theta << ")");
+    const contact_result<double> whole = rational_first_contact<exact_rational>(a, b, from, to);
+    const contact_result<double> c = certified_first_contact(a, b, from, to, rational);
+    CHECK(c.contact == whole.contact);
+    CHECK(c.time == whole.time);
+    if (c.contact && c.time > 0) {
+        CHECK(c.static_feature.kind == whole.static_feature.kind);
+        CHECK(c.static_feature.index == whole.static_feature.index);
+        CHECK(c.moving_feature.index == whole.moving_feature.index);
+    }
+    const sweep::rational_progress p = sweep::rational_advance(a, b, from, to);
+    if (p.apart) return;
+    const rational_piece piece = rational_pieces(from, to)[p.start.piece];
+    const double span = piece.t1 - piece.t0;
+    if (p.start.until > p.start.tau) {
+        ++w.guessed;
+        ++(whole.contact && whole.time <= piece.t0 + p.start.until * span ? w.within : w.beyond);
+    }
+    // Other guesses: short of the contact (its window empty), at it, just
+    // short of it, and beyond it; the answer stays.
+    if (!whole.contact || !(whole.time > piece.t0) || !(whole.time <= piece.t1)) return;
+    const double at = (whole.time - piece.t0) / span, tau = p.start.tau;
+    for (const double until : {tau + (at - tau) / 2, at, std::nextafter(at, 0.0), at + (1 - at) / 2}) {
+        if (!(until > tau) || until > 1) continue;
+        INFO("guess " << until << ", contact at " << at);
+        ++w.forced;
+        const contact_result<double> r =
+            rational_first_contact<exact_rational>(a, b, from, to, {p.start.piece, tau, until});
+        CHECK(r.contact);
+        CHECK(r.time == whole.time);
+        CHECK(r.static_feature.index == whole.static_feature.index);
+        CHECK(r.moving_feature.index == whole.moving_feature.index);
+    }
+}
+
 TEST_CASE("rational turning: convex pairs proven apart by advancement", "[rational_turn]") {
     // Two convex polygons (on ellipses, 3 to 16 vertices): where
     // rational_apart says the rational motion keeps them apart, the exact
@@ -183,6 +232,7 @@ TEST_CASE("rational turning: convex pairs proven apart by advancement", "[ration
     // above too (the queries answer with rational_apart first).
     test_random::rng g(0x4a9a7ULL);
     tally n;
+    window_tally w;
     std::size_t apart = 0, tried = 0;
     for (int scene = 0; scene < test_effort::scaled(24); ++scene) {
         const double size = std::ldexp(1.0, static_cast<int>(g.uniform(-6, 6)));
@@ -204,6 +254,7 @@ TEST_CASE("rational turning: convex pairs proven apart by advancement", "[ration
                 for (int i = 0; i <= 200; ++i) CHECK_FALSE(meet_at(a, b, from, to, double(i) / 200));
             }
             check_motion(a, b, from, to, 50, n);
+            check_against_whole_search(a, b, from, to, w);
         }
         // A thin bar turning in place beside A, long enough to sweep through
         // it while neither end pose meets it (tunnelling unless the steps
@@ -221,11 +272,16 @@ TEST_CASE("rational turning: convex pairs proven apart by advancement", "[ration
                 for (int i = 0; i <= 200; ++i) CHECK_FALSE(meet_at(a, bar, from, to, double(i) / 200));
             }
             check_motion(a, bar, from, to, 50, n);
+            check_against_whole_search(a, bar, from, to, w);
         }
     }
-    WARN("convex pairs turning: " << tried << " motions, " << apart << " proven apart, " << n.contacts << " contacts");
+    WARN("convex pairs turning: " << tried << " motions, " << apart << " proven apart, " << n.contacts << " contacts; "
+                                  << w.guessed << " contacts guessed, " << w.within << " within the guess, " << w.beyond
+                                  << " beyond it; " << w.forced << " other guesses");
     CHECK(apart > tried / 5);
     CHECK(n.contacts > tried / 5);
+    CHECK(w.within > 0);
+    CHECK(w.forced > 0);
 }
 
 TEST_CASE("rational turning: a vertex grazing an edge, sliding along one, touching at the start", "[rational_turn]") {

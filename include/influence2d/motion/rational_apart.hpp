@@ -47,6 +47,20 @@ inline constexpr double rational_apart_floor = 0x1p-10;
 /// The most probes rational_advance takes per piece.
 inline constexpr std::size_t rational_apart_probes = 64;
 
+/// How far beyond where rational_advance stops the search looks first
+/// (rational_start::until), in times the time the last gap takes to close
+/// at the rate it closed between the last two probes (or at the speed
+/// bound after one): the gap's closing accelerates little over so short a
+/// time, so that the contact mostly lies within twice that.
+inline constexpr double rational_window_reach = 2;
+
+/// The share of the speed bound at which rational_advance takes a gap to
+/// close when one probe alone measured it: the bound adds the whole turn's
+/// sweep and the whole translation as if both went straight at A; on the
+/// turning study's convex motions that stop at their first probe, the
+/// contact mostly lies within a quarter of the speed bound's reach.
+inline constexpr double rational_speed_share = 0.25;
+
 /// How far rational_advance took a rational motion: the whole of it proven
 /// free, or where the search must start (rational_start: the motion proven
 /// free before it).
@@ -70,7 +84,9 @@ struct rational_progress {
 ///           B's vertices posed in double at tau; g <- convex_gap from the last simplex
 ///           L <- g's lower bound - 1.5 delta - 4 v 2^-52   (a lower bound of the exact
 ///                motion's distance over [tau - the rounding of tau, tau])
-///           if g did not converge or L <= floor:  free before (this piece, tau)
+///           if g did not converge or L <= floor:  free before (this piece, tau);
+///               the contact guessed by tau + reach L / (the rate at which L fell
+///               since the last probe, or s share after the first)  (rational_start::until)
 ///           if tau = 1:  next piece
 ///           s <- min(v, approach_speed along g's axis: 2 |w| r less B's translation towards A)
 ///           tau <- min(1, tau + L / s, a little less)     (free up to it: the distance
@@ -93,7 +109,7 @@ inline rational_progress rational_advance(const polygon& a, const polygon& b, co
         const rational_piece& piece = pieces[k];
         const double span = piece.t1 - piece.t0, sweep = 2 * std::fabs(piece.w) * r * (1 + speed_widening);
         const double v = (std::hypot(shift.x, shift.y) * span + sweep) * (1 + speed_widening);
-        double tau = 0;
+        double tau = 0, last_tau = 0, last_lower = 0;
         for (std::size_t probe = 0;; ++probe) {
             if (probe == rational_apart_probes) return out;
             const double u = piece.w * tau, h = 1 + u * u, c2 = (1 - u * u) / h, s2 = 2 * u / h;
@@ -107,11 +123,22 @@ inline rational_progress rational_advance(const polygon& a, const polygon& b, co
             const convex_gap_result g = convex_gap(av.data(), av.size(), posed.data(), posed.size(), scale,
                                                    separation_error<double>(scale) / 4, last);
             const double lower = g.lower - posing_spread * delta - 4 * v * 0x1p-52;
-            if (!g.converged || !(lower > floor)) return out;
+            const auto speed = [&] {
+                return std::min(v, approach_speed(g.axis, {shift.x * span, shift.y * span}, sweep, v));
+            };
+            if (!g.converged || !(lower > floor)) {
+                if (g.converged && lower > 0) {
+                    const double rate = probe > 0 && last_lower > lower ? (last_lower - lower) / (tau - last_tau)
+                                                                        : speed() * rational_speed_share;
+                    out.start.until = std::min(1.0, tau + rational_window_reach * lower / rate);
+                }
+                return out;
+            }
             last = g;
             if (tau == 1) break;
-            const double speed = std::min(v, approach_speed(g.axis, {shift.x * span, shift.y * span}, sweep, v));
-            tau = std::min(1.0, tau + lower / speed * (1 - distance_shrinking));
+            last_tau = tau;
+            last_lower = lower;
+            tau = std::min(1.0, tau + lower / speed() * (1 - distance_shrinking));
             out.start = {k, tau};
         }
         // (The next piece starts at another formula's pose: its start is

@@ -60,10 +60,15 @@ struct rational_piece {
 
 /// Where rational_first_contact's search starts: the motion is known to keep
 /// the polygons apart before piece `piece`, and over [0, tau] of it when tau
-/// > 0 (sweep::rational_advance proves so much for convex pairs).
+/// > 0 (sweep::rational_advance proves so much for convex pairs); a guess
+/// of where in that piece the contact lies, searched first.
 struct rational_start {
     std::size_t piece = 0;  ///< the first piece searched
     double tau = 0;         ///< free through this tau of it (when > 0)
+    /// A guess: the first contact, if any, by this tau of the piece (the
+    /// window (tau, until] is searched first when until > tau; no guess
+    /// otherwise). Only the work depends on it, not the answer.
+    double until = 0;
 };
 
 /// The pieces of the rational motion from `from` to `to` (docs/sweep.md):
@@ -309,42 +314,49 @@ inline constexpr int sifting_depth = 4;
 inline constexpr double arc_box_slack = 0x1p-40;
 
 /// How many parts of equal time the boxes of a piece's vertices are made
-/// over (swept_parts): a quarter turn's arc boxed whole is as wide as its
-/// radius; a quarter of it a quarter as wide, so that fewer edges meet it.
-inline constexpr int box_parts = 4;
+/// over (swept_parts) when the whole piece is searched: a quarter turn's arc
+/// boxed whole is as wide as its radius; a quarter of it a quarter as wide,
+/// so that fewer edges meet it.
+inline constexpr std::size_t box_parts = 4;
 
-/// The turn of a piece at the ends of its box_parts parts, the same for
-/// every point: at u = w k / box_parts, the cosine (1 - u^2) / (1 + u^2)
-/// and the sine 2u / (1 + u^2) of the turn 2 atan(u); and each part's
-/// bulge factor 1 - 1 / sqrt(1 + v^2) (arc_box).
+/// The turn of a piece at the ends of Parts parts of equal time of a window
+/// [from, to] of it (tau), the same for every point: the ends' taus; at u =
+/// w tau, the cosine (1 - u^2) / (1 + u^2) and the sine 2u / (1 + u^2) of
+/// the turn 2 atan(u); and each part's bulge factor 1 - 1 / sqrt(1 + v^2)
+/// (arc_box).
+template <std::size_t Parts>
 struct part_turns {
-    std::array<double, box_parts + 1> cos, sin;
-    std::array<double, box_parts> bulge;
+    std::array<double, Parts + 1> tau, cos, sin;
+    std::array<double, Parts> bulge;
 };
 
-/// The part_turns of a piece.
-inline part_turns turns_of(const rational_piece& piece) {
-    part_turns out;
-    for (std::size_t k = 0; k <= std::size_t{box_parts}; ++k) {
-        const double u = piece.w * (double(k) / box_parts), h = 1 + u * u;
+/// The part_turns of the window [from, to] of a piece (its last end `to`
+/// itself; on [0, 1] the ends k / Parts, exact for a power of two).
+template <std::size_t Parts>
+part_turns<Parts> turns_of(const rational_piece& piece, double from, double to) {
+    part_turns<Parts> out;
+    for (std::size_t k = 0; k <= Parts; ++k) {
+        out.tau[k] = k == Parts ? to : from + (to - from) * (double(k) / Parts);
+        const double u = piece.w * out.tau[k], h = 1 + u * u;
         out.cos[k] = (1 - u * u) / h;
         out.sin[k] = 2 * u / h;
         if (k == 0) continue;
-        const double ua = piece.w * (double(k - 1) / box_parts);
+        const double ua = piece.w * out.tau[k - 1];
         const double v = std::fabs(u - ua) / (1 + ua * u);
         out.bulge[k - 1] = 1 - 1 / std::sqrt(1 + v * v);
     }
     return out;
 }
 
-/// The box that holds every place of the point p over part k of the piece
-/// (u from w k / box_parts to w (k + 1) / box_parts), turned about the
-/// origin after the base rotation (c, s): the box of its two ends grown by
-/// the arc's bulge over its chord, |p| (1 - cos(theta / 2)) = |p| (1 - 1 /
-/// sqrt(1 + v^2)), v = tan(theta / 2) = (ub - ua) / (1 + ua ub) for the
-/// arc's angle theta, and by the filters' slack. (`inverse` for A's vertex
-/// in B's frame: turned the other way, after the inverse base rotation.)
-inline box arc_box(const rational_piece& piece, const part_turns& turns, point<double> p, bool inverse, std::size_t k) {
+/// The box that holds every place of the point p over part k of the
+/// window (u from w tau_k to w tau_k+1), turned about the origin after the
+/// base rotation (c, s): the box of its two ends grown by the arc's bulge
+/// over its chord, |p| (1 - cos(theta / 2)) = |p| (1 - 1 / sqrt(1 + v^2)),
+/// v = tan(theta / 2) = (ub - ua) / (1 + ua ub) for the arc's angle theta,
+/// and by the filters' slack. (`inverse` for A's vertex in B's frame:
+/// turned the other way, after the inverse base rotation.)
+template <std::size_t Parts>
+box arc_box(const rational_piece& piece, const part_turns<Parts>& turns, point<double> p, bool inverse, std::size_t k) {
     const double c = piece.c, s = inverse ? -piece.s : piece.s;
     box b;
     // (For `inverse`: p after the inverse base rotation, turned back at each end below.)
@@ -362,15 +374,15 @@ inline box arc_box(const rational_piece& piece, const part_turns& turns, point<d
     return b.inflated(radius * turns.bulge[k] + arc_box_slack * radius + std::numeric_limits<double>::min());
 }
 
-/// The boxes of a point over the box_parts parts of the piece: the point
-/// turned (arc_box) plus the translation over the same part (`shift` at
-/// tau is a0 + a1 tau; subtracted for A's vertex in B's frame), grown by
-/// the slack.
-inline std::array<box, box_parts> swept_parts(const rational_piece& piece, const part_turns& turns, point<double> p,
-                                              bool inverse, const piece_translation<double>& shift, double slack) {
-    std::array<box, box_parts> out;
-    for (std::size_t k = 0; k < std::size_t{box_parts}; ++k) {
-        const double t0 = double(k) / box_parts, t1 = double(k + 1) / box_parts;
+/// The boxes of a point over the parts of the window: the point turned
+/// (arc_box) plus the translation over the same part (`shift` at tau is a0
+/// + a1 tau; subtracted for A's vertex in B's frame), grown by the slack.
+template <std::size_t Parts>
+std::array<box, Parts> swept_parts(const rational_piece& piece, const part_turns<Parts>& turns, point<double> p,
+                                   bool inverse, const piece_translation<double>& shift, double slack) {
+    std::array<box, Parts> out;
+    for (std::size_t k = 0; k < Parts; ++k) {
+        const double t0 = turns.tau[k], t1 = turns.tau[k + 1];
         const point<double> s0{shift.a0.x + t0 * shift.a1.x, shift.a0.y + t0 * shift.a1.y},
             s1{shift.a0.x + t1 * shift.a1.x, shift.a0.y + t1 * shift.a1.y};
         box& b = out[k];
@@ -400,16 +412,13 @@ inline edge_box sweep_entry(const box& b, std::size_t k) {
     return {b.min_x, b.max_x, b.min_y, b.max_y, static_cast<std::uint32_t>(k)};
 }
 
-/// Whether part k of box_parts ends at or before `known` (free).
-inline bool part_known_free(int k, double known) { return double(k + 1) / box_parts <= known; }
-
-/// The start (tau) of the first part whose box meets `edge`, the parts known
-/// free (part_known_free) left out, or none.
-inline std::optional<double> first_part_meeting(const std::array<box, box_parts>& parts, const box& edge,
-                                                double known) {
-    for (int k = 0; k < box_parts; ++k)
-        if (!part_known_free(k, known) && boxes_overlap(parts[static_cast<std::size_t>(k)], edge))
-            return double(k) / box_parts;
+/// The start (tau) of the first part of the window whose box meets `edge`,
+/// the parts that end at or before `known` (free) left out, or none.
+template <std::size_t Parts>
+std::optional<double> first_part_meeting(const part_turns<Parts>& turns, const std::array<box, Parts>& parts,
+                                         const box& edge, double known) {
+    for (std::size_t k = 0; k < Parts; ++k)
+        if (turns.tau[k + 1] > known && boxes_overlap(parts[k], edge)) return turns.tau[k];
     return std::nullopt;
 }
 
@@ -422,21 +431,22 @@ struct piece_contact {
     isolated_root<NT> root;
 };
 
-/// The earliest root in (after, 1] of the cubics' f at which lo and hi are
-/// >= 0 (in (after, 1) when `open_end`: the next piece starts at 1),
-/// bracketed; none
+/// The earliest root in (after, end] of the cubics' f at which lo and hi
+/// are >= 0 (in (after, end) when `open_end`: the next piece starts at end
+/// = 1), bracketed; none
 /// when there is none (or f is identically zero: the point slides along the
 /// segment's line, and reaches the segment only at an end, a vertex of the
 /// polygon, where another pair's f finds the contact).
 template <class NT>
 std::optional<std::pair<std::vector<polynomial<NT>>, isolated_root<NT>>> earliest_root(const contact_cubics<NT>& k,
-                                                                                       double after, bool open_end) {
+                                                                                       double after, double end,
+                                                                                       bool open_end) {
     if (k.f.degree() < 1) return std::nullopt;  // identically zero, or a non-zero constant
     std::vector<polynomial<NT>> s = sturm_sequence(k.f);
-    const NT one = num<NT>(1);
-    const bool root_at_end = open_end && k.f.sign_at(one) == 0;
-    for (isolated_root<NT> r : isolate_roots(s, num<NT>(after), one)) {
-        if (root_at_end && compare_values<NT>(r.high, one) == 0) break;  // (the bracket's root is 1, its last)
+    const NT last = num<NT>(end);
+    const bool root_at_end = open_end && k.f.sign_at(last) == 0;
+    for (isolated_root<NT> r : isolate_roots(s, num<NT>(after), last)) {
+        if (root_at_end && compare_values<NT>(r.high, last) == 0) break;  // (the bracket's root is end, its last)
         narrowed_by_double(s, r);  // (cheap: the signs below and the rounding then take a step or two)
         if (sign_at_root(k.lo, s, r) >= 0 && sign_at_root(k.hi, s, r) >= 0) return std::make_pair(std::move(s), r);
     }
@@ -546,14 +556,17 @@ double rounded_time(const rational_piece& piece, const std::vector<polynomial<NT
 }
 
 /// The first contact among a piece's kept pairs, in R (sorted by `after`):
-/// the pair whose cubic f has the earliest root after its `after` at which
-/// lo and hi are >= 0 (earliest_root; ties: site_before), with that time
-/// rounded to the nearest double (rounded_time); none when no pair has one.
-/// The pairs whose `after` lies beyond the best root found are left.
+/// the pair whose cubic f has the earliest root after its `after`, at or
+/// before `end` (before it when the piece is not the last and end is 1),
+/// at which lo and hi are >= 0 (earliest_root; ties: site_before), with
+/// that time rounded to the nearest double (rounded_time); none when no
+/// pair has one. The pairs whose `after` lies beyond the best root found
+/// are left.
 template <class R>
 std::optional<std::pair<sweep::contact_site, double>> earliest_kept_contact(const polygon& a, const polygon& b,
                                                                             const pose& from, const pose& to,
                                                                             const rational_piece& piece, bool last,
+                                                                            double end,
                                                                             const std::vector<kept_pair>& kept) {
     const piece_translation<R> t = translation_of<R>(piece, from, to);
     // The factor l of cubics_of: 1 in A's frame, c^2 + s^2 in B's.
@@ -567,7 +580,7 @@ std::optional<std::pair<sweep::contact_site, double>> earliest_kept_contact(cons
         const polygon& edges = c.site.moving_vertex ? a : b;
         auto found = earliest_root(cubics_of(m, w2, c.site.moving_vertex ? one : base, edges.vertex(c.site.edge),
                                              edges.vertex(edges.next(c.site.edge))),
-                                   c.after, !last);
+                                   c.after, end, !last && end == 1);
         if (!found) continue;
         piece_contact<R> contact{c.site, std::move(found->first), found->second};
         if (best) {
@@ -578,6 +591,115 @@ std::optional<std::pair<sweep::contact_site, double>> earliest_kept_contact(cons
     }
     if (!best) return std::nullopt;
     return std::pair{best->site, rounded_time(piece, best->sequence, best->root)};
+}
+
+/// The cubic a(tau) (lowest degree first) as a cubic in x for tau = from
+/// + d x, d = to - from, in Filter (Taylor's shift at `from`, scaled): a(from),
+/// d a'(from), d^2 a''(from) / 2, d^3 a3; so that its Bernstein coefficients
+/// on [0, 1] are a's on [from, to].
+template <class Filter>
+std::array<Filter, 4> on_window(const std::array<Filter, 4>& a, double from, double to) {
+    const Filter k = num<Filter>(from), d = Filter(num<Filter>(to) - k), three = num<Filter>(3);
+    const Filter a3k = Filter(three * a[3] * k);
+    const Filter d2 = Filter(d * d);
+    return {Filter(((a[3] * k + a[2]) * k + a[1]) * k + a[0]), Filter(d * ((a3k + a[2] + a[2]) * k + a[1])),
+            Filter(d2 * (a3k + a[2])), Filter(d2 * d * a[3])};
+}
+
+/// The first contact of a piece in the window (known, to] (through `known`
+/// the motion is free; from <= known < to), with its time rounded, or
+/// none. The vertex-edge pairs whose boxes over one of Parts parts of equal
+/// time of [from, to] (swept_parts) not ending by `known` meet are sifted
+/// in Filter over [from, to] (their Bernstein coefficients there, halved
+/// `depth` times: 0 unless the window is [0, 1], whose halves are exact
+/// doubles), and the earliest root among those kept sought in double words
+/// or in NT (rational_first_contact's pseudocode).
+template <class NT, class Filter, std::size_t Parts>
+std::optional<std::pair<sweep::contact_site, double>> contact_within(const polygon& a, const polygon& b,
+                                                                     const pose& from, const pose& to,
+                                                                     const rational_piece& piece, bool last,
+                                                                     double scale, double window_from, double window_to,
+                                                                     double known, int depth) {
+    const piece_translation<Filter> tf = translation_of<Filter>(piece, from, to);
+    // The translation over the piece, in double (for the boxes).
+    const piece_translation<double> td = translation_of<double>(piece, from, to);
+    const double slack = arc_box_slack * scale + std::numeric_limits<double>::min();
+    const part_turns<Parts> turns = turns_of<Parts>(piece, window_from, window_to);
+    const bool whole = window_from == 0 && window_to == 1;
+    const Filter wf = num<Filter>(piece.w), w2f = Filter(wf * wf);
+    // The factor l of cubics_of: 1 in A's frame, c^2 + s^2 in B's.
+    const Filter one_f = num<Filter>(1), base_f = Filter(num<Filter>(piece.c) * num<Filter>(piece.c) +
+                                                         num<Filter>(piece.s) * num<Filter>(piece.s));
+
+    // Each pair whose boxes over the window meet, sifted in Filter: where
+    // in the window its contact may be (first_possible), or none.
+    std::vector<kept_pair> kept;
+    const auto sift = [&](const sweep::contact_site& site, const moving_point<Filter>& m, const Filter& l,
+                          const point<double>& p, const point<double>& q, double from_box) {
+        const cubic_coefficients<Filter> k = coefficients_of(m, w2f, l, p, q);
+        const auto on = [&](std::size_t i) {
+            return bernstein_of(whole ? k[i] : on_window(k[i], window_from, window_to));
+        };
+        if (const std::optional<double> at = first_possible(on(0), on(1), on(2), window_from, window_to, depth, known))
+            kept.push_back({site, std::max({*at, from_box, known})});
+    };
+    // B's vertices against A's edges, in A's frame; A's vertices against
+    // B's edges, in B's frame (q less the translation, turned back): the
+    // pairs whose boxes over the window overlap (sort and sweep along x,
+    // sweep_along_x), then their parts.
+    for (const bool moving : {true, false}) {
+        const polygon &vertices = moving ? b : a, &edges = moving ? a : b;
+        std::vector<box> edge_boxes(edges.size());
+        std::vector<edge_box> edge_order(edges.size()), vertex_order(vertices.size());
+        for (std::size_t e = 0; e < edges.size(); ++e) {
+            edge_boxes[e].add(edges.vertex(e));
+            edge_boxes[e].add(edges.vertex(edges.next(e)));
+            edge_order[e] = sweep_entry(edge_boxes[e], e);
+        }
+        std::vector<std::array<box, Parts>> parts(vertices.size());
+        for (std::size_t v = 0; v < vertices.size(); ++v) {
+            parts[v] = swept_parts(piece, turns, vertices.vertex(v), !moving, td, slack);
+            box whole_box;
+            for (std::size_t k = 0; k < Parts; ++k) {
+                if (turns.tau[k + 1] <= known) continue;  // (free)
+                whole_box.add({parts[v][k].min_x, parts[v][k].min_y});
+                whole_box.add({parts[v][k].max_x, parts[v][k].max_y});
+            }
+            vertex_order[v] = sweep_entry(whole_box, v);
+        }
+        const auto by_min_x = [](const edge_box& l, const edge_box& m) { return l.min_x < m.min_x; };
+        std::sort(edge_order.begin(), edge_order.end(), by_min_x);
+        std::sort(vertex_order.begin(), vertex_order.end(), by_min_x);
+        std::vector<std::optional<moving_point<Filter>>> mf(vertices.size());
+        sweep_along_x(
+            vertex_order, 0, vertex_order.size(), edge_order, 0, edge_order.size(),
+            [](const edge_box& k) -> const edge_box& { return k; },
+            [&](std::size_t i, std::size_t j) {
+                const std::size_t v = vertex_order[i].edge, e = edge_order[j].edge;
+                const std::optional<double> from_box = first_part_meeting(turns, parts[v], edge_boxes[e], known);
+                if (!from_box) return false;
+                if (!mf[v])
+                    mf[v] = moving ? moving_vertex<Filter>(piece, tf, vertices.vertex(v))
+                                   : moving_static_vertex<Filter>(piece, tf, vertices.vertex(v));
+                sift({moving, static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(e)}, *mf[v],
+                     moving ? one_f : base_f, edges.vertex(e), edges.vertex(edges.next(e)), *from_box);
+                return false;
+            });
+    }
+    // The kept pairs in order of where their contact may start; the
+    // earliest root among them (earliest_kept_contact): in double words
+    // first when NT is an exact field (their signs exact or none), in NT
+    // when one is in doubt.
+    std::sort(kept.begin(), kept.end(), [](const kept_pair& x, const kept_pair& y) {
+        return x.after != y.after ? x.after < y.after : sweep::site_before(x.site, y.site);
+    });
+    if constexpr (number_traits<NT>::category == number_category::exact) {
+        return fallback<>::run(
+            [&] { return earliest_kept_contact<double_word>(a, b, from, to, piece, last, window_to, kept); },
+            [&] { return earliest_kept_contact<NT>(a, b, from, to, piece, last, window_to, kept); });
+    } else {
+        return earliest_kept_contact<NT>(a, b, from, to, piece, last, window_to, kept);
+    }
 }
 
 }  // namespace rational_turn_detail
@@ -596,6 +718,9 @@ std::optional<std::pair<sweep::contact_site, double>> earliest_kept_contact(cons
 ///     known = 0 and A and B at the piece's start meet (the one-shot query,
 ///       B's vertices posed exactly; in Filter first):
 ///                                               time t0, the features met
+///     in start's piece, when start.until > known: the window (known, until]
+///       first, as below with one box for its whole time and no halving:
+///       a contact there is the first; else known <- until
 ///     for each vertex of B and edge of A, and each vertex of A and edge
 ///     of B (in B's frame), whose boxes over a quarter of the piece not
 ///     ending by `known` meet (swept_parts: arcs boxed by their ends and
@@ -626,24 +751,32 @@ contact_result<double> rational_first_contact(const polygon& a, const polygon& b
     const double scale = coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) + std::fabs(from.ty) +
                          std::fabs(to.tx) + std::fabs(to.ty);
     contact_result<double> r;
+    const auto contact_at = [&](const std::pair<sweep::contact_site, double>& found) {
+        r.contact = true;
+        r.time = found.second;
+        std::tie(r.static_feature, r.moving_feature) = sweep::site_features(a, b, found.first);
+        return r;
+    };
     const std::vector<rational_piece> pieces = rational_pieces(from, to);
     for (std::size_t index = start.piece; index < pieces.size(); ++index) {
         const rational_piece& piece = pieces[index];
         const bool last = index + 1 == pieces.size();
-        const double known = index == start.piece ? start.tau : 0;
+        double known = index == start.piece ? start.tau : 0;
         if (known >= 1) continue;
-        const piece_translation<Filter> tf = translation_of<Filter>(piece, from, to);
         const auto met = [&]() -> std::optional<std::pair<feature, feature>> {
             if (known > 0) return std::nullopt;
             if constexpr (std::is_same_v<Filter, NT>) {
                 return meeting_at_piece_start<NT>(a, b, piece, translation_of<NT>(piece, from, to), scale);
             } else {
                 // In Filter first, in NT when a sign is in doubt.
-                return fallback<>::run([&] { return meeting_at_piece_start<Filter>(a, b, piece, tf, scale); },
-                                       [&] {
-                                           return meeting_at_piece_start<NT>(
-                                               a, b, piece, translation_of<NT>(piece, from, to), scale);
-                                       });
+                return fallback<>::run(
+                    [&] {
+                        return meeting_at_piece_start<Filter>(a, b, piece, translation_of<Filter>(piece, from, to),
+                                                              scale);
+                    },
+                    [&] {
+                        return meeting_at_piece_start<NT>(a, b, piece, translation_of<NT>(piece, from, to), scale);
+                    });
             }
         }();
         if (met) {
@@ -652,91 +785,18 @@ contact_result<double> rational_first_contact(const polygon& a, const polygon& b
             std::tie(r.static_feature, r.moving_feature) = *met;
             return r;
         }
-        // The translation over the piece, in double (for the boxes).
-        const piece_translation<double> td = translation_of<double>(piece, from, to);
-        const double slack = arc_box_slack * scale + std::numeric_limits<double>::min();
-        const part_turns turns = turns_of(piece);
-        const Filter wf = num<Filter>(piece.w), w2f = Filter(wf * wf);
-        // The factor l of cubics_of: 1 in A's frame, c^2 + s^2 in B's.
-        const Filter one_f = num<Filter>(1), base_f = Filter(num<Filter>(piece.c) * num<Filter>(piece.c) +
-                                                             num<Filter>(piece.s) * num<Filter>(piece.s));
-
-        // Each pair whose boxes over the piece meet, sifted in Filter: where
-        // in the piece its contact may be (first_possible), or none.
-        std::vector<kept_pair> kept;
-        const auto sift = [&](const sweep::contact_site& site, const moving_point<Filter>& m, const Filter& l,
-                              const point<double>& p, const point<double>& q, double from_box) {
-            const cubic_coefficients<Filter> k = coefficients_of(m, w2f, l, p, q);
-            if (const std::optional<double> at = first_possible(bernstein_of(k[0]), bernstein_of(k[1]),
-                                                                bernstein_of(k[2]), 0.0, 1.0, sifting_depth, known))
-                kept.push_back({site, std::max({*at, from_box, known})});
-        };
-        // B's vertices against A's edges, in A's frame; A's vertices against
-        // B's edges, in B's frame (q less the translation, turned back): the
-        // pairs whose boxes over the whole piece overlap (sort and sweep
-        // along x, sweep_along_x), then their quarters.
-        for (const bool moving : {true, false}) {
-            const polygon &vertices = moving ? b : a, &edges = moving ? a : b;
-            std::vector<box> edge_boxes(edges.size());
-            std::vector<edge_box> edge_order(edges.size()), vertex_order(vertices.size());
-            for (std::size_t e = 0; e < edges.size(); ++e) {
-                edge_boxes[e].add(edges.vertex(e));
-                edge_boxes[e].add(edges.vertex(edges.next(e)));
-                edge_order[e] = sweep_entry(edge_boxes[e], e);
-            }
-            std::vector<std::array<box, box_parts>> parts(vertices.size());
-            for (std::size_t v = 0; v < vertices.size(); ++v) {
-                parts[v] = swept_parts(piece, turns, vertices.vertex(v), !moving, td, slack);
-                box whole;
-                for (int k = 0; k < box_parts; ++k) {
-                    if (part_known_free(k, known)) continue;
-                    const box& part = parts[v][static_cast<std::size_t>(k)];
-                    whole.add({part.min_x, part.min_y});
-                    whole.add({part.max_x, part.max_y});
-                }
-                vertex_order[v] = sweep_entry(whole, v);
-            }
-            const auto by_min_x = [](const edge_box& l, const edge_box& m) { return l.min_x < m.min_x; };
-            std::sort(edge_order.begin(), edge_order.end(), by_min_x);
-            std::sort(vertex_order.begin(), vertex_order.end(), by_min_x);
-            std::vector<std::optional<moving_point<Filter>>> mf(vertices.size());
-            sweep_along_x(
-                vertex_order, 0, vertex_order.size(), edge_order, 0, edge_order.size(),
-                [](const edge_box& k) -> const edge_box& { return k; },
-                [&](std::size_t i, std::size_t j) {
-                    const std::size_t v = vertex_order[i].edge, e = edge_order[j].edge;
-                    const std::optional<double> from_box = first_part_meeting(parts[v], edge_boxes[e], known);
-                    if (!from_box) return false;
-                    if (!mf[v])
-                        mf[v] = moving ? moving_vertex<Filter>(piece, tf, vertices.vertex(v))
-                                       : moving_static_vertex<Filter>(piece, tf, vertices.vertex(v));
-                    sift({moving, static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(e)}, *mf[v],
-                         moving ? one_f : base_f, edges.vertex(e), edges.vertex(edges.next(e)), *from_box);
-                    return false;
-                });
+        if (index == start.piece && start.until > known) {
+            // Where the advance expects the contact, first: its boxes are
+            // narrow, so that few pairs are kept.
+            if (const auto found =
+                    contact_within<NT, Filter, 1>(a, b, from, to, piece, last, scale, known, start.until, known, 0))
+                return contact_at(*found);
+            known = start.until;
+            if (known >= 1) continue;
         }
-        // The kept pairs in order of where their contact may start; the
-        // earliest root among them (earliest_kept_contact): in double words
-        // first when NT is an exact field (their signs exact or none), in NT
-        // when one is in doubt.
-        std::sort(kept.begin(), kept.end(), [](const kept_pair& x, const kept_pair& y) {
-            return x.after != y.after ? x.after < y.after : sweep::site_before(x.site, y.site);
-        });
-        const auto found = [&] {
-            if constexpr (number_traits<NT>::category == number_category::exact) {
-                return fallback<>::run(
-                    [&] { return earliest_kept_contact<double_word>(a, b, from, to, piece, last, kept); },
-                    [&] { return earliest_kept_contact<NT>(a, b, from, to, piece, last, kept); });
-            } else {
-                return earliest_kept_contact<NT>(a, b, from, to, piece, last, kept);
-            }
-        }();
-        if (found) {
-            r.contact = true;
-            r.time = found->second;
-            std::tie(r.static_feature, r.moving_feature) = sweep::site_features(a, b, found->first);
-            return r;
-        }
+        if (const auto found =
+                contact_within<NT, Filter, box_parts>(a, b, from, to, piece, last, scale, 0, 1, known, sifting_depth))
+            return contact_at(*found);
     }
     return r;
 }
