@@ -177,7 +177,7 @@ TEST_CASE("rational turning: random multipolygons and stars against the exact re
 
 /// The counts of check_against_whole_search.
 struct window_tally {
-    std::size_t guessed = 0, within = 0, beyond = 0, forced = 0;
+    std::size_t guessed = 0, within = 0, beyond = 0, forced = 0, crossing = 0;
 };
 
 /// Checks the certified answer of one convex motion against the exact
@@ -186,7 +186,8 @@ struct window_tally {
 /// the same features after the start (at the start either names features
 /// that meet there); counts where advancement's guess of the contact
 /// (rational_start::until) held it, and where the contact lay beyond; and
-/// the same answer from advancement's start with other guesses.
+/// the same answer from advancement's start with other guesses. A start
+/// that advancement proves meeting (two edges crossing) meets in the search.
 void check_against_whole_search(const polygon& a, const polygon& b, const pose& from, const pose& to, window_tally& w) {
     INFO("from (" << from.tx << ", " << from.ty << ", " << from.theta << ") to (" << to.tx << ", " << to.ty << ", "
                   << to.theta << ")");
@@ -200,6 +201,12 @@ void check_against_whole_search(const polygon& a, const polygon& b, const pose& 
         CHECK(c.moving_feature.index == whole.moving_feature.index);
     }
     const sweep::rational_progress p = sweep::rational_advance(a, b, from, to);
+    if (p.crossing_at_start) {
+        ++w.crossing;
+        CHECK(whole.contact);
+        CHECK(whole.time == 0);
+        return;
+    }
     if (p.apart) return;
     const rational_piece piece = rational_pieces(from, to)[p.start.piece];
     const double span = piece.t1 - piece.t0;
@@ -277,11 +284,13 @@ TEST_CASE("rational turning: convex pairs proven apart by advancement", "[ration
     }
     WARN("convex pairs turning: " << tried << " motions, " << apart << " proven apart, " << n.contacts << " contacts; "
                                   << w.guessed << " contacts guessed, " << w.within << " within the guess, " << w.beyond
-                                  << " beyond it; " << w.forced << " other guesses");
+                                  << " beyond it; " << w.forced << " other guesses; " << w.crossing
+                                  << " crossing at the start");
     CHECK(apart > tried / 5);
     CHECK(n.contacts > tried / 5);
     CHECK(w.within > 0);
     CHECK(w.forced > 0);
+    CHECK(w.crossing > 0);
 }
 
 TEST_CASE("rational turning: a vertex grazing an edge, sliding along one, touching at the start", "[rational_turn]") {

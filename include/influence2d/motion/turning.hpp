@@ -272,6 +272,27 @@ inline constexpr std::size_t convex_probe_vertices = 64;
 /// 2.3 us in double with the query, 0.56 us with the search).
 inline constexpr std::size_t crossing_search_pairs = 256;
 
+/// The first edge of A and the first of B (in that order) that certainly
+/// cross (segments_must_cross) when B's vertices posed in double (`posed`)
+/// lie within delta of their exact places, as a probe at distance 0 with
+/// those edges, proven meeting (the exact regions cross there); none when
+/// none crosses for certain (one polygon inside the other, or edges that
+/// only touch), or when there are more than crossing_search_pairs edge
+/// pairs. `av` holds A's vertices.
+inline std::optional<probe_result> certain_crossing(const polygon& a, const std::vector<point<double>>& av,
+                                                    const polygon& b, const std::vector<point<double>>& posed,
+                                                    double delta) {
+    if (av.size() * posed.size() > crossing_search_pairs) return std::nullopt;
+    for (std::size_t i = 0; i < av.size(); ++i) {
+        const point<double>&a0 = av[i], &a1 = av[a.next(i)];
+        for (std::size_t j = 0; j < posed.size(); ++j)
+            if (segments_must_cross(a0, a1, posed[j], posed[b.next(j)], delta))
+                return probe_result{
+                    0, {feature_kind::edge, a.source_edge(i)}, {feature_kind::edge, b.source_edge(j)}, {0, 0}, true};
+    }
+    return std::nullopt;
+}
+
 /// Whether the motion of B against A is probed by convex_probe: both
 /// polygons one convex ring (is_convex_polygon, exact) of at most
 /// convex_probe_vertices vertices, and every coordinate of the motion in
@@ -318,7 +339,9 @@ public:
         const convex_gap_result g = convex_gap(a_.data(), a_.size(), posed_.data(), posed_.size(), scale_,
                                                separation_error<double>(scale_) / 4, last_gap_);
         if (!g.converged || !(g.lower > 0)) {
-            if (const std::optional<probe_result> crossing = certain_crossing(p)) return *crossing;
+            if (const std::optional<probe_result> crossing =
+                    certain_crossing(a_shape_, a_, b_shape_, posed_, posing_error(b_scale_, p.tx, p.ty)))
+                return *crossing;
             return general_(p);
         }
         probe_result r;
@@ -373,29 +396,6 @@ public:
     }
 
 private:
-    // At the last probe's pose p, the first edge of A and the first of B
-    // (in that order) that certainly cross (segments_must_cross, B's posed
-    // vertices within posing_error of their exact places), as a probe at
-    // distance 0 with those edges, proven meeting (the exact regions at p
-    // cross there), or none: none crosses for certain (one
-    // polygon inside the other, or edges that only touch), or there are
-    // more than crossing_search_pairs edge pairs.
-    std::optional<probe_result> certain_crossing(const pose& p) const {
-        if (a_.size() * posed_.size() > crossing_search_pairs) return std::nullopt;
-        const double delta = posing_error(b_scale_, p.tx, p.ty);
-        for (std::size_t i = 0; i < a_.size(); ++i) {
-            const point<double>&a0 = a_[i], &a1 = a_[a_shape_.next(i)];
-            for (std::size_t j = 0; j < posed_.size(); ++j)
-                if (segments_must_cross(a0, a1, posed_[j], posed_[b_shape_.next(j)], delta))
-                    return probe_result{0,
-                                        {feature_kind::edge, a_shape_.source_edge(i)},
-                                        {feature_kind::edge, b_shape_.source_edge(j)},
-                                        {0, 0},
-                                        true};
-        }
-        return std::nullopt;
-    }
-
     // The features of g's simplex into r; false when two of its vertices on
     // one polygon are not neighbours.
     bool features(const convex_gap_result& g, probe_result& r) const {
