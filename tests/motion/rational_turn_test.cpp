@@ -22,7 +22,9 @@
 #include <vector>
 
 #include "influence2d/exact/certified_first_contact.hpp"
+#include "influence2d/influence/bounds.hpp"
 #include "influence2d/motion/first_contact.hpp"
+#include "influence2d/motion/rational_apart.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "support/effort.hpp"
 #include "support/exact_regions.hpp"
@@ -291,6 +293,81 @@ TEST_CASE("rational turning: convex pairs proven apart by advancement", "[ration
     CHECK(w.within > 0);
     CHECK(w.forced > 0);
     CHECK(w.crossing > 0);
+}
+
+TEST_CASE("rational turning: advancement's vertex step keeps B beyond A's support", "[rational_turn]") {
+    // Two convex polygons, B turning by up to 1.5 radians (one piece) from
+    // a place beside A, or about A's middle: B posed in double at a random tau as the
+    // advancement poses it, and the step rational_largest_step allows along
+    // the axis between their middles; at 64 times of that step, B placed
+    // exactly by the model's definition has every vertex beyond A's
+    // support along the axis. The steps where a vertex comes back to within
+    // a quarter of its start's gap show the bound near its edge (half of
+    // rational_turn_acceleration fails 3 checks, a tenth 25; half the
+    // turn's speed in a vertex's derivative 16).
+    test_random::rng g(0x5e7e9ULL);
+    std::size_t steps = 0, tight = 0;
+    for (int trial = 0; trial < test_effort::scaled(300); ++trial) {
+        const polygon a(
+            {test_shapes::ring(test_shapes::ellipse_points(g, 3 + g.index(10), {0, 0}, 1, g.uniform(0.1, 1)))});
+        // Odd trials: B small and away from its origin, which stays near
+        // A's middle, so that B orbits A and curves towards it.
+        const bool orbit = trial % 2 == 1;
+        const double orbit_radius = g.uniform(1.6, 3);
+        const polygon b({test_shapes::ring(
+            orbit ? test_shapes::ellipse_points(g, 3 + g.index(10), {orbit_radius, 0}, 0.3, g.uniform(0.05, 0.3))
+                  : test_shapes::ellipse_points(g, 3 + g.index(10), {0, 0}, g.uniform(0.3, 3), g.uniform(0.05, 1)))});
+        const double reach = orbit ? g.uniform(0, 0.2) : g.uniform(1.5, 5), angle = g.uniform(0, 6.283185307179586);
+        const pose from{reach * std::cos(angle), reach * std::sin(angle), g.uniform(-3, 3)};
+        const double drift = orbit ? 0.1 : 1;
+        const pose to{from.tx + g.uniform(-drift, drift), from.ty + g.uniform(-drift, drift),
+                      from.theta + g.uniform(-1.5, 1.5)};
+        const rational_piece piece = rational_pieces(from, to).at(0);
+        const double tau = g.uniform(0, 1), u = piece.w * tau, h = 1 + u * u, c2 = (1 - u * u) / h, s2 = 2 * u / h;
+        const point<double> shift{to.tx - from.tx, to.ty - from.ty};
+        const point<double> move{from.tx + tau * shift.x, from.ty + tau * shift.y};
+        std::vector<point<double>> av, posed;
+        for (std::size_t i = 0; i < a.size(); ++i) av.push_back(a.vertex(i));
+        point<double> middle{0, 0};
+        for (std::size_t j = 0; j < b.size(); ++j) {
+            const point<double>& q = b.vertex(j);
+            const double x = c2 * q.x - s2 * q.y, y = s2 * q.x + c2 * q.y;
+            posed.push_back({piece.c * x - piece.s * y + move.x, piece.s * x + piece.c * y + move.y});
+            middle = {middle.x + posed.back().x / double(b.size()), middle.y + posed.back().y / double(b.size())};
+        }
+        const double r = bounding_radius(b, {0, 0});
+        const double delta = sweep::rational_pose_rounding *
+                             (r + std::fabs(from.tx) + std::fabs(from.ty) + std::fabs(to.tx) + std::fabs(to.ty));
+        const double v = (std::hypot(shift.x, shift.y) + 2 * std::fabs(piece.w) * r) * 1.001;
+        const double step =
+            sweep::rational_largest_step(av, posed, move, middle, piece.w, tau, shift, r, posing_spread * delta + 1e-12,
+                                         2 * posing_spread * delta + sweep::derivative_slack * v);
+        if (!(step > 0)) continue;
+        ++steps;
+        INFO("trial " << trial << ", tau " << tau << ", step " << step);
+        const FT nx(middle.x), ny(middle.y);
+        FT support = FT(nx * FT(av[0].x) + ny * FT(av[0].y));
+        for (const point<double>& p : av) support = std::max(support, FT(nx * FT(p.x) + ny * FT(p.y)));
+        const auto gap = [&](double t) {
+            const test_exact::placed_shape pb = placed_at(b, from, to, t);
+            FT least = FT(nx * pb.v[0].x() + ny * pb.v[0].y() - support);
+            for (const point_2& q : pb.v) least = std::min(least, FT(nx * q.x() + ny * q.y() - support));
+            return least;
+        };
+        const FT start = gap(tau);
+        bool near = false;
+        for (int i = 1; i <= 64; ++i) {
+            const double t = std::min(1.0, tau + step * i / 64);
+            const FT at = gap(t);
+            CHECK(at > 0);
+            near = near || at * 4 < start;
+            if (t == 1) break;
+        }
+        tight += near;
+    }
+    WARN("vertex steps: " << steps << " checked, " << tight << " coming within a quarter of the start's gap");
+    CHECK(steps > std::size_t(test_effort::scaled(300)) / 4);
+    CHECK(tight > 0);
 }
 
 TEST_CASE("rational turning: a vertex grazing an edge, sliding along one, touching at the start", "[rational_turn]") {

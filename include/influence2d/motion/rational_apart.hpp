@@ -66,6 +66,50 @@ inline constexpr double rational_window_reach = 2;
 /// the advancement stops, 108 in all).
 inline constexpr double rational_speed_share = 0.25;
 
+/// A bound of (|theta''| + theta'^2) / w^2 over a piece, for its turn
+/// theta(tau) = 2 atan(w tau), |w| <= 1: theta' = 2w / (1 + u^2) and
+/// theta'' = -4 w^3 tau / (1 + u^2)^2 = -4 w^2 u / (1 + u^2)^2 (u = w tau), so
+/// theta'^2 <= 4 w^2 and |theta''| <= 4 w^2 (3 sqrt 3 / 16) = 1.299 w^2 (the
+/// largest of u / (1 + u^2)^2, at u^2 = 1 / 3); 5.3 rounds the sum up. A
+/// point of B at distance r from its origin accelerates at most at that
+/// times w^2 r in tau (the translation is linear in tau).
+inline constexpr double rational_turn_acceleration = 5.3;
+
+/// A step of a piece from tau along which every vertex of B stays beyond
+/// A's support along the unit axis n by more than `slack` (rational_advance
+/// after a probe at tau, in the piece's time): each posed vertex p_j
+/// projects to f_j = n.p_j - max_i n.a_i; its derivative in tau is
+/// a_j = n.D + theta'(tau) n.J t_j (D the translation's derivative over
+/// the piece, t_j = p_j less the translation: the vertex turned, J the right
+/// angle), lowered by `lowered` (its roundings), and its second derivative
+/// is at least -2k, k = rational_turn_acceleration w^2 r / 2 widened; so
+/// f_j(tau + h) >= f_j + a_j h - k h^2 (Taylor, with Lagrange's remainder),
+/// above slack while h <= 2 e_j / (sqrt(a_j^2 + 4 k e_j) - a_j), e_j = f_j -
+/// slack > 0 (the larger root, in the form that does not cancel; no limit
+/// when k = 0 and a_j >= 0). The least over j, shrunk by step_shrinking; 0
+/// when some e_j <= 0.
+inline double rational_largest_step(const std::vector<point<double>>& av, const std::vector<point<double>>& posed,
+                                    const point<double>& move, const point<double>& axis, double w, double tau,
+                                    const point<double>& d, double r, double slack, double lowered) {
+    const double norm = std::hypot(axis.x, axis.y);
+    const point<double> n{axis.x / norm, axis.y / norm};
+    double reach = -HUGE_VAL;
+    for (const point<double>& a : av) reach = std::max(reach, n.x * a.x + n.y * a.y);
+    const double u = w * tau, turn_speed = 2 * w / (1 + u * u);
+    const double k = rational_turn_acceleration * w * w * r / 2 * (1 + speed_widening);
+    const double drift = n.x * d.x + n.y * d.y;
+    double step = HUGE_VAL;
+    for (const point<double>& p : posed) {
+        const double e = n.x * p.x + n.y * p.y - reach - slack;
+        if (!(e > 0)) return 0;
+        const point<double> turned{p.x - move.x, p.y - move.y};
+        const double a = drift + turn_speed * (n.y * turned.x - n.x * turned.y) - lowered;
+        const double below = std::sqrt(a * a + 4 * k * e) - a;
+        if (below > 0) step = std::min(step, 2 * e / below);
+    }
+    return step * (1 - step_shrinking);
+}
+
 /// How far rational_advance took a rational motion: the whole of it proven
 /// free, or where the search must start (rational_start: the motion proven
 /// free before it).
@@ -100,8 +144,11 @@ struct rational_progress {
 ///               since the last probe, or s share after the first)  (rational_start::until)
 ///           if tau = 1:  next piece
 ///           s <- min(v, approach_speed along g's axis: 2 |w| r less B's translation towards A)
-///           tau <- min(1, tau + L / s, a little less)     (free up to it: the distance
-///                                                          falls by at most s a unit of tau)
+///           h <- L / s, a little less                   (free up to it: the distance
+///                                                        falls by at most s a unit of tau)
+///           h <- max(h, rational_largest_step along g's axis)   (each vertex's own
+///                derivative and a bound of its acceleration keep it beyond A's support)
+///           tau <- min(1, tau + h)
 ///   apart
 inline rational_progress rational_advance(const polygon& a, const polygon& b, const pose& from, const pose& to) {
     rational_progress out;
@@ -111,6 +158,12 @@ inline rational_progress rational_advance(const polygon& a, const polygon& b, co
     const double delta =
         rational_pose_rounding * (r + std::fabs(from.tx) + std::fabs(from.ty) + std::fabs(to.tx) + std::fabs(to.ty));
     const double floor = rational_apart_floor * scale;
+    // The roundings of a vertex's derivative along an axis
+    // (rational_largest_step): its turned place is within 1.5 delta of the
+    // exact one along the axis, and turns at most at 2 |w| <= 2 (3 delta);
+    // the rest rounds by a few ulps of the speed bound (derivative_slack of
+    // it, below).
+    const double lowered_by_place = 2 * posing_spread * delta;
     const point<double> shift{to.tx - from.tx, to.ty - from.ty};
     std::vector<point<double>> av, posed(b.size());
     for (std::size_t i = 0; i < a.size(); ++i) av.push_back(a.vertex(i));
@@ -120,6 +173,7 @@ inline rational_progress rational_advance(const polygon& a, const polygon& b, co
         const rational_piece& piece = pieces[k];
         const double span = piece.t1 - piece.t0, sweep = 2 * std::fabs(piece.w) * r * (1 + speed_widening);
         const double v = (std::hypot(shift.x, shift.y) * span + sweep) * (1 + speed_widening);
+        const double lowered = lowered_by_place + derivative_slack * v;
         double tau = 0, last_tau = 0, last_lower = 0;
         for (std::size_t probe = 0;; ++probe) {
             if (probe == rational_apart_probes) return out;
@@ -158,7 +212,13 @@ inline rational_progress rational_advance(const polygon& a, const polygon& b, co
             if (tau == 1) break;
             last_tau = tau;
             last_lower = lower;
-            tau = std::min(1.0, tau + lower / speed() * (1 - distance_shrinking));
+            // The larger of the distance's step and the vertices' own
+            // (rational_largest_step), each free of contact.
+            const double step =
+                std::max(lower / speed() * (1 - distance_shrinking),
+                         rational_largest_step(av, posed, move, g.axis, piece.w, tau, {shift.x * span, shift.y * span},
+                                               r, g.lower - lower + separation_error<double>(scale), lowered));
+            tau = std::min(1.0, tau + step);
             out.start = {k, tau};
         }
         // (The next piece starts at another formula's pose: its start is
