@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "influence2d/number/cgal.hpp"
+#include "influence2d/number/double_word.hpp"
 #include "influence2d/predicates/polynomial_roots.hpp"
 
 using namespace influence2d;
@@ -101,4 +102,51 @@ TEST_CASE("halving in double stops once the bracket no longer moves", "[predicat
         CHECK((r1.high <= r2.low || r2.high <= r1.low));
     }
     CHECK(r1.high - r1.low < 1e-15);
+}
+
+TEST_CASE("a root's side by the sign where the bracket's ends differ, as by Sturm counts", "[predicates][roots]") {
+    // Cubics with roots on a grid of 1/64 (simple, double and triple), each
+    // root's bracket halved a few times; at every point of a finer grid in
+    // the bracket root_side with opposite_end_signs gives the Sturm count's
+    // answer, in exact rationals and in double words. A root of even
+    // multiplicity (no sign change) leaves opposite_end_signs 0; a double
+    // root between two simple ones must not fool it. (In double words the
+    // sides where the ends' signs tell, x rounded to a dyadic double.)
+    using NT = exact_rational;
+    std::size_t by_sign = 0, by_count = 0, in_doubt = 0, in_double_words = 0;
+    for (int a = 1; a < 64; a += 5)
+        for (int b = a; b < 64; b += 7)
+            for (int c = b; c < 64; c += 11) {
+                const std::vector<double> roots{a / 64.0, b / 64.0, c / 64.0};
+                const auto s = sturm_sequence(with_roots<NT>(roots));
+                // (In double words a multiple root's sequence may be in doubt.)
+                std::vector<polynomial<double_word>> sw;
+                try {
+                    sw = sturm_sequence(with_roots<double_word>(roots));
+                } catch (const uncertain_sign&) {
+                    ++in_doubt;
+                }
+                for (isolated_root<NT> r : isolate_roots<NT>(s, 0, 1)) {
+                    for (int k = 0; k < 3; ++k) halve(s, r);
+                    const int low = opposite_end_signs(s, r);
+                    const isolated_root<double_word> rw{double_word(CGAL::to_double(r.low)),
+                                                        double_word(CGAL::to_double(r.high))};
+                    const int low_w = sw.empty() ? 0 : opposite_end_signs(sw, rw);
+                    if (!sw.empty()) CHECK(low_w == low);  // (the ends are dyadic: both exact)
+                    ++(low != 0 ? by_sign : by_count);
+                    for (int i = 1; i <= 16; ++i) {
+                        const NT x = r.low + (r.high - r.low) * NT(i) / NT(16);
+                        const int sturm = s[0].sign_at(x) == 0 ? 0 : roots_between(s, r.low, x) > 0 ? -1 : 1;
+                        CHECK(root_side(s, r, x, low) == sturm);
+                        if (sw.empty() || low_w == 0) continue;
+                        CHECK(root_side(sw, rw, double_word(CGAL::to_double(x)), low_w) == sturm);
+                        ++in_double_words;
+                    }
+                }
+            }
+    WARN(by_sign << " brackets by their ends' signs, " << by_count << " by Sturm counts; " << in_double_words
+                 << " sides in double words, " << in_doubt << " sequences in doubt there");
+    CHECK(by_sign > 0);
+    CHECK(by_count > 0);
+    CHECK(in_double_words > 0);
 }

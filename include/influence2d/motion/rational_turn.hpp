@@ -494,9 +494,11 @@ struct kept_pair {
 ///     d <- the new bracket's guess, or d's neighbour on the root's side if
 ///       the guess is not beyond it
 ///
-/// A side is a Sturm count within the bracket (or the bracket's own ends),
-/// so in double words (a filtered NT) it is certain unless the root lies
-/// within their bound of a midpoint; the bracket's ends are never rounded.
+/// A side is the cubic's sign at the midpoint against its sign at the
+/// bracket's low end when its signs at the ends differ (root_side), else a
+/// Sturm count within the bracket (or the bracket's own ends), so in double
+/// words (a filtered NT) it is certain unless the root lies within their
+/// bound of a midpoint; the bracket's ends are never rounded.
 template <class NT>
 double rounded_time(const rational_piece& piece, const std::vector<polynomial<NT>>& s, isolated_root<NT> r) {
     using tr = number_traits<NT>;
@@ -526,11 +528,13 @@ double rounded_time(const rational_piece& piece, const std::vector<polynomial<NT
             return NT(NT(NT(NT(num<NT>(x) + num<NT>(y)) * half) - t0) * inverse_span);
         };
         // The side of the root against tau: -1 below it, 0 at it, +1 above.
+        // (The sign of s[0] at the bracket's low end, when its ends' signs
+        // are opposite, stays so while the bracket shrinks about the root.)
+        const int low_sign = opposite_end_signs(s, r);
         const auto side = [&](const NT& tau) {
             if (compare_values<NT>(tau, r.low) <= 0) return 1;
             if (compare_values<NT>(tau, r.high) > 0) return -1;
-            if (s[0].sign_at(tau) == 0) return 0;
-            return roots_between(s, r.low, tau) > 0 ? -1 : 1;
+            return root_side(s, r, tau, low_sign);
         };
         const auto guess = [&] { return tr::to_double(time_of(NT(NT(r.low + r.high) * half))); };
         double d = guess();

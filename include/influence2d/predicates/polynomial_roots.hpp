@@ -243,6 +243,33 @@ std::vector<isolated_root<NT>> isolate_roots(const std::vector<polynomial<NT>>& 
     return out;
 }
 
+/// The sign of s[0] at r.low when s[0] has strictly opposite signs at the
+/// bracket's ends, certain ones in a filtered NT; 0 otherwise. Then a root
+/// of s[0] lies between them, and when it is the only one there (an
+/// isolated_root) it has odd multiplicity: s[0] has that sign from r.low
+/// up to the root and the other after it (root_side).
+template <class NT>
+int opposite_end_signs(const std::vector<polynomial<NT>>& s, const isolated_root<NT>& r) {
+    try {
+        const int low = s[0].sign_at(r.low);
+        return low != 0 && low == -s[0].sign_at(r.high) ? low : 0;
+    } catch (const uncertain_sign&) {
+        return 0;
+    }
+}
+
+/// The side of x against the root bracketed by r, r.low < x <= r.high: -1
+/// when the root lies below x, 0 at x, +1 above; `low_sign` is
+/// opposite_end_signs(s, r) (when not 0, the sign of s[0] at x against it
+/// tells, else a Sturm count).
+template <class NT>
+int root_side(const std::vector<polynomial<NT>>& s, const isolated_root<NT>& r, const NT& x, int low_sign) {
+    const int at = s[0].sign_at(x);
+    if (at == 0) return 0;
+    if (low_sign != 0) return at == low_sign ? 1 : -1;
+    return roots_between(s, r.low, x) > 0 ? -1 : 1;
+}
+
 /// Narrows the bracket r of the only root of s[0] in it to a few units in
 /// the last place of double: the root sought by bisection in double (on
 /// s[0]'s coefficients rounded), then the narrow bracket around it checked
@@ -275,7 +302,10 @@ bool narrowed_by_double(const std::vector<polynomial<NT>>& s, isolated_root<NT>&
     }
     const NT nlo = compare_values<NT>(tr::from_double(lo), r.low) > 0 ? NT(tr::from_double(lo)) : r.low;
     const NT nhi = compare_values<NT>(tr::from_double(hi), r.high) < 0 ? NT(tr::from_double(hi)) : r.high;
-    if (compare_values<NT>(nlo, nhi) >= 0 || roots_between(s, nlo, nhi) != 1) return false;
+    if (compare_values<NT>(nlo, nhi) >= 0) return false;
+    // (nlo, nhi] lies within r, whose only root it holds when s[0] changes
+    // sign across it (opposite_end_signs); else by its Sturm count.
+    if (opposite_end_signs(s, {nlo, nhi}) == 0 && roots_between(s, nlo, nhi) != 1) return false;
     r = {nlo, nhi};
     return true;
 }
