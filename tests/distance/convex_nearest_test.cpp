@@ -20,6 +20,7 @@
 #include "influence2d/core/pose.hpp"
 #include "influence2d/distance/convex_nearest.hpp"
 #include "influence2d/distance/separation.hpp"
+#include "influence2d/motion/turning.hpp"
 #include "influence2d/number/certified.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/number/double_word.hpp"
@@ -213,4 +214,46 @@ TEST_CASE("convex nearest pair: ties are declined, touching and meeting too", "[
     for (const pose q : {pose{2, 0, 0}, pose{2, 2, 0}, pose{1.5, 0.5, 0.3}}) check(square, square, q, t);
     CHECK(t.proven == before);
     CHECK(t.declined_ties >= 3);
+}
+
+TEST_CASE("certified convex probe: the exact distance, or a bound of it where the caller stops", "[convex_nearest]") {
+    // Random convex pairs and poses, the caller stopping at distances up
+    // to a threshold on either side of the exact distance (rounded as
+    // distance_of rounds it): the probe's distance is that rounded
+    // distance, or an upper bound of the exact one at which the caller
+    // stops, as it does at the exact one; the features are the exact
+    // separation's.
+    test_random::rng g(0x5ebULL);
+    std::size_t bounded = 0, exact = 0;
+    for (int scene = 0; scene < test_effort::scaled(40); ++scene) {
+        const polygon a = convex_ring(g, g.uniform(1, 4)), b = convex_ring(g, g.uniform(0.5, 3));
+        for (int k = 0; k < 10; ++k) {
+            const double reach = g.uniform(3, 9), angle = g.uniform(0, 6.283185307179586);
+            const pose q{reach * std::cos(angle), reach * std::sin(angle), g.uniform(-3, 3)};
+            INFO("pose (" << q.tx << ", " << q.ty << ", " << q.theta << ")");
+            const separation_result<exact_rational> s = separation<exact_rational>(a, b, q);
+            if (s.squared_distance == 0) continue;
+            const double d = distance_of<exact_rational>(s.squared_distance);
+            for (const double factor : {0.5, 1 - 1e-9, 1 - 0x1p-50, 1.0, 1 + 0x1p-50, 1 + 1e-9, 2.0}) {
+                const double threshold = d * factor;
+                const auto stops = [&](double x) { return x <= threshold; };
+                const std::optional<sweep::probe_result> r =
+                    sweep::certified_convex_probe<exact_rational>(a, b, q, 64, stops);
+                if (!r) continue;
+                CHECK(same(r->static_feature, s.static_feature));
+                CHECK(same(r->moving_feature, s.moving_feature));
+                if (r->distance == d) {
+                    ++exact;
+                    continue;
+                }
+                ++bounded;
+                CHECK(Q(r->distance) * Q(r->distance) >= s.squared_distance);
+                CHECK(stops(r->distance));
+                CHECK(stops(d));
+            }
+        }
+    }
+    WARN("certified convex probe: " << exact << " exact distances, " << bounded << " bounds where the caller stops");
+    CHECK(exact > 0);
+    CHECK(bounded > 0);
 }

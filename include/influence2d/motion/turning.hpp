@@ -151,6 +151,37 @@ inline double approach_speed(const point<double>& n, const point<double>& shift,
     return std::max(0.0, sweep - along) * (1 + speed_widening) + speed_widening * v;
 }
 
+/// The bounds conservative advancement keeps along a motion (advance): r,
+/// B's vertices' largest distance from its origin (an upper bound); v, the
+/// speed bound (|T1 - T0| + |theta1 - theta0| r, widened); delta, the
+/// rounding of the pose at t against the exact motion (motion_rounding);
+/// the resolution 4 (delta + v 2^-52) + 2 `error` (the error of the probes
+/// that decide the stop); and the stopping distance tol = max(tolerance,
+/// resolution).
+struct advance_limits {
+    double r = 0, turn = 0, v = 0, delta = 0, resolution = 0, tol = 0;
+
+    /// The limits of the motion of B from `from` to `to`.
+    advance_limits(const polygon& b, const pose& from, const pose& to, double tolerance, double error)
+        : r(bounding_radius(b, {0, 0})),
+          turn(std::fabs(to.theta - from.theta)),
+          v((std::hypot(to.tx - from.tx, to.ty - from.ty) + turn * r) * (1 + speed_widening)),
+          delta(motion_rounding * (r * (std::fabs(from.theta) + std::fabs(to.theta) + 1) + std::fabs(from.tx) +
+                                   std::fabs(from.ty) + std::fabs(to.tx) + std::fabs(to.ty))),
+          resolution(4 * (delta + v * 0x1p-52) + 2 * error),
+          tol(std::max(tolerance, resolution)) {}
+
+    /// The lower bound of the exact motion's distance at a probe's time
+    /// from its distance (within one ulp of a value within `error` of the
+    /// exact one): shrunk by an ulp, less the error and delta.
+    double lower(double distance, double error) const { return distance * (1 - distance_shrinking) - error - delta; }
+
+    /// Whether a probe's distance stops the advance there (lower <= tol):
+    /// monotone in the distance, so that a probe whose exact distance is
+    /// at most d stops wherever d does.
+    bool stops(double distance, double error) const { return lower(distance, error) <= tol; }
+};
+
 /// Whether a coarse probe of type P bounds the step after its own probes
 /// (convex_probe::largest_step).
 template <class P, class = void>
@@ -196,20 +227,16 @@ struct steps_by_vertices<P, std::void_t<decltype(std::declval<const std::decay_t
 template <class Coarse, class Fine>
 advance_result advance(const polygon& b, const pose& from, const pose& to, double tolerance, std::size_t max_steps,
                        double coarse_error, Coarse&& coarse, bool refine, double fine_error, Fine&& fine) {
-    const double r = bounding_radius(b, {0, 0});
-    const double turn = std::fabs(to.theta - from.theta);
-    const double v = (std::hypot(to.tx - from.tx, to.ty - from.ty) + turn * r) * (1 + speed_widening);
-    const double delta = motion_rounding * (r * (std::fabs(from.theta) + std::fabs(to.theta) + 1) + std::fabs(from.tx) +
-                                            std::fabs(from.ty) + std::fabs(to.tx) + std::fabs(to.ty));
-    const double resolution = 4 * (delta + v * 0x1p-52) + 2 * (refine ? fine_error : coarse_error);
-    const double tol = std::max(tolerance, resolution);
+    const advance_limits limits(b, from, to, tolerance, refine ? fine_error : coarse_error);
+    const double r = limits.r, turn = limits.turn, v = limits.v, resolution = limits.resolution;
     bool fine_stage = false;
     double t = 0;
     for (std::size_t probes = 1;; ++probes) {
         const pose p = motion_pose(from, to, t);
         probe_result at = fine_stage ? fine(p) : coarse(p);
-        const double lower = at.distance * (1 - distance_shrinking) - (fine_stage ? fine_error : coarse_error) - delta;
-        if (lower <= tol) {
+        const double error = fine_stage ? fine_error : coarse_error;
+        const double lower = limits.lower(at.distance, error);
+        if (limits.stops(at.distance, error)) {
             if (refine && !fine_stage && !at.meeting) {
                 fine_stage = true;
                 continue;
@@ -512,9 +539,15 @@ contact_result<NT> turning_first_contact(const polygon& a, const polygon& b, con
 /// (certain_nearest, for values in [word_floor, word_ceiling]), or in Exact
 /// when that rounding is in doubt. None when the proof fails (the polygons
 /// meet or touch, the nearest pair is not unique or not the candidate): the
-/// caller asks the separation then.
-template <class Exact>
-std::optional<probe_result> certified_convex_probe(const polygon& a, const polygon& b, const pose& p, double scale) {
+/// caller asks the separation then. When `stops` (the caller's test of a
+/// distance, monotone: advance_limits::stops) holds for an upper bound of
+/// the exact distance (convex_gap's upper bound at B posed in double, plus
+/// the posing's rounding), that bound instead of the distance: the caller
+/// stops there as at the exact distance, and the squared distance is not
+/// evaluated.
+template <class Exact, class Stops>
+std::optional<probe_result> certified_convex_probe(const polygon& a, const polygon& b, const pose& p, double scale,
+                                                   Stops&& stops) {
     std::vector<point<double>> av(a.size()), posed(b.size());
     const rotation_pose placed(p);
     for (std::size_t i = 0; i < a.size(); ++i) av[i] = a.vertex(i);
@@ -526,6 +559,11 @@ std::optional<probe_result> certified_convex_probe(const polygon& a, const polyg
         fallback<>::run([&] { return nearest_convex_pair<certified>(a, b, p, hint); },
                         [&] { return nearest_convex_pair<Exact>(a, b, p, hint); });
     if (!n) return std::nullopt;
+    // (The exact B lies within posing_error of the posed one per coordinate:
+    // the distance moves by at most posing_spread times it.)
+    const double upper =
+        (hint.upper + posing_spread * posing_error(coordinate_scale(b), p.tx, p.ty)) * (1 + distance_shrinking);
+    if (stops(upper)) return probe_result{upper, n->static_feature, n->moving_feature};
     const double distance = fallback<>::run(
         [&] {
             double squared;
@@ -549,13 +587,16 @@ template <class Exact, class Fine = void>
 contact_result<double> filtered_turning_first_contact(const polygon& a, const polygon& b, const pose& from,
                                                       const pose& to, const sweep_options& options) {
     std::optional<separation_query<double>> coarse;
-    std::optional<bool> convex;  // (convex_probe_applies, asked on the first fine probe)
+    std::optional<bool> convex;            // (convex_probe_applies, asked on the first fine probe)
+    std::optional<advance_limits> limits;  // (advance's, with the exact fine probe's error 0)
     const auto fine = [&](const pose& p) {
         if (!convex) convex = convex_probe_applies(a, b, from, to);
-        if (*convex)
-            if (const std::optional<probe_result> n =
-                    certified_convex_probe<Exact>(a, b, p, motion_scale(a, b, from, to)))
+        if (*convex) {
+            if (!limits) limits.emplace(b, from, to, options.tolerance, 0.0);
+            if (const std::optional<probe_result> n = certified_convex_probe<Exact>(
+                    a, b, p, motion_scale(a, b, from, to), [&](double d) { return limits->stops(d, 0); }))
                 return *n;
+        }
         if constexpr (std::is_void_v<Fine>) {
             const separation_result<Exact> s = separation<Exact>(a, b, p);
             return probe_result{distance_of<Exact>(s.squared_distance), s.static_feature, s.moving_feature};
