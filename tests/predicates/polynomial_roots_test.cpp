@@ -106,9 +106,11 @@ TEST_CASE("halving in double stops once the bracket no longer moves", "[predicat
 
 TEST_CASE("a root's side by the sign where the bracket's ends differ, as by Sturm counts", "[predicates][roots]") {
     // Cubics with roots on a grid of 1/64 (simple, double and triple), each
-    // root's bracket halved a few times; at every point of a finer grid in
-    // the bracket root_side with opposite_end_signs gives the Sturm count's
-    // answer, in exact rationals and in double words. A root of even
+    // root's bracket halved a few times (by Sturm counts, and by the signs
+    // alone where isolate_roots found the ends' signs opposite: the same
+    // halves); at every point of a finer grid in the bracket root_side with
+    // the ends' signs gives the Sturm count's answer, with the sequence or
+    // the cubic alone, in exact rationals and in double words. A root of even
     // multiplicity (no sign change) leaves opposite_end_signs 0; a double
     // root between two simple ones must not fool it. (In double words the
     // sides where the ends' signs tell, x rounded to a dyadic double.)
@@ -126,20 +128,35 @@ TEST_CASE("a root's side by the sign where the bracket's ends differ, as by Stur
                 } catch (const uncertain_sign&) {
                     ++in_doubt;
                 }
+                const std::vector<polynomial<NT>> alone{s[0]};  // (no sequence: the signs must tell)
                 for (isolated_root<NT> r : isolate_roots<NT>(s, 0, 1)) {
-                    for (int k = 0; k < 3; ++k) halve(s, r);
-                    const int low = opposite_end_signs(s, r);
-                    const isolated_root<double_word> rw{double_word(CGAL::to_double(r.low)),
-                                                        double_word(CGAL::to_double(r.high))};
-                    const int low_w = sw.empty() ? 0 : opposite_end_signs(sw, rw);
+                    CHECK(r.low_sign == opposite_end_signs(s, r.low, r.high));
+                    isolated_root<NT> halved = r;
+                    for (int k = 0; k < 3; ++k) {
+                        halve(s, r);
+                        if (halved.low_sign != 0) {
+                            halve(alone, halved);  // (by signs alone, the same halves)
+                            CHECK(halved.low == r.low);
+                            CHECK(halved.high == r.high);
+                        }
+                    }
+                    r.low_sign = 0;  // (Sturm counts below)
+                    const int low = opposite_end_signs(s, r.low, r.high);
+                    isolated_root<double_word> rw{double_word(CGAL::to_double(r.low)),
+                                                  double_word(CGAL::to_double(r.high))};
+                    const int low_w = sw.empty() ? 0 : opposite_end_signs(sw, rw.low, rw.high);
+                    rw.low_sign = low_w;
+                    const isolated_root<NT> by_sign_r{r.low, r.high, low};
                     if (!sw.empty()) CHECK(low_w == low);  // (the ends are dyadic: both exact)
                     ++(low != 0 ? by_sign : by_count);
                     for (int i = 1; i <= 16; ++i) {
                         const NT x = r.low + (r.high - r.low) * NT(i) / NT(16);
                         const int sturm = s[0].sign_at(x) == 0 ? 0 : roots_between(s, r.low, x) > 0 ? -1 : 1;
-                        CHECK(root_side(s, r, x, low) == sturm);
+                        CHECK(root_side(s, by_sign_r, x) == sturm);
+                        CHECK(root_side(s, r, x) == sturm);
+                        if (low != 0) CHECK(root_side(alone, by_sign_r, x) == sturm);
                         if (sw.empty() || low_w == 0) continue;
-                        CHECK(root_side(sw, rw, double_word(CGAL::to_double(x)), low_w) == sturm);
+                        CHECK(root_side(sw, rw, double_word(CGAL::to_double(x))) == sturm);
                         ++in_double_words;
                     }
                 }

@@ -256,6 +256,19 @@ bernstein<Filter> bernstein_of(const std::array<Filter, 4>& a) {
             Filter((a0 + a1 + a2 + a3) * num<Filter>(3))};
 }
 
+/// The cubic a(tau) (lowest degree first) as a cubic in x for tau = from
+/// + d x, d = to - from, in Filter (Taylor's shift at `from`, scaled): a(from),
+/// d a'(from), d^2 a''(from) / 2, d^3 a3; so that its Bernstein coefficients
+/// on [0, 1] are a's on [from, to].
+template <class Filter>
+std::array<Filter, 4> on_window(const std::array<Filter, 4>& a, double from, double to) {
+    const Filter k = num<Filter>(from), d = Filter(num<Filter>(to) - k), three = num<Filter>(3);
+    const Filter a3k = Filter(three * a[3] * k);
+    const Filter d2 = Filter(d * d);
+    return {Filter(((a[3] * k + a[2]) * k + a[1]) * k + a[0]), Filter(d * ((a3k + a[2] + a[2]) * k + a[1])),
+            Filter(d2 * (a3k + a[2])), Filter(d2 * d * a[3])};
+}
+
 /// The coefficients on the two halves of the interval (de Casteljau at 1/2).
 template <class Filter>
 std::pair<bernstein<Filter>, bernstein<Filter>> halves(const bernstein<Filter>& b) {
@@ -431,6 +444,32 @@ struct piece_contact {
     isolated_root<NT> root;
 };
 
+/// The sign of f at `from` when f's Bernstein coefficients on [from, to]
+/// (on_window, in NT) change sign exactly once, their first and last not 0:
+/// then f has one root in (from, to), a simple one (Descartes' rule of
+/// signs in the Bernstein basis: the count of roots in the open interval,
+/// with multiplicity, is at most the changes and of their parity). 0
+/// otherwise, or when a sign is in doubt.
+template <class NT>
+int single_crossing(const polynomial<NT>& f, double from, double to) {
+    std::array<NT, 4> a;
+    for (std::size_t k = 0; k < 4; ++k) a[k] = k < f.c.size() ? f.c[k] : num<NT>(0);
+    const bernstein<NT> b = bernstein_of(on_window(a, from, to));
+    try {
+        int changes = 0, last = 0;
+        for (const NT& x : b) {
+            const int sign = number_traits<NT>::sign(x);
+            if (sign == 0) continue;
+            changes += last != 0 && sign != last;
+            last = sign;
+        }
+        const int first = number_traits<NT>::sign(b[0]), final = number_traits<NT>::sign(b[3]);
+        return changes == 1 && first != 0 && final != 0 ? first : 0;
+    } catch (const uncertain_sign&) {
+        return 0;
+    }
+}
+
 /// The earliest root in (after, end] of the cubics' f at which lo and hi
 /// are >= 0 (in (after, end) when `open_end`: the next piece starts at end
 /// = 1), bracketed; none
@@ -442,6 +481,15 @@ std::optional<std::pair<std::vector<polynomial<NT>>, isolated_root<NT>>> earlies
                                                                                        double after, double end,
                                                                                        bool open_end) {
     if (k.f.degree() < 1) return std::nullopt;  // identically zero, or a non-zero constant
+    if (const int low_sign = single_crossing(k.f, after, end)) {
+        // f's only root in the window, simple: f is all that is asked of
+        // its sequence (isolated_root::low_sign).
+        std::vector<polynomial<NT>> s{k.f};
+        isolated_root<NT> r{num<NT>(after), num<NT>(end), low_sign};
+        narrowed_by_double(s, r);
+        if (sign_at_root(k.lo, s, r) >= 0 && sign_at_root(k.hi, s, r) >= 0) return std::make_pair(std::move(s), r);
+        return std::nullopt;
+    }
     std::vector<polynomial<NT>> s = sturm_sequence(k.f);
     const NT last = num<NT>(end);
     const bool root_at_end = open_end && k.f.sign_at(last) == 0;
@@ -528,13 +576,11 @@ double rounded_time(const rational_piece& piece, const std::vector<polynomial<NT
             return NT(NT(NT(NT(num<NT>(x) + num<NT>(y)) * half) - t0) * inverse_span);
         };
         // The side of the root against tau: -1 below it, 0 at it, +1 above.
-        // (The sign of s[0] at the bracket's low end, when its ends' signs
-        // are opposite, stays so while the bracket shrinks about the root.)
-        const int low_sign = opposite_end_signs(s, r);
+        if (r.low_sign == 0) r.low_sign = opposite_end_signs(s, r.low, r.high);
         const auto side = [&](const NT& tau) {
             if (compare_values<NT>(tau, r.low) <= 0) return 1;
             if (compare_values<NT>(tau, r.high) > 0) return -1;
-            return root_side(s, r, tau, low_sign);
+            return root_side(s, r, tau);
         };
         const auto guess = [&] { return tr::to_double(time_of(NT(NT(r.low + r.high) * half))); };
         double d = guess();
@@ -595,19 +641,6 @@ std::optional<std::pair<sweep::contact_site, double>> earliest_kept_contact(cons
     }
     if (!best) return std::nullopt;
     return std::pair{best->site, rounded_time(piece, best->sequence, best->root)};
-}
-
-/// The cubic a(tau) (lowest degree first) as a cubic in x for tau = from
-/// + d x, d = to - from, in Filter (Taylor's shift at `from`, scaled): a(from),
-/// d a'(from), d^2 a''(from) / 2, d^3 a3; so that its Bernstein coefficients
-/// on [0, 1] are a's on [from, to].
-template <class Filter>
-std::array<Filter, 4> on_window(const std::array<Filter, 4>& a, double from, double to) {
-    const Filter k = num<Filter>(from), d = Filter(num<Filter>(to) - k), three = num<Filter>(3);
-    const Filter a3k = Filter(three * a[3] * k);
-    const Filter d2 = Filter(d * d);
-    return {Filter(((a[3] * k + a[2]) * k + a[1]) * k + a[0]), Filter(d * ((a3k + a[2] + a[2]) * k + a[1])),
-            Filter(d2 * (a3k + a[2])), Filter(d2 * d * a[3])};
 }
 
 /// The first contact of a piece in the window (known, to] (through `known`

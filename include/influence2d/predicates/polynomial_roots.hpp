@@ -190,12 +190,61 @@ bool may_halve(int k) {
 }
 
 /// A root of a polynomial bracketed alone: the only root of `sequence[0]`
-/// in (low, high].
+/// in (low, high]. With `low_sign` not 0 the root is told apart from any
+/// point of the bracket by sequence[0]'s sign there alone (root_at_or_below),
+/// and sequence[0] is all the functions below ask of the sequence.
 template <class NT>
 struct isolated_root {
     NT low;   ///< excluded
     NT high;  ///< included
+    /// The sign of sequence[0] at `low` when its signs at the two ends are
+    /// certain and opposite (opposite_end_signs): the root then has odd
+    /// multiplicity, and sequence[0] keeps this sign from `low` up to it
+    /// and the other after it, however the bracket shrinks about it. 0:
+    /// unknown, Sturm counts tell.
+    int low_sign = 0;
 };
+
+/// The sign of s[0] at r.low when s[0] has strictly opposite signs at the
+/// bracket's ends, certain ones in a filtered NT; 0 otherwise. Then a root
+/// of s[0] lies between them, and when it is the only one there (an
+/// isolated_root) it has odd multiplicity (isolated_root::low_sign).
+template <class NT>
+int opposite_end_signs(const std::vector<polynomial<NT>>& s, const NT& low, const NT& high) {
+    try {
+        const int at_low = s[0].sign_at(low);
+        return at_low != 0 && at_low == -s[0].sign_at(high) ? at_low : 0;
+    } catch (const uncertain_sign&) {
+        return 0;
+    }
+}
+
+/// The side of the root bracketed by r against x, r.low < x <= r.high: -1
+/// when the root lies below x, 0 at x (s[0] vanishes there), +1 above; by
+/// s[0]'s sign at x against r.low_sign when it is known, else by a Sturm
+/// count.
+template <class NT>
+int root_side(const std::vector<polynomial<NT>>& s, const isolated_root<NT>& r, const NT& x) {
+    const int at = s[0].sign_at(x);
+    if (at == 0) return 0;
+    if (r.low_sign != 0) return at == r.low_sign ? 1 : -1;
+    return roots_between(s, r.low, x) > 0 ? -1 : 1;
+}
+
+/// Whether the root bracketed by r lies at or below x, r.low < x <= r.high
+/// (root_side).
+template <class NT>
+bool root_at_or_below(const std::vector<polynomial<NT>>& s, const isolated_root<NT>& r, const NT& x) {
+    return root_side(s, r, x) <= 0;
+}
+
+/// Whether the root bracketed by r lies in (lo, hi], r.low <= lo < hi <=
+/// r.high (root_at_or_below at both ends).
+template <class NT>
+bool root_within(const std::vector<polynomial<NT>>& s, const isolated_root<NT>& r, const NT& lo, const NT& hi) {
+    if (r.low_sign == 0) return roots_between(s, lo, hi) > 0;
+    return (compare_values<NT>(lo, r.low) <= 0 || !root_at_or_below(s, r, lo)) && root_at_or_below(s, r, hi);
+}
 
 /// Halves the bracket of the only root of s[0] in (r.low, r.high]: keeps
 /// the half that holds it. False when the bracket did not change (a
@@ -205,7 +254,7 @@ struct isolated_root {
 template <class NT>
 bool halve(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r) {
     const NT mid = NT((r.low + r.high) * number_traits<NT>::from_double(0.5));
-    NT& end = roots_between(s, r.low, mid) > 0 ? r.high : r.low;
+    NT& end = root_at_or_below(s, r, mid) ? r.high : r.low;
     const bool moved = compare_values<NT>(end, mid) != 0;
     if (!moved && signs_may_be_in_doubt<NT>::value) throw uncertain_sign();
     end = mid;
@@ -213,7 +262,7 @@ bool halve(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r) {
 }
 
 /// The roots of s[0] in (a, b], a < b, in increasing order, each bracketed
-/// alone (bisection until each bracket holds one root).
+/// alone (bisection until each bracket holds one root), with its low_sign.
 template <class NT>
 std::vector<isolated_root<NT>> isolate_roots(const std::vector<polynomial<NT>>& s, const NT& a, const NT& b) {
     std::vector<isolated_root<NT>> out;
@@ -224,6 +273,7 @@ std::vector<isolated_root<NT>> isolate_roots(const std::vector<polynomial<NT>>& 
         todo.pop_back();
         if (n <= 0) continue;
         if (n == 1) {
+            r.low_sign = opposite_end_signs(s, r.low, r.high);
             out.push_back(r);
             continue;
         }
@@ -241,33 +291,6 @@ std::vector<isolated_root<NT>> isolate_roots(const std::vector<polynomial<NT>>& 
         todo.push_back({{r.low, mid}, left});
     }
     return out;
-}
-
-/// The sign of s[0] at r.low when s[0] has strictly opposite signs at the
-/// bracket's ends, certain ones in a filtered NT; 0 otherwise. Then a root
-/// of s[0] lies between them, and when it is the only one there (an
-/// isolated_root) it has odd multiplicity: s[0] has that sign from r.low
-/// up to the root and the other after it (root_side).
-template <class NT>
-int opposite_end_signs(const std::vector<polynomial<NT>>& s, const isolated_root<NT>& r) {
-    try {
-        const int low = s[0].sign_at(r.low);
-        return low != 0 && low == -s[0].sign_at(r.high) ? low : 0;
-    } catch (const uncertain_sign&) {
-        return 0;
-    }
-}
-
-/// The side of x against the root bracketed by r, r.low < x <= r.high: -1
-/// when the root lies below x, 0 at x, +1 above; `low_sign` is
-/// opposite_end_signs(s, r) (when not 0, the sign of s[0] at x against it
-/// tells, else a Sturm count).
-template <class NT>
-int root_side(const std::vector<polynomial<NT>>& s, const isolated_root<NT>& r, const NT& x, int low_sign) {
-    const int at = s[0].sign_at(x);
-    if (at == 0) return 0;
-    if (low_sign != 0) return at == low_sign ? 1 : -1;
-    return roots_between(s, r.low, x) > 0 ? -1 : 1;
 }
 
 /// Narrows the bracket r of the only root of s[0] in it to a few units in
@@ -304,9 +327,11 @@ bool narrowed_by_double(const std::vector<polynomial<NT>>& s, isolated_root<NT>&
     const NT nhi = compare_values<NT>(tr::from_double(hi), r.high) < 0 ? NT(tr::from_double(hi)) : r.high;
     if (compare_values<NT>(nlo, nhi) >= 0) return false;
     // (nlo, nhi] lies within r, whose only root it holds when s[0] changes
-    // sign across it (opposite_end_signs); else by its Sturm count.
-    if (opposite_end_signs(s, {nlo, nhi}) == 0 && roots_between(s, nlo, nhi) != 1) return false;
-    r = {nlo, nhi};
+    // sign across it (opposite_end_signs); else by its Sturm count (when r's
+    // low_sign is known, s[0] is all there is to ask: then not at all).
+    const int low_sign = opposite_end_signs(s, nlo, nhi);
+    if (low_sign == 0 && (r.low_sign != 0 || roots_between(s, nlo, nhi) != 1)) return false;
+    r = {nlo, nhi, low_sign};
     return true;
 }
 
@@ -375,7 +400,7 @@ int compare_roots(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r, co
         const NT hi = compare_values<NT>(r.high, u.high) <= 0 ? r.high : u.high;
         if (compare_values<NT>(lo, hi) < 0) {
             const std::vector<polynomial<NT>> sg = sturm_sequence(g);
-            if (roots_between(sg, lo, hi) > 0 && roots_between(s, lo, hi) > 0 && roots_between(t, lo, hi) > 0) {
+            if (roots_between(sg, lo, hi) > 0 && root_within(s, r, lo, hi) && root_within(t, u, lo, hi)) {
                 // x and y both lie in (lo, hi]; so does a root z of g, which
                 // is a root of both: z = x and z = y, each being its
                 // polynomial's only root in its bracket.
