@@ -91,7 +91,9 @@ inline constexpr double rational_turn_acceleration = 5.3;
 inline double rational_largest_step(const std::vector<point<double>>& av, const std::vector<point<double>>& posed,
                                     const point<double>& move, const point<double>& axis, double w, double tau,
                                     const point<double>& d, double r, double slack, double lowered) {
-    const double norm = std::hypot(axis.x, axis.y);
+    // (|n| within 2^-51 of 1: any direction serves, and k's widening
+    // covers the rest.)
+    const double norm = std::sqrt(axis.x * axis.x + axis.y * axis.y);
     const point<double> n{axis.x / norm, axis.y / norm};
     double reach = -HUGE_VAL;
     for (const point<double>& a : av) reach = std::max(reach, n.x * a.x + n.y * a.y);
@@ -142,13 +144,14 @@ struct rational_progress {
 ///           if g did not converge or L <= floor:  free before (this piece, tau);
 ///               the contact guessed by tau + reach L / (the rate at which L fell
 ///               since the last probe, or s share after the first)  (rational_start::until)
-///           if tau = 1:  next piece
 ///           s <- min(v, approach_speed along g's axis: 2 |w| r less B's translation towards A)
 ///           h <- L / s, a little less                   (free up to it: the distance
 ///                                                        falls by at most s a unit of tau)
+///           tau + h >= 1:  next piece                   (free through its end)
 ///           h <- max(h, rational_largest_step along g's axis)   (each vertex's own
 ///                derivative and a bound of its acceleration keep it beyond A's support)
-///           tau <- min(1, tau + h)
+///           tau + h >= 1:  next piece
+///           tau <- tau + h
 ///   apart
 inline rational_progress rational_advance(const polygon& a, const polygon& b, const pose& from, const pose& to) {
     rational_progress out;
@@ -209,16 +212,20 @@ inline rational_progress rational_advance(const polygon& a, const polygon& b, co
                 return out;
             }
             last = g;
-            if (tau == 1) break;
             last_tau = tau;
             last_lower = lower;
             // The larger of the distance's step and the vertices' own
-            // (rational_largest_step), each free of contact.
+            // (rational_largest_step), each free of contact; a step that
+            // reaches the piece's end proves the rest of it (no probe
+            // there).
+            const double by_distance = lower / speed() * (1 - distance_shrinking);
+            if (tau + by_distance >= 1) break;
             const double step =
-                std::max(lower / speed() * (1 - distance_shrinking),
+                std::max(by_distance,
                          rational_largest_step(av, posed, move, g.axis, piece.w, tau, {shift.x * span, shift.y * span},
                                                r, g.lower - lower + separation_error<double>(scale), lowered));
-            tau = std::min(1.0, tau + step);
+            if (tau + step >= 1) break;
+            tau += step;
             out.start = {k, tau};
         }
         // (The next piece starts at another formula's pose: its start is
