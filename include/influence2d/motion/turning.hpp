@@ -151,15 +151,14 @@ inline double approach_speed(const point<double>& n, const point<double>& shift,
     return std::max(0.0, sweep - along) * (1 + speed_widening) + speed_widening * v;
 }
 
-/// The bounds conservative advancement keeps along a motion (advance): r,
-/// B's vertices' largest distance from its origin (an upper bound); v, the
-/// speed bound (|T1 - T0| + |theta1 - theta0| r, widened); delta, the
-/// rounding of the pose at t against the exact motion (motion_rounding);
-/// the resolution 4 (delta + v 2^-52) + 2 `error` (the error of the probes
-/// that decide the stop); and the stopping distance tol = max(tolerance,
-/// resolution).
+/// The bounds conservative advancement keeps along a motion (advance).
 struct advance_limits {
-    double r = 0, turn = 0, v = 0, delta = 0, resolution = 0, tol = 0;
+    double r = 0;           ///< B's vertices' largest distance from its origin (an upper bound)
+    double turn = 0;        ///< |theta1 - theta0|
+    double v = 0;           ///< the speed bound |T1 - T0| + turn r, widened (speed_widening)
+    double delta = 0;       ///< the rounding of the pose at t against the exact motion (motion_rounding)
+    double resolution = 0;  ///< 4 (delta + v 2^-52) + 2 error (the error of the probes that decide the stop)
+    double tol = 0;         ///< the stopping distance: max(tolerance, resolution)
 
     /// The limits of the motion of B from `from` to `to`.
     advance_limits(const polygon& b, const pose& from, const pose& to, double tolerance, double error)
