@@ -26,6 +26,7 @@
 #include "influence2d/motion/first_contact.hpp"
 #include "influence2d/motion/rational_apart.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "influence2d/predicates/convexity.hpp"
 #include "support/effort.hpp"
 #include "support/exact_regions.hpp"
 #include "support/random_scenes.hpp"
@@ -474,4 +475,57 @@ TEST_CASE("rational turning: far from 1 in scale, the same answers", "[rational_
         }
     }
     CHECK(contacts > 0);
+}
+
+TEST_CASE("rational turning: convex pairs far from 1 in scale, every route alike", "[rational_turn]") {
+    // Convex pairs on a coarse grid (so that scaling by 2^k is exact, down
+    // among the subnormals), from poses near A, some meeting it at the
+    // start: at each scale the exact answer (which scales the advancement
+    // into double's window itself) and the certified one (which scales the
+    // whole query) agree, features alike, and equal the answer at scale 1.
+    // (The exact route advanced only inside the window once, and named
+    // other features at a start contact than the certified one.)
+    test_random::rng g(0x5ca1eULL);
+    std::size_t at_start = 0, later = 0;
+    for (int scene = 0; scene < test_effort::scaled(12); ++scene) {
+        const auto grid_ring = [&](double rx, double ry) {
+            std::vector<point<double>> p = test_shapes::ellipse_points(g, 4 + g.index(6), {0, 0}, rx, ry);
+            for (point<double>& q : p)
+                q = {std::ldexp(std::round(std::ldexp(q.x, 10)), -10),
+                     std::ldexp(std::round(std::ldexp(q.y, 10)), -10)};
+            return polygon({test_shapes::ring(p)});
+        };
+        const polygon a = grid_ring(4, 4 * g.uniform(0.3, 1)), b = grid_ring(2, 2 * g.uniform(0.3, 1));
+        if (!is_convex_polygon(a) || !is_convex_polygon(b)) continue;
+        const auto on_grid = [](double x) { return std::ldexp(std::round(std::ldexp(x, 10)), -10); };
+        const double reach = g.uniform(2, 8), angle = g.uniform(0, 6.283185307179586);
+        const pose from{on_grid(reach * std::cos(angle)), on_grid(reach * std::sin(angle)), g.uniform(-3, 3)};
+        const pose to{on_grid(from.tx * g.uniform(-0.5, 1)), on_grid(from.ty * g.uniform(-0.5, 1)),
+                      from.theta + g.uniform(-3, 3)};
+        const contact_result<exact_rational> one = first_contact<exact_rational>(a, b, from, to, rational);
+        at_start += one.contact && one.time == 0;
+        later += one.contact && one.time > 0;
+        for (const int k : {-1040, -600, 600}) {
+            INFO("scene " << scene << ", scale 2^" << k);
+            const polygon as = a.scaled_by_power_of_two(k), bs = b.scaled_by_power_of_two(k);
+            const pose fs{std::ldexp(from.tx, k), std::ldexp(from.ty, k), from.theta},
+                ts{std::ldexp(to.tx, k), std::ldexp(to.ty, k), to.theta};
+            const contact_result<exact_rational> e = first_contact<exact_rational>(as, bs, fs, ts, rational);
+            const contact_result<double> c = certified_first_contact(as, bs, fs, ts, rational);
+            CHECK(c.contact == e.contact);
+            CHECK(c.time == CGAL::to_double(e.time));
+            CHECK(e.time == one.time);
+            CHECK(e.contact == one.contact);
+            for (const auto& r : {contact_result<double>{e.contact, 0, e.static_feature, e.moving_feature},
+                                  contact_result<double>{c.contact, 0, c.static_feature, c.moving_feature}}) {
+                CHECK(r.static_feature.kind == one.static_feature.kind);
+                CHECK(r.static_feature.index == one.static_feature.index);
+                CHECK(r.moving_feature.kind == one.moving_feature.kind);
+                CHECK(r.moving_feature.index == one.moving_feature.index);
+            }
+        }
+    }
+    WARN("convex pairs far in scale: " << at_start << " meeting at the start, " << later << " later");
+    CHECK(at_start > 0);
+    CHECK(later > 0);
 }

@@ -17,6 +17,7 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/core/range_scaling.hpp"
 #include "influence2d/distance/convex_gap.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/predicates/distance.hpp"
@@ -125,7 +126,9 @@ struct rational_progress {
 
 /// How far conservative advancement proves the rational motion of B from
 /// `from` to `to` (rational_pieces) free, A and B convex and in double's
-/// safe window (convex_probe_applies; otherwise nothing is proven): the
+/// safe window (convex_probe_applies; a motion outside it that scales
+/// exactly into it by a power of two is advanced so scaled; otherwise
+/// nothing is proven): the
 /// whole motion, or up to a place where they come within the floor; or a
 /// meeting at the start proven by two edges crossing.
 ///
@@ -155,7 +158,17 @@ struct rational_progress {
 ///   apart
 inline rational_progress rational_advance(const polygon& a, const polygon& b, const pose& from, const pose& to) {
     rational_progress out;
-    if (from.theta == to.theta || !convex_probe_applies(a, b, from, to)) return out;
+    if (from.theta == to.theta) return out;
+    // Outside double's safe window, on the input scaled by a power of two
+    // when every coordinate scales exactly: the same motion scaled, with
+    // the same taus and features, so that every route advances alike
+    // whether it scaled the motion itself or not.
+    if (const int k = range_shift<double>(a, b, from, to); k != 0) {
+        if (!scales_exactly(a, b, k, from, to)) return out;
+        return rational_advance(a.scaled_by_power_of_two(k), b.scaled_by_power_of_two(k),
+                                scaled_by_power_of_two(from, k), scaled_by_power_of_two(to, k));
+    }
+    if (!convex_probe_applies(a, b, from, to)) return out;
     const double r = bounding_radius(b, {0, 0});
     const double scale = motion_scale(a, b, from, to);
     const double delta =
