@@ -346,7 +346,7 @@ struct part_turns {
 /// The part_turns of the window [from, to] of a piece (its last end `to`
 /// itself; on [0, 1] the ends k / Parts, exact for a power of two).
 template <std::size_t Parts>
-part_turns<Parts> turns_of(const rational_piece& piece, double from, double to) {
+inline part_turns<Parts> turns_of(const rational_piece& piece, double from, double to) {
     part_turns<Parts> out;
     for (std::size_t k = 0; k <= Parts; ++k) {
         out.tau[k] = k == Parts ? to : from + (to - from) * (double(k) / Parts);
@@ -369,7 +369,8 @@ part_turns<Parts> turns_of(const rational_piece& piece, double from, double to) 
 /// and by the filters' slack. (`inverse` for A's vertex in B's frame:
 /// turned the other way, after the inverse base rotation.)
 template <std::size_t Parts>
-box arc_box(const rational_piece& piece, const part_turns<Parts>& turns, point<double> p, bool inverse, std::size_t k) {
+inline box arc_box(const rational_piece& piece, const part_turns<Parts>& turns, point<double> p, bool inverse,
+                   std::size_t k) {
     const double c = piece.c, s = inverse ? -piece.s : piece.s;
     box b;
     // (For `inverse`: p after the inverse base rotation, turned back at each end below.)
@@ -391,8 +392,8 @@ box arc_box(const rational_piece& piece, const part_turns<Parts>& turns, point<d
 /// (arc_box) plus the translation over the same part (`shift` at tau is a0
 /// + a1 tau; subtracted for A's vertex in B's frame), grown by the slack.
 template <std::size_t Parts>
-std::array<box, Parts> swept_parts(const rational_piece& piece, const part_turns<Parts>& turns, point<double> p,
-                                   bool inverse, const piece_translation<double>& shift, double slack) {
+inline std::array<box, Parts> swept_parts(const rational_piece& piece, const part_turns<Parts>& turns, point<double> p,
+                                          bool inverse, const piece_translation<double>& shift, double slack) {
     std::array<box, Parts> out;
     for (std::size_t k = 0; k < Parts; ++k) {
         const double t0 = turns.tau[k], t1 = turns.tau[k + 1];
@@ -428,8 +429,8 @@ inline edge_box sweep_entry(const box& b, std::size_t k) {
 /// The start (tau) of the first part of the window whose box meets `edge`,
 /// the parts that end at or before `known` (free) left out, or none.
 template <std::size_t Parts>
-std::optional<double> first_part_meeting(const part_turns<Parts>& turns, const std::array<box, Parts>& parts,
-                                         const box& edge, double known) {
+inline std::optional<double> first_part_meeting(const part_turns<Parts>& turns, const std::array<box, Parts>& parts,
+                                                const box& edge, double known) {
     for (std::size_t k = 0; k < Parts; ++k)
         if (turns.tau[k + 1] > known && boxes_overlap(parts[k], edge)) return turns.tau[k];
     return std::nullopt;
