@@ -231,11 +231,13 @@ int root_side(const std::vector<polynomial<NT>>& s, const isolated_root<NT>& r, 
     return roots_between(s, r.low, x) > 0 ? -1 : 1;
 }
 
-/// Whether the root bracketed by r lies at or below x, r.low < x <= r.high
-/// (root_side).
+/// Whether the root bracketed by r lies at or below x, r.low < x <= r.high:
+/// s[0]'s sign at x is not r.low_sign's (0 there: x is the root) when that
+/// is known, else a Sturm count over (r.low, x], which counts x itself.
 template <class NT>
 bool root_at_or_below(const std::vector<polynomial<NT>>& s, const isolated_root<NT>& r, const NT& x) {
-    return root_side(s, r, x) <= 0;
+    if (r.low_sign == 0) return roots_between(s, r.low, x) > 0;
+    return s[0].sign_at(x) != r.low_sign;
 }
 
 /// Whether the root bracketed by r lies in (lo, hi], r.low <= lo < hi <=
