@@ -6,11 +6,13 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/number/double_word.hpp"
 #include "influence2d/predicates/polynomial_roots.hpp"
+#include "support/random.hpp"
 
 using namespace influence2d;
 
@@ -166,4 +168,70 @@ TEST_CASE("a root's side by the sign where the bracket's ends differ, as by Stur
     CHECK(by_sign > 0);
     CHECK(by_count > 0);
     CHECK(in_double_words > 0);
+}
+
+TEST_CASE("narrowing by double leaves a few units about the root, checked exactly", "[predicates][roots]") {
+    // Cubics with random coefficients of mixed magnitudes, and cubics built
+    // from roots: simple ones, two within 2^-40 (one bracket each), a root
+    // at an exact double (the cubic's value 0 there), one near an end of
+    // [0, 1] behind a steep slope (Newton's first step leaves the bracket).
+    // For every root isolate_roots brackets in exact rationals and in
+    // double words: narrowed_by_double either leaves the bracket as it was
+    // (false) or narrows it to a sub-bracket that holds the same root alone,
+    // with low_sign its ends' signs, below 2^-32 wide (below 2^-44 for most:
+    // a few units, unless the coefficients' rounding to double moved the
+    // root further). Only the two roots 2^-40 apart are left.
+    test_random::rng rng(20261128);
+    std::vector<std::vector<double>> by_roots{{0.375},
+                                              {0.375, 0.625, 0.875},
+                                              {0.5, 0.5 + std::ldexp(1.0, -40), 0.8},
+                                              {0.001, 0.999},
+                                              {std::ldexp(1.0, -30), 0.75}};
+    for (int k = 0; k < 40; ++k) by_roots.push_back({rng.unit(), rng.unit(), rng.unit()});
+    std::vector<polynomial<exact_rational>> cubics;
+    for (const std::vector<double>& roots : by_roots) cubics.push_back(with_roots<exact_rational>(roots));
+    for (int k = 0; k < 200; ++k) {
+        polynomial<exact_rational> p;
+        for (int i = 0; i < 4; ++i)
+            p.c.push_back(exact_rational(rng.signed_unit() * std::ldexp(1.0, int(rng.index(20)) - 10)));
+        cubics.push_back(p.trimmed());
+    }
+    std::size_t narrowed = 0, narrow = 0, left = 0, in_doubt = 0;
+    const auto check = [&](const auto& s, auto r) {
+        using NT = std::decay_t<decltype(r.low)>;
+        const auto before = r;
+        if (!narrowed_by_double(s, r)) {
+            CHECK(compare_values<NT>(r.low, before.low) == 0);
+            CHECK(compare_values<NT>(r.high, before.high) == 0);
+            ++left;
+            return;
+        }
+        ++narrowed;
+        CHECK(compare_values<NT>(r.low, before.low) >= 0);
+        CHECK(compare_values<NT>(r.high, before.high) <= 0);
+        const double width = number_traits<NT>::to_double(NT(r.high - r.low));
+        CHECK(width < std::ldexp(1.0, -32));
+        narrow += width < std::ldexp(1.0, -44);
+        CHECK(roots_between(s, r.low, r.high) == 1);
+        CHECK(r.low_sign == opposite_end_signs(s, r.low, r.high));
+    };
+    for (const polynomial<exact_rational>& p : cubics) {
+        if (p.degree() < 1) continue;
+        const auto s = sturm_sequence(p);
+        for (const isolated_root<exact_rational>& r : isolate_roots<exact_rational>(s, 0, 1)) check(s, r);
+        polynomial<double_word> pw;
+        for (const exact_rational& c : p.c) pw.c.push_back(double_word(CGAL::to_double(c)));
+        if (pw.trimmed().degree() < 1) continue;
+        try {
+            const auto sw = sturm_sequence(pw);
+            for (const isolated_root<double_word>& r : isolate_roots<double_word>(sw, double_word(0), double_word(1)))
+                check(sw, r);
+        } catch (const uncertain_sign&) {
+            ++in_doubt;
+        }
+    }
+    WARN(narrowed << " brackets narrowed (" << narrow << " below 2^-44), " << left << " left, " << in_doubt
+                  << " double-word sequences in doubt");
+    CHECK(narrowed > 100 * left);
+    CHECK(narrow * 4 > narrowed * 3);
 }

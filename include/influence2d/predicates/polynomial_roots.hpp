@@ -14,6 +14,7 @@
 /// vanishes there. In a filtered NT (double_word) every answer is the exact
 /// one or uncertain_sign. In a floating NT the same steps round.
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <optional>
@@ -295,12 +296,48 @@ std::vector<isolated_root<NT>> isolate_roots(const std::vector<polynomial<NT>>& 
     return out;
 }
 
+/// How many Newton steps narrowed_by_double takes at most before it
+/// bisects what is left: from the secant's point a simple root of a cubic
+/// is found to double's precision in four to six, the error squaring at
+/// each step; steps that cannot find it (a root of several, or one whose
+/// values drown in rounding) are cut off here, and bisection, which needs
+/// no more than the signs, ends the search.
+inline constexpr int narrowing_newton_steps = 8;
+
+/// The rounding of Horner's rule on a polynomial of n coefficients at x,
+/// relative to n times the sum of its terms' magnitudes: below 2 (n - 1) u
+/// of that sum (u = 2^-53; Higham, Accuracy and Stability of Numerical
+/// Algorithms, 5.1), so that below 2^-52 n; narrowed_by_double divides it by
+/// the slope for how far the rounded root may lie from the exact one of the
+/// rounded coefficients.
+inline constexpr double narrowing_rounding = 0x1p-52;
+
+/// How many times narrowed_by_double looks for the bracket's signs about
+/// its last guess, at 1, 8 and 64 times the root's rounding (its distance
+/// from the root, and the coefficients' own rounding, add to it).
+inline constexpr int narrowing_probes = 3;
+
 /// Narrows the bracket r of the only root of s[0] in it to a few units in
-/// the last place of double: the root sought by bisection in double (on
-/// s[0]'s coefficients rounded), then the narrow bracket around it checked
-/// exactly to hold a root of s[0] (roots_between). False, r unchanged,
-/// when the check fails (s[0] does not change sign in double across the
-/// bracket: its values lost in rounding).
+/// the last place of double: the root sought in double (on s[0]'s
+/// coefficients rounded), then the narrow bracket around it checked
+/// exactly to hold a root of s[0] (opposite_end_signs, else
+/// roots_between). False, r unchanged, when the check fails (s[0] does not
+/// change sign in double across the bracket: its values lost in rounding).
+///
+///   [lo, hi] <- r in double; s[0]'s rounded signs at its ends must differ
+///   x <- the secant's point of [lo, hi]
+///   at most narrowing_newton_steps times, while x lies inside (lo, hi):
+///       the sign of s[0](x) moves lo or hi to x (0: x is kept as the guess)
+///       x' <- x - s[0](x) / s[0]'(x); x' = x: stop
+///       x <- x', or the middle of [lo, hi] when x' is not inside it
+///   x inside (lo, hi): for d = e, 8 e, 64 e, e how far rounding may move
+///     the root (narrowing_rounding over the slope): x - d and x + d,
+///     clipped to [lo, hi], become [lo, hi] when their rounded signs are
+///     lo's and hi's (the first d that has them)
+///   bisect [lo, hi] until its ends are neighbouring doubles
+///   widen it by four units each side, clipped to r; check it exactly
+///   failing, by 128 units, and then by twice the root's rounding there
+///     (each when wider than the last), and check again
 template <class NT>
 bool narrowed_by_double(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r) {
     using tr = number_traits<NT>;
@@ -315,26 +352,77 @@ bool narrowed_by_double(const std::vector<polynomial<NT>>& s, isolated_root<NT>&
     const double v_lo = value(lo), v_hi = value(hi);
     if (!(v_lo < 0 && v_hi > 0) && !(v_lo > 0 && v_hi < 0)) return false;
     const bool rising = v_hi > 0;
+    // Newton's steps, every value narrowing the bracket by its sign.
+    double x = lo + (hi - lo) * (v_lo / (v_lo - v_hi)), spread = 0;
+    for (int step = 0; step < narrowing_newton_steps && x > lo && x < hi; ++step) {
+        // Horner's rule for the value, the derivative and the sum of the
+        // terms' magnitudes at once.
+        double v = 0, slope = 0, size = 0;
+        for (std::size_t k = c.size(); k-- > 0;) {
+            slope = slope * x + v;
+            v = v * x + c[k];
+            size = size * std::fabs(x) + std::fabs(c[k]);
+        }
+        if (v != 0) ((v > 0) == rising ? hi : lo) = x;
+        spread = narrowing_rounding * static_cast<double>(c.size()) * size / std::fabs(slope);
+        double next = x - v / slope;
+        if (next == x) break;
+        if (!(next > lo && next < hi)) next = lo + (hi - lo) / 2;  // (the step fails: the bracket's middle)
+        x = next;
+    }
+    // The steps approach from one side, so that one end may not have moved:
+    // the doubles either side of the last guess by as far as rounding may
+    // move its root, eight and 64 times as far while the rounded signs there
+    // are not the ends' (an end already nearer stays).
+    if (x > lo && x < hi) {
+        double reach = std::max(spread, std::nextafter(x, HUGE_VAL) - x);
+        for (int probe = 0; probe < narrowing_probes; ++probe, reach *= 8) {
+            const double below = std::max(lo, x - reach), above = std::min(hi, x + reach);
+            const bool low_holds = below == lo || value(below) * (rising ? -1 : 1) > 0,
+                       high_holds = above == hi || value(above) * (rising ? 1 : -1) > 0;
+            if (low_holds && high_holds) {
+                lo = below;
+                hi = above;
+                break;
+            }
+        }
+    }
     for (;;) {
         const double mid = lo + (hi - lo) / 2;
         if (!(mid > lo && mid < hi)) break;
         (((value(mid) > 0) == rising) ? hi : lo) = mid;
     }
-    // The root within a few units of [lo, hi], inside r: (lo', hi'].
-    for (int step = 0; step < 4; ++step) {
-        lo = std::nextafter(lo, -1.0);
-        hi = std::nextafter(hi, 2.0);
+    // The exact root within a few units of [lo, hi] (double's root of the
+    // rounded coefficients), else within 128, else within how far their
+    // rounding and Horner's may move it (narrowing_rounding over the slope,
+    // twice).
+    double slope = 0, size = 0, v = 0;
+    for (std::size_t k = c.size(); k-- > 0;) {
+        slope = slope * lo + v;
+        v = v * lo + c[k];
+        size = size * std::fabs(lo) + std::fabs(c[k]);
     }
-    const NT nlo = compare_values<NT>(tr::from_double(lo), r.low) > 0 ? NT(tr::from_double(lo)) : r.low;
-    const NT nhi = compare_values<NT>(tr::from_double(hi), r.high) < 0 ? NT(tr::from_double(hi)) : r.high;
-    if (compare_values<NT>(nlo, nhi) >= 0) return false;
-    // (nlo, nhi] lies within r, whose only root it holds when s[0] changes
-    // sign across it (opposite_end_signs); else by its Sturm count (when r's
-    // low_sign is known, s[0] is all there is to ask: then not at all).
-    const int low_sign = opposite_end_signs(s, nlo, nhi);
-    if (low_sign == 0 && (r.low_sign != 0 || roots_between(s, nlo, nhi) != 1)) return false;
-    r = {nlo, nhi, low_sign};
-    return true;
+    const double unit = hi - lo;
+    const double reach[] = {4 * unit, 128 * unit,
+                            2 * narrowing_rounding * static_cast<double>(c.size()) * size / std::fabs(slope)};
+    for (std::size_t attempt = 0; attempt < 3; ++attempt) {
+        // (Not wider than the last, or NaN: the check would fail again.)
+        if (attempt > 0 && !(reach[attempt] > reach[attempt - 1])) return false;
+        const double wide_lo = lo - reach[attempt], wide_hi = hi + reach[attempt];
+        const NT nlo = compare_values<NT>(tr::from_double(wide_lo), r.low) > 0 ? NT(tr::from_double(wide_lo)) : r.low;
+        const NT nhi = compare_values<NT>(tr::from_double(wide_hi), r.high) < 0 ? NT(tr::from_double(wide_hi)) : r.high;
+        if (compare_values<NT>(nlo, nhi) >= 0) return false;
+        // (nlo, nhi] lies within r, whose only root it holds when s[0]
+        // changes sign across it (opposite_end_signs); else by its Sturm
+        // count (when r's low_sign is known, s[0] is all there is to ask:
+        // then not at all).
+        const int low_sign = opposite_end_signs(s, nlo, nhi);
+        if (low_sign != 0 || (r.low_sign == 0 && roots_between(s, nlo, nhi) == 1)) {
+            r = {nlo, nhi, low_sign};
+            return true;
+        }
+    }
+    return false;
 }
 
 /// The sign of q at the root bracketed by r when q's value at the bracket's
