@@ -20,7 +20,9 @@
 #include "influence2d/core/range_scaling.hpp"
 #include "influence2d/distance/convex_gap.hpp"
 #include "influence2d/influence/bounds.hpp"
+#include "influence2d/predicates/convexity.hpp"
 #include "influence2d/predicates/distance.hpp"
+#include "influence2d/predicates/filters.hpp"
 
 #include "influence2d/motion/rational_turn.hpp"
 #include "influence2d/motion/turning.hpp"
@@ -168,7 +170,10 @@ inline rational_progress rational_advance(const polygon& a, const polygon& b, co
         return rational_advance(a.scaled_by_power_of_two(k), b.scaled_by_power_of_two(k),
                                 scaled_by_power_of_two(from, k), scaled_by_power_of_two(to, k));
     }
-    if (!convex_probe_applies(a, b, from, to)) return out;
+    // (convex_probe_applies, its range_shift known to be 0.)
+    if (a.size() > convex_probe_vertices || b.size() > convex_probe_vertices || !is_convex_polygon(a) ||
+        !is_convex_polygon(b))
+        return out;
     const double r = bounding_radius(b, {0, 0});
     const double scale = motion_scale(a, b, from, to);
     const double delta =
@@ -181,14 +186,14 @@ inline rational_progress rational_advance(const polygon& a, const polygon& b, co
     // it, below).
     const double lowered_by_place = 2 * posing_spread * delta;
     const point<double> shift{to.tx - from.tx, to.ty - from.ty};
-    std::vector<point<double>> av, posed(b.size());
-    for (std::size_t i = 0; i < a.size(); ++i) av.push_back(a.vertex(i));
+    const std::vector<point<double>>& av = a.vertices();
+    std::vector<point<double>> posed(b.size());
     convex_gap_result last;
     const std::vector<rational_piece> pieces = rational_pieces(from, to);
     for (std::size_t k = 0; k < pieces.size(); ++k) {
         const rational_piece& piece = pieces[k];
         const double span = piece.t1 - piece.t0, sweep = 2 * std::fabs(piece.w) * r * (1 + speed_widening);
-        const double v = (std::hypot(shift.x, shift.y) * span + sweep) * (1 + speed_widening);
+        const double v = (filter_length(shift.x, shift.y) * span + sweep) * (1 + speed_widening);
         const double lowered = lowered_by_place + derivative_slack * v;
         double tau = 0, last_tau = 0, last_lower = 0;
         for (std::size_t probe = 0;; ++probe) {

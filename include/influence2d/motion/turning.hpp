@@ -34,6 +34,7 @@
 #include "influence2d/predicates/certain_nearest.hpp"
 #include "influence2d/predicates/contact_time.hpp"
 #include "influence2d/predicates/convexity.hpp"
+#include "influence2d/predicates/filters.hpp"
 #include "influence2d/predicates/orientation.hpp"
 #include "influence2d/query/intersects.hpp"
 #include "influence2d/query/placed_meet.hpp"
@@ -60,9 +61,10 @@ namespace sweep {
 inline constexpr double motion_rounding = 0x1p-48;
 
 /// The relative widening of the speed bound |T1 - T0| + |theta1 - theta0| r:
-/// the differences and std::hypot round by an ulp or two each (relative
-/// 2^-52), r is already an upper bound (bounding_radius); 2^-48 covers the
-/// few roundings of the sum with room.
+/// the differences and their length (filter_length: sqrt(x^2 + y^2), three
+/// roundings of the squares and the sum and one of the root) round by two
+/// ulps or so each (relative 2^-52), r is already an upper bound
+/// (bounding_radius); 2^-48 covers the few roundings of the sum with room.
 inline constexpr double speed_widening = 0x1p-48;
 
 /// The relative lowering of a vertex's derivative along an axis
@@ -147,7 +149,7 @@ struct advance_result {
 /// difference (a few ulps of v) are covered by widening it and adding
 /// speed_widening v; never more than v.
 inline double approach_speed(const point<double>& n, const point<double>& shift, double sweep, double v) {
-    const double along = (n.x * shift.x + n.y * shift.y) / std::hypot(n.x, n.y);
+    const double along = (n.x * shift.x + n.y * shift.y) / filter_length(n.x, n.y);
     return std::max(0.0, sweep - along) * (1 + speed_widening) + speed_widening * v;
 }
 
@@ -164,7 +166,7 @@ struct advance_limits {
     advance_limits(const polygon& b, const pose& from, const pose& to, double tolerance, double error)
         : r(bounding_radius(b, {0, 0})),
           turn(std::fabs(to.theta - from.theta)),
-          v((std::hypot(to.tx - from.tx, to.ty - from.ty) + turn * r) * (1 + speed_widening)),
+          v((filter_length(to.tx - from.tx, to.ty - from.ty) + turn * r) * (1 + speed_widening)),
           delta(motion_rounding * (r * (std::fabs(from.theta) + std::fabs(to.theta) + 1) + std::fabs(from.tx) +
                                    std::fabs(from.ty) + std::fabs(to.tx) + std::fabs(to.ty))),
           resolution(4 * (delta + v * 0x1p-52) + 2 * error),
@@ -354,7 +356,7 @@ public:
     /// cannot answer.
     convex_probe(const polygon& a, const polygon& b, double scale, General general)
         : a_shape_(a), b_shape_(b), scale_(scale), b_scale_(coordinate_scale(b)), general_(std::move(general)) {
-        for (std::size_t i = 0; i < a.size(); ++i) a_.push_back(a.vertex(i));
+        a_ = a.vertices();
         posed_.resize(b.size());
     }
 
@@ -401,7 +403,7 @@ public:
         const double turn = to.theta - from.theta;
         const point<double> shift{to.tx - from.tx, to.ty - from.ty};
         const point<double>& axis = last_gap_.axis;
-        const double norm = std::hypot(axis.x, axis.y);
+        const double norm = filter_length(axis.x, axis.y);
         const point<double> n{axis.x / norm, axis.y / norm};
         double reach = -HUGE_VAL;
         for (const point<double>& a : a_) reach = std::max(reach, n.x * a.x + n.y * a.y);
