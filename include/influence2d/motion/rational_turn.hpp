@@ -445,49 +445,141 @@ struct piece_contact {
     isolated_root<NT> root;
 };
 
-/// The sign of f at `from` when f's Bernstein coefficients on [from, to]
-/// (on_window, in NT) change sign exactly once, their first and last not 0:
-/// then f has one root in (from, to), a simple one (Descartes' rule of
-/// signs in the Bernstein basis: the count of roots in the open interval,
-/// with multiplicity, is at most the changes and of their parity). 0
-/// otherwise, or when a sign is in doubt.
-template <class NT>
-int single_crossing(const polynomial<NT>& f, double from, double to) {
-    std::array<NT, 4> a;
-    for (std::size_t k = 0; k < 4; ++k) a[k] = k < f.c.size() ? f.c[k] : num<NT>(0);
-    const bernstein<NT> b = bernstein_of(on_window(a, from, to));
+/// The sign of the first of Bernstein coefficients b (of a cubic on a
+/// window) when they change sign exactly once, the first and the last not
+/// 0: then the cubic has one root inside the window, a simple one
+/// (Descartes' rule of signs in the Bernstein basis: the count of roots in
+/// the open interval, with multiplicity, is at most the changes and of
+/// their parity). 0 otherwise, or when a sign is in doubt.
+template <class T>
+int single_sign_change(const bernstein<T>& b) {
     try {
         int changes = 0, last = 0;
-        for (const NT& x : b) {
-            const int sign = number_traits<NT>::sign(x);
+        for (const T& x : b) {
+            const int sign = number_traits<T>::sign(x);
             if (sign == 0) continue;
             changes += last != 0 && sign != last;
             last = sign;
         }
-        const int first = number_traits<NT>::sign(b[0]), final = number_traits<NT>::sign(b[3]);
+        const int first = number_traits<T>::sign(b[0]), final = number_traits<T>::sign(b[3]);
         return changes == 1 && first != 0 && final != 0 ? first : 0;
     } catch (const uncertain_sign&) {
         return 0;
     }
 }
 
+/// The sign of f at `from` when f's Bernstein coefficients on [from, to]
+/// (on_window, in NT) change sign exactly once (single_sign_change): then f
+/// has one root in (from, to), a simple one. 0 otherwise, or when a sign
+/// is in doubt.
+template <class NT>
+int single_crossing(const polynomial<NT>& f, double from, double to) {
+    std::array<NT, 4> a;
+    for (std::size_t k = 0; k < 4; ++k) a[k] = k < f.c.size() ? f.c[k] : num<NT>(0);
+    return single_sign_change(bernstein_of(on_window(a, from, to)));
+}
+
+/// The tau of the midpoint between the neighbouring doubles x < y of a
+/// piece's time: (x - t0) / span + (y - x) / (2 span), the sum of two
+/// doubles when both terms are (the second, a power of two, is unless it
+/// falls below the subnormals' step), so that a double word holds it
+/// exactly and two midpoints met twice compare equal; otherwise computed in
+/// NT.
+template <class NT>
+NT tau_between(const rational_piece& piece, double x, double y) {
+    const double inverse = 1 / (piece.t1 - piece.t0);  // (a power of two)
+    const double gap = (y - x) * inverse, half_gap = gap / 2;
+    double from_start;
+    if (half_gap + half_gap == gap && exact_sum::exact_double_sum(x * inverse, -piece.t0 * inverse, from_start))
+        return NT(num<NT>(from_start) + num<NT>(half_gap));
+    return NT(NT(NT(NT(num<NT>(x) + num<NT>(y)) * num<NT>(0.5)) - num<NT>(piece.t0)) * num<NT>(inverse));
+}
+
+/// How many doubles narrowed_for_rounding tries for the root's rounded
+/// time: double's guess of the root, rounded to a time, and then its
+/// neighbours on the root's side, one at a time (on the turning study's
+/// convex 8-gons, of 113 contacts found after the start 46 round to the
+/// guess, 53 to a neighbour, 12 to the double two units away and 2 further).
+inline constexpr int rounding_tries = 3;
+
+/// Narrows the bracket r of the only root of s[0] in it, in a piece's tau,
+/// about double's guess of the root (double_root_bracket). In an NT that is
+/// not floating, when r's low_sign is known, to the midpoints either side
+/// of the double d that the root's time rounds to (rounded_time then asks
+/// no sign):
+///
+///   d <- the double nearest the guess's time
+///   rounding_tries times, while the midpoints m-, m+ about d lie in r:
+///     s[0]'s certain signs at m- and m+ differ:   (m-, m+], done
+///     either is 0 (a tie), or in doubt:           stop
+///     both low_sign's:  d <- its upper neighbour (the root lies above m+)
+///     both the other:   d <- its lower neighbour
+///
+/// Else, or when the tries end, as narrowed_by_double does
+/// (narrowed_about).
+template <class NT>
+void narrowed_for_rounding(const rational_piece& piece, const std::vector<polynomial<NT>>& s, isolated_root<NT>& r) {
+    const std::optional<std::pair<double, double>> guess = double_root_bracket(s[0], r);
+    if (!guess) return;
+    if constexpr (number_traits<NT>::category != number_category::floating) {
+        if (r.low_sign != 0) {
+            const double tau = guess->first + (guess->second - guess->first) / 2;
+            double d = piece.t0 + tau * (piece.t1 - piece.t0);
+            NT lo = tau_between<NT>(piece, std::nextafter(d, -HUGE_VAL), d),
+               hi = tau_between<NT>(piece, d, std::nextafter(d, HUGE_VAL));
+            try {
+                int at_lo = 2, at_hi = 2;  // (2: not asked yet)
+                for (int k = 0; k < rounding_tries; ++k) {
+                    // (Within r, whose only root a change of sign there is.)
+                    if (compare_values<NT>(lo, r.low) < 0 || compare_values<NT>(hi, r.high) > 0) break;
+                    if (at_lo == 2) at_lo = s[0].sign_at(lo);
+                    if (at_hi == 2) at_hi = s[0].sign_at(hi);
+                    if (at_lo == 0 || at_hi == 0) break;
+                    if (at_lo != at_hi) {
+                        r = {lo, hi, at_lo};
+                        return;
+                    }
+                    if (at_lo == r.low_sign) {
+                        d = std::nextafter(d, HUGE_VAL);
+                        lo = hi;
+                        at_lo = at_hi;
+                        hi = tau_between<NT>(piece, d, std::nextafter(d, HUGE_VAL));
+                        at_hi = 2;
+                    } else {
+                        d = std::nextafter(d, -HUGE_VAL);
+                        hi = lo;
+                        at_hi = at_lo;
+                        lo = tau_between<NT>(piece, std::nextafter(d, -HUGE_VAL), d);
+                        at_lo = 2;
+                    }
+                }
+            } catch (const uncertain_sign&) {
+                // (Left to narrowed_about.)
+            }
+        }
+    }
+    narrowed_about(s, r, guess->first, guess->second);
+}
+
 /// The earliest root in (after, end] of the cubics' f at which lo and hi
 /// are >= 0 (in (after, end) when `open_end`: the next piece starts at end
-/// = 1), bracketed; none
-/// when there is none (or f is identically zero: the point slides along the
+/// = 1), bracketed (narrowed_for_rounding, in `piece`'s tau); none when
+/// there is none (or f is identically zero: the point slides along the
 /// segment's line, and reaches the segment only at an end, a vertex of the
-/// polygon, where another pair's f finds the contact).
+/// polygon, where another pair's f finds the contact). `crossing`, when not
+/// 0, is single_crossing's answer on (after, end], found by the sifting.
 template <class NT>
-std::optional<std::pair<std::vector<polynomial<NT>>, isolated_root<NT>>> earliest_root(const contact_cubics<NT>& k,
+std::optional<std::pair<std::vector<polynomial<NT>>, isolated_root<NT>>> earliest_root(const rational_piece& piece,
+                                                                                       const contact_cubics<NT>& k,
                                                                                        double after, double end,
-                                                                                       bool open_end) {
+                                                                                       bool open_end, int crossing) {
     if (k.f.degree() < 1) return std::nullopt;  // identically zero, or a non-zero constant
-    if (const int low_sign = single_crossing(k.f, after, end)) {
+    if (const int low_sign = crossing != 0 ? crossing : single_crossing(k.f, after, end)) {
         // f's only root in the window, simple: f is all that is asked of
         // its sequence (isolated_root::low_sign).
         std::vector<polynomial<NT>> s{k.f};
         isolated_root<NT> r{num<NT>(after), num<NT>(end), low_sign};
-        narrowed_by_double(s, r);
+        narrowed_for_rounding(piece, s, r);
         if (sign_at_root(k.lo, s, r) >= 0 && sign_at_root(k.hi, s, r) >= 0) return std::make_pair(std::move(s), r);
         return std::nullopt;
     }
@@ -496,7 +588,7 @@ std::optional<std::pair<std::vector<polynomial<NT>>, isolated_root<NT>>> earlies
     const bool root_at_end = open_end && k.f.sign_at(last) == 0;
     for (isolated_root<NT> r : isolate_roots(s, num<NT>(after), last)) {
         if (root_at_end && compare_values<NT>(r.high, last) == 0) break;  // (the bracket's root is end, its last)
-        narrowed_by_double(s, r);  // (cheap: the signs below and the rounding then take a step or two)
+        narrowed_for_rounding(piece, s, r);  // (cheap: the signs below and the rounding then take a step or two)
         if (sign_at_root(k.lo, s, r) >= 0 && sign_at_root(k.hi, s, r) >= 0) return std::make_pair(std::move(s), r);
     }
     return std::nullopt;
@@ -524,16 +616,19 @@ std::optional<std::pair<feature, feature>> meeting_at_piece_start(const polygon&
 /// A vertex-edge pair of a piece that the sifting keeps: no contact of it at
 /// or before `after` (a tau of the piece).
 struct kept_pair {
-    sweep::contact_site site;
-    double after;
+    sweep::contact_site site;  ///< the vertex and the edge
+    double after;              ///< no contact of theirs at or before this tau
+    /// single_crossing's answer for their f on (after, the window's end],
+    /// when the sifting found it (its Bernstein coefficients there); 0 when
+    /// unknown.
+    int crossing = 0;
 };
 
 /// How many times rounded_time steps to its guess's neighbour before it
 /// takes the middle of the bracket left: the first guess, the middle of a
-/// bracket from narrowed_by_double, is off by the rounding of the cubic's
-/// coefficients and values in double (on the turning study's convex 8-gons,
-/// of 113 contacts found after the start 46 were rounded to the first guess,
-/// 53 to a neighbour, 12 to the double two units away and 2 further).
+/// bracket from narrowed_about, is off by the rounding of the cubic's
+/// coefficients and values in double, mostly by a unit or two
+/// (rounding_tries).
 inline constexpr int rounded_time_neighbours = 2;
 
 /// The time t0 + tau (t1 - t0) of the root bracketed by r, rounded to the
@@ -556,7 +651,10 @@ inline constexpr int rounded_time_neighbours = 2;
 /// bracket's low end when its signs at the ends differ (root_side), else a
 /// Sturm count within the bracket (or the bracket's own ends), so in double
 /// words (a filtered NT) it is certain unless the root lies within their
-/// bound of a midpoint; the bracket's ends are never rounded.
+/// bound of a midpoint; the bracket's ends are never rounded. A midpoint at
+/// the bracket's high end, the ends' signs differing, lies above the root
+/// with no sign asked: a bracket that narrowed_for_rounding left between
+/// the midpoints about d is rounded to d at once.
 template <class NT>
 double rounded_time(const rational_piece& piece, const std::vector<polynomial<NT>>& s, isolated_root<NT> r) {
     using tr = number_traits<NT>;
@@ -570,33 +668,21 @@ double rounded_time(const rational_piece& piece, const std::vector<polynomial<NT
             if (!may_halve<NT>(halvings) || !halve(s, r)) return hi;
         }
     } else {
-        const double inverse = 1 / (piece.t1 - piece.t0);  // (a power of two)
-        const NT half = num<NT>(0.5), inverse_span = num<NT>(inverse);
-        // The tau of the midpoint between the neighbouring doubles x < y:
-        // (x - t0) / span + (y - x) / (2 span), the sum of two doubles when
-        // both terms are (the second, a power of two, is unless it falls
-        // below the subnormals' step), so that a double word holds it
-        // exactly and two midpoints met twice compare equal; otherwise
-        // computed in NT.
-        const auto tau_between = [&](double x, double y) {
-            const double gap = (y - x) * inverse, half_gap = gap / 2;
-            double from_start;
-            if (half_gap + half_gap == gap && exact_sum::exact_double_sum(x * inverse, -piece.t0 * inverse, from_start))
-                return NT(num<NT>(from_start) + num<NT>(half_gap));
-            return NT(NT(NT(NT(num<NT>(x) + num<NT>(y)) * half) - t0) * inverse_span);
-        };
-        // The side of the root against tau: -1 below it, 0 at it, +1 above.
+        const NT half = num<NT>(0.5);
+        // The side of the root against tau: -1 below it, 0 at it, +1 above
+        // (at the bracket's high end, below it when the ends' signs differ).
         if (r.low_sign == 0) r.low_sign = opposite_end_signs(s, r.low, r.high);
         const auto side = [&](const NT& tau) {
             if (compare_values<NT>(tau, r.low) <= 0) return 1;
-            if (compare_values<NT>(tau, r.high) > 0) return -1;
+            const int against_high = compare_values<NT>(tau, r.high);
+            if (against_high > 0 || (against_high == 0 && r.low_sign != 0)) return -1;
             return root_side(s, r, tau);
         };
         const auto guess = [&] { return tr::to_double(time_of(NT(NT(r.low + r.high) * half))); };
         double d = guess();
         for (int k = 0;; ++k) {
             const double below = std::nextafter(d, -HUGE_VAL), above = std::nextafter(d, HUGE_VAL);
-            const NT m_lo = tau_between(below, d), m_hi = tau_between(d, above);
+            const NT m_lo = tau_between<NT>(piece, below, d), m_hi = tau_between<NT>(piece, d, above);
             const int at_lo = side(m_lo), at_hi = side(m_hi);
             if (at_lo == 0) return even_of(below, d);
             if (at_hi == 0) return even_of(d, above);
@@ -644,9 +730,10 @@ std::optional<std::pair<sweep::contact_site, double>> earliest_kept_contact(cons
         const moving_point<R> m = c.site.moving_vertex ? moving_vertex<R>(piece, t, b.vertex(c.site.vertex))
                                                        : moving_static_vertex<R>(piece, t, a.vertex(c.site.vertex));
         const polygon& edges = c.site.moving_vertex ? a : b;
-        auto found = earliest_root(cubics_of(m, w2, c.site.moving_vertex ? one : base, edges.vertex(c.site.edge),
+        auto found = earliest_root(piece,
+                                   cubics_of(m, w2, c.site.moving_vertex ? one : base, edges.vertex(c.site.edge),
                                              edges.vertex(edges.next(c.site.edge))),
-                                   c.after, end, !last && end == 1);
+                                   c.after, end, !last && end == 1, c.crossing);
         if (!found) continue;
         piece_contact<R> contact{c.site, std::move(found->first), found->second};
         if (best) {
@@ -693,8 +780,13 @@ std::optional<std::pair<sweep::contact_site, double>> contact_within(const polyg
         const auto on = [&](std::size_t i) {
             return bernstein_of(whole ? k[i] : on_window(k[i], window_from, window_to));
         };
-        if (const std::optional<double> at = first_possible(on(0), on(1), on(2), window_from, window_to, depth, known))
-            kept.push_back({site, std::max({*at, from_box, known})});
+        const bernstein<Filter> f = on(0);
+        if (const std::optional<double> at = first_possible(f, on(1), on(2), window_from, window_to, depth, known)) {
+            const double after = std::max({*at, from_box, known});
+            // f's coefficients on the window are single_crossing's when the
+            // search starts at the window's start.
+            kept.push_back({site, after, after == window_from ? single_sign_change(f) : 0});
+        }
     };
     // B's vertices against A's edges, in A's frame; A's vertices against
     // B's edges, in B's frame (q less the translation, turned back): the

@@ -296,7 +296,7 @@ std::vector<isolated_root<NT>> isolate_roots(const std::vector<polynomial<NT>>& 
     return out;
 }
 
-/// How many Newton steps narrowed_by_double takes at most before it
+/// How many Newton steps double_root_bracket takes at most before it
 /// bisects what is left: from the secant's point a simple root of a cubic
 /// is found to double's precision in four to six, the error squaring at
 /// each step; steps that cannot find it (a root of several, or one whose
@@ -307,50 +307,58 @@ inline constexpr int narrowing_newton_steps = 8;
 /// The rounding of Horner's rule on a polynomial of n coefficients at x,
 /// relative to n times the sum of its terms' magnitudes: below 2 (n - 1) u
 /// of that sum (u = 2^-53; Higham, Accuracy and Stability of Numerical
-/// Algorithms, 5.1), so that below 2^-52 n; narrowed_by_double divides it by
+/// Algorithms, 5.1), so that below 2^-52 n; double_root_bracket divides it by
 /// the slope for how far the rounded root may lie from the exact one of the
 /// rounded coefficients.
 inline constexpr double narrowing_rounding = 0x1p-52;
 
-/// How many times narrowed_by_double looks for the bracket's signs about
+/// How many times double_root_bracket looks for the bracket's signs about
 /// its last guess, at 1, 8 and 64 times the root's rounding (its distance
 /// from the root, and the coefficients' own rounding, add to it).
 inline constexpr int narrowing_probes = 3;
 
-/// Narrows the bracket r of the only root of s[0] in it to a few units in
-/// the last place of double: the root sought in double (on s[0]'s
-/// coefficients rounded), then the narrow bracket around it checked
-/// exactly to hold a root of s[0] (opposite_end_signs, else
-/// roots_between). False, r unchanged, when the check fails (s[0] does not
-/// change sign in double across the bracket: its values lost in rounding).
+/// The rounded coefficients of p, lowest degree first.
+template <class NT>
+std::vector<double> rounded_coefficients(const polynomial<NT>& p) {
+    std::vector<double> c;
+    c.reserve(p.c.size());
+    for (const NT& x : p.c) c.push_back(number_traits<NT>::to_double(x));
+    return c;
+}
+
+/// The value at x of the polynomial with coefficients c (lowest degree
+/// first), in double (Horner's rule).
+inline double rounded_value(const std::vector<double>& c, double x) {
+    double v = 0;
+    for (std::size_t k = c.size(); k-- > 0;) v = v * x + c[k];
+    return v;
+}
+
+/// The root of p in the bracket r sought in double, on p's coefficients
+/// rounded: two neighbouring doubles at which p's rounded values have the
+/// signs they have at r's ends; none when those differ not (p's values
+/// lost in rounding there). A guess of where p's exact root lies, which
+/// narrowed_about checks.
 ///
-///   [lo, hi] <- r in double; s[0]'s rounded signs at its ends must differ
+///   [lo, hi] <- r in double; p's rounded signs at its ends must differ
 ///   x <- the secant's point of [lo, hi]
 ///   at most narrowing_newton_steps times, while x lies inside (lo, hi):
-///       the sign of s[0](x) moves lo or hi to x (0: x is kept as the guess)
-///       x' <- x - s[0](x) / s[0]'(x); x' = x: stop
+///       the sign of p(x) moves lo or hi to x (0: x is kept as the guess)
+///       x' <- x - p(x) / p'(x); x' = x: stop
 ///       x <- x', or the middle of [lo, hi] when x' is not inside it
 ///   x inside (lo, hi): for d = e, 8 e, 64 e, e how far rounding may move
 ///     the root (narrowing_rounding over the slope): x - d and x + d,
 ///     clipped to [lo, hi], become [lo, hi] when their rounded signs are
 ///     lo's and hi's (the first d that has them)
 ///   bisect [lo, hi] until its ends are neighbouring doubles
-///   widen it by four units each side, clipped to r; check it exactly
-///   failing, by 128 units, and then by twice the root's rounding there
-///     (each when wider than the last), and check again
 template <class NT>
-bool narrowed_by_double(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r) {
+std::optional<std::pair<double, double>> double_root_bracket(const polynomial<NT>& p, const isolated_root<NT>& r) {
     using tr = number_traits<NT>;
-    std::vector<double> c;
-    for (const NT& x : s[0].c) c.push_back(tr::to_double(x));
-    const auto value = [&c](double x) {
-        double v = 0;
-        for (std::size_t k = c.size(); k-- > 0;) v = v * x + c[k];
-        return v;
-    };
+    const std::vector<double> c = rounded_coefficients(p);
+    const auto value = [&c](double x) { return rounded_value(c, x); };
     double lo = tr::to_double(r.low), hi = tr::to_double(r.high);
     const double v_lo = value(lo), v_hi = value(hi);
-    if (!(v_lo < 0 && v_hi > 0) && !(v_lo > 0 && v_hi < 0)) return false;
+    if (!(v_lo < 0 && v_hi > 0) && !(v_lo > 0 && v_hi < 0)) return std::nullopt;
     const bool rising = v_hi > 0;
     // Newton's steps, every value narrowing the bracket by its sign.
     double x = lo + (hi - lo) * (v_lo / (v_lo - v_hi)), spread = 0;
@@ -392,15 +400,32 @@ bool narrowed_by_double(const std::vector<polynomial<NT>>& s, isolated_root<NT>&
         if (!(mid > lo && mid < hi)) break;
         (((value(mid) > 0) == rising) ? hi : lo) = mid;
     }
+    return std::pair{lo, hi};
+}
+
+/// Narrows the bracket r of the only root of s[0] in it about the
+/// neighbouring doubles lo < hi (double_root_bracket's guess): to a few
+/// units in the last place when a bracket of them is checked exactly to
+/// hold a root of s[0] (opposite_end_signs, else roots_between). False, r
+/// unchanged, when no check holds.
+///
+///   widen [lo, hi] by four units each side, clipped to r; check it exactly
+///   failing, by 128 units, and then by twice the root's rounding there
+///     (each when wider than the last), and check again
+template <class NT>
+bool narrowed_about(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r, double lo, double hi) {
+    using tr = number_traits<NT>;
     // The exact root within a few units of [lo, hi] (double's root of the
     // rounded coefficients), else within 128, else within how far their
     // rounding and Horner's may move it (narrowing_rounding over the slope,
     // twice).
+    const std::vector<NT>& c = s[0].c;
     double slope = 0, size = 0, v = 0;
     for (std::size_t k = c.size(); k-- > 0;) {
+        const double ck = tr::to_double(c[k]);
         slope = slope * lo + v;
-        v = v * lo + c[k];
-        size = size * std::fabs(lo) + std::fabs(c[k]);
+        v = v * lo + ck;
+        size = size * std::fabs(lo) + std::fabs(ck);
     }
     const double unit = hi - lo;
     const double reach[] = {4 * unit, 128 * unit,
@@ -423,6 +448,16 @@ bool narrowed_by_double(const std::vector<polynomial<NT>>& s, isolated_root<NT>&
         }
     }
     return false;
+}
+
+/// Narrows the bracket r of the only root of s[0] in it to a few units in
+/// the last place of double: the root sought in double
+/// (double_root_bracket), then a narrow bracket about it checked exactly
+/// (narrowed_about). False, r unchanged, when either fails.
+template <class NT>
+bool narrowed_by_double(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r) {
+    const std::optional<std::pair<double, double>> guess = double_root_bracket(s[0], r);
+    return guess && narrowed_about(s, r, guess->first, guess->second);
 }
 
 /// The sign of q at the root bracketed by r when q's value at the bracket's
