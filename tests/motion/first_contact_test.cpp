@@ -413,6 +413,17 @@ TEST_CASE("sweep: bad input is refused", "[sweep]") {
     CHECK_THROWS_AS(first_contact<double>(a, a, {nan, 0, 0}, {1, 0, 0}), invalid_input);
     CHECK_THROWS_AS(first_contact<exact_rational>(a, a, {0, 0, 0}, {1, HUGE_VAL, 0}), invalid_input);
     CHECK_THROWS_AS(certified_first_contact(a, a, {0, 0, 0}, {0, 0, nan}), invalid_input);
+    // The motions that turn, which pose B by their own formulas, name the
+    // pose and its component as translations do, in both models.
+    for (const turning_model model : {turning_model::rational, turning_model::angle_linear}) {
+        const sweep_options o{sweep_options{}.tolerance, model};
+        CHECK_THROWS_WITH(first_contact<double>(a, a, {0, 0, 0}, {1, 0, nan}, o),
+                          "end pose: theta is NaN, not a finite number");
+        CHECK_THROWS_WITH(certified_first_contact(a, a, {0, 0, 0}, {1, 0, nan}, o),
+                          "end pose: theta is NaN, not a finite number");
+        CHECK_THROWS_WITH(certified_first_contact(a, a, {HUGE_VAL, 0, 0}, {1, 0, 1}, o),
+                          "pose: tx is +infinity, not a finite number");
+    }
     CHECK_THROWS_AS(exit_distance<double>(a, a, {0, 0, 0}, nan, 1), invalid_input);
     CHECK_THROWS_AS(exit_distance<double>(a, a, {0, 0, 0}, 0, 0), invalid_input);
     CHECK_THROWS_AS(exit_distance<exact_rational>(a, a, {0, 0, 0}, 1, -HUGE_VAL), invalid_input);

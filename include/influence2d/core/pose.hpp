@@ -40,7 +40,11 @@ struct rotation_pose {
     /// the check is one comparison: x - x is 0 for every finite x and NaN
     /// otherwise, so the sum of the three differences is 0 exactly when all
     /// three are finite.
-    explicit rotation_pose(const pose& p) : c(std::cos(p.theta)), s(std::sin(p.theta)), tx(p.tx), ty(p.ty) {
+    explicit rotation_pose(const pose& p) : c(std::cos(p.theta)), s(std::sin(p.theta)), tx(p.tx), ty(p.ty) { check(p); }
+
+    /// Throws invalid_input as the constructor does for a NaN or infinite
+    /// component of p, without taking a cosine or a sine.
+    static void check(const pose& p) {
         if (!((p.tx - p.tx) + (p.ty - p.ty) + (p.theta - p.theta) == 0)) refuse(p);
     }
 

@@ -83,7 +83,7 @@ template <class NT>
 contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose& from, const pose& to,
                                  const sweep_options& options = {}) {
     using namespace sweep;
-    const motion m = motion::accepted<NT>(a, b, from, to, options);
+    motion::check<NT>(a, b, from, to, options);
     if constexpr (scaled_into_range_v<NT>) {
         if (const int k = range_shift<NT>(a, b, from, to)) {
             sweep_options scaled = options;
@@ -97,6 +97,7 @@ contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose&
         return {t.contact, number_traits<NT>::from_double(t.time), t.static_feature, t.moving_feature};
     }
     if (from.theta != to.theta) return turning_first_contact<NT>(a, b, from, to, options);
+    const motion m(from, to);
     contact_result<NT> r;
     if (const auto met = meeting_at_start<NT>(a, b, from, m.start)) {
         r.contact = true;
@@ -137,7 +138,7 @@ template <class Exact, class Fine = void>
 contact_result<double> filtered_first_contact(const polygon& a, const polygon& b, const pose& from, const pose& to,
                                               const sweep_options& options = {}) {
     using namespace sweep;
-    const motion m = motion::accepted<double>(a, b, from, to, options);
+    motion::check<double>(a, b, from, to, options);
     if (const int k = range_shift<double>(a, b, from, to); k != 0 && scales_exactly(a, b, k, from, to)) {
         sweep_options scaled = options;
         scaled.tolerance = scaled_length(options.tolerance, k);
@@ -148,6 +149,7 @@ contact_result<double> filtered_first_contact(const polygon& a, const polygon& b
     if (from.theta != to.theta && options.model == turning_model::rational)
         return advanced_rational_first_contact<Exact>(a, b, from, to);
     if (from.theta != to.theta) return filtered_turning_first_contact<Exact, Fine>(a, b, from, to, options);
+    const motion m(from, to);
     contact_result<double> r;
     const auto met = fallback<>::run([&] { return meeting_at_start<certified>(a, b, from, m.start); },
                                      [&] { return meeting_at_start<Exact>(a, b, from, m.start); });

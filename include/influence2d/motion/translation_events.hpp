@@ -267,26 +267,35 @@ struct motion {
     /// infinite component of either.
     motion(const pose& from, const pose& to) : start(from), end(checked_end(to)) {}
 
-    /// The motion of B from `from` to `to` against A, both polygons checked
-    /// for NT (accepted_polygon) and the options' tolerance (finite, >= 0).
+    /// Checks the arguments of a motion query of B from `from` to `to`
+    /// against A: both polygons for NT (accepted_polygon), the options'
+    /// tolerance (finite, >= 0) and both poses (finite), without taking
+    /// their cosines and sines (the motions that turn pose B by their own
+    /// formulas; a translation builds its motion after).
     template <class NT>
-    static motion accepted(const polygon& a, const polygon& b, const pose& from, const pose& to,
-                           const sweep_options& options) {
+    static void check(const polygon& a, const polygon& b, const pose& from, const pose& to,
+                      const sweep_options& options) {
         accepted_polygon<NT>(a, "static");
         accepted_polygon<NT>(b, "moving");
         if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance))
             throw invalid_input("sweep_options: tolerance is " + std::to_string(options.tolerance) +
                                 ", not a finite number >= 0");
-        return motion(from, to);
+        rotation_pose::check(from);
+        named_end([&] { rotation_pose::check(to); });
     }
 
 private:
-    static rotation_pose checked_end(const pose& to) {
+    /// f(), its invalid_input said of the end pose.
+    template <class F>
+    static auto named_end(F&& f) {
         try {
-            return rotation_pose(to);
+            return f();
         } catch (const invalid_input& e) {
             throw invalid_input(std::string("end ") + e.what());
         }
+    }
+    static rotation_pose checked_end(const pose& to) {
+        return named_end([&] { return rotation_pose(to); });
     }
 };
 
