@@ -90,6 +90,7 @@ inline std::vector<rational_piece> rational_pieces(const pose& from, const pose&
                                 " radians, more than the rational model's 2^20 quarter turns");
     }
     std::vector<rational_piece> out;
+    out.reserve(k);
     const double step = turn / static_cast<double>(k);
     const double w = std::tan(step / 2);
     for (std::size_t j = 0; j < k; ++j) {
@@ -133,9 +134,11 @@ struct contact_cubics {
 template <class NT>
 using cubic_coefficients = std::array<std::array<NT, 4>, 3>;
 
+/// The coefficients of the cubics of m on the segment from p to q
+/// (contact_cubics); lo's and hi's left 0 unless `ends`.
 template <class NT>
 cubic_coefficients<NT> coefficients_of(const moving_point<NT>& m, const NT& w2, const NT& l, const point<double>& p,
-                                       const point<double>& q) {
+                                       const point<double>& q, bool ends = true) {
     const NT ex = num<NT>(q.x) - num<NT>(p.x), ey = num<NT>(q.y) - num<NT>(p.y);
     const NT px = NT(num<NT>(p.x) * l), py = NT(num<NT>(p.y) * l);
     cubic_coefficients<NT> out;
@@ -149,9 +152,10 @@ cubic_coefficients<NT> coefficients_of(const moving_point<NT>& m, const NT& w2, 
     yy[0] = NT(yy[0] - py);
     yx[2] = NT(yx[2] - w2 * px);
     yy[2] = NT(yy[2] - w2 * py);
+    for (std::size_t k = 0; k < 4; ++k) out[0][k] = NT(ex * yy[k] - ey * yx[k]);
+    if (!ends) return out;
     const NT e2 = NT((ex * ex + ey * ey) * l);
     for (std::size_t k = 0; k < 4; ++k) {
-        out[0][k] = NT(ex * yy[k] - ey * yx[k]);
         out[1][k] = NT(ex * yx[k] + ey * yy[k]);
         out[2][k] = NT(-out[1][k]);
     }
@@ -160,12 +164,15 @@ cubic_coefficients<NT> coefficients_of(const moving_point<NT>& m, const NT& w2, 
     return out;
 }
 
+/// The cubics of m on the segment from p to q, trimmed; lo and hi left
+/// empty unless `ends` (when the sifting found both positive).
 template <class NT>
 contact_cubics<NT> cubics_of(const moving_point<NT>& m, const NT& w2, const NT& l, const point<double>& p,
-                             const point<double>& q) {
-    const cubic_coefficients<NT> k = coefficients_of(m, w2, l, p, q);
+                             const point<double>& q, bool ends = true) {
+    const cubic_coefficients<NT> k = coefficients_of(m, w2, l, p, q, ends);
     contact_cubics<NT> out;
     for (auto [poly, c] : {std::pair{&out.f, &k[0]}, std::pair{&out.lo, &k[1]}, std::pair{&out.hi, &k[2]}}) {
+        if (poly != &out.f && !ends) break;
         poly->c.assign(c->begin(), c->end());
         poly->trimmed();
     }
@@ -561,26 +568,47 @@ void narrowed_for_rounding(const rational_piece& piece, const std::vector<polyno
     narrowed_about(s, r, guess->first, guess->second);
 }
 
+/// A vertex-edge pair of a piece that the sifting keeps: no contact of it at
+/// or before `after` (a tau of the piece), and what the sifting learnt of
+/// its cubics on the window searched.
+struct kept_pair {
+    sweep::contact_site site;  ///< the vertex and the edge
+    double after;              ///< no contact of theirs at or before this tau
+    /// single_crossing's answer for their f on (after, the window's end],
+    /// when the sifting found it (its Bernstein coefficients there); 0 when
+    /// unknown.
+    int crossing = 0;
+    bool lo_positive = false;  ///< lo > 0 throughout the window (its Bernstein coefficients all > 0)
+    bool hi_positive = false;  ///< hi > 0 throughout the window (its Bernstein coefficients all > 0)
+};
+
 /// The earliest root in (after, end] of the cubics' f at which lo and hi
 /// are >= 0 (in (after, end) when `open_end`: the next piece starts at end
 /// = 1), bracketed (narrowed_for_rounding, in `piece`'s tau); none when
 /// there is none (or f is identically zero: the point slides along the
 /// segment's line, and reaches the segment only at an end, a vertex of the
-/// polygon, where another pair's f finds the contact). `crossing`, when not
-/// 0, is single_crossing's answer on (after, end], found by the sifting.
+/// polygon, where another pair's f finds the contact). What the sifting
+/// learnt of the pair (kept_pair) is taken as found: the single crossing,
+/// and lo or hi positive throughout.
 template <class NT>
 std::optional<std::pair<std::vector<polynomial<NT>>, isolated_root<NT>>> earliest_root(const rational_piece& piece,
                                                                                        const contact_cubics<NT>& k,
-                                                                                       double after, double end,
-                                                                                       bool open_end, int crossing) {
+                                                                                       const kept_pair& sifted,
+                                                                                       double end, bool open_end) {
+    const double after = sifted.after;
+    // lo and hi >= 0 at the root bracketed by r.
+    const auto on_segment = [&](const std::vector<polynomial<NT>>& s, isolated_root<NT>& r) {
+        return (sifted.lo_positive || sign_at_root(k.lo, s, r) >= 0) &&
+               (sifted.hi_positive || sign_at_root(k.hi, s, r) >= 0);
+    };
     if (k.f.degree() < 1) return std::nullopt;  // identically zero, or a non-zero constant
-    if (const int low_sign = crossing != 0 ? crossing : single_crossing(k.f, after, end)) {
+    if (const int low_sign = sifted.crossing != 0 ? sifted.crossing : single_crossing(k.f, after, end)) {
         // f's only root in the window, simple: f is all that is asked of
         // its sequence (isolated_root::low_sign).
         std::vector<polynomial<NT>> s{k.f};
         isolated_root<NT> r{num<NT>(after), num<NT>(end), low_sign};
         narrowed_for_rounding(piece, s, r);
-        if (sign_at_root(k.lo, s, r) >= 0 && sign_at_root(k.hi, s, r) >= 0) return std::make_pair(std::move(s), r);
+        if (on_segment(s, r)) return std::make_pair(std::move(s), r);
         return std::nullopt;
     }
     std::vector<polynomial<NT>> s = sturm_sequence(k.f);
@@ -589,7 +617,7 @@ std::optional<std::pair<std::vector<polynomial<NT>>, isolated_root<NT>>> earlies
     for (isolated_root<NT> r : isolate_roots(s, num<NT>(after), last)) {
         if (root_at_end && compare_values<NT>(r.high, last) == 0) break;  // (the bracket's root is end, its last)
         narrowed_for_rounding(piece, s, r);  // (cheap: the signs below and the rounding then take a step or two)
-        if (sign_at_root(k.lo, s, r) >= 0 && sign_at_root(k.hi, s, r) >= 0) return std::make_pair(std::move(s), r);
+        if (on_segment(s, r)) return std::make_pair(std::move(s), r);
     }
     return std::nullopt;
 }
@@ -612,17 +640,6 @@ std::optional<std::pair<feature, feature>> meeting_at_piece_start(const polygon&
     if (!met) return std::nullopt;
     return sweep::meeting_features(pa, pb, met);
 }
-
-/// A vertex-edge pair of a piece that the sifting keeps: no contact of it at
-/// or before `after` (a tau of the piece).
-struct kept_pair {
-    sweep::contact_site site;  ///< the vertex and the edge
-    double after;              ///< no contact of theirs at or before this tau
-    /// single_crossing's answer for their f on (after, the window's end],
-    /// when the sifting found it (its Bernstein coefficients there); 0 when
-    /// unknown.
-    int crossing = 0;
-};
 
 /// How many times rounded_time steps to its guess's neighbour before it
 /// takes the middle of the bracket left: the first guess, the middle of a
@@ -732,8 +749,8 @@ std::optional<std::pair<sweep::contact_site, double>> earliest_kept_contact(cons
         const polygon& edges = c.site.moving_vertex ? a : b;
         auto found = earliest_root(piece,
                                    cubics_of(m, w2, c.site.moving_vertex ? one : base, edges.vertex(c.site.edge),
-                                             edges.vertex(edges.next(c.site.edge))),
-                                   c.after, end, !last && end == 1, c.crossing);
+                                             edges.vertex(edges.next(c.site.edge)), !c.lo_positive || !c.hi_positive),
+                                   c, end, !last && end == 1);
         if (!found) continue;
         piece_contact<R> contact{c.site, std::move(found->first), found->second};
         if (best) {
@@ -780,12 +797,13 @@ std::optional<std::pair<sweep::contact_site, double>> contact_within(const polyg
         const auto on = [&](std::size_t i) {
             return bernstein_of(whole ? k[i] : on_window(k[i], window_from, window_to));
         };
-        const bernstein<Filter> f = on(0);
-        if (const std::optional<double> at = first_possible(f, on(1), on(2), window_from, window_to, depth, known)) {
+        const bernstein<Filter> f = on(0), lo = on(1), hi = on(2);
+        if (const std::optional<double> at = first_possible(f, lo, hi, window_from, window_to, depth, known)) {
             const double after = std::max({*at, from_box, known});
             // f's coefficients on the window are single_crossing's when the
             // search starts at the window's start.
-            kept.push_back({site, after, after == window_from ? single_sign_change(f) : 0});
+            kept.push_back({site, after, after == window_from ? single_sign_change(f) : 0, all_of_sign(lo, 1),
+                            all_of_sign(hi, 1)});
         }
     };
     // B's vertices against A's edges, in A's frame; A's vertices against
