@@ -75,12 +75,12 @@ struct turning_cell {
 
 struct turning_study_options {
     std::vector<turning_cell> cells = {{"convex", 8, 8}, {"contour", 64, 64}, {"starred", 256, 256}};
-    std::size_t motions = 256;                      ///< motions per cell
-    std::vector<std::size_t> samples = {16, 256};   ///< the sampling methods' S
-    double seconds = 0.5;                           ///< seconds of timed rounds per cell
-    double random_inner = 0.7, random_outer = 1.2;  ///< the start's annulus, in units of R_A + R_B
-    double step = 0.3;                              ///< the longest move, in units of R_A + R_B
-    std::uint64_t seed = default_family_seed;       ///< of the family polygons and the motions
+    std::size_t motions = 256;                             ///< motions per cell
+    std::vector<std::size_t> samples = {16, 32, 64, 256};  ///< the sampling methods' S
+    double seconds = 0.5;                                  ///< seconds of timed rounds per cell
+    double random_inner = 0.7, random_outer = 1.2;         ///< the start's annulus, in units of R_A + R_B
+    double step = 0.3;                                     ///< the longest move, in units of R_A + R_B
+    std::uint64_t seed = default_family_seed;              ///< of the family polygons and the motions
 };
 
 /// One method's answer to one motion.
