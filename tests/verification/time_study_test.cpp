@@ -21,6 +21,7 @@
 
 #include "support/process.hpp"
 #include "verification/time_study.hpp"
+#include "verification/turning_study.hpp"
 
 namespace {
 
@@ -351,8 +352,9 @@ TEST_CASE("time study: the command writes the table, the summary and the heat ma
     }
     const std::string md = slurp(dir / "out" / "bench.md");
     // The turning study, --quick: convex 8x8 (Box2D's time of impact too)
-    // and contour 64x64, the library's four routes and two samplings.
-    const std::size_t geos = method_available("geos") ? 2 : 0;
+    // and contour 64x64, the library's four routes and a sampling per
+    // resolution.
+    const std::size_t geos = method_available("geos") ? turning_study_options{}.samples.size() : 0;
     CHECK(lines_of(slurp(dir / "out" / "turning.csv")).size() == 1 + 2 * (4 + geos) + box2d);
     CHECK(md.find("## Turning motions") != std::string::npos);
     CHECK(r.out.find("turning motions (32 per cell") != std::string::npos);
