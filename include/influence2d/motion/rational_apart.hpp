@@ -20,7 +20,6 @@
 #include "influence2d/core/range_scaling.hpp"
 #include "influence2d/distance/convex_gap.hpp"
 #include "influence2d/influence/bounds.hpp"
-#include "influence2d/predicates/convexity.hpp"
 #include "influence2d/predicates/distance.hpp"
 #include "influence2d/predicates/filters.hpp"
 
@@ -170,10 +169,7 @@ inline rational_progress rational_advance(const polygon& a, const polygon& b, co
         return rational_advance(a.scaled_by_power_of_two(k), b.scaled_by_power_of_two(k),
                                 scaled_by_power_of_two(from, k), scaled_by_power_of_two(to, k));
     }
-    // (convex_probe_applies, its range_shift known to be 0.)
-    if (a.size() > convex_probe_vertices || b.size() > convex_probe_vertices || !is_convex_polygon(a) ||
-        !is_convex_polygon(b))
-        return out;
+    if (!convex_probe_shapes(a, b)) return out;  // (convex_probe_applies, its range_shift known to be 0)
     const double r = bounding_radius(b, {0, 0});
     const double scale = motion_scale(a, b, from, to);
     const double delta =

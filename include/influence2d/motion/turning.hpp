@@ -321,14 +321,19 @@ inline std::optional<probe_result> certain_crossing(const polygon& a, const std:
     return std::nullopt;
 }
 
-/// Whether the motion of B against A is probed by convex_probe: both
-/// polygons one convex ring (is_convex_polygon, exact) of at most
-/// convex_probe_vertices vertices, and every coordinate of the motion in
+/// Whether A and B are shapes convex_probe takes: both one convex ring
+/// (is_convex_polygon, exact) of at most convex_probe_vertices vertices.
+inline bool convex_probe_shapes(const polygon& a, const polygon& b) {
+    return a.size() <= convex_probe_vertices && b.size() <= convex_probe_vertices && is_convex_polygon(a) &&
+           is_convex_polygon(b);
+}
+
+/// Whether the motion of B against A is probed by convex_probe: shapes it
+/// takes (convex_probe_shapes), and every coordinate of the motion in
 /// double's safe window (range_shift 0), where convex_gap's bounds hold
 /// relative to the scene's size.
 inline bool convex_probe_applies(const polygon& a, const polygon& b, const pose& from, const pose& to) {
-    return a.size() <= convex_probe_vertices && b.size() <= convex_probe_vertices &&
-           range_shift<double>(a, b, from, to) == 0 && is_convex_polygon(a) && is_convex_polygon(b);
+    return range_shift<double>(a, b, from, to) == 0 && convex_probe_shapes(a, b);
 }
 
 /// A probe of conservative advancement for two convex polygons: B's

@@ -307,7 +307,7 @@ inline constexpr int narrowing_newton_steps = 8;
 /// The rounding of Horner's rule on a polynomial of n coefficients at x,
 /// relative to n times the sum of its terms' magnitudes: below 2 (n - 1) u
 /// of that sum (u = 2^-53; Higham, Accuracy and Stability of Numerical
-/// Algorithms, 5.1), so that below 2^-52 n; double_root_bracket divides it by
+/// Algorithms, 5.1), so that below 2^-52 n; rounded_with_slope divides it by
 /// the slope for how far the rounded root may lie from the exact one of the
 /// rounded coefficients.
 inline constexpr double narrowing_rounding = 0x1p-52;
@@ -332,6 +332,28 @@ inline double rounded_value(const std::vector<double>& c, double x) {
     double v = 0;
     for (std::size_t k = c.size(); k-- > 0;) v = v * x + c[k];
     return v;
+}
+
+/// The polynomial with coefficients c at x, in double: its value and slope,
+/// and how far rounding may move its root there (`spread`:
+/// narrowing_rounding times the coefficients' count and the sum of the
+/// terms' magnitudes, over the slope).
+struct rounded_at {
+    double value = 0;   ///< the value
+    double slope = 0;   ///< the derivative's value
+    double spread = 0;  ///< how far rounding may move a root near x
+};
+
+/// rounded_at for the coefficients c at x (Horner's rule for the value, the
+/// derivative and the sum of the terms' magnitudes at once).
+inline rounded_at rounded_with_slope(const std::vector<double>& c, double x) {
+    double v = 0, slope = 0, size = 0;
+    for (std::size_t k = c.size(); k-- > 0;) {
+        slope = slope * x + v;
+        v = v * x + c[k];
+        size = size * std::fabs(x) + std::fabs(c[k]);
+    }
+    return {v, slope, narrowing_rounding * static_cast<double>(c.size()) * size / std::fabs(slope)};
 }
 
 /// The root of p in the bracket r sought in double, on p's coefficients
@@ -363,17 +385,10 @@ std::optional<std::pair<double, double>> double_root_bracket(const polynomial<NT
     // Newton's steps, every value narrowing the bracket by its sign.
     double x = lo + (hi - lo) * (v_lo / (v_lo - v_hi)), spread = 0;
     for (int step = 0; step < narrowing_newton_steps && x > lo && x < hi; ++step) {
-        // Horner's rule for the value, the derivative and the sum of the
-        // terms' magnitudes at once.
-        double v = 0, slope = 0, size = 0;
-        for (std::size_t k = c.size(); k-- > 0;) {
-            slope = slope * x + v;
-            v = v * x + c[k];
-            size = size * std::fabs(x) + std::fabs(c[k]);
-        }
-        if (v != 0) ((v > 0) == rising ? hi : lo) = x;
-        spread = narrowing_rounding * static_cast<double>(c.size()) * size / std::fabs(slope);
-        double next = x - v / slope;
+        const rounded_at at = rounded_with_slope(c, x);
+        if (at.value != 0) ((at.value > 0) == rising ? hi : lo) = x;
+        spread = at.spread;
+        double next = x - at.value / at.slope;
         if (next == x) break;
         if (!(next > lo && next < hi)) next = lo + (hi - lo) / 2;  // (the step fails: the bracket's middle)
         x = next;
@@ -419,17 +434,8 @@ bool narrowed_about(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r, 
     // rounded coefficients), else within 128, else within how far their
     // rounding and Horner's may move it (narrowing_rounding over the slope,
     // twice).
-    const std::vector<NT>& c = s[0].c;
-    double slope = 0, size = 0, v = 0;
-    for (std::size_t k = c.size(); k-- > 0;) {
-        const double ck = tr::to_double(c[k]);
-        slope = slope * lo + v;
-        v = v * lo + ck;
-        size = size * std::fabs(lo) + std::fabs(ck);
-    }
     const double unit = hi - lo;
-    const double reach[] = {4 * unit, 128 * unit,
-                            2 * narrowing_rounding * static_cast<double>(c.size()) * size / std::fabs(slope)};
+    const double reach[] = {4 * unit, 128 * unit, 2 * rounded_with_slope(rounded_coefficients(s[0]), lo).spread};
     for (std::size_t attempt = 0; attempt < 3; ++attempt) {
         // (Not wider than the last, or NaN: the check would fail again.)
         if (attempt > 0 && !(reach[attempt] > reach[attempt - 1])) return false;
