@@ -41,6 +41,7 @@
 #include "influence2d/scene/placed_polygon.hpp"
 
 #include "influence2d/motion/motion.hpp"
+#include "influence2d/motion/swept_boxes.hpp"
 #include "influence2d/motion/translation_events.hpp"
 
 namespace influence2d {
@@ -325,16 +326,6 @@ std::optional<double> first_possible(const bernstein<Filter>& f, const bernstein
 /// is mostly told apart (each halving costs the halves of three cubics).
 inline constexpr int sifting_depth = 4;
 
-/// The relative slack of the swept boxes (swept_parts): their corners
-/// computed in double with a few roundings each (the turn's ends: its
-/// cosine and sine, a quotient by h each, about 4u; times the base
-/// rotation, two products and a sum, 3u more; the point turned, 3u more;
-/// the translation's share, about 6u; the bulge: a square root and a
-/// quotient, about 4u), each at most u = 2^-53 times the magnitudes
-/// involved, below 2^-47 of the radius and the translation; 2^-40 leaves a
-/// factor of 128.
-inline constexpr double arc_box_slack = 0x1p-40;
-
 /// How many parts of equal time the boxes of a piece's vertices are made
 /// over (swept_parts) when the whole piece is searched: a quarter turn's arc
 /// boxed whole is as wide as its radius; a quarter of it a quarter as wide,
@@ -370,32 +361,15 @@ inline part_turns<Parts> turns_of(const rational_piece& piece, double from, doub
     return out;
 }
 
-/// What the boxes of every point over the parts of a window share
-/// (swept_parts): at each part's ends j, the whole turn (c_j, s_j) after
-/// the base rotation, (c, s) times the end's turn in double; over each
-/// part, the box the translation adds to each end's place, and the most
-/// the translation adds to a point's radius (|.|_1). For A's vertex in B's
-/// frame (`inverse`) the turn is (c_j, -s_j) (the transpose, (c^2 + s^2)
-/// times the inverse) and the point is q - T(tau): turned back, the end's
-/// place is R_j^T q - R_j^T T at that end's turn, T over the part (its ends'
-/// boxes), as q - T lies between q - T_k and q - T_k+1 and each point
-/// between two points turned by the same angle lies between their turns.
-template <std::size_t Parts>
-struct swept_frame {
-    std::array<double, Parts + 1> cos, sin;
-    std::array<std::array<box, 2>, Parts> offset;  // the part's, at its first and its last end
-    std::array<double, Parts> bulge, radius_added;
-    double slack = 0;  // the boxes' absolute slack
-};
-
 /// The swept_frame of the window whose part_turns are `turns`, for B's
 /// vertices in A's frame or (`inverse`) A's in B's; `shift` the piece's
 /// translation in double, `slack` the absolute slack of every box.
 template <std::size_t Parts>
-inline swept_frame<Parts> swept_frame_of(const rational_piece& piece, const part_turns<Parts>& turns, bool inverse,
-                                         const piece_translation<double>& shift, double slack) {
-    swept_frame<Parts> out;
+inline sweep::swept_frame<Parts> swept_frame_of(const rational_piece& piece, const part_turns<Parts>& turns,
+                                                bool inverse, const piece_translation<double>& shift, double slack) {
+    sweep::swept_frame<Parts> out;
     out.slack = slack;
+    out.tau = turns.tau;
     out.bulge = turns.bulge;
     std::array<point<double>, Parts + 1> ends;
     for (std::size_t j = 0; j <= Parts; ++j) {
@@ -420,48 +394,6 @@ inline swept_frame<Parts> swept_frame_of(const rational_piece& piece, const part
         }
     }
     return out;
-}
-
-/// The boxes of the point p over the parts of a window (frame): over part
-/// k, the box of p's places at the part's ends (p turned by the end's whole
-/// turn, plus the translation's box there), grown by the arc's bulge over
-/// its chord, r (1 - cos(theta / 2)) = r (1 - 1 / sqrt(1 + v^2)) for the
-/// arc's angle theta (part_turns) and r >= the radius of the point turned
-/// (|p|_1, plus what the translation adds in B's frame), and by the
-/// filters' slack: arc_box_slack r plus the frame's absolute slack.
-template <std::size_t Parts>
-inline std::array<box, Parts> swept_parts(const swept_frame<Parts>& frame, point<double> p) {
-    std::array<point<double>, Parts + 1> turned;
-    for (std::size_t j = 0; j <= Parts; ++j)
-        turned[j] = {frame.cos[j] * p.x - frame.sin[j] * p.y, frame.sin[j] * p.x + frame.cos[j] * p.y};
-    const double radius = std::fabs(p.x) + std::fabs(p.y);
-    std::array<box, Parts> out;
-    for (std::size_t k = 0; k < Parts; ++k) {
-        const box &first = frame.offset[k][0], &second = frame.offset[k][1];
-        const point<double>&e0 = turned[k], &e1 = turned[k + 1];
-        const double r = radius + frame.radius_added[k];
-        const double grow = r * frame.bulge[k] + arc_box_slack * r + frame.slack;
-        out[k] = box{std::min(e0.x + first.min_x, e1.x + second.min_x) - grow,
-                     std::min(e0.y + first.min_y, e1.y + second.min_y) - grow,
-                     std::max(e0.x + first.max_x, e1.x + second.max_x) + grow,
-                     std::max(e0.y + first.max_y, e1.y + second.max_y) + grow};
-    }
-    return out;
-}
-
-/// A box as an entry of sweep_along_x, numbered k.
-inline edge_box sweep_entry(const box& b, std::size_t k) {
-    return {b.min_x, b.max_x, b.min_y, b.max_y, static_cast<std::uint32_t>(k)};
-}
-
-/// The start (tau) of the first part of the window whose box meets `edge`,
-/// the parts that end at or before `known` (free) left out, or none.
-template <std::size_t Parts>
-inline std::optional<double> first_part_meeting(const part_turns<Parts>& turns, const std::array<box, Parts>& parts,
-                                                const box& edge, double known) {
-    for (std::size_t k = 0; k < Parts; ++k)
-        if (turns.tau[k + 1] > known && boxes_overlap(parts[k], edge)) return turns.tau[k];
-    return std::nullopt;
 }
 
 /// A pair of features that touch first, found in a piece: its site, its
@@ -784,80 +716,6 @@ std::optional<std::pair<sweep::contact_site, double>> earliest_kept_contact(cons
     return std::pair{best->site, rounded_time(piece, best->sequence, best->root)};
 }
 
-/// How many consecutive vertices make one chain, and consecutive edges one
-/// run, of a boundary's boxes (boundary_groups): the boxes of a chain's
-/// vertices over a piece are made only where the chain's box over it (its
-/// centre's, grown by its reach) meets a run's box. On the turning study's
-/// contour 64-gons a free motion's vertices mostly sweep past A's edges far
-/// from every one (1.6 of 128 vertices near an edge, per motion), so that
-/// most of their boxes need not be made.
-inline constexpr std::size_t group_length = 8;
-
-/// Consecutive vertices of a polygon taken together (boundary_groups): a
-/// centre and a reach bounding the distance of each of them from it.
-struct vertex_chain {
-    point<double> centre;  ///< the centre of the vertices' box
-    double reach = 0;      ///< at least each vertex's distance from the centre
-};
-
-/// A polygon's boundary in groups of group_length (numbering: group g holds
-/// the vertices, or edges, g L to g L + L - 1, L = group_length): its edges'
-/// boxes, the runs of edges (their boxes' union, sorted by min_x for
-/// sweep_along_x, `edge` naming the run) and the chains of vertices. None
-/// depends on the motion: made once per query.
-struct boundary_groups {
-    std::vector<box> edges;
-    std::vector<edge_box> runs;
-    std::vector<vertex_chain> chains;
-};
-
-/// The groups of `shape`'s boundary (boundary_groups). A chain's reach is
-/// the largest |dx| + |dy| (at least the distance) of its vertices from its
-/// centre, rounded up by arc_box_slack (three roundings of 2^-53 each).
-inline boundary_groups boundary_groups_of(const polygon& shape) {
-    boundary_groups out;
-    const std::size_t n = shape.size();
-    out.edges.resize(n);
-    for (std::size_t e = 0; e < n; ++e) {
-        out.edges[e].add(shape.vertex(e));
-        out.edges[e].add(shape.vertex(shape.next(e)));
-    }
-    for (std::size_t first = 0; first < n; first += group_length) {
-        const std::size_t end = std::min(n, first + group_length);
-        box run, vertices;
-        for (std::size_t k = first; k < end; ++k) {
-            run.add({out.edges[k].min_x, out.edges[k].min_y});
-            run.add({out.edges[k].max_x, out.edges[k].max_y});
-            vertices.add(shape.vertex(k));
-        }
-        out.runs.push_back(sweep_entry(run, first / group_length));
-        vertex_chain chain{vertices.centre(), 0};
-        for (std::size_t k = first; k < end; ++k) {
-            const point<double>& v = shape.vertex(k);
-            chain.reach = std::max(chain.reach, std::fabs(v.x - chain.centre.x) + std::fabs(v.y - chain.centre.y));
-        }
-        chain.reach += chain.reach * arc_box_slack;
-        out.chains.push_back(chain);
-    }
-    std::sort(out.runs.begin(), out.runs.end(), [](const edge_box& l, const edge_box& m) { return l.min_x < m.min_x; });
-    return out;
-}
-
-/// The box of a sweep entry.
-inline box box_of(const edge_box& k) { return box{k.min_x, k.min_y, k.max_x, k.max_y}; }
-
-/// The union of the boxes of the parts that do not end by `known`.
-template <std::size_t Parts>
-inline box union_after(const part_turns<Parts>& turns, const std::array<box, Parts>& parts, double known) {
-    box out;
-    for (std::size_t k = 0; k < Parts; ++k) {
-        if (turns.tau[k + 1] <= known) continue;  // (free)
-        out.add({parts[k].min_x, parts[k].min_y});
-        out.add({parts[k].max_x, parts[k].max_y});
-    }
-    return out;
-}
-
 /// The first contact of a piece in the window (known, to] (through `known`
 /// the motion is free; from <= known < to), with its time rounded, or
 /// none. The vertex-edge pairs whose boxes over one of Parts parts of equal
@@ -869,15 +727,15 @@ inline box union_after(const part_turns<Parts>& turns, const std::array<box, Par
 /// B's boundary_groups.
 template <class NT, class Filter, std::size_t Parts>
 std::optional<std::pair<sweep::contact_site, double>> contact_within(const polygon& a, const polygon& b,
-                                                                     const boundary_groups& ga,
-                                                                     const boundary_groups& gb, const pose& from,
+                                                                     const sweep::boundary_groups& ga,
+                                                                     const sweep::boundary_groups& gb, const pose& from,
                                                                      const pose& to, const rational_piece& piece,
                                                                      bool last, double scale, double window_from,
                                                                      double window_to, double known, int depth) {
     const piece_translation<Filter> tf = translation_of<Filter>(piece, from, to);
     // The translation over the piece, in double (for the boxes).
     const piece_translation<double> td = translation_of<double>(piece, from, to);
-    const double slack = arc_box_slack * scale + std::numeric_limits<double>::min();
+    const double slack = sweep::arc_box_slack * scale + std::numeric_limits<double>::min();
     const part_turns<Parts> turns = turns_of<Parts>(piece, window_from, window_to);
     const bool whole = window_from == 0 && window_to == 1;
     const Filter wf = num<Filter>(piece.w), w2f = Filter(wf * wf);
@@ -905,58 +763,19 @@ std::optional<std::pair<sweep::contact_site, double>> contact_within(const polyg
     };
     // B's vertices against A's edges, in A's frame; A's vertices against
     // B's edges, in B's frame (q less the translation, turned back): the
-    // chains and runs whose boxes over the window overlap (sort and sweep
-    // along x, sweep_along_x), then in each such two their vertices' and
-    // edges' boxes, part by part.
+    // pairs whose boxes over a part meet (for_each_swept_pair).
     for (const bool moving : {true, false}) {
         const polygon &vertices = moving ? b : a, &edges = moving ? a : b;
-        const boundary_groups &vg = moving ? gb : ga, &eg = moving ? ga : gb;
-        const swept_frame<Parts> frame = swept_frame_of(piece, turns, !moving, td, slack);
-        std::vector<std::array<box, Parts>> chain_parts(vg.chains.size());
-        std::vector<edge_box> chain_order(vg.chains.size());
-        for (std::size_t c = 0; c < vg.chains.size(); ++c) {
-            // Each vertex of the chain turns by the same angle about the
-            // same origin as its centre, keeping its distance from it.
-            chain_parts[c] = swept_parts(frame, vg.chains[c].centre);
-            for (box& part : chain_parts[c]) part = part.inflated(vg.chains[c].reach);
-            chain_order[c] = sweep_entry(union_after(turns, chain_parts[c], known), c);
-        }
-        std::sort(chain_order.begin(), chain_order.end(),
-                  [](const edge_box& l, const edge_box& m) { return l.min_x < m.min_x; });
-        // The vertices' boxes, made when first asked.
-        std::vector<std::array<box, Parts>> parts(vertices.size());
-        std::vector<box> vertex_box(vertices.size());
         std::vector<std::optional<moving_point<Filter>>> mf(vertices.size());
-        std::vector<bool> made(vertices.size(), false);
-        sweep_along_x(
-            chain_order, 0, chain_order.size(), eg.runs, 0, eg.runs.size(),
-            [](const edge_box& k) -> const edge_box& { return k; },
-            [&](std::size_t i, std::size_t j) {
-                const std::size_t chain = chain_order[i].edge, run = eg.runs[j].edge;
-                const box run_box = box_of(eg.runs[j]);
-                if (!first_part_meeting(turns, chain_parts[chain], run_box, known)) return false;
-                const std::size_t v_end = std::min(vertices.size(), (chain + 1) * group_length),
-                                  e_end = std::min(edges.size(), (run + 1) * group_length);
-                for (std::size_t v = chain * group_length; v < v_end; ++v) {
-                    if (!made[v]) {
-                        parts[v] = swept_parts(frame, vertices.vertex(v));
-                        vertex_box[v] = union_after(turns, parts[v], known);
-                        made[v] = true;
-                    }
-                    if (!boxes_overlap(vertex_box[v], run_box)) continue;
-                    for (std::size_t e = run * group_length; e < e_end; ++e) {
-                        if (!boxes_overlap(vertex_box[v], eg.edges[e])) continue;
-                        const std::optional<double> from_box = first_part_meeting(turns, parts[v], eg.edges[e], known);
-                        if (!from_box) continue;
-                        if (!mf[v])
-                            mf[v] = moving ? moving_vertex<Filter>(piece, tf, vertices.vertex(v))
-                                           : moving_static_vertex<Filter>(piece, tf, vertices.vertex(v));
-                        sift({moving, static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(e)}, *mf[v],
-                             moving ? one_f : base_f, edges.vertex(e), edges.vertex(edges.next(e)), *from_box);
-                    }
-                }
-                return false;
-            });
+        sweep::for_each_swept_pair(swept_frame_of(piece, turns, !moving, td, slack), vertices, moving ? gb : ga, edges,
+                                   moving ? ga : gb, known, [&](std::size_t v, std::size_t e, double from_box) {
+                                       if (!mf[v])
+                                           mf[v] = moving ? moving_vertex<Filter>(piece, tf, vertices.vertex(v))
+                                                          : moving_static_vertex<Filter>(piece, tf, vertices.vertex(v));
+                                       sift({moving, static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(e)},
+                                            *mf[v], moving ? one_f : base_f, edges.vertex(e),
+                                            edges.vertex(edges.next(e)), from_box);
+                                   });
     }
     // The kept pairs in order of where their contact may start; the
     // earliest root among them (earliest_kept_contact): in double words
@@ -1032,9 +851,9 @@ contact_result<double> rational_first_contact(const polygon& a, const polygon& b
     };
     const std::vector<rational_piece> pieces = rational_pieces(from, to);
     // A's and B's boundary_groups, made when a piece is first searched.
-    std::optional<std::pair<boundary_groups, boundary_groups>> groups;
-    const auto groups_of = [&]() -> const std::pair<boundary_groups, boundary_groups>& {
-        if (!groups) groups.emplace(boundary_groups_of(a), boundary_groups_of(b));
+    std::optional<std::pair<sweep::boundary_groups, sweep::boundary_groups>> groups;
+    const auto groups_of = [&]() -> const std::pair<sweep::boundary_groups, sweep::boundary_groups>& {
+        if (!groups) groups.emplace(sweep::boundary_groups_of(a), sweep::boundary_groups_of(b));
         return *groups;
     };
     for (std::size_t index = start.piece; index < pieces.size(); ++index) {
