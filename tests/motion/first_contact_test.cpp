@@ -869,19 +869,35 @@ TEST_CASE("sweep: turning motions far from 1 in scale, certified as exact", "[sw
 }
 
 TEST_CASE("sweep: a motion grazing for long stops at the step limit, undecided", "[sweep][turning]") {
-    // B, a unit square, slides 3e-9 above A's top side from x = -2 to x = 6
+    // B, a unit square, slides just above A's top side from x = -2 to x = 6
     // while turning by 1e-12: once over A (from t = 0.1875, B's right side at
-    // x = 0) the distance stays near 3e-9, above the tolerance of 1e-9, so
-    // each step of conservative advancement gains about 3e-10 of the
-    // motion: billions of steps.
+    // x = 0) the distance stays near the gap.
     // A is notched below, far from the motion, so that it is not convex
     // (two convex polygons step by their own bound: below).
     const polygon a = ring({{0, 0}, {1.5, 0}, {1.5, 1}, {2.5, 1}, {2.5, 0}, {4, 0}, {4, 4}, {0, 4}}),
                   b = square(-0.5, -0.5, 0.5, 0.5);
-    const double y = 4.5 + 3e-9;
-    const pose from{-2, y, 0}, to{6, y, 1e-12};
     sweep_options o;
     o.max_steps = 1000;
+    // A gap of 3e-9, three times the tolerance: the swept boxes keep B's
+    // vertices farther from A's edges than any probe may stop at, so the
+    // motion is decided without a step: no contact, in every route.
+    {
+        const double y = 4.5 + 3e-9;
+        const pose from{-2, y, 0}, to{6, y, 1e-12};
+        const contact_result<double> d = first_contact<double>(a, b, from, to, o);
+        const contact_result<double> c = certified_first_contact(a, b, from, to, o);
+        const contact_result<exact_rational> x = first_contact<exact_rational>(a, b, from, to, o);
+        const contact_result<long double> l = first_contact<long double>(a, b, from, to, o);
+        for (const bool contact : {d.contact, c.contact, x.contact, l.contact}) CHECK_FALSE(contact);
+        for (const bool limited : {d.step_limit, c.step_limit, x.step_limit, l.step_limit}) CHECK_FALSE(limited);
+    }
+    // A gap of 1.04e-9: beyond where double's probes stop (the tolerance and
+    // double's error bound, 2^-40 of the scene's size, about 2e-11 here),
+    // within the boxes' reach (the probes' reach and the boxes' own slack,
+    // about 6e-11 beyond the tolerance): each step of conservative
+    // advancement gains about 1e-10 of the motion: millions of steps.
+    const double y = 4.5 + 1.04e-9;
+    const pose from{-2, y, 0}, to{6, y, 1e-12};
     const contact_result<double> d = first_contact<double>(a, b, from, to, o);
     CHECK_FALSE(d.contact);
     CHECK(d.step_limit);
@@ -908,12 +924,13 @@ TEST_CASE("sweep: a motion grazing for long stops at the step limit, undecided",
     CHECK_FALSE(exact.step_limit);
     // long double advances on its own distances, within its own error bound
     // (2^-51 of the scene's size, not the 4e-8 of its filters' margin, which
-    // would call the 3e-9 gap a contact).
+    // would call the gap a contact): its probes reach less far than
+    // double's, and the boxes show the gap of 1.04e-9 beyond them.
     sweep_options linear;
     linear.max_steps = 1000;
     const contact_result<long double> l = first_contact<long double>(a, b, from, to, linear);
     CHECK_FALSE(l.contact);
-    CHECK(l.step_limit);
+    CHECK_FALSE(l.step_limit);
     // A motion that meets A is decided well within the default limit.
     const contact_result<double> head_on = certified_first_contact(a, b, {-2, 2, 0}, {6, 2, 1}, sweep_options{});
     CHECK(head_on.contact);

@@ -172,10 +172,11 @@ inline boundary_groups boundary_groups_of(const polygon& shape) {
     return out;
 }
 
-/// Calls pair(v, e, from) for each vertex v of `vertices` (groups `vg`)
-/// and edge e of `edges` (groups `eg`) whose boxes over a part of the
-/// window (frame; swept_parts of the vertex, the edge's own box) not ending
-/// by `known` meet, `from` the start of the first such part. Each vertex's
+/// Calls pair(v, e, parts) for each vertex v of `vertices` (groups `vg`)
+/// and edge e of `edges` (groups `eg`) whose boxes over the window (frame;
+/// the union of swept_parts of the vertex over the parts not ending by
+/// `known`, the edge's own box) meet, `parts` the vertex's swept_parts:
+/// whether a part's box meets the edge's is the caller's. Each vertex's
 /// boxes are made only where its chain's boxes over the parts (its
 /// centre's, grown by its reach: each vertex of the chain turns by the same
 /// angle about the same origin as the centre, keeping its distance from
@@ -213,11 +214,8 @@ void for_each_swept_pair(const swept_frame<Parts>& frame, const polygon& vertice
                     made[v] = true;
                 }
                 if (!boxes_overlap(vertex_box[v], run_box)) continue;
-                for (std::size_t e = run * group_length; e < e_end; ++e) {
-                    if (!boxes_overlap(vertex_box[v], eg.edges[e])) continue;
-                    if (const std::optional<double> from = first_part_meeting(frame, parts[v], eg.edges[e], known))
-                        pair(v, e, *from);
-                }
+                for (std::size_t e = run * group_length; e < e_end; ++e)
+                    if (boxes_overlap(vertex_box[v], eg.edges[e])) pair(v, e, parts[v]);
             }
             return false;
         });

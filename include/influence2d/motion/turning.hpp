@@ -42,7 +42,9 @@
 #include "influence2d/scene/placed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
 
+#include "influence2d/motion/boundaries_apart.hpp"
 #include "influence2d/motion/motion.hpp"
+#include "influence2d/motion/translation_events.hpp"
 
 namespace influence2d {
 
@@ -181,6 +183,14 @@ struct advance_limits {
     /// monotone in the distance, so that a probe whose exact distance is
     /// at most d stops wherever d does.
     bool stops(double distance, double error) const { return lower(distance, error) <= tol; }
+
+    /// The farthest exact distance at which a probe with error `error` may
+    /// stop the advance: its distance d (within an ulp of a value within
+    /// error of the exact D) stops where d (1 - distance_shrinking) - error
+    /// - delta <= tol, so D <= (tol + error + delta) (1 + 2^-49) + error;
+    /// (tol + 2 error + delta) (1 + 2^-48) covers that and its own
+    /// roundings.
+    double stop_reach(double error) const { return (tol + 2 * error + delta) * (1 + 0x1p-48); }
 };
 
 /// Whether a coarse probe of type P bounds the step after its own probes
@@ -205,7 +215,7 @@ struct steps_by_vertices<P, std::void_t<decltype(std::declval<const std::decay_t
 ///   v <- (|T1 - T0| + |theta1 - theta0| r) widened: no point of B is faster
 ///   delta <- the rounding of the pose at t against the exact motion
 ///   resolution <- 4 (delta + v 2^-52) + 2 fine error; tol <- max(tolerance, resolution)
-///   t <- 0
+///   t <- start                   (the motion known free before it; advance_near)
 ///   loop:
 ///       L <- probe(motion_pose(t)) shrunk by an ulp, minus its error and delta
 ///           (a lower bound of the exact motion's distance at t)
@@ -227,11 +237,12 @@ struct steps_by_vertices<P, std::void_t<decltype(std::declval<const std::decay_t
 /// above resolution / 2 too. Each step advances by at least 2^-51.
 template <class Coarse, class Fine>
 advance_result advance(const polygon& b, const pose& from, const pose& to, double tolerance, std::size_t max_steps,
-                       double coarse_error, Coarse&& coarse, bool refine, double fine_error, Fine&& fine) {
+                       double coarse_error, Coarse&& coarse, bool refine, double fine_error, Fine&& fine,
+                       double start = 0) {
     const advance_limits limits(b, from, to, tolerance, refine ? fine_error : coarse_error);
     const double r = limits.r, turn = limits.turn, v = limits.v, resolution = limits.resolution;
     bool fine_stage = false;
-    double t = 0;
+    double t = start;
     for (std::size_t probes = 1;; ++probes) {
         const pose p = motion_pose(from, to, t);
         probe_result at = fine_stage ? fine(p) : coarse(p);
@@ -471,24 +482,144 @@ contact_result<NT> turning_result(const advance_result& found) {
     return r;
 }
 
+/// The most vertex-edge pairs that may come near (boundaries_near) for
+/// which conservative advancement probes them alone (pairs_probe) instead
+/// of the separation query: on the turning study's contour 64-gons a probe
+/// of the query costs about what 50 pairs do.
+inline constexpr std::size_t near_pairs_limit = 48;
+
+/// The squared distance in NT from the vertex of a site to the other's
+/// closed edge (closest_on_segment), in A's frame with B posed by `placed`,
+/// and the features at that distance: the edge, or the end of it nearest.
+template <class NT>
+std::pair<NT, std::pair<feature, feature>> site_distance(const polygon& a, const polygon& b, const contact_site& s,
+                                                         const rotation_pose& placed) {
+    using tr = number_traits<NT>;
+    const auto in_a = [&](std::size_t i) {
+        return point<NT>{tr::from_double(a.vertex(i).x), tr::from_double(a.vertex(i).y)};
+    };
+    const auto in_b = [&](std::size_t j) { return placed.apply<NT>(b.vertex(j)); };
+    const polygon& edges = s.moving_vertex ? a : b;
+    const segment_point<NT> c = s.moving_vertex
+                                    ? closest_on_segment(in_b(s.vertex), in_a(s.edge), in_a(a.next(s.edge)))
+                                    : closest_on_segment(in_a(s.vertex), in_b(s.edge), in_b(b.next(s.edge)));
+    const feature on_edge = c.part == segment_part::interior ? feature{feature_kind::edge, edges.source_edge(s.edge)}
+                            : c.part == segment_part::start
+                                ? feature{feature_kind::vertex, input_vertex(edges, s.edge)}
+                                : feature{feature_kind::vertex, input_vertex(edges, edges.next(s.edge))};
+    const feature vertex{feature_kind::vertex, input_vertex(s.moving_vertex ? b : a, s.vertex)};
+    return {c.squared, s.moving_vertex ? std::pair{on_edge, vertex} : std::pair{vertex, on_edge}};
+}
+
+/// A probe on the vertex-edge pairs `pairs` alone (boundaries_near's), at
+/// pose p: the least of their distances, each as distance_of rounds it
+/// (`distance(site, placed)` gives it with its features), ties to the
+/// first. While the polygons are apart and the pairs left out stay beyond
+/// any probe's stop_reach, that is the polygons' distance wherever a probe
+/// of it may stop, and otherwise above that reach, as theirs is: the
+/// stop at each probe's time is the separation query's there, and each
+/// step keeps every pair apart (the pairs left out stay apart by their
+/// boxes).
+template <class Distance>
+probe_result pairs_probe(const std::vector<contact_site>& pairs, const pose& p, Distance&& distance) {
+    const rotation_pose placed(p);
+    probe_result best;
+    best.distance = std::numeric_limits<double>::infinity();
+    for (const contact_site& site : pairs) {
+        const auto [d, features] = distance(site, placed);
+        if (d < best.distance) {
+            best.distance = d;
+            std::tie(best.static_feature, best.moving_feature) = features;
+        }
+    }
+    return best;
+}
+
+/// The distance of a site in a floating NT (site_distance), as distance_of
+/// rounds it: within separation_error<NT> of the exact one (the posing and
+/// the few products and one quotient of closest_on_segment round by less
+/// than separation's own computations).
+template <class NT>
+std::pair<double, std::pair<feature, feature>> rounded_site_distance(const polygon& a, const polygon& b,
+                                                                     const contact_site& s,
+                                                                     const rotation_pose& placed) {
+    const auto [squared, features] = site_distance<NT>(a, b, s, placed);
+    return {distance_of<NT>(squared), features};
+}
+
+/// The exact distance of a site (site_distance in the exact field Exact) as
+/// distance_of rounds it: in double words first, their value rounded by its
+/// bound (certain_nearest) and its signs certain, else in Exact.
+template <class Exact>
+std::pair<double, std::pair<feature, feature>> exact_site_distance(const polygon& a, const polygon& b,
+                                                                   const contact_site& s, const rotation_pose& placed) {
+    return fallback<>::run(
+        [&] {
+            const auto [squared, features] = site_distance<double_word>(a, b, s, placed);
+            double nearest;
+            if (!certain_nearest(squared, nearest)) throw uncertain_sign();
+            return std::pair{std::sqrt(nearest), features};
+        },
+        [&] { return rounded_site_distance<Exact>(a, b, s, placed); });
+}
+
+/// How advance runs for two polygons that are not both convex: where they
+/// meet at `from` (`met`, exactly in an exact route), a contact at 0;
+/// otherwise from where boundaries_near proves every vertex farther than
+/// any probe's stop_reach from the other's edges until (no contact when
+/// that is the whole motion): the polygons stay apart there, and no probe
+/// there would stop; on their near pairs alone (pairs_probe, `coarse_pairs`
+/// and `fine_pairs`) when there are at most near_pairs_limit, else on
+/// `coarse` and `fine`. `error` is the coarse probes' error, `refine`
+/// whether the fine ones decide the stop (error 0).
+template <class Coarse, class Fine, class CoarsePairs, class FinePairs>
+advance_result advance_near(const polygon& a, const polygon& b, const pose& from, const pose& to,
+                            const sweep_options& options, const std::optional<std::pair<feature, feature>>& met,
+                            double error, bool refine, Coarse&& coarse, Fine&& fine, CoarsePairs&& coarse_pairs,
+                            FinePairs&& fine_pairs) {
+    if (met) return {true, false, 0, {0, met->first, met->second}};
+    const advance_limits limits(b, from, to, options.tolerance, refine ? 0 : error);
+    const near_boundaries near = boundaries_near(a, b, from, to, limits.stop_reach(error), near_pairs_limit);
+    if (near.start > 1) return {};
+    if (near.all) {
+        const auto coarse_probe = [&](const pose& p) { return pairs_probe(near.pairs, p, coarse_pairs); };
+        const auto fine_probe = [&](const pose& p) { return pairs_probe(near.pairs, p, fine_pairs); };
+        return advance(b, from, to, options.tolerance, options.max_steps, error, coarse_probe, refine, 0, fine_probe,
+                       near.start);
+    }
+    return advance(b, from, to, options.tolerance, options.max_steps, error, coarse, refine, 0, fine, near.start);
+}
+
 /// Advance with a refining stage: the coarse probe `general` (on the
 /// separation query in double, coarse_probe), or a convex_probe over it
-/// when convex_probe_applies, then `fine`.
-template <class General, class Fine>
+/// when convex_probe_applies, then `fine`; other pairs by advance_near,
+/// the meeting at the start and the near pairs' distances exact (in Exact
+/// where double words leave a doubt).
+template <class Exact, class General, class Fine>
 advance_result advance_refined(const polygon& a, const polygon& b, const pose& from, const pose& to,
                                const sweep_options& options, General&& general, Fine&& fine) {
     const double scale = motion_scale(a, b, from, to), error = separation_error<double>(scale);
     if (convex_probe_applies(a, b, from, to))
         return advance(b, from, to, options.tolerance, options.max_steps, error,
                        convex_probe(a, b, scale, std::ref(general)), true, 0, fine);
-    return advance(b, from, to, options.tolerance, options.max_steps, error, general, true, 0, fine);
+    const auto met = fallback<>::run([&] { return meeting_at_start<certified>(a, b, from, rotation_pose(from)); },
+                                     [&] { return meeting_at_start<Exact>(a, b, from, rotation_pose(from)); });
+    return advance_near(
+        a, b, from, to, options, met, error, true, general, fine,
+        [&](const contact_site& s, const rotation_pose& placed) {
+            return rounded_site_distance<double>(a, b, s, placed);
+        },
+        [&](const contact_site& s, const rotation_pose& placed) {
+            return exact_site_distance<Exact>(a, b, s, placed);
+        });
 }
 
 /// The first contact of a motion that turns, in NT: conservative
 /// advancement on separation queries (both polygons prepared once, each
 /// search started from the last closest pair), or for two small convex
 /// polygons on convex_probe (the separation query where it does not
-/// converge). A floating NT steps on its own query (double on convex_probe
+/// converge); other pairs by advance_near (from where their swept boxes
+/// prove them apart, on their near pairs alone when few). A floating NT steps on its own query (double on convex_probe
 /// where it applies). An exact NT steps on the query in double (with its
 /// error bound; coarse_probe), or convex_probe, and, once that would stop,
 /// on its own exact query: the stop is decided on exact distances (a probe
@@ -514,8 +645,12 @@ contact_result<NT> turning_first_contact(const polygon& a, const polygon& b, con
                                                   separation_error<NT>(scale), convex, false, 0, convex));
             }
         }
-        return turning_result<NT>(advance(b, from, to, options.tolerance, options.max_steps,
-                                          separation_error<NT>(scale), probe, false, 0, probe));
+        const auto site = [&](const contact_site& s, const rotation_pose& placed) {
+            return rounded_site_distance<NT>(a, b, s, placed);
+        };
+        return turning_result<NT>(advance_near(a, b, from, to, options,
+                                               meeting_at_start<NT>(a, b, from, rotation_pose(from)),
+                                               separation_error<NT>(scale), false, probe, probe, site, site));
     } else {
         if (const int k = range_shift<double>(a, b, from, to); k != 0 && scales_exactly(a, b, k, from, to)) {
             sweep_options scaled = options;
@@ -533,7 +668,7 @@ contact_result<NT> turning_first_contact(const polygon& a, const polygon& b, con
             if (!coarse) coarse.emplace(a, b);
             return coarse_probe(*coarse, p, fine);
         };
-        return turning_result<NT>(advance_refined(a, b, from, to, options, general, fine));
+        return turning_result<NT>(advance_refined<NT>(a, b, from, to, options, general, fine));
     }
 }
 
@@ -615,7 +750,7 @@ contact_result<double> filtered_turning_first_contact(const polygon& a, const po
         if (!coarse) coarse.emplace(a, b);
         return coarse_probe(*coarse, p, fine);
     };
-    return turning_result<double>(advance_refined(a, b, from, to, options, general, fine));
+    return turning_result<double>(advance_refined<Exact>(a, b, from, to, options, general, fine));
 }
 
 }  // namespace sweep
