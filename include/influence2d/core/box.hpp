@@ -49,7 +49,8 @@ struct box {
 /// Whether two closed boxes share a point (false when either is empty or
 /// has a NaN side).
 inline bool boxes_overlap(const box& l, const box& r) {
-    return l.min_x <= r.max_x && r.min_x <= l.max_x && l.min_y <= r.max_y && r.min_y <= l.max_y;
+    // (All four compared, without a branch for each.)
+    return (l.min_x <= r.max_x) & (r.min_x <= l.max_x) & (l.min_y <= r.max_y) & (r.min_y <= l.max_y);
 }
 
 }  // namespace influence2d

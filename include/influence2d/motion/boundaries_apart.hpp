@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "influence2d/core/box.hpp"
@@ -183,21 +184,26 @@ inline near_boundaries boundaries_near(const polygon& a, const polygon& b, const
             const polygon &vertices = moving ? b : a, &edges = moving ? a : b;
             const boundary_groups& eg = moving ? ga : gb;
             const swept_frame<apart_parts> coarse = angle_linear_frame<apart_parts>(ends, coarse_bulge, !moving, slack);
-            const swept_frame<fine_parts> fine = angle_linear_frame<fine_parts>(ends, ends.bulge, !moving, slack);
-            // The fine parts' boxes of a vertex, made when first asked.
-            std::vector<std::array<box, fine_parts>> fine_boxes(vertices.size());
-            std::vector<bool> made(vertices.size(), false);
+            // The fine parts' frame, made when first asked, and the fine
+            // parts' boxes of a vertex likewise (slot[v] into fine_boxes).
+            std::optional<swept_frame<fine_parts>> fine;
+            std::vector<std::uint32_t> slot;
+            std::vector<std::array<box, fine_parts>> fine_boxes;
             for_each_swept_pair(coarse, vertices, moving ? gb : ga, edges, eg, -std::numeric_limits<double>::infinity(),
                                 [&](std::size_t v, std::size_t e, const std::array<box, apart_parts>& parts) {
                                     for (std::size_t k = 0; k < apart_parts; ++k) {
                                         if (!boxes_overlap(parts[k], eg.edges[e])) continue;
-                                        if (!made[v]) {
-                                            fine_boxes[v] = swept_parts(fine, vertices.vertex(v));
-                                            made[v] = true;
+                                        if (!fine) {
+                                            fine = angle_linear_frame<fine_parts>(ends, ends.bulge, !moving, slack);
+                                            slot.assign(vertices.size(), unmade);
+                                        }
+                                        if (slot[v] == unmade) {
+                                            slot[v] = static_cast<std::uint32_t>(fine_boxes.size());
+                                            fine_boxes.push_back(swept_parts(*fine, vertices.vertex(v)));
                                         }
                                         for (std::size_t j = k * apart_subparts; j < (k + 1) * apart_subparts; ++j)
-                                            if (boxes_overlap(fine_boxes[v][j], eg.edges[e])) {
-                                                out.start = std::min(out.start, fine.tau[j]);
+                                            if (boxes_overlap(fine_boxes[slot[v]][j], eg.edges[e])) {
+                                                out.start = std::min(out.start, fine->tau[j]);
                                                 if (out.all)
                                                     out.pairs.push_back({moving, static_cast<std::uint32_t>(v),
                                                                          static_cast<std::uint32_t>(e)});

@@ -172,6 +172,9 @@ inline boundary_groups boundary_groups_of(const polygon& shape) {
     return out;
 }
 
+/// The mark of a vertex whose boxes are not made yet (for_each_swept_pair).
+inline constexpr std::uint32_t unmade = ~std::uint32_t{0};
+
 /// Calls pair(v, e, parts) for each vertex v of `vertices` (groups `vg`)
 /// and edge e of `edges` (groups `eg`) whose boxes over the window (frame;
 /// the union of swept_parts of the vertex over the parts not ending by
@@ -194,10 +197,13 @@ void for_each_swept_pair(const swept_frame<Parts>& frame, const polygon& vertice
     }
     std::sort(chain_order.begin(), chain_order.end(),
               [](const edge_box& l, const edge_box& m) { return l.min_x < m.min_x; });
-    // The vertices' boxes, made when first asked.
-    std::vector<std::array<box, Parts>> parts(vertices.size());
-    std::vector<box> vertex_box(vertices.size());
-    std::vector<bool> made(vertices.size(), false);
+    // The vertices' boxes, made when first asked (slot[v] into `parts` and
+    // `vertex_box`; most vertices need none).
+    std::vector<std::uint32_t> slot(vertices.size(), unmade);
+    std::vector<std::array<box, Parts>> parts;
+    std::vector<box> vertex_box;
+    parts.reserve(vertices.size());
+    vertex_box.reserve(vertices.size());
     sweep_along_x(
         chain_order, 0, chain_order.size(), eg.runs, 0, eg.runs.size(),
         [](const edge_box& k) -> const edge_box& { return k; },
@@ -208,14 +214,15 @@ void for_each_swept_pair(const swept_frame<Parts>& frame, const polygon& vertice
             const std::size_t v_end = std::min(vertices.size(), (chain + 1) * group_length),
                               e_end = std::min(edges.size(), (run + 1) * group_length);
             for (std::size_t v = chain * group_length; v < v_end; ++v) {
-                if (!made[v]) {
-                    parts[v] = swept_parts(frame, vertices.vertex(v));
-                    vertex_box[v] = union_after(frame, parts[v], known);
-                    made[v] = true;
+                if (slot[v] == unmade) {
+                    slot[v] = static_cast<std::uint32_t>(parts.size());
+                    parts.push_back(swept_parts(frame, vertices.vertex(v)));
+                    vertex_box.push_back(union_after(frame, parts.back(), known));
                 }
-                if (!boxes_overlap(vertex_box[v], run_box)) continue;
+                const box& whole = vertex_box[slot[v]];
+                if (!boxes_overlap(whole, run_box)) continue;
                 for (std::size_t e = run * group_length; e < e_end; ++e)
-                    if (boxes_overlap(vertex_box[v], eg.edges[e])) pair(v, e, parts[v]);
+                    if (boxes_overlap(whole, eg.edges[e])) pair(v, e, parts[slot[v]]);
             }
             return false;
         });
