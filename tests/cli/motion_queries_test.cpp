@@ -136,16 +136,16 @@ TEST_CASE("cli: sweep and collide --continuous --motion rational answer turning 
 }
 
 TEST_CASE("cli: sweep and collide --continuous report a motion left undecided at --max-steps", "[cli][sweep]") {
-    // A unit square slides 3e-9 above the top of a 4 x 4 square (notched
-    // below, so not convex) while turning by 1e-12: conservative
-    // advancement would take billions of steps
+    // A unit square slides 1.04e-9 above the top of a 4 x 4 square (notched
+    // below, so not convex) while turning by 1e-12, just beyond where the
+    // probes stop: conservative advancement would take billions of steps
     // (tests/motion/first_contact_test.cpp); the library's own answer at
     // 1,000 steps is the tool's.
     const temp_dir dir;
     const char* a_wkt = "POLYGON((0 0, 1.5 0, 1.5 1, 2.5 1, 2.5 0, 4 0, 4 4, 0 4, 0 0))";
     const char* b_wkt = "POLYGON((-0.5 -0.5, 0.5 -0.5, 0.5 0.5, -0.5 0.5, -0.5 -0.5))";
     const auto a_file = dir.file("a.wkt", a_wkt), b_file = dir.file("b.wkt", b_wkt);
-    const std::vector<pose> motion = {{-2, 4.5 + 3e-9, 0}, {6, 4.5 + 3e-9, 1e-12}};
+    const std::vector<pose> motion = {{-2, 4.5 + 1.04e-9, 0}, {6, 4.5 + 1.04e-9, 1e-12}};
     const auto poses = dir.file("poses.csv", poses_csv(motion));
     sweep_options o;
     o.max_steps = 1000;

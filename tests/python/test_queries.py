@@ -276,15 +276,23 @@ def test_first_contact_rational_matches_the_tool(tool, tmp_path, rng):
 
 
 def test_first_contact_step_limit_leaves_a_grazing_motion_undecided():
-    """A unit square slides 3e-9 above a 4 x 4 square (notched below, so
-    not convex) while turning by 1e-12: within max_steps the advancement
-    cannot decide (no contact before the time it reached); the rational
-    model answers no contact. Without the notch the two convex polygons
+    """A unit square slides 1.04e-9 above a 4 x 4 square (notched below, so
+    not convex) while turning by 1e-12: just beyond where the probes stop
+    (the tolerance, 1e-9, and double's error bound), within max_steps the
+    advancement cannot decide (no contact before the time it reached); the
+    rational model answers no contact. 3e-9 above, the swept boxes decide
+    it without a step, apart. Without the notch the two convex polygons
     step by their vertices' own approach and decide it, apart."""
     a = "POLYGON ((0 0, 1.5 0, 1.5 1, 2.5 1, 2.5 0, 4 0, 4 4, 0 4, 0 0))"
     b = "POLYGON ((-0.5 -0.5, 0.5 -0.5, 0.5 0.5, -0.5 0.5, -0.5 -0.5))"
-    start = np.array([[-2.0, 4.5 + 3e-9, 0.0], [-2.0, 2.0, 0.0]])
-    end = np.array([[6.0, 4.5 + 3e-9, 1e-12], [6.0, 2.0, 1.0]])
+    far_start = np.array([[-2.0, 4.5 + 3e-9, 0.0]])
+    far_end = np.array([[6.0, 4.5 + 3e-9, 1e-12]])
+    for number_type in ("double", "certified", "exact"):
+        contact, t, undecided = influence2d.first_contact(a, b, far_start, far_end, number_type=number_type,
+                                                          max_steps=1000, undecided=True)
+        assert contact.tolist() == [False] and undecided.tolist() == [False]
+    start = np.array([[-2.0, 4.5 + 1.04e-9, 0.0], [-2.0, 2.0, 0.0]])
+    end = np.array([[6.0, 4.5 + 1.04e-9, 1e-12], [6.0, 2.0, 1.0]])
     for number_type in ("double", "certified", "exact"):
         contact, t, undecided = influence2d.first_contact(a, b, start, end, number_type=number_type, max_steps=1000,
                                                           undecided=True)

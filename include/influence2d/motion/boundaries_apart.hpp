@@ -30,12 +30,14 @@ namespace influence2d {
 
 namespace sweep {
 
-/// How many parts of equal time each window of boundaries_near is
-/// boxed over first (a window turns by at most a quarter turn), and how
-/// many each of them is cut into where a vertex's box meets an edge's: a
-/// sixteenth of a quarter turn, pi / 32, bulges by less than 0.25% of its
-/// radius.
-inline constexpr std::size_t apart_parts = 4, apart_subparts = 4;
+/// How many parts of equal time each window of boundaries_near is boxed
+/// over first (a window turns by at most a quarter turn).
+inline constexpr std::size_t apart_parts = 4;
+
+/// How many parts each of those is cut into where a vertex's box meets an
+/// edge's: a sixteenth of a quarter turn, pi / 32, bulges by less than
+/// 0.25% of its radius.
+inline constexpr std::size_t apart_subparts = 4;
 
 /// The most windows of at most a quarter turn boundaries_near boxes:
 /// a motion that turns by more is not looked at.
@@ -58,9 +60,11 @@ inline constexpr double apart_pose_rounding = 0x1p-48;
 /// theta the largest part's turn.
 template <std::size_t Parts>
 struct motion_ends {
-    std::array<double, Parts + 1> tau, cos, sin;
-    std::array<point<double>, Parts + 1> shift;
-    double bulge = 0;
+    std::array<double, Parts + 1> tau;           ///< the times
+    std::array<double, Parts + 1> cos;           ///< the turn's cosine at each
+    std::array<double, Parts + 1> sin;           ///< the turn's sine at each
+    std::array<point<double>, Parts + 1> shift;  ///< the translation at each
+    double bulge = 0;                            ///< the parts' bulge factor
 };
 
 /// The motion_ends of [t0, t1].

@@ -58,10 +58,13 @@ inline constexpr std::size_t group_length = 8;
 /// by the same angle lies between their turns.
 template <std::size_t Parts>
 struct swept_frame {
-    std::array<double, Parts + 1> tau, cos, sin;
+    std::array<double, Parts + 1> tau;             ///< the parts' ends
+    std::array<double, Parts + 1> cos;             ///< the whole turn's cosine at each end
+    std::array<double, Parts + 1> sin;             ///< the whole turn's sine at each end
     std::array<std::array<box, 2>, Parts> offset;  ///< per part, at its first and its last end
-    std::array<double, Parts> bulge, radius_added;
-    double slack = 0;  ///< every box's absolute slack
+    std::array<double, Parts> bulge;               ///< per part, 1 - cos(theta / 2) for its turn theta
+    std::array<double, Parts> radius_added;        ///< per part, the translation's share of a radius
+    double slack = 0;                              ///< every box's absolute slack
 };
 
 /// The boxes of the point p over the parts of a window (frame): over part
@@ -135,9 +138,9 @@ struct vertex_chain {
 /// sweep_along_x, `edge` naming the run) and the chains of vertices. None
 /// depends on the motion: made once per query.
 struct boundary_groups {
-    std::vector<box> edges;
-    std::vector<edge_box> runs;
-    std::vector<vertex_chain> chains;
+    std::vector<box> edges;            ///< each edge's box
+    std::vector<edge_box> runs;        ///< the runs' boxes, sorted by min_x
+    std::vector<vertex_chain> chains;  ///< the chains, in order
 };
 
 /// The groups of `shape`'s boundary (boundary_groups). A chain's reach is
