@@ -176,6 +176,9 @@ inline near_boundaries boundaries_near(const polygon& a, const polygon& b, const
     out.start = std::numeric_limits<double>::infinity();
     out.all = true;
     constexpr std::size_t fine_parts = apart_parts * apart_subparts;
+    swept_scratch<apart_parts> scratch;
+    std::vector<std::uint32_t> slot;
+    std::vector<std::array<box, fine_parts>> fine_boxes;
     for (std::size_t w = 0; w < windows; ++w) {
         const double t0 = static_cast<double>(w) / static_cast<double>(windows),
                      t1 = static_cast<double>(w + 1) / static_cast<double>(windows);
@@ -191,30 +194,31 @@ inline near_boundaries boundaries_near(const polygon& a, const polygon& b, const
             // The fine parts' frame, made when first asked, and the fine
             // parts' boxes of a vertex likewise (slot[v] into fine_boxes).
             std::optional<swept_frame<fine_parts>> fine;
-            std::vector<std::uint32_t> slot;
-            std::vector<std::array<box, fine_parts>> fine_boxes;
-            for_each_swept_pair(coarse, vertices, moving ? gb : ga, edges, eg, -std::numeric_limits<double>::infinity(),
-                                [&](std::size_t v, std::size_t e, const std::array<box, apart_parts>& parts) {
-                                    for (std::size_t k = 0; k < apart_parts; ++k) {
-                                        if (!boxes_overlap(parts[k], eg.edges[e])) continue;
-                                        if (!fine) {
-                                            fine = angle_linear_frame<fine_parts>(ends, ends.bulge, !moving, slack);
-                                            slot.assign(vertices.size(), unmade);
-                                        }
-                                        if (slot[v] == unmade) {
-                                            slot[v] = static_cast<std::uint32_t>(fine_boxes.size());
-                                            fine_boxes.push_back(swept_parts(*fine, vertices.vertex(v)));
-                                        }
-                                        for (std::size_t j = k * apart_subparts; j < (k + 1) * apart_subparts; ++j)
-                                            if (boxes_overlap(fine_boxes[slot[v]][j], eg.edges[e])) {
-                                                out.start = std::min(out.start, fine->tau[j]);
-                                                if (out.all)
-                                                    out.pairs.push_back({moving, static_cast<std::uint32_t>(v),
-                                                                         static_cast<std::uint32_t>(e)});
-                                                return;
-                                            }
-                                    }
-                                });
+            for_each_swept_pair(
+                coarse, vertices, moving ? gb : ga, edges, eg, -std::numeric_limits<double>::infinity(),
+                [&](std::size_t v, std::size_t e, const std::array<box, apart_parts>& parts) {
+                    for (std::size_t k = 0; k < apart_parts; ++k) {
+                        if (!boxes_overlap(parts[k], eg.edges[e])) continue;
+                        if (!fine) {
+                            fine = angle_linear_frame<fine_parts>(ends, ends.bulge, !moving, slack);
+                            slot.assign(vertices.size(), unmade);
+                            fine_boxes.clear();
+                        }
+                        if (slot[v] == unmade) {
+                            slot[v] = static_cast<std::uint32_t>(fine_boxes.size());
+                            fine_boxes.push_back(swept_parts(*fine, vertices.vertex(v)));
+                        }
+                        for (std::size_t j = k * apart_subparts; j < (k + 1) * apart_subparts; ++j)
+                            if (boxes_overlap(fine_boxes[slot[v]][j], eg.edges[e])) {
+                                out.start = std::min(out.start, fine->tau[j]);
+                                if (out.all)
+                                    out.pairs.push_back(
+                                        {moving, static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(e)});
+                                return;
+                            }
+                    }
+                },
+                scratch);
         }
         if (out.pairs.size() > limit) out.all = false;
         if (!out.all && out.start <= 1) break;

@@ -764,22 +764,24 @@ std::optional<std::pair<sweep::contact_site, double>> contact_within(const polyg
     // B's vertices against A's edges, in A's frame; A's vertices against
     // B's edges, in B's frame (q less the translation, turned back): the
     // pairs whose boxes over a part meet (for_each_swept_pair).
+    sweep::swept_scratch<Parts> scratch;
     for (const bool moving : {true, false}) {
         const polygon &vertices = moving ? b : a, &edges = moving ? a : b;
         std::vector<std::optional<moving_point<Filter>>> mf(vertices.size());
         const sweep::swept_frame<Parts> frame = swept_frame_of(piece, turns, !moving, td, slack);
-        sweep::for_each_swept_pair(frame, vertices, moving ? gb : ga, edges, moving ? ga : gb, known,
-                                   [&](std::size_t v, std::size_t e, const std::array<box, Parts>& parts) {
-                                       const std::optional<double> from_box =
-                                           sweep::first_part_meeting(frame, parts, (moving ? ga : gb).edges[e], known);
-                                       if (!from_box) return;
-                                       if (!mf[v])
-                                           mf[v] = moving ? moving_vertex<Filter>(piece, tf, vertices.vertex(v))
-                                                          : moving_static_vertex<Filter>(piece, tf, vertices.vertex(v));
-                                       sift({moving, static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(e)},
-                                            *mf[v], moving ? one_f : base_f, edges.vertex(e),
-                                            edges.vertex(edges.next(e)), *from_box);
-                                   });
+        sweep::for_each_swept_pair(
+            frame, vertices, moving ? gb : ga, edges, moving ? ga : gb, known,
+            [&](std::size_t v, std::size_t e, const std::array<box, Parts>& parts) {
+                const std::optional<double> from_box =
+                    sweep::first_part_meeting(frame, parts, (moving ? ga : gb).edges[e], known);
+                if (!from_box) return;
+                if (!mf[v])
+                    mf[v] = moving ? moving_vertex<Filter>(piece, tf, vertices.vertex(v))
+                                   : moving_static_vertex<Filter>(piece, tf, vertices.vertex(v));
+                sift({moving, static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(e)}, *mf[v],
+                     moving ? one_f : base_f, edges.vertex(e), edges.vertex(edges.next(e)), *from_box);
+            },
+            scratch);
     }
     // The kept pairs in order of where their contact may start; the
     // earliest root among them (earliest_kept_contact): in double words

@@ -178,6 +178,17 @@ inline boundary_groups boundary_groups_of(const polygon& shape) {
 /// The mark of a vertex whose boxes are not made yet (for_each_swept_pair).
 inline constexpr std::uint32_t unmade = ~std::uint32_t{0};
 
+/// The working storage of for_each_swept_pair, kept by a caller that makes
+/// many calls so that each reuses the last one's memory.
+template <std::size_t Parts>
+struct swept_scratch {
+    std::vector<std::array<box, Parts>> chain_parts;  ///< each chain's boxes over the parts
+    std::vector<edge_box> chain_order;                ///< the chains' boxes, sorted by min_x
+    std::vector<std::uint32_t> slot;                  ///< each vertex's boxes' place, or unmade
+    std::vector<std::array<box, Parts>> parts;        ///< the vertices' boxes made
+    std::vector<box> vertex_box;                      ///< their unions over the parts
+};
+
 /// Calls pair(v, e, parts) for each vertex v of `vertices` (groups `vg`)
 /// and edge e of `edges` (groups `eg`) whose boxes over the window (frame;
 /// the union of swept_parts of the vertex over the parts not ending by
@@ -188,11 +199,17 @@ inline constexpr std::uint32_t unmade = ~std::uint32_t{0};
 /// angle about the same origin as the centre, keeping its distance from
 /// it) meet a run's box in one part; the chains and runs whose boxes over
 /// the window overlap are found by sort and sweep along x (sweep_along_x).
+/// `scratch` is the calls' working storage.
 template <std::size_t Parts, class Pair>
 void for_each_swept_pair(const swept_frame<Parts>& frame, const polygon& vertices, const boundary_groups& vg,
-                         const polygon& edges, const boundary_groups& eg, double known, Pair&& pair) {
-    std::vector<std::array<box, Parts>> chain_parts(vg.chains.size());
-    std::vector<edge_box> chain_order(vg.chains.size());
+                         const polygon& edges, const boundary_groups& eg, double known, Pair&& pair,
+                         swept_scratch<Parts>& scratch) {
+    auto &chain_parts = scratch.chain_parts, &parts = scratch.parts;
+    auto& chain_order = scratch.chain_order;
+    auto& slot = scratch.slot;
+    auto& vertex_box = scratch.vertex_box;
+    chain_parts.resize(vg.chains.size());
+    chain_order.resize(vg.chains.size());
     for (std::size_t c = 0; c < vg.chains.size(); ++c) {
         chain_parts[c] = swept_parts(frame, vg.chains[c].centre);
         for (box& part : chain_parts[c]) part = part.inflated(vg.chains[c].reach);
@@ -202,9 +219,9 @@ void for_each_swept_pair(const swept_frame<Parts>& frame, const polygon& vertice
               [](const edge_box& l, const edge_box& m) { return l.min_x < m.min_x; });
     // The vertices' boxes, made when first asked (slot[v] into `parts` and
     // `vertex_box`; most vertices need none).
-    std::vector<std::uint32_t> slot(vertices.size(), unmade);
-    std::vector<std::array<box, Parts>> parts;
-    std::vector<box> vertex_box;
+    slot.assign(vertices.size(), unmade);
+    parts.clear();
+    vertex_box.clear();
     parts.reserve(vertices.size());
     vertex_box.reserve(vertices.size());
     sweep_along_x(
