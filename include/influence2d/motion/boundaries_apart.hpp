@@ -95,29 +95,15 @@ inline swept_frame<Parts> angle_linear_frame(const motion_ends<Ends>& ends, doub
     constexpr std::size_t stride = Ends / Parts;
     swept_frame<Parts> out;
     out.slack = slack;
+    std::array<point<double>, Parts + 1> shift;
     for (std::size_t j = 0; j <= Parts; ++j) {
         out.tau[j] = ends.tau[j * stride];
         out.cos[j] = ends.cos[j * stride];
         out.sin[j] = inverse ? -ends.sin[j * stride] : ends.sin[j * stride];
+        shift[j] = ends.shift[j * stride];
     }
-    for (std::size_t k = 0; k < Parts; ++k) {
-        const point<double>&t0 = ends.shift[k * stride], &t1 = ends.shift[(k + 1) * stride];
-        out.bulge[k] = bulge;
-        out.radius_added[k] = 0;
-        for (std::size_t side = 0; side < 2; ++side) {
-            box& b = out.offset[k][side];
-            if (!inverse) {
-                b.add(t0);
-                b.add(t1);
-                continue;
-            }
-            const double tc = out.cos[k + side], ts = out.sin[k + side];
-            for (const point<double>& t : {t0, t1}) {
-                b.add({-(tc * t.x - ts * t.y), -(ts * t.x + tc * t.y)});
-                out.radius_added[k] = std::max(out.radius_added[k], std::fabs(t.x) + std::fabs(t.y));
-            }
-        }
-    }
+    out.bulge.fill(bulge);
+    add_translation(out, inverse, shift);
     return out;
 }
 
@@ -166,8 +152,7 @@ inline near_boundaries boundaries_near(const polygon& a, const polygon& b, const
         windows *= 2;
         if (windows > apart_windows) return out;
     }
-    const double scale = coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) + std::fabs(from.ty) +
-                         std::fabs(to.tx) + std::fabs(to.ty);
+    const double scale = motion_scale(a, b, from, to);
     const double slack =
         apart_pose_rounding * (2 * scale * (std::fabs(from.theta) + std::fabs(to.theta) + 1) + std::fabs(from.tx) +
                                std::fabs(from.ty) + std::fabs(to.tx) + std::fabs(to.ty)) +

@@ -4,11 +4,14 @@
 /// What a motion query answers and takes: a motion of B between two poses,
 /// its first contact, the options.
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
 #include "influence2d/core/feature.hpp"
+#include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/influence/bounds.hpp"
 
 namespace influence2d {
 
@@ -74,5 +77,16 @@ struct sweep_options {
 inline pose motion_pose(const pose& from, const pose& to, double t) {
     return {from.tx + t * (to.tx - from.tx), from.ty + t * (to.ty - from.ty), from.theta + t * (to.theta - from.theta)};
 }
+
+namespace sweep {
+
+/// The scene's size of a motion (for separation_error and the swept
+/// boxes' slack): the polygons' largest coordinates and both translations.
+inline double motion_scale(const polygon& a, const polygon& b, const pose& from, const pose& to) {
+    return coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) + std::fabs(from.ty) + std::fabs(to.tx) +
+           std::fabs(to.ty);
+}
+
+}  // namespace sweep
 
 }  // namespace influence2d

@@ -377,22 +377,7 @@ inline sweep::swept_frame<Parts> swept_frame_of(const rational_piece& piece, con
         out.sin[j] = (piece.s * turns.cos[j] + piece.c * turns.sin[j]) * (inverse ? -1 : 1);
         ends[j] = {shift.a0.x + turns.tau[j] * shift.a1.x, shift.a0.y + turns.tau[j] * shift.a1.y};
     }
-    for (std::size_t k = 0; k < Parts; ++k) {
-        out.radius_added[k] = 0;
-        for (std::size_t side = 0; side < 2; ++side) {
-            box& b = out.offset[k][side];
-            if (!inverse) {
-                b.add(ends[k]);
-                b.add(ends[k + 1]);
-                continue;
-            }
-            const double tc = out.cos[k + side], ts = out.sin[k + side];
-            for (const point<double>& t : {ends[k], ends[k + 1]}) {
-                b.add({-(tc * t.x - ts * t.y), -(ts * t.x + tc * t.y)});
-                out.radius_added[k] = std::max(out.radius_added[k], std::fabs(t.x) + std::fabs(t.y));
-            }
-        }
-    }
+    sweep::add_translation(out, inverse, ends);
     return out;
 }
 
@@ -846,8 +831,7 @@ template <class NT, class Filter = std::conditional_t<is_exact_v<NT>, certified,
 contact_result<double> rational_first_contact(const polygon& a, const polygon& b, const pose& from, const pose& to,
                                               const rational_start& start = {}) {
     using namespace rational_turn_detail;
-    const double scale = coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) + std::fabs(from.ty) +
-                         std::fabs(to.tx) + std::fabs(to.ty);
+    const double scale = sweep::motion_scale(a, b, from, to);
     contact_result<double> r;
     const auto contact_at = [&](const std::pair<sweep::contact_site, double>& found) {
         r.contact = true;

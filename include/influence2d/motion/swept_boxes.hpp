@@ -67,6 +67,32 @@ struct swept_frame {
     double slack = 0;                              ///< every box's absolute slack
 };
 
+/// Sets the translation's share of a frame whose turns are set (cos and
+/// sin, transposed when `inverse`), from the translation at each end of
+/// its parts (`shift`): over each part, the box it adds at the part's first
+/// and last end, and the most it adds to a point's radius (swept_frame).
+template <std::size_t Parts>
+inline void add_translation(swept_frame<Parts>& frame, bool inverse,
+                            const std::array<point<double>, Parts + 1>& shift) {
+    for (std::size_t k = 0; k < Parts; ++k) {
+        frame.radius_added[k] = 0;
+        for (std::size_t side = 0; side < 2; ++side) {
+            box& b = frame.offset[k][side];
+            b = box{};
+            if (!inverse) {
+                b.add(shift[k]);
+                b.add(shift[k + 1]);
+                continue;
+            }
+            const double tc = frame.cos[k + side], ts = frame.sin[k + side];
+            for (const point<double>& t : {shift[k], shift[k + 1]}) {
+                b.add({-(tc * t.x - ts * t.y), -(ts * t.x + tc * t.y)});
+                frame.radius_added[k] = std::max(frame.radius_added[k], std::fabs(t.x) + std::fabs(t.y));
+            }
+        }
+    }
+}
+
 /// The boxes of the point p over the parts of a window (frame): over part
 /// k, the box of p's places at the part's ends (p turned by the end's whole
 /// turn, plus the translation's box there), grown by the arc's bulge over

@@ -268,13 +268,6 @@ advance_result advance(const polygon& b, const pose& from, const pose& to, doubl
     }
 }
 
-/// The scene's size for separation_error: the polygons' largest
-/// coordinates and both translations of the motion.
-inline double motion_scale(const polygon& a, const polygon& b, const pose& from, const pose& to) {
-    return coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) + std::fabs(from.ty) + std::fabs(to.tx) +
-           std::fabs(to.ty);
-}
-
 /// A probe on a separation query in NT: its distance (distance_of) and
 /// features.
 template <class NT>
