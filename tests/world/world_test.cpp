@@ -81,6 +81,14 @@ std::vector<body_pair> reference_contacts(const std::vector<polygon>& shapes, co
     return out;
 }
 
+/// The box of p posed by q, in double (for laying out a test scene).
+box placed_box(const polygon& p, const pose& q) {
+    const rotation_pose t(q);
+    box b;
+    for (const point<double>& v : p.vertices()) b.add(t.apply<double>(v));
+    return b;
+}
+
 std::string show(const std::vector<body_pair>& v) {
     std::ostringstream s;
     for (const body_pair& p : v) s << '(' << p.first << ',' << p.second << ')';
@@ -197,8 +205,10 @@ TEST_CASE("world: small moves stay in the enlarged boxes and the contacts stay t
         const world_statistics st = check_scene<certified_world>(500 + coherence, {0, 0}, 0, 20, o, 0.05, 0.02);
         INFO("escaped " << st.escaped << " of " << st.moved << " moved");
         CHECK(st.escaped * 2 < st.moved);  // most moved bodies stayed in their enlarged boxes
-        INFO("witness hits " << st.witness_hits << ", contacts " << st.contacts);
+        INFO("witness hits " << st.witness_hits << ", contacts " << st.contacts << ", separated " << st.separated);
         if (coherence) CHECK(st.witness_hits * 4 > st.contacts);  // persisting contacts kept their witness
+        if (coherence) CHECK(st.separated > 20);                  // pairs apart kept their separating edge
+        if (!coherence) CHECK(st.separated == 0);
     }
     world_options o;
     const world_statistics st = check_scene<certified_world>(502, {4e6, -2e6}, 0.25, 12, o, 0.05, 0.02);
@@ -330,6 +340,96 @@ TEST_CASE("world: squares sharing edges and corners touch exactly", "[world]") {
         w.move(static_cast<std::uint32_t>(i), {static_cast<double>(i % n), static_cast<double>(i / n), 0});
     CHECK(show(w.step()) == show(want));
     CHECK(w.events().empty());
+}
+
+TEST_CASE("world: pairs kept apart by a hull edge, until they touch exactly", "[world]") {
+    // Bodies of every kind (a square, a square with a hole, a C, random
+    // multipolygons with holes and islands, a swallower) in pairs: the
+    // second of each pair slides along x towards the first, from a gap of
+    // 2^-3 between their boxes, by 16 steps of 2^-6 (the squares touch
+    // exactly at the 8th) and then 16 steps of a 32nd of the smaller box's
+    // width, and back, unturned (every pose exact in double) or turned by a
+    // fixed angle; each step against the exact reference. Between the steps
+    // a pair's separating edge is tried first: it must fail where the
+    // bodies meet, exact touching included.
+    rng g(2300);
+    std::vector<polygon> shapes = {test_shapes::square(0, 0, 1), test_shapes::square_with_hole(),
+                                   test_shapes::c_shape()};
+    for (int k = 0; k < 2; ++k) shapes.push_back(test_scenes::random_multi(g, 2, 3).to_polygon());
+    shapes.push_back(test_scenes::random_swallower(g).to_polygon());
+    for (const double theta : {0.0, 0.3}) {
+        certified_world w;
+        for (const polygon& p : shapes) w.add_shape(p);
+        std::vector<body_state> bodies;
+        std::vector<double> start, coarse;  // each moving body's first abscissa and coarse step
+        for (std::size_t a = 0; a < shapes.size(); ++a)
+            for (std::size_t b = 0; b < shapes.size(); ++b) {
+                // Pair (a, b) in a row of its own, far from the others.
+                const double y = 1000.0 * static_cast<double>(a * shapes.size() + b);
+                const pose pa{0, y, theta};
+                const box ba = placed_box(shapes[a], pa), bb = placed_box(shapes[b], {0, y, theta});
+                bodies.push_back({a, pa, g.chance(0.5)});
+                bodies.push_back({b, {test_scenes::snap(ba.max_x - bb.min_x) + 0x1p-3, y, theta}, false});
+                start.push_back(bodies.back().where.tx);
+                coarse.push_back(test_scenes::snap(std::min(ba.max_x - ba.min_x, bb.max_x - bb.min_x) / 32) +
+                                 test_scenes::grid);
+                for (std::size_t k = bodies.size() - 2; k < bodies.size(); ++k)
+                    w.add_body(static_cast<std::uint32_t>(bodies[k].shape), bodies[k].where, bodies[k].fixed);
+            }
+        std::size_t begun = 0;
+        for (int step = 0; step <= 64; ++step) {
+            const int in = step <= 32 ? step : 64 - step;  // steps taken towards the fixed body
+            if (step > 0)
+                for (std::size_t k = 1; k < bodies.size(); k += 2) {
+                    bodies[k].where.tx =
+                        start[k / 2] - 0x1p-6 * std::min(in, 16) - coarse[k / 2] * std::max(in - 16, 0);
+                    w.move(static_cast<std::uint32_t>(k), bodies[k].where);
+                }
+            const std::vector<body_pair> got = w.step(), want = reference_contacts(shapes, bodies, 0);
+            INFO("theta " << theta << " step " << step);
+            REQUIRE(show(got) == show(want));
+            for (const contact_event& e : w.events()) begun += e.begins ? 1 : 0;
+        }
+        const world_statistics& st = w.statistics();
+        INFO("separated " << st.separated << ", begun " << begun);
+        CHECK(st.separated > 100);                          // the separating edges served
+        CHECK(begun * 2 >= shapes.size() * shapes.size());  // and then failed as the bodies met
+    }
+}
+
+TEST_CASE("world: a separating edge fails when the bodies touch exactly", "[world]") {
+    // Two triangles whose boxes overlap while they are apart: A = (0,0),
+    // (1,0), (0,1) and B its mirror image (1,1), (0,1), (1,0) moved by
+    // (t, t), t from 2^-3 down to -2^-3 by 2^-6 and back: B's hypotenuse
+    // lies along A's exactly at t = 0 (touching along a whole edge), and
+    // at t = 2^-6 the pair is apart by a separating edge kept from the step
+    // before. A second pair likewise, B moved by (t, 0): B's corner (0, 1)
+    // on A's hypotenuse at t = 0.
+    const std::vector<polygon> shapes = {polygon({test_shapes::ring({{0, 0}, {1, 0}, {0, 1}})}),
+                                         polygon({test_shapes::ring({{1, 1}, {0, 1}, {1, 0}})}),
+                                         polygon({test_shapes::ring({{0, 1}, {1, 1}, {1, 2}})})};
+    certified_world w;
+    for (const polygon& p : shapes) w.add_shape(p);
+    std::vector<body_state> bodies = {
+        {0, {0, 0, 0}, true}, {1, {0x1p-3, 0x1p-3, 0}, false}, {0, {10, 0, 0}, true}, {2, {10 + 0x1p-3, 0, 0}, false}};
+    for (const body_state& x : bodies) w.add_body(static_cast<std::uint32_t>(x.shape), x.where, x.fixed);
+    std::size_t touching = 0;
+    for (int step = 0; step <= 32; ++step) {
+        const double t = 0x1p-6 * (step <= 16 ? 8 - step : step - 24);
+        bodies[1].where = {t, t, 0};
+        bodies[3].where = {10 + t, 0, 0};
+        w.move(1, bodies[1].where);
+        w.move(3, bodies[3].where);
+        const std::vector<body_pair> got = w.step(), want = reference_contacts(shapes, bodies, 0);
+        INFO("step " << step << " t " << t);
+        REQUIRE(show(got) == show(want));
+        if (t == 0) {
+            CHECK(want.size() == 2);  // both pairs touch
+            ++touching;
+        }
+    }
+    CHECK(touching == 2);
+    CHECK(w.statistics().separated >= 20);  // apart by a kept edge before touching
 }
 
 TEST_CASE("world: bad input is refused with invalid_input", "[world]") {

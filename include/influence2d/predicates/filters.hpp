@@ -182,31 +182,36 @@ inline bool segments_may_meet(const point<double>& a, const point<double>& b, co
     return !one_side(a, b, u, v) && !one_side(u, v, a, b);
 }
 
+/// The side of r with respect to the directed line through p and q: +1
+/// (left) or -1 (right) when every point within e of r, on each coordinate,
+/// lies on that side of the line through every two points within e of p
+/// and q; else 0 (also when the arithmetic cannot be trusted,
+/// certain_side). The slack: with d = q - p and w = r - p, the value
+/// d.x w.y - d.y w.x moves by at most 2e (|d.x| + |d.y|) +
+/// 2e (|w.x| + |w.y|) + 8e^2 when each point moves by e on each coordinate
+/// (each coordinate of d and w moves by at most 2e, and the two cross terms
+/// by (2e)^2 each); the sums in double are widened by
+/// crossing_slack_widening for their own rounding, and certain_side adds
+/// the value's.
+inline int certain_side_within(const point<double>& p, const point<double>& q, const point<double>& r, double e) {
+    const double dx = q.x - p.x, dy = q.y - p.y;
+    const double spread = std::fabs(r.x - p.x) + std::fabs(r.y - p.y);
+    const double slack = (2 * e * (std::fabs(dx) + std::fabs(dy) + spread) + 8 * e * e) * crossing_slack_widening;
+    return certain_side(p, dx, dy, r, slack);
+}
+
 /// Whether the segments [a, b] and [u, v] certainly cross, each point known
 /// only to within e on each coordinate: u and v certainly on opposite sides
 /// of the line through a and b, and a and b of the line through u and v,
-/// whatever the exact points within e (then the exact segments cross at a
-/// point interior to both, and meet). False whenever that is not certain.
-/// The slack of r's side of the line through p and q: with d = q - p and
-/// w = r - p, the value d.x w.y - d.y w.x moves by at most
-/// 2e (|d.x| + |d.y|) + 2e (|w.x| + |w.y|) + 8e^2 when each point moves by e
-/// on each coordinate (each coordinate of d and w moves by at most 2e, and
-/// the two cross terms by (2e)^2 each); the sums in double are widened by
-/// crossing_slack_widening for their own rounding, and certain_side adds the
-/// value's.
+/// whatever the exact points within e (certain_side_within; then the exact
+/// segments cross at a point interior to both, and meet). False whenever
+/// that is not certain.
 inline bool segments_certainly_cross(const point<double>& a, const point<double>& b, const point<double>& u,
                                      const point<double>& v, double e) {
     const auto sides_differ = [e](const point<double>& p, const point<double>& q, const point<double>& s,
                                   const point<double>& t) {
-        const double dx = q.x - p.x, dy = q.y - p.y;
-        const auto side = [&](const point<double>& r) {
-            const double spread = std::fabs(r.x - p.x) + std::fabs(r.y - p.y);
-            const double slack =
-                (2 * e * (std::fabs(dx) + std::fabs(dy) + spread) + 8 * e * e) * crossing_slack_widening;
-            return certain_side(p, dx, dy, r, slack);
-        };
-        const int first = side(s);
-        return first != 0 && side(t) == -first;
+        const int first = certain_side_within(p, q, s, e);
+        return first != 0 && certain_side_within(p, q, t, e) == -first;
     };
     return sides_differ(a, b, u, v) && sides_differ(u, v, a, b);
 }

@@ -23,10 +23,12 @@
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/query/batch.hpp"
+#include "influence2d/scene/hull_vertices.hpp"
 #include "influence2d/scene/placed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
 #include "influence2d/world/box_tree.hpp"
 #include "influence2d/world/narrow_phase.hpp"
+#include "influence2d/world/separating_edge.hpp"
 
 namespace influence2d {
 
@@ -75,7 +77,8 @@ struct world_statistics {
     std::size_t rebuilds = 0;      ///< rebuilds of a box tree
     std::size_t candidates = 0;    ///< pairs whose boxes met and had a moved body
     std::size_t carried = 0;       ///< pairs whose boxes met and neither body moved (answer kept)
-    std::size_t witness_hits = 0;  ///< candidates answered by the last step's witness
+    std::size_t witness_hits = 0;  ///< candidates answered by the last step's witness (separated included)
+    std::size_t separated = 0;     ///< candidates answered apart by the last step's separating edge
     std::size_t contacts = 0;      ///< contacts reported, summed over the steps
 };
 
@@ -118,13 +121,18 @@ struct world_statistics {
 ///       lie far from 1 in scale is answered on its two bodies scaled by a
 ///       power of two (core/range_scaling.hpp; the same answer), each
 ///       placed for that pair alone
-///     the candidates' bodies placed at their poses (vertices posed in
-///       double, and in NT for another type), once each, in buffers kept
-///       from step to step
-///     each candidate, in parallel blocks: bodies_within, the last step's
+///     each candidate whose last witness is two edges, or a separating
+///       edge (separating_edge.hpp: an edge of one body's convex hull that
+///       leaves the other's hull outside), tries it again from a few posed
+///       vertices, no body placed
+///     the other candidates' bodies placed at their poses (vertices posed
+///       in double, and in NT for another type), once each, in buffers
+///       kept from step to step
+///     each of them, in parallel blocks: bodies_within, the last step's
 ///       witness tried first (narrow_phase.hpp; a persisting contact seeks
 ///       two edges that meet, which the next step tests again from four
-///       vertices)
+///       vertices); a pair found apart (with within = 0, neither body
+///       having jumped) seeks a separating edge for the next step
 ///     contacts <- the pairs within `within`, sorted; events: the
 ///       difference with the last step's contacts
 ///
@@ -154,7 +162,7 @@ public:
     /// Throws invalid_input for an empty polygon or one beyond NT's range.
     shape_id add_shape(const polygon& p) {
         accepted_polygon<NT>(p, "world's");
-        auto s = std::make_unique<shape_entry>(shape_entry{p, coordinate_scale(p)});
+        auto s = std::make_unique<shape_entry>(shape_entry{p, coordinate_scale(p), hull_vertices(p)});
         shapes_.push_back(std::move(s));
         return static_cast<shape_id>(shapes_.size() - 1);
     }
@@ -227,6 +235,7 @@ private:
     struct shape_entry {
         polygon shape;
         double scale;
+        std::vector<std::uint32_t> hull;  // hull_vertices(shape)
     };
     struct body {
         shape_id shape = 0;
@@ -250,6 +259,7 @@ private:
         bool persisting = false;   // in contact at the last step, neither body jumped
         bool no_crossing = false;  // shown is a located vertex sought after the edges: none met
         int shift = 0;             // the pair answered scaled by 2^shift (range_shift), 0: as it stands
+        separating_edge apart;     // (shown none) a hull edge that kept the bodies apart
     };
 
     body& live(body_id i) {
@@ -525,12 +535,15 @@ private:
                 continue;
             }
             if (!boxes_overlap(a.bounds, b.bounds)) continue;
-            record r{p, meeting{}, false, false, false, pair_shift(a, b)};
+            record r{p, meeting{}, false, false, false, pair_shift(a, b), separating_edge{}};
             shifted = shifted || r.shift != 0;
             if (had && options_.coherence) {
                 r.shown = last_[k].shown;
-                r.persisting = !a.jumped && !b.jumped;
+                r.persisting = r.shown && !a.jumped && !b.jumped;
                 r.no_crossing = last_[k].no_crossing;
+                // (A body that jumped has likely crossed the line; a pair
+                // answered scaled seeks none.)
+                if (!a.jumped && !b.jumped && r.shift == 0) r.apart = last_[k].apart;
             }
             out.push_back(r);
         }
@@ -553,6 +566,16 @@ private:
     // Moved bodies from which their boxes are made in parallel blocks (four
     // corners posed, some 50 ns a body).
     static constexpr std::size_t parallel_boxes = 4096;
+
+    // Whether body i moved by over a quarter of its size at this step.
+    bool jumped_now(body_id i) const { return bodies_[i].moved && bodies_[i].jumped; }
+
+    // Body i's polygon, hull and pose (a separating edge's test).
+    hull_view hull_of(body_id i) const {
+        const body& b = bodies_[i];
+        const shape_entry& s = *shapes_[b.shape];
+        return {&s.shape, &s.hull, b.pose, b.scale};
+    }
 
     // Body i's polygon and pose, without its placing (pass 1).
     body_view<NT> posed(body_id i) const {
@@ -650,18 +673,28 @@ private:
     // Step 3: each candidate's answer, in parallel blocks when there are
     // enough of them to pay for the threads:
     //   pass 1: each pair whose witness is two edges tries them (four
-    //           vertices posed, no polygon placed)
+    //           vertices posed, no polygon placed); each pair apart with a
+    //           separating edge tries it (its ends and the other hull's
+    //           corners posed)
     //   the bodies of the pairs left placed (place_candidates)
     //   pass 2: each pair left: bodies_within. A pair in contact at the last
     //           step whose bodies did not jump seeks two edges that meet
     //           first (pass 1 can test them again at the next step); a
     //           located vertex found when no edges met (one body in the
-    //           other) is tried first
+    //           other) is tried first; a pair apart seeks a separating edge
+    //           (seek_separating_edge) when within is 0, neither body
+    //           jumped at this step and the pair is not scaled
     void narrow(std::vector<record>& tested) {
+        const bool seeks_separation = options_.coherence && options_.within == 0;
         const unsigned threads = tested.size() < parallel_witness_tests ? 1u : options_.threads;
         run_in_chunks(tested.size(), threads, 256, [&](std::size_t first, std::size_t last) {
             for (std::size_t k = first; k < last; ++k) {
                 record& r = tested[k];
+                if (r.apart) {
+                    r.by_witness = separation_holds<NT>(r.apart, hull_of(r.bodies.first), hull_of(r.bodies.second));
+                    if (!r.by_witness) r.apart = {};
+                    continue;
+                }
                 if (r.shown.how != meeting::kind::edges) continue;
                 r.by_witness =
                     r.shift == 0 ? edge_witness_holds<NT, Exact>(r.shown, posed(r.bodies.first), posed(r.bodies.second),
@@ -688,9 +721,18 @@ private:
                               : scaled_within(r, contained, &r.by_witness, prefer);
                 const bool located = r.shown && r.shown.how != meeting::kind::edges;
                 r.no_crossing = located && (r.by_witness || prefer == witness_preference::edges);
+                // (Bodies that jumped at this step will likely jump again:
+                // an edge found for them would seldom serve.)
+                if (!r.shown && seeks_separation && r.shift == 0 && !jumped_now(r.bodies.first) &&
+                    !jumped_now(r.bodies.second))
+                    r.apart = seek_separating_edge<NT>(hull_of(r.bodies.first), *bodies_[r.bodies.first].placed,
+                                                       hull_of(r.bodies.second), *bodies_[r.bodies.second].placed);
             }
         });
-        for (const record& r : tested) stats_.witness_hits += r.by_witness ? 1 : 0;
+        for (const record& r : tested) {
+            stats_.witness_hits += r.by_witness ? 1 : 0;
+            stats_.separated += r.by_witness && r.apart ? 1 : 0;
+        }
     }
 
     // Step 4: this step's pairs (carried and tested), its contacts and
@@ -701,7 +743,10 @@ private:
         now.clear();
         witnesses_.clear();
         const auto take = [&](const record& r) {
-            if (!r.shown) return;
+            if (!r.shown) {
+                if (r.apart) last_.push_back(r);  // apart, its separating edge kept
+                return;
+            }
             last_.push_back(r);
             now.push_back(r.bodies);
             if (options_.witness)
@@ -741,7 +786,7 @@ private:
     std::size_t fixed_refits_ = 0, free_refits_ = 0;  // since the tree's last rebuild
     box_tree fixed_tree_, free_tree_;
     std::map<std::pair<shape_id, int>, std::unique_ptr<polygon>> scaled_shapes_;  // scaled_shape's copies
-    std::vector<record> last_;    // the last step's pairs within the distance, sorted
+    std::vector<record> last_;    // the last step's pairs within the distance, or apart with a separating edge; sorted
     std::vector<record> kept_;    // this step's carried pairs
     std::vector<record> tested_;  // this step's candidates (kept for their capacity)
     std::vector<body_pair> contacts_;
