@@ -22,7 +22,7 @@ namespace influence2d {
 ///            centres' box (16 bits per axis)
 ///     sort the entries by key: insertion sort while the entries moved
 ///       little since the last rebuild (coherent scenes: linear), else a
-///       full sort
+///       radix sort (linear too)
 ///     leaves <- runs of `fan_out` consecutive entries; each level above
 ///       groups `fan_out` consecutive nodes of the level below, bottom-up,
 ///       each node's box the union of its children's
@@ -251,8 +251,16 @@ private:
     }
 
     // Insertion sort while it stays cheap (at most 8 moves per entry on
-    // average: the entries were nearly in order), else std::sort.
+    // average: the entries were nearly in order), else a radix sort. A
+    // first pass counts the descents: entries out of order in more than an
+    // eighth of the places go to the radix sort at once.
     static void sort_by_key(std::vector<entry>& v) {
+        std::size_t descents = 0;
+        for (std::size_t k = 1; k < v.size(); ++k) descents += v[k - 1].key > v[k].key ? 1 : 0;
+        if (descents * 8 > v.size()) {
+            radix_sort_by_key(v);
+            return;
+        }
         const std::size_t budget = 8 * v.size() + 64;
         std::size_t moves = 0;
         for (std::size_t k = 1; k < v.size(); ++k) {
@@ -263,12 +271,30 @@ private:
                 --j;
                 if (++moves > budget) {
                     v[j] = e;
-                    std::sort(v.begin(), v.end(), [](const entry& l, const entry& r) { return l.key < r.key; });
+                    radix_sort_by_key(v);
                     return;
                 }
             }
             v[j] = e;
         }
+    }
+
+    // A stable sort by key in linear time: the (key, position) pairs sorted
+    // by four passes of counting on one byte each, least significant
+    // first, then the entries moved once into their order.
+    static void radix_sort_by_key(std::vector<entry>& v) {
+        std::vector<std::uint64_t> a(v.size()), b(v.size());
+        for (std::size_t k = 0; k < v.size(); ++k) a[k] = std::uint64_t{v[k].key} << 32 | k;
+        for (int shift = 32; shift < 64; shift += 8) {
+            std::size_t start[257] = {};
+            for (std::uint64_t x : a) ++start[((x >> shift) & 0xff) + 1];
+            for (std::size_t d = 0; d < 256; ++d) start[d + 1] += start[d];
+            for (std::uint64_t x : a) b[start[(x >> shift) & 0xff]++] = x;
+            a.swap(b);
+        }
+        std::vector<entry> sorted(v.size());
+        for (std::size_t k = 0; k < v.size(); ++k) sorted[k] = v[a[k] & 0xffffffffu];
+        v = std::move(sorted);
     }
 
     void build_levels() {
