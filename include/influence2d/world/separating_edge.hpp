@@ -11,19 +11,18 @@
 #include <vector>
 
 #include "influence2d/core/point.hpp"
-#include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/scene/placed_polygon.hpp"
 
 namespace influence2d {
 
-/// A body of a pair, for the separating edge: its polygon, the corners of
-/// its convex hull (hull_vertices, counter-clockwise, stored numbering), its
-/// pose and its scale (the polygon's largest coordinate plus |tx| + |ty|).
+/// A body of a pair, for the separating edge: the corners of its
+/// polygon's convex hull (the vertices hull_vertices names, in its order:
+/// counter-clockwise), its pose and its scale (the polygon's largest
+/// coordinate plus |tx| + |ty|).
 struct hull_view {
-    const polygon* shape;                       ///< the body's polygon
-    const std::vector<std::uint32_t>* corners;  ///< hull_vertices(*shape)
+    const std::vector<point<double>>* corners;  ///< the hull's corners, unposed
     rotation_pose pose;                         ///< where it stands
     double scale;                               ///< as the world's bodies'
 };
@@ -49,11 +48,11 @@ struct separating_edge {
 /// test, whose answer is exact. The same answer in every number type but
 /// for e.
 inline bool hull_edge_separates(const hull_view& inner, std::uint32_t k, const hull_view& outer, double e) {
-    const std::vector<std::uint32_t>& h = *inner.corners;
-    const point<double> p = inner.pose.apply<double>(inner.shape->vertex(h[k])),
-                        q = inner.pose.apply<double>(inner.shape->vertex(h[k + 1 == h.size() ? 0 : k + 1]));
-    for (std::uint32_t j : *outer.corners)
-        if (certain_side_within(p, q, outer.pose.apply<double>(outer.shape->vertex(j)), e) != -1) return false;
+    const std::vector<point<double>>& h = *inner.corners;
+    const point<double> p = inner.pose.apply<double>(h[k]),
+                        q = inner.pose.apply<double>(h[k + 1 == h.size() ? 0 : k + 1]);
+    for (const point<double>& w : *outer.corners)
+        if (certain_side_within(p, q, outer.pose.apply<double>(w), e) != -1) return false;
     return true;
 }
 
@@ -67,8 +66,7 @@ bool separation_holds(const separating_edge& s, const hull_view& a, const hull_v
 }
 
 /// A separating edge of bodies a and b, found apart at their present poses
-/// and placed there (`placed_a`, `placed_b`: their vertices in double), or
-/// none:
+/// and placed there (`placed_a`, `placed_b`: their boxes), or none:
 ///
 ///   for (inner, outer) in (a, b), (b, a):
 ///     k <- the hull edge of inner whose outward normal points most nearly
@@ -85,15 +83,17 @@ separating_edge seek_separating_edge(const hull_view& a, const placed_polygon<NT
     for (std::uint8_t side = 1; side <= 2; ++side) {
         const hull_view& inner = side == 1 ? a : b;
         const placed_polygon<NT>&pi = side == 1 ? placed_a : placed_b, &po = side == 1 ? placed_b : placed_a;
-        const std::vector<std::uint32_t>& h = *inner.corners;
+        const std::vector<point<double>>& h = *inner.corners;
         if (h.size() < 2) continue;
         const point<double> from = pi.bounds().centre(), to = po.bounds().centre();
         const point<double> dir{to.x - from.x, to.y - from.y};
         // The cosine's sign times its square, up to |dir|^2 (no root taken).
         std::uint32_t best = 0;
         double best_cos = -std::numeric_limits<double>::infinity();
+        point<double> q = inner.pose.apply<double>(h[0]);
         for (std::uint32_t k = 0; k < h.size(); ++k) {
-            const point<double>&p = pi.approx()[h[k]], &q = pi.approx()[h[k + 1 == h.size() ? 0 : k + 1]];
+            const point<double> p = q;
+            q = inner.pose.apply<double>(h[k + 1 == h.size() ? 0 : k + 1]);
             // The outward normal of a counter-clockwise hull edge p -> q.
             const double nx = q.y - p.y, ny = p.x - q.x, along = nx * dir.x + ny * dir.y;
             const double c = along * std::fabs(along) / (nx * nx + ny * ny);

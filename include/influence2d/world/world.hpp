@@ -162,7 +162,8 @@ public:
     /// Throws invalid_input for an empty polygon or one beyond NT's range.
     shape_id add_shape(const polygon& p) {
         accepted_polygon<NT>(p, "world's");
-        auto s = std::make_unique<shape_entry>(shape_entry{p, coordinate_scale(p), hull_vertices(p)});
+        auto s = std::make_unique<shape_entry>(shape_entry{p, coordinate_scale(p), {}});
+        for (std::uint32_t k : hull_vertices(p)) s->hull.push_back(p.vertex(k));
         shapes_.push_back(std::move(s));
         return static_cast<shape_id>(shapes_.size() - 1);
     }
@@ -235,7 +236,7 @@ private:
     struct shape_entry {
         polygon shape;
         double scale;
-        std::vector<std::uint32_t> hull;  // hull_vertices(shape)
+        std::vector<point<double>> hull;  // the corners hull_vertices names, in its order
     };
     struct body {
         shape_id shape = 0;
@@ -574,7 +575,7 @@ private:
     hull_view hull_of(body_id i) const {
         const body& b = bodies_[i];
         const shape_entry& s = *shapes_[b.shape];
-        return {&s.shape, &s.hull, b.pose, b.scale};
+        return {&s.hull, b.pose, b.scale};
     }
 
     // Body i's polygon and pose, without its placing (pass 1).
