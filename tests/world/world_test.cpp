@@ -403,8 +403,9 @@ TEST_CASE("world: a separating edge fails when the bodies touch exactly", "[worl
     // (t, t), t from 2^-3 down to -2^-3 by 2^-6 and back: B's hypotenuse
     // lies along A's exactly at t = 0 (touching along a whole edge), and
     // at t = 2^-6 the pair is apart by a separating edge kept from the step
-    // before. A second pair likewise, B moved by (t, 0): B's corner (0, 1)
-    // on A's hypotenuse at t = 0.
+    // before. A second pair: A again, and the triangle (0,1), (1,1), (1,2)
+    // moved by (t, 0), whose corner (0, 1) meets A's corner (0, 1) at t = 0
+    // (touching at one point), its bottom edge along A's corner after.
     const std::vector<polygon> shapes = {polygon({test_shapes::ring({{0, 0}, {1, 0}, {0, 1}})}),
                                          polygon({test_shapes::ring({{1, 1}, {0, 1}, {1, 0}})}),
                                          polygon({test_shapes::ring({{0, 1}, {1, 1}, {1, 2}})})};

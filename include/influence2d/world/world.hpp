@@ -571,7 +571,7 @@ private:
     // Whether body i moved by over a quarter of its size at this step.
     bool jumped_now(body_id i) const { return bodies_[i].moved && bodies_[i].jumped; }
 
-    // Body i's polygon, hull and pose (a separating edge's test).
+    // Body i's hull corners, pose and scale (a separating edge's test).
     hull_view hull_of(body_id i) const {
         const body& b = bodies_[i];
         const shape_entry& s = *shapes_[b.shape];
