@@ -433,6 +433,49 @@ TEST_CASE("world: a separating edge fails when the bodies touch exactly", "[worl
     CHECK(w.statistics().separated >= 20);  // apart by a kept edge before touching
 }
 
+TEST_CASE("world: turned bodies touching at the edge of their bounding discs", "[world]") {
+    // An octagon whose vertices (+-2, 0) and (0, +-2) lie on its bounding
+    // disc (radius 2) and whose other vertices lie inside it. Body A of
+    // each pair stands at the origin turned by theta near a multiple of a
+    // quarter turn, and body B, the same turned alike, at (4c, 4s) (c, s
+    // the doubles of theta; the translation is exact): B's vertex (-2, 0)
+    // lands exactly on A's (2, 0), at A's farthest point along the axis
+    // nearest the turn, where the bodies' boxes are their discs' (a turned
+    // octagon's corner box is wider). A third body stands 2^-30 further
+    // along the axis. Every answer against the exact reference, in the
+    // certified and the exact world; a disc one part in a thousand too small
+    // loses the touching pairs.
+    const std::vector<polygon> shapes = {polygon({test_shapes::ring(
+        {{2, 0}, {1.25, 1.25}, {0, 2}, {-1.25, 1.25}, {-2, 0}, {-1.25, -1.25}, {0, -2}, {1.25, -1.25}})})};
+    rng g(2500);
+    std::vector<body_state> bodies;
+    const int pairs = std::max(4, test_effort::scaled(24));
+    for (int k = 0; k < pairs; ++k) {
+        const double theta = M_PI / 2 * (k % 4) + g.uniform(-0.05, 0.05);
+        const rotation_pose q(pose{0, 0, theta});
+        const double away = std::ldexp(1.0, -30) * (k % 4 == 2 ? -1 : 1);
+        bodies.push_back({0, {0, 0, theta}, k % 2 == 0});
+        bodies.push_back({0, {4 * q.c, 4 * q.s, theta}, false});
+        bodies.push_back({0, {4 * q.c + away, 4 * q.s, theta}, false});
+    }
+    certified_world certified;
+    world<exact_rational> exact;
+    for (const polygon& p : shapes) {
+        certified.add_shape(p);
+        exact.add_shape(p);
+    }
+    for (const body_state& b : bodies) {
+        certified.add_body(static_cast<std::uint32_t>(b.shape), b.where, b.fixed);
+        exact.add_body(static_cast<std::uint32_t>(b.shape), b.where, b.fixed);
+    }
+    const std::vector<body_pair> want = reference_contacts(shapes, bodies, 0);
+    CHECK(show(certified.step()) == show(want));
+    CHECK(show(exact.step()) == show(want));
+    std::size_t touching = 0;
+    for (const body_pair& p : want) touching += p.second == p.first + 1 && p.first % 3 == 0 ? 1 : 0;
+    CHECK(touching == static_cast<std::size_t>(pairs));  // every A and its B touch
+}
+
 TEST_CASE("world: bad input is refused with invalid_input", "[world]") {
     world_options o;
     o.within = -1;

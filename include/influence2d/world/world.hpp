@@ -23,6 +23,7 @@
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/query/batch.hpp"
+#include "influence2d/scene/bounding_disc.hpp"
 #include "influence2d/scene/hull_vertices.hpp"
 #include "influence2d/scene/placed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
@@ -98,7 +99,9 @@ struct world_statistics {
 ///     each body moved since the last step (in parallel blocks when many):
 ///       its box, from the four corners
 ///       of its polygon's box posed in double (the posed polygon lies in
-///       their parallelogram), grown by the posing margin and within / 2.
+///       their parallelogram), cut to the box of its polygon's bounding
+///       disc posed (scene/bounding_disc.hpp), grown by the posing margin
+///       and within / 2.
 ///       A box that left the body's enlarged box (the box the trees hold:
 ///       grown by a sixteenth of its larger side and stretched ahead along
 ///       the body's last displacement, enlarged_box) escapes: a new
@@ -162,7 +165,7 @@ public:
     /// Throws invalid_input for an empty polygon or one beyond NT's range.
     shape_id add_shape(const polygon& p) {
         accepted_polygon<NT>(p, "world's");
-        auto s = std::make_unique<shape_entry>(shape_entry{p, coordinate_scale(p), {}});
+        auto s = std::make_unique<shape_entry>(shape_entry{p, coordinate_scale(p), {}, bounding_disc(p)});
         for (std::uint32_t k : hull_vertices(p)) s->hull.push_back(p.vertex(k));
         shapes_.push_back(std::move(s));
         return static_cast<shape_id>(shapes_.size() - 1);
@@ -237,6 +240,7 @@ private:
         polygon shape;
         double scale;
         std::vector<point<double>> hull;  // the corners hull_vertices names, in its order
+        disc round;                       // bounding_disc(shape)
     };
     struct body {
         shape_id shape = 0;
@@ -275,16 +279,27 @@ private:
         b.moved = true;
     }
 
-    // The box of body b: its polygon's box with the four corners posed in
-    // double, grown by the posing margin and half the distance (and d's
-    // own rounding); a side that is NaN makes it the whole plane.
+    // The box of body b: the box of its polygon's box with the four corners
+    // posed in double, cut to the box of its polygon's bounding disc posed
+    // (posed_disc_box: as wide as the polygon whatever its turn, where the
+    // corners' box of a turned polygon is up to sqrt 2 times wider), grown
+    // by the posing margin and half the distance (and d's own rounding); a
+    // side that is NaN makes it the whole plane.
     box box_of(const body& b) const {
-        const box& local = shapes_[b.shape]->shape.bounds();
+        const shape_entry& s = *shapes_[b.shape];
+        const box& local = s.shape.bounds();
         box out;
         for (const point<double>& c :
              {point<double>{local.min_x, local.min_y}, point<double>{local.max_x, local.min_y},
               point<double>{local.min_x, local.max_y}, point<double>{local.max_x, local.max_y}})
             out.add(b.pose.template apply<double>(c));
+        const box round = posed_disc_box(s.round, b.pose);
+        if (!round.empty()) {
+            out.min_x = std::max(out.min_x, round.min_x);
+            out.min_y = std::max(out.min_y, round.min_y);
+            out.max_x = std::min(out.max_x, round.max_x);
+            out.max_y = std::min(out.max_y, round.max_y);
+        }
         out = out.inflated(2 * placing_margin<NT>(b.scale) + options_.within / 2 * (1 + 0x1p-50));
         if (std::isnan(out.min_x) || std::isnan(out.min_y) || std::isnan(out.max_x) || std::isnan(out.max_y)) {
             const double inf = std::numeric_limits<double>::infinity();
