@@ -463,6 +463,64 @@ TEST_CASE("filters: segments_certainly_cross answers only segments whose every e
     CHECK_FALSE(segments_certainly_cross({0, 0}, {1, 0}, {nan_value, -1}, {0.5, 1}, 0));
 }
 
+TEST_CASE("filters: certainly_farther answers only points whose every exact version within e is farther than r",
+          "[filters]") {
+    test_random::rng r(24);
+    std::size_t farther = 0, unsure = 0, close_calls = 0;
+    // The exact least distance squared between a point within e of p and one
+    // within e of q (on each coordinate): each axis's gap shrunk by 2e.
+    const auto least2 = [](const point<double>& p, const point<double>& q, double e) -> Q {
+        const auto gap = [&](double a, double b) -> Q {
+            Q d = Q(a) - Q(b);
+            if (d < 0) d = -d;
+            d -= Q(2) * Q(e);
+            return d > 0 ? d : Q(0);
+        };
+        const Q gx = gap(p.x, q.x), gy = gap(p.y, q.y);
+        return gx * gx + gy * gy;
+    };
+    for (int k = 0; k < count(20000); ++k) {
+        // Scales from subnormal to near the top of the range.
+        const int s = static_cast<int>(r.index(2000)) - 1070;
+        // q sometimes at a smaller scale: p - q then rounds.
+        const int t = r.chance(0.5) ? s : s - static_cast<int>(r.index(30));
+        const point<double> p{at_scale(r, s), at_scale(r, s)}, q{at_scale(r, t), at_scale(r, t)};
+        const double d = std::hypot(p.x - q.x, p.y - q.y);
+        const double e = r.chance(0.3) ? 0 : std::ldexp(d, -static_cast<int>(r.index(60)) - 2);
+        // r at the edge (d - 3e), near it (less up to 2^-40 of it), each then
+        // moved a few ulps either way, or anywhere below d.
+        const std::size_t where = r.index(3);
+        double reach = where == 0   ? d - 3 * e
+                       : where == 1 ? (d - 3 * e) * (1 - std::ldexp(r.unit(), -40))
+                                    : d * r.unit();
+        for (int n = static_cast<int>(r.index(9)) - 4; n != 0; n += n > 0 ? -1 : 1)
+            reach = std::nextafter(reach, n > 0 ? inf : -inf);
+        if (!(reach >= 0) || !std::isfinite(d)) continue;
+        const bool answer = certainly_farther(p, q, reach, e);
+        if (!answer) {
+            ++unsure;
+            continue;
+        }
+        ++farther;
+        close_calls += reach > (d - 3 * e) * (1 - 0x1p-39) ? 1 : 0;
+        INFO("scale 2^" << s << ", e " << e << ", r " << reach);
+        CHECK(least2(p, q, e) > Q(reach) * Q(reach));
+    }
+    CHECK(farther > at_least(1000));
+    CHECK(unsure > at_least(1000));
+    CHECK(close_calls > at_least(100));  // answers within 2^-39 of the edge were checked
+    // Named cases: points 3 apart, r = 2 clear, r = 3 not; e = 0.2 leaves
+    // 2.6 > 2, e = 0.4 leaves 3.2 (r + 3e) over 3; NaN and overflow answer
+    // false.
+    CHECK(certainly_farther({0, 0}, {3, 0}, 2, 0));
+    CHECK_FALSE(certainly_farther({0, 0}, {3, 0}, 3, 0));
+    CHECK(certainly_farther({0, 0}, {3, 0}, 2, 0.2));
+    CHECK_FALSE(certainly_farther({0, 0}, {3, 0}, 2, 0.4));
+    CHECK_FALSE(certainly_farther({0, 0}, {nan_value, 0}, 1, 0));
+    CHECK_FALSE(certainly_farther({-DBL_MAX, 0}, {DBL_MAX, 0}, 1, 0));
+    CHECK_FALSE(certainly_farther({0, 0}, {0x1p-1074, 0}, 0, 0));
+}
+
 TEST_CASE("filters: box_may_be_near_line never drops a box within g of the line", "[filters]") {
     test_random::rng r(10);
     std::size_t near = 0, far = 0;

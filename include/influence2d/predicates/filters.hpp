@@ -216,6 +216,27 @@ inline bool segments_certainly_cross(const point<double>& a, const point<double>
     return sides_differ(a, b, u, v) && sides_differ(u, v, a, b);
 }
 
+/// The relative widening of certainly_farther's comparison, for its own
+/// rounding: the sum r + 3e (two roundings) and its square (one), and
+/// dx^2 + dy^2 (a rounded difference on each axis, two products, one sum:
+/// below 5u = 5 2^-53 relative while the sum is a normal double) err in
+/// all by less than 8u = 2^-50; 2^-47 leaves a factor of eight.
+inline constexpr double farther_widening = 0x1p-47;
+
+/// Whether every point within e of p and every point within e of q (on each
+/// coordinate) lie more than r apart. Two such points lie at least
+/// |p - q| - 2 sqrt(2) e apart, so |p - q| > r + 3e suffices; it is
+/// compared squared in double, each side widened by farther_widening and
+/// the right one by the least normal double as well (a sum of squares that
+/// underflows errs by an absolute amount below it). False when a square
+/// overflows and for a NaN.
+inline bool certainly_farther(const point<double>& p, const point<double>& q, double r, double e) {
+    const double dx = p.x - q.x, dy = p.y - q.y, reach = r + 3 * e;
+    const double apart2 = dx * dx + dy * dy;
+    return std::isfinite(apart2) && apart2 * (1 - farther_widening) >
+                                        reach * reach * (1 + farther_widening) + std::numeric_limits<double>::min();
+}
+
 /// Whether some point of box b may lie within g of the line through u and v:
 /// false only when every corner lies certainly on one side, beyond g (then
 /// no point within g of the segment [u, v] lies in b). True for u == v and
