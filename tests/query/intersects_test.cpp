@@ -9,6 +9,7 @@
 
 #include "support/effort.hpp"
 #include "support/random_scenes.hpp"
+#include "support/shapes.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -140,4 +141,39 @@ TEST_CASE("one-shot: bad input is refused", "[one_shot]") {
     CHECK_FALSE(certified_intersects(holed, small, pose{4, 4, 0}));
     CHECK(certified_intersects(holed, small, pose{0.5, 0.5, 0}));
     CHECK(certified_intersects(small, holed, pose{-0.5, -0.5, 0}));
+}
+
+TEST_CASE("one-shot: the located vertex nearest the other's box, the same at every scale", "[one_shot]") {
+    // ring_vertex_near: the L1-nearest vertex of a short ring, the first of
+    // a long one; the same vertex for the ring and the point scaled by
+    // 2^-1000 and 2^900 (squared distances would underflow and tie there).
+    ring_input square;
+    square.vertices = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+    const polygon p({square});
+    for (int e : {0, -1000, 900}) {
+        const polygon q = p.scaled_by_power_of_two(e);
+        const auto at = [e](double x, double y) { return point<double>{std::ldexp(x, e), std::ldexp(y, e)}; };
+        INFO("scale 2^" << e);
+        CHECK(ring_vertex_near(q, q.vertices(), 0, at(5, 5)) == q.ring_begin(0) + 2);
+        CHECK(ring_vertex_near(q, q.vertices(), 0, at(-1, 3)) == q.ring_begin(0) + 3);
+        CHECK(q.vertex(ring_vertex_near(q, q.vertices(), 0, at(3.9, 0.2))).x == std::ldexp(4.0, e));
+    }
+    ring_input circle;
+    for (int k = 0; k < 40; ++k)
+        circle.vertices.push_back({std::cos(k * 0.157079632679), std::sin(k * 0.157079632679)});
+    const polygon round({circle});
+    CHECK(ring_vertex_near(round, round.vertices(), 0, {-1, 0}) == round.ring_begin(0));  // past near_scan_limit
+    // A small square with one corner, (2, 2), in a large one, its first
+    // corner (-2, -2) outside it: the one-shot test names (2, 2) (the
+    // smaller polygon's vertex nearest the other's centre), at every scale.
+    const polygon big({test_shapes::square_ring(0, 0, 10)}), small({test_shapes::square_ring(-2, -2, 4)});
+    for (int e : {0, -1000, 900}) {
+        const polygon a = big.scaled_by_power_of_two(e), b = small.scaled_by_power_of_two(e);
+        placed_polygon<double> pa(a, rotation_pose(pose{})), pb(b, rotation_pose(pose{}));
+        const meeting m = placed_meet(pa, pb, 0);
+        INFO("scale 2^" << e);
+        REQUIRE(m.how == meeting::kind::b_vertex_in_a);
+        CHECK(small.vertex(m.b_index).x == 2);
+        CHECK(small.vertex(m.b_index).y == 2);
+    }
 }

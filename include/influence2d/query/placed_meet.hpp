@@ -4,6 +4,7 @@
 /// Whether two placed polygons meet, and what shows it: the steps of the
 /// one-shot questions after their posing.
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -79,6 +80,37 @@ bool edge_pairs_near(const placed_polygon<NT>& a, const placed_polygon<NT>& b, c
     return overlapping_pairs(a_edges, b_edges, meet);
 }
 
+/// The rings at most this long are searched whole for the vertex nearest a
+/// point (ring_vertex_near); a longer ring gives its first vertex. A scan
+/// of 32 vertices costs about as much as a third of a locate in a polygon
+/// of that size, and the rings of the world's compact bodies are shorter.
+inline constexpr std::size_t near_scan_limit = 32;
+
+/// The vertex of ring r of `shape` (its vertices in double: v) nearest to
+/// p in the L1 norm, for a ring of at most near_scan_limit vertices; the
+/// ring's first vertex otherwise (and when a distance is NaN); the first of
+/// those at the least distance. Only a choice: any vertex of the ring
+/// serves a locate. Sums of differences, no squares: the same choice for
+/// the polygons and p scaled by any power of two that keeps their
+/// coordinates and differences normal (squares would underflow at
+/// 2^-600), so that a query brought into double's range names the same
+/// vertex as the query as given.
+inline std::size_t ring_vertex_near(const polygon& shape, const std::vector<point<double>>& v, std::size_t r,
+                                    const point<double>& p) {
+    const std::size_t first = shape.ring_begin(r), end = shape.ring_end(r);
+    if (end - first > near_scan_limit) return first;
+    std::size_t best = first;
+    double best_d = std::numeric_limits<double>::infinity();
+    for (std::size_t k = first; k < end; ++k) {
+        const double d = std::fabs(v[k].x - p.x) + std::fabs(v[k].y - p.y);
+        if (d < best_d) {
+            best_d = d;
+            best = k;
+        }
+    }
+    return best;
+}
+
 /// Which witness placed_meet looks for first when both kinds may show a
 /// meeting (the answer is the same; only the witness and the cost differ).
 enum class witness_preference : std::uint8_t {
@@ -110,32 +142,52 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e,
 
     // Containment first: one vertex of a ring located in the other polygon
     // (by its crossings, locate_by_crossings; containment.hpp says why that
-    // decides the case of no boundary pair).
+    // decides the case of no boundary pair, whichever vertex of the ring is
+    // taken).
     // A vertex in the other's closed region is a meeting point whatever the
     // boundaries do, and most poses that meet are answered here in linear
     // time, before any sorting. A vertex outside the other polygon's box
     // (widened) is outside it without a locate. Each locate reads the whole
     // other polygon, so only the first `early_rings` rings of each are
     // located before the boundaries are tested (none when edges are
-    // preferred); the others after.
+    // preferred); the others after. The polygon whose box is the smaller
+    // goes first, each of its rings by the vertex nearest the other's box
+    // centre (ring_vertex_near, for a short ring): where the two overlap,
+    // that vertex most likely lies inside the other. The other polygon's
+    // rings go by their first vertex.
     const auto outside = [](const point<double>& v, const box& w) {
         return v.x < w.min_x || v.x > w.max_x || v.y < w.min_y || v.y > w.max_y;  // NaN: may be inside
     };
     const polygon &as = a.shape(), &bs = b.shape();
-    const auto rings_inside = [&](std::size_t first, std::size_t last) -> meeting {
+    // (Sizes by half perimeters, whose comparison is the same at every
+    // scale: areas would underflow.)
+    const auto size = [](const box& x) { return (x.max_x - x.min_x) + (x.max_y - x.min_y); };
+    const bool b_first = size(b.bounds()) <= size(ab);
+    const auto b_in_a = [&](std::size_t first, std::size_t last, bool near) -> meeting {
         for (std::size_t r = first; r < std::min(last, bs.ring_count()); ++r) {
-            const std::size_t j = bs.ring_begin(r);
+            const std::size_t j = near ? ring_vertex_near(bs, b.approx(), r, ab.centre()) : bs.ring_begin(r);
             if (outside(b.approx()[j], a_window)) continue;
             const location l = locate_placed(a, b.approx()[j], b[j], e);
             if (l != location::outside) return {meeting::kind::b_vertex_in_a, 0, j, l};
         }
+        return {};
+    };
+    const auto a_in_b = [&](std::size_t first, std::size_t last, bool near) -> meeting {
         for (std::size_t r = first; r < std::min(last, as.ring_count()); ++r) {
-            const std::size_t i = as.ring_begin(r);
+            const std::size_t i = near ? ring_vertex_near(as, a.approx(), r, b.bounds().centre()) : as.ring_begin(r);
             if (outside(a.approx()[i], b_window)) continue;
             const location l = locate_placed(b, a.approx()[i], a[i], e);
             if (l != location::outside) return {meeting::kind::a_vertex_in_b, i, 0, l};
         }
         return {};
+    };
+    const auto rings_inside = [&](std::size_t first, std::size_t last) -> meeting {
+        if (b_first) {
+            if (meeting m = b_in_a(first, last, true)) return m;
+            return a_in_b(first, last, false);
+        }
+        if (meeting m = a_in_b(first, last, true)) return m;
+        return b_in_a(first, last, false);
     };
     const std::size_t early_rings = prefer == witness_preference::cheapest ? 2 : 0;
     if (meeting m = rings_inside(0, early_rings)) return m;

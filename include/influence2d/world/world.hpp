@@ -133,10 +133,10 @@ struct world_statistics {
 ///       in double, and in NT for another type), once each, in buffers
 ///       kept from step to step
 ///     each of them, in parallel blocks: bodies_within, the last step's
-///       witness tried first (narrow_phase.hpp; a persisting contact seeks
-///       two edges that meet, which the next step tests again from four
-///       vertices); a pair found apart (with within = 0, neither body
-///       having jumped) seeks a separating edge for the next step
+///       witness tried first (narrow_phase.hpp; a pair whose bodies did not
+///       jump seeks two edges that meet, which the next step tests again
+///       from four vertices); a pair found apart (with within = 0, neither
+///       body having jumped) seeks a separating edge for the next step
 ///     contacts <- the pairs within `within`, sorted; events: the
 ///       difference with the last step's contacts
 ///
@@ -707,8 +707,9 @@ private:
     //           separating edge tries it (its ends and the other hull's
     //           corners posed)
     //   the bodies of the pairs left placed (place_candidates)
-    //   pass 2: each pair left: bodies_within. A pair in contact at the last
-    //           step whose bodies did not jump seeks two edges that meet
+    //   pass 2: each pair left: bodies_within. A pair whose bodies did not
+    //           jump (coherence on) or in contact at the last step with
+    //           neither body jumped since seeks two edges that meet
     //           first (pass 1 can test them again at the next step); a
     //           located vertex found when no edges met (one body in the
     //           other) is tried first; a pair apart seeks a separating edge
@@ -743,8 +744,13 @@ private:
             for (std::size_t k = first; k < last; ++k) {
                 record& r = tested[left[k]];
                 const meeting contained = r.no_crossing ? r.shown : meeting{};
+                // (A pair of bodies that did not jump will likely be tested
+                // again at the next step, where two edges are retested
+                // from four vertices and a located vertex needs both bodies
+                // placed.)
+                const bool steady = options_.coherence && !jumped_now(r.bodies.first) && !jumped_now(r.bodies.second);
                 const witness_preference prefer =
-                    r.persisting ? witness_preference::edges : witness_preference::cheapest;
+                    r.persisting || steady ? witness_preference::edges : witness_preference::cheapest;
                 r.shown = r.shift == 0
                               ? bodies_within<NT, Exact>(contained, view(r.bodies.first), view(r.bodies.second),
                                                          options_.within, &r.by_witness, prefer)
