@@ -27,8 +27,10 @@ namespace influence2d {
 ///   power of two first (core/range_scaling.hpp; the same answer)
 ///   pose B's vertices in double; e <- their rounding margin
 ///   if the boxes of A and of posed B (grown by e) are apart:   disjoint
-///   for one vertex of each of the first two rings of each polygon, within
-///   the other's box: located in the other polygon (exact), not outside: meet
+///   for one vertex of each of the first two rings of each polygon (the
+///   polygon with the smaller box first, each ring of it by its vertex
+///   nearest the other's box centre: ring_vertex_near), within the other's
+///   box: located in the other polygon (exact), not outside: meet
 ///   A's edges whose box meets B's box, B's edges whose box meets A's box
 ///   for each pair of those whose boxes overlap (sort and sweep along x):
 ///       filter in double: the paper's detailed test both ways (segments_may_meet)
