@@ -161,33 +161,33 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e,
     const polygon &as = a.shape(), &bs = b.shape();
     // (Sizes by half perimeters, whose comparison is the same at every
     // scale: areas would underflow.)
+    const box& bb = b.bounds();
     const auto size = [](const box& x) { return (x.max_x - x.min_x) + (x.max_y - x.min_y); };
-    const bool b_first = size(b.bounds()) <= size(ab);
-    const auto b_in_a = [&](std::size_t first, std::size_t last, bool near) -> meeting {
-        for (std::size_t r = first; r < std::min(last, bs.ring_count()); ++r) {
-            const std::size_t j = near ? ring_vertex_near(bs, b.approx(), r, ab.centre()) : bs.ring_begin(r);
-            if (outside(b.approx()[j], a_window)) continue;
-            const location l = locate_placed(a, b.approx()[j], b[j], e);
-            if (l != location::outside) return {meeting::kind::b_vertex_in_a, 0, j, l};
-        }
-        return {};
-    };
-    const auto a_in_b = [&](std::size_t first, std::size_t last, bool near) -> meeting {
-        for (std::size_t r = first; r < std::min(last, as.ring_count()); ++r) {
-            const std::size_t i = near ? ring_vertex_near(as, a.approx(), r, b.bounds().centre()) : as.ring_begin(r);
-            if (outside(a.approx()[i], b_window)) continue;
-            const location l = locate_placed(b, a.approx()[i], a[i], e);
-            if (l != location::outside) return {meeting::kind::a_vertex_in_b, i, 0, l};
+    const bool b_first = size(bb) <= size(ab);
+    const point<double> a_centre = ab.centre(), b_centre = bb.centre();
+    // The rings [first, last) of `guest` (B when guest_is_b), each by one
+    // vertex (ring_vertex_near when `near`, else its first), located in
+    // `host` when within host_window.
+    const auto rings_in = [&](placed_polygon<NT>& guest, placed_polygon<NT>& host, const box& host_window,
+                              const point<double>& host_centre, bool guest_is_b, std::size_t first, std::size_t last,
+                              bool near) -> meeting {
+        const polygon& gs = guest.shape();
+        for (std::size_t r = first; r < std::min(last, gs.ring_count()); ++r) {
+            const std::size_t k = near ? ring_vertex_near(gs, guest.approx(), r, host_centre) : gs.ring_begin(r);
+            if (outside(guest.approx()[k], host_window)) continue;
+            const location l = locate_placed(host, guest.approx()[k], guest[k], e);
+            if (l == location::outside) continue;
+            return guest_is_b ? meeting{meeting::kind::b_vertex_in_a, 0, k, l}
+                              : meeting{meeting::kind::a_vertex_in_b, k, 0, l};
         }
         return {};
     };
     const auto rings_inside = [&](std::size_t first, std::size_t last) -> meeting {
-        if (b_first) {
-            if (meeting m = b_in_a(first, last, true)) return m;
-            return a_in_b(first, last, false);
-        }
-        if (meeting m = a_in_b(first, last, true)) return m;
-        return b_in_a(first, last, false);
+        const meeting m = b_first ? rings_in(b, a, a_window, a_centre, true, first, last, true)
+                                  : rings_in(a, b, b_window, b_centre, false, first, last, true);
+        if (m) return m;
+        return b_first ? rings_in(a, b, b_window, b_centre, false, first, last, false)
+                       : rings_in(b, a, a_window, a_centre, true, first, last, false);
     };
     const std::size_t early_rings = prefer == witness_preference::cheapest ? 2 : 0;
     if (meeting m = rings_inside(0, early_rings)) return m;

@@ -39,11 +39,10 @@ inline constexpr double disc_radius_widening = 0x1p-48;
 inline disc bounding_disc(const polygon& p) {
     disc d;
     d.centre = p.bounds().centre();
-    for (std::size_t k = 0; k < p.size(); ++k) {
-        const point<double>& v = p.vertex(k);
+    for (const point<double>& v : p.vertices()) {
         const double r = std::hypot(v.x - d.centre.x, v.y - d.centre.y);
-        d.radius = r != r ? r : std::max(d.radius, r);
-        if (d.radius != d.radius) break;
+        if (std::isnan(r)) return {d.centre, r};
+        d.radius = std::max(d.radius, r);
     }
     d.radius *= 1 + disc_radius_widening;
     return d;
@@ -51,11 +50,11 @@ inline disc bounding_disc(const polygon& p) {
 
 /// Disc d posed by q: its centre posed in double, its radius widened by
 /// pose_scale_widening (q's map is sqrt(c^2 + s^2) times a rotation, for
-/// its doubles c and s: predicates/filters.hpp). The posed region of a polygon that d holds lies in the
-/// disc about the exactly posed centre with that radius; the centre in
-/// double errs from it by the posing's error (less than placing_margin of
-/// the polygon's scale, predicates/filters.hpp), which the caller allows
-/// for.
+/// its doubles c and s: predicates/filters.hpp). The posed region of a
+/// polygon that d holds lies in the disc about the exactly posed centre
+/// with that radius; the centre in double errs from it by the posing's
+/// error (less than placing_margin of the polygon's scale), which the
+/// caller allows for.
 inline disc posed_disc(const disc& d, const rotation_pose& q) {
     return {q.apply<double>(d.centre), d.radius * (1 + pose_scale_widening)};
 }

@@ -263,7 +263,6 @@ private:
         body_pair bodies;
         meeting shown;             // kind none: not within the distance
         bool by_witness = false;   // answered by the last step's witness
-        bool persisting = false;   // in contact at the last step, neither body jumped
         bool no_crossing = false;  // shown is a located vertex sought after the edges: none met
         int shift = 0;             // the pair answered scaled by 2^shift (range_shift), 0: as it stands
         separating_edge apart;     // (shown none) a hull edge that kept the bodies apart
@@ -541,6 +540,8 @@ private:
     // fifth of them for compact bodies at random places.
     bool discs_apart(const body& a, const body& b) const {
         const double e = std::max(placing_margin<NT>(a.scale), placing_margin<NT>(b.scale));
+        // (The sum's two roundings, each below 2^-53 of it, are covered by
+        // the widening of 2^-50.)
         return certainly_farther(a.round.centre, b.round.centre,
                                  (a.round.radius + b.round.radius + options_.within) * (1 + 0x1p-50), e);
     }
@@ -565,11 +566,10 @@ private:
                 continue;
             }
             if (!boxes_overlap(a.bounds, b.bounds) || discs_apart(a, b)) continue;
-            record r{p, meeting{}, false, false, false, pair_shift(a, b), separating_edge{}};
+            record r{p, meeting{}, false, false, pair_shift(a, b), separating_edge{}};
             shifted = shifted || r.shift != 0;
             if (had && options_.coherence) {
                 r.shown = last_[k].shown;
-                r.persisting = r.shown && !a.jumped && !b.jumped;
                 r.no_crossing = last_[k].no_crossing;
                 // (A body that jumped has likely crossed the line; a pair
                 // answered scaled seeks none.)
@@ -708,8 +708,7 @@ private:
     //           corners posed)
     //   the bodies of the pairs left placed (place_candidates)
     //   pass 2: each pair left: bodies_within. A pair whose bodies did not
-    //           jump (coherence on) or in contact at the last step with
-    //           neither body jumped since seeks two edges that meet
+    //           jump (coherence on) seeks two edges that meet
     //           first (pass 1 can test them again at the next step); a
     //           located vertex found when no edges met (one body in the
     //           other) is tried first; a pair apart seeks a separating edge
@@ -747,10 +746,9 @@ private:
                 // (A pair of bodies that did not jump will likely be tested
                 // again at the next step, where two edges are retested
                 // from four vertices and a located vertex needs both bodies
-                // placed.)
+                // placed; a contact of the last step is such a pair.)
                 const bool steady = options_.coherence && !jumped_now(r.bodies.first) && !jumped_now(r.bodies.second);
-                const witness_preference prefer =
-                    r.persisting || steady ? witness_preference::edges : witness_preference::cheapest;
+                const witness_preference prefer = steady ? witness_preference::edges : witness_preference::cheapest;
                 r.shown = r.shift == 0
                               ? bodies_within<NT, Exact>(contained, view(r.bodies.first), view(r.bodies.second),
                                                          options_.within, &r.by_witness, prefer)
