@@ -22,9 +22,10 @@ namespace influence2d {
 /// counter-clockwise), its pose and its scale (the polygon's largest
 /// coordinate plus |tx| + |ty|).
 struct hull_view {
-    const std::vector<point<double>>* corners;  ///< the hull's corners, unposed
-    rotation_pose pose;                         ///< where it stands
-    double scale;                               ///< as the world's bodies'
+    const point<double>* corners;  ///< the hull's corners, unposed: corners[0, count)
+    std::uint32_t count;           ///< how many
+    rotation_pose pose;            ///< where it stands
+    double scale;                  ///< as the world's bodies'
 };
 
 /// An edge of one body's convex hull whose line leaves every corner of the
@@ -48,11 +49,11 @@ struct separating_edge {
 /// test, whose answer is exact. The same answer in every number type but
 /// for e.
 inline bool hull_edge_separates(const hull_view& inner, std::uint32_t k, const hull_view& outer, double e) {
-    const std::vector<point<double>>& h = *inner.corners;
+    const point<double>* h = inner.corners;
     const point<double> p = inner.pose.apply<double>(h[k]),
-                        q = inner.pose.apply<double>(h[k + 1 == h.size() ? 0 : k + 1]);
-    for (const point<double>& w : *outer.corners)
-        if (certain_side_within(p, q, outer.pose.apply<double>(w), e) != -1) return false;
+                        q = inner.pose.apply<double>(h[k + 1 == inner.count ? 0 : k + 1]);
+    for (std::uint32_t j = 0; j < outer.count; ++j)
+        if (certain_side_within(p, q, outer.pose.apply<double>(outer.corners[j]), e) != -1) return false;
     return true;
 }
 
@@ -83,17 +84,18 @@ separating_edge seek_separating_edge(const hull_view& a, const placed_polygon<NT
     for (std::uint8_t side = 1; side <= 2; ++side) {
         const hull_view& inner = side == 1 ? a : b;
         const placed_polygon<NT>&pi = side == 1 ? placed_a : placed_b, &po = side == 1 ? placed_b : placed_a;
-        const std::vector<point<double>>& h = *inner.corners;
-        if (h.size() < 2) continue;
+        const point<double>* h = inner.corners;
+        const std::uint32_t n = inner.count;
+        if (n < 2) continue;
         const point<double> from = pi.bounds().centre(), to = po.bounds().centre();
         const point<double> dir{to.x - from.x, to.y - from.y};
         // The cosine's sign times its square, up to |dir|^2 (no root taken).
         std::uint32_t best = 0;
         double best_cos = -std::numeric_limits<double>::infinity();
         point<double> q = inner.pose.apply<double>(h[0]);
-        for (std::uint32_t k = 0; k < h.size(); ++k) {
+        for (std::uint32_t k = 0; k < n; ++k) {
             const point<double> p = q;
-            q = inner.pose.apply<double>(h[k + 1 == h.size() ? 0 : k + 1]);
+            q = inner.pose.apply<double>(h[k + 1 == n ? 0 : k + 1]);
             // The outward normal of a counter-clockwise hull edge p -> q.
             const double nx = q.y - p.y, ny = p.x - q.x, along = nx * dir.x + ny * dir.y;
             const double c = along * std::fabs(along) / (nx * nx + ny * ny);

@@ -166,9 +166,11 @@ public:
     /// Throws invalid_input for an empty polygon or one beyond NT's range.
     shape_id add_shape(const polygon& p) {
         accepted_polygon<NT>(p, "world's");
-        auto s = std::make_unique<shape_entry>(shape_entry{p, coordinate_scale(p), {}, bounding_disc(p)});
-        for (std::uint32_t k : hull_vertices(p)) s->hull.push_back(p.vertex(k));
-        shapes_.push_back(std::move(s));
+        const std::vector<std::uint32_t> hull = hull_vertices(p);
+        shapes_.push_back(std::make_unique<shape_entry>(
+            shape_entry{p, coordinate_scale(p), static_cast<std::uint32_t>(hull_corners_.size()),
+                        static_cast<std::uint32_t>(hull.size()), bounding_disc(p)}));
+        for (std::uint32_t k : hull) hull_corners_.push_back(p.vertex(k));
         return static_cast<shape_id>(shapes_.size() - 1);
     }
 
@@ -181,6 +183,8 @@ public:
                                 std::to_string(shapes_.size()) + ")");
         body b;
         b.shape = s;
+        b.hull_first = shapes_[s]->hull_first;
+        b.hull_count = shapes_[s]->hull_count;
         b.pose = rotation_pose(q);
         b.fixed = fixed;
         bodies_.push_back(std::move(b));
@@ -240,11 +244,12 @@ private:
     struct shape_entry {
         polygon shape;
         double scale;
-        std::vector<point<double>> hull;  // the corners hull_vertices names, in its order
-        disc round;                       // bounding_disc(shape)
+        std::uint32_t hull_first, hull_count;  // hull_corners_[hull_first, + hull_count): its hull's corners
+        disc round;                            // bounding_disc(shape)
     };
     struct body {
         shape_id shape = 0;
+        std::uint32_t hull_first = 0, hull_count = 0;  // its shape's (read by pass 1 without the shape)
         rotation_pose pose{influence2d::pose{}};
         bool fixed = false;
         bool alive = true;
@@ -603,8 +608,7 @@ private:
     // Body i's hull corners, pose and scale (a separating edge's test).
     hull_view hull_of(body_id i) const {
         const body& b = bodies_[i];
-        const shape_entry& s = *shapes_[b.shape];
-        return {&s.hull, b.pose, b.scale};
+        return {hull_corners_.data() + b.hull_first, b.hull_count, b.pose, b.scale};
     }
 
     // Body i's polygon and pose, without its placing (pass 1).
@@ -813,6 +817,10 @@ private:
 
     world_options options_;
     std::vector<std::unique_ptr<shape_entry>> shapes_;
+    // Every shape's hull corners (hull_vertices' order), shape after shape:
+    // one array, so that the hulls of shapes added in turn (a layer's
+    // parcels, each a shape of its own) lie side by side in memory.
+    std::vector<point<double>> hull_corners_;
     std::vector<body> bodies_;
     std::vector<body_id> moved_;
     std::vector<body_id> escaped_;                    // at this step
