@@ -19,6 +19,7 @@
 #include "influence2d/core/invalid_input.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/core/prefetch.hpp"
 #include "influence2d/core/range_scaling.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/predicates/filters.hpp"
@@ -562,6 +563,10 @@ private:
                              [](const record& r, const body_pair& p) { return r.bodies < p; }) -
             last_.begin());
         for (std::size_t n = first; n < last; ++n) {
+            // (The second body of the pair 8 ahead asked for now, without
+            // waiting: the near pairs' second bodies lie anywhere in memory,
+            // and among 100,000 bodies seldom in the caches.)
+            if (n + 8 < last) prefetch(&bodies_[near_[n + 8].second]);
             const body_pair& p = near_[n];
             while (k < last_.size() && last_[k].bodies < p) ++k;
             const bool had = k < last_.size() && last_[k].bodies == p;
@@ -690,6 +695,18 @@ private:
         const unsigned threads = asked.size() < parallel_placings ? 1u : options_.threads;
         run_in_chunks(asked.size(), threads, 64, [&](std::size_t first, std::size_t last) {
             for (std::size_t k = first; k < last; ++k) {
+                // (Asked for ahead, without waiting, each read once the read
+                // it depends on was asked for: the body 6 places ahead, the
+                // placing 3 ahead, the placing's buffers 1 ahead. The bodies
+                // come in the candidates' order, anywhere in memory.)
+                if (k + 6 < last) {
+                    const body& ahead = bodies_[asked[k + 6].id];
+                    prefetch(&ahead.pose);
+                    prefetch(&ahead.placed);
+                }
+                if (k + 3 < last) prefetch(bodies_[asked[k + 3].id].placed.get());
+                if (k + 1 < last)
+                    if (const placed_polygon<NT>* p = bodies_[asked[k + 1].id].placed.get()) p->prefetch_buffers();
                 body& b = bodies_[asked[k].id];
                 if (asked[k].repose) {
                     if (b.placed)
@@ -745,6 +762,21 @@ private:
         place_candidates(tested, left, threads_left > 1);
         run_in_chunks(left.size(), threads_left, 16, [&](std::size_t first, std::size_t last) {
             for (std::size_t k = first; k < last; ++k) {
+                // (Asked for ahead, without waiting: the placings of the pair
+                // 4 places ahead, then their buffers 2 ahead. With the two
+                // passes above, a step of 100,000 bodies at random poses
+                // costs 1.4x less, of mixed sizes 1.45x less; below 10,000
+                // bodies nothing changes beyond the noise.)
+                if (k + 4 < last) {
+                    const record& ahead = tested[left[k + 4]];
+                    prefetch(bodies_[ahead.bodies.first].placed.get());
+                    prefetch(bodies_[ahead.bodies.second].placed.get());
+                }
+                if (k + 2 < last) {
+                    const record& ahead = tested[left[k + 2]];
+                    for (body_id i : {ahead.bodies.first, ahead.bodies.second})
+                        if (const placed_polygon<NT>* p = bodies_[i].placed.get()) p->prefetch_buffers();
+                }
                 record& r = tested[left[k]];
                 const meeting contained = r.no_crossing ? r.shown : meeting{};
                 // (A pair of bodies that did not jump will likely be tested
