@@ -415,11 +415,11 @@ void run(const bench_options& o) {
     const std::vector<std::string> scenes = {"falling", "convex", "parcels", "random", "mixed", "far"};
     std::vector<std::size_t> sizes = o.sizes;
     if (sizes.empty())
-        sizes = o.quick ? std::vector<std::size_t>{100, 1000} : std::vector<std::size_t>{100, 1000, 10000};
+        sizes = o.quick ? std::vector<std::size_t>{100, 1000} : std::vector<std::size_t>{100, 1000, 10000, 100000};
     std::vector<row> rows;
     for (const std::string& scene : scenes)
         for (std::size_t n : sizes) {
-            const std::size_t steps = o.steps ? o.steps : (n >= 100000 ? 6 : n >= 10000 ? 11 : 21);
+            const std::size_t steps = o.steps ? o.steps : (n >= 10000 ? 11 : 21);
             std::cerr << "world bench: " << scene << ", " << n << " bodies, " << steps << " steps\n";
             for (const row& r : run_scene(scene, n, steps)) rows.push_back(r);
         }
@@ -461,8 +461,8 @@ int main(int argc, char** argv) {
         "influence2d-world-bench"};
     auto o = std::make_shared<bench_options>();
     app.add_flag("--quick", o->quick, "100 and 1000 bodies only, fewer runs of the layers");
-    app.add_option("--sizes", o->sizes, "Body counts (default 100,1000,10000)")->delimiter(',');
-    app.add_option("--steps", o->steps, "Steps per scene (default 21, 11 from 10,000 bodies, 6 from 100,000)");
+    app.add_option("--sizes", o->sizes, "Body counts (default 100,1000,10000,100000)")->delimiter(',');
+    app.add_option("--steps", o->steps, "Steps per scene (default 21, 11 from 10,000 bodies)");
     app.add_option("--layers", o->layers, "Directory of countries.wkt and boroughs.wkt (scripts/real_layers.sh)")
         ->type_name("DIR");
     app.add_option("--out", o->out, "Write world.md, world.csv and world_time.png into DIR")->type_name("DIR");
