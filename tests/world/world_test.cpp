@@ -27,6 +27,7 @@
 
 #include "influence2d/exact/certified_world.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "influence2d/query/both_posed.hpp"
 #include "influence2d/world/layer_pairs.hpp"
 #include "influence2d/world/world.hpp"
 
@@ -431,6 +432,79 @@ TEST_CASE("world: a separating edge fails when the bodies touch exactly", "[worl
     }
     CHECK(touching == 2);
     CHECK(w.statistics().separated >= 20);  // apart by a kept edge before touching
+}
+
+TEST_CASE("world: a kept separating edge is tried where the bodies stand exactly, not where double poses them",
+          "[world]") {
+    // A: the triangle (0,0), (8,0), (0,8) turned by theta and moved to about
+    // (2^20, 2^20), where each posed coordinate rounds by up to 2^-33; its
+    // hypotenuse's outward normal points to about (1, 1). B: the unit
+    // square, its lower left corner at w. w is sought among the doubles
+    // next to the hypotenuse's middle: strictly inside A (left of the
+    // hypotenuse posed exactly) and strictly right of the line through the
+    // hypotenuse's ends posed in double. B starts 2^-3 further out along
+    // (1, 1) (apart: the hypotenuse becomes their separating edge), moves
+    // 2^-4 in (the edge still separates them), then 2^-4 more, onto w,
+    // where the bodies meet (CGAL's exact reference). A retest of the edge
+    // on the doubles alone (separation_holds with no margin for the
+    // posing's rounding) keeps them apart: it fails this test. The double
+    // world answers for its own posing, as intersects<double> does.
+    const polygon triangle({test_shapes::ring({{0, 0}, {8, 0}, {0, 8}})});
+    const polygon square({test_shapes::ring({{0, 0}, {1, 0}, {1, 1}, {0, 1}})});
+    const auto index_of = [&](point<double> v) {
+        const auto& vs = triangle.vertices();
+        return static_cast<std::size_t>(std::find(vs.begin(), vs.end(), v) - vs.begin());
+    };
+    const std::size_t i8 = index_of({8, 0}), j8 = index_of({0, 8});
+    REQUIRE(i8 < 3);
+    REQUIRE(j8 < 3);
+    const auto exact = [](point<double> v) { return test_exact::point_2(v.x, v.y); };
+    rng g(2611);
+    const int wanted = std::max(2, test_effort::scaled(8));
+    int found = 0, trials = 0;
+    while (found < wanted && trials < 400) {
+        ++trials;
+        const pose a_at{0x1p20 + g.uniform(0, 1), 0x1p20 + g.uniform(0, 1), g.uniform(0.05, 0.3)};
+        const test_exact::placed_shape a_exact = test_exact::place(triangle, a_at);
+        const rotation_pose t(a_at);
+        const point<double> p = t.apply<double>({8, 0}), q = t.apply<double>({0, 8});
+        const point<double> mid{(p.x + q.x) / 2, (p.y + q.y) / 2};
+        const double u = std::ldexp(1.0, std::ilogb(mid.x) - 52);
+        bool placed = false;
+        point<double> w;
+        for (int dx = -16; dx <= 16 && !placed; ++dx)
+            for (int dy = -16; dy <= 16 && !placed; ++dy) {
+                w = {mid.x + dx * u, mid.y + dy * u};
+                placed = CGAL::orientation(a_exact.v[i8], a_exact.v[j8], exact(w)) == CGAL::LEFT_TURN &&
+                         CGAL::orientation(exact(p), exact(q), exact(w)) == CGAL::RIGHT_TURN;
+            }
+        if (!placed) continue;
+        ++found;
+        INFO("trial " << trials << " w " << w.x << " " << w.y);
+        // (The exact and certified worlds answer for the exact poses; the
+        // double world for its own posing, as intersects<double> does.)
+        const auto run = [&](auto world_type, bool meet) {
+            decltype(world_type) world;
+            world.add_shape(triangle);
+            world.add_shape(square);
+            world.add_body(0, a_at, true);
+            world.add_body(1, {w.x + 0x1p-3, w.y + 0x1p-3, 0});
+            CHECK(world.step().empty());
+            world.move(1, {w.x + 0x1p-4, w.y + 0x1p-4, 0});
+            CHECK(world.step().empty());
+            CHECK(world.statistics().separated == 1);  // the edge was kept, and tried
+            world.move(1, {w.x, w.y, 0});
+            const std::vector<body_pair> got = world.step();
+            REQUIRE(got.size() == (meet ? 1u : 0u));
+            if (meet) CHECK((got[0].first == 0 && got[0].second == 1));
+        };
+        run(certified_world{}, true);
+        run(world<exact_rational>{}, true);
+        run(world<double>{}, intersects<double>(triangle, a_at, square, pose{w.x, w.y, 0}));
+        // The reference: B's corner w lies in A's region, exactly.
+        CHECK(test_exact::regions_meet(a_exact, test_exact::place(square, pose{w.x, w.y, 0})));
+    }
+    CHECK(found == wanted);
 }
 
 TEST_CASE("world: turned bodies touching at the edge of their bounding discs", "[world]") {
