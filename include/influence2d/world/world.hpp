@@ -98,11 +98,11 @@ struct world_statistics {
 ///
 ///   step():
 ///     each body moved since the last step (in parallel blocks when many):
-///       its box, from the four corners
-///       of its polygon's box posed in double (the posed polygon lies in
-///       their parallelogram), cut to the box of its polygon's bounding
-///       disc posed (scene/bounding_disc.hpp), grown by the posing margin
-///       and within / 2.
+///       its box: its polygon's box posed in double (the box of its four
+///       posed corners, from its posed centre and half sides; the posed
+///       polygon lies in their parallelogram), cut to the box of its
+///       polygon's bounding disc posed (scene/bounding_disc.hpp), grown by
+///       the posing margin and within / 2.
 ///       A box that left the body's enlarged box (the box the trees hold:
 ///       grown by a sixteenth of its larger side and stretched ahead along
 ///       the body's last displacement, enlarged_box) escapes: a new
@@ -168,9 +168,14 @@ public:
     shape_id add_shape(const polygon& p) {
         accepted_polygon<NT>(p, "world's");
         const std::vector<std::uint32_t> hull = hull_vertices(p);
+        const box& local = p.bounds();
         shapes_.push_back(std::make_unique<shape_entry>(
-            shape_entry{p, coordinate_scale(p), static_cast<std::uint32_t>(hull_corners_.size()),
-                        static_cast<std::uint32_t>(hull.size()), bounding_disc(p)}));
+            shape_entry{p,
+                        coordinate_scale(p),
+                        static_cast<std::uint32_t>(hull_corners_.size()),
+                        static_cast<std::uint32_t>(hull.size()),
+                        bounding_disc(p),
+                        {local.max_x / 2 - local.min_x / 2, local.max_y / 2 - local.min_y / 2}}));
         for (std::uint32_t k : hull) hull_corners_.push_back(p.vertex(k));
         return static_cast<shape_id>(shapes_.size() - 1);
     }
@@ -247,6 +252,7 @@ private:
         double scale;
         std::uint32_t hull_first, hull_count;  // hull_corners_[hull_first, + hull_count): its hull's corners
         disc round;                            // bounding_disc(shape)
+        point<double> half;                    // half the sides of shape's box
     };
     struct body {
         shape_id shape = 0;
@@ -286,20 +292,24 @@ private:
         b.moved = true;
     }
 
-    // The box of body b: the box of its polygon's box with the four corners
-    // posed in double, cut to the box of its posed bounding disc (b.round:
-    // as wide as the polygon whatever its turn, where the corners' box of a
-    // turned polygon is up to sqrt 2 times wider), grown by the posing
-    // margin and half the distance (and d's own rounding); a side that is
-    // NaN makes it the whole plane.
+    // The box of body b: its polygon's box posed, cut to the box of its
+    // posed bounding disc (b.round: as wide as the polygon whatever its
+    // turn, where the posed box of a turned polygon is up to sqrt 2 times
+    // wider), grown by the posing margin and half the distance (and d's own
+    // rounding); a side that is NaN makes it the whole plane. The posed box
+    // is the box of its four posed corners, taken from its centre, which is
+    // the disc's (bounding_disc centres the disc on the polygon's box),
+    // and its half sides: |c| hx + |s| hy across, |s| hx + |c| hy up. Each
+    // bound errs from the exact one by the centre's posing (a vertex's) and
+    // a few roundings of terms at most the scale: far below the posing
+    // margin (placing_slack, 2^-46 times the scale), which the box's two
+    // margins hold besides the placings' own errors.
     box box_of(const body& b) const {
-        const shape_entry& s = *shapes_[b.shape];
-        const box& local = s.shape.bounds();
-        box out;
-        for (const point<double>& c :
-             {point<double>{local.min_x, local.min_y}, point<double>{local.max_x, local.min_y},
-              point<double>{local.min_x, local.max_y}, point<double>{local.max_x, local.max_y}})
-            out.add(b.pose.template apply<double>(c));
+        const point<double>& half = shapes_[b.shape]->half;
+        const point<double>& centre = b.round.centre;
+        const double c = std::fabs(b.pose.c), s = std::fabs(b.pose.s);
+        const double across = c * half.x + s * half.y, up = s * half.x + c * half.y;
+        box out{centre.x - across, centre.y - up, centre.x + across, centre.y + up};
         const box round = disc_box(b.round);
         if (!round.empty()) {
             out.min_x = std::max(out.min_x, round.min_x);
@@ -603,8 +613,8 @@ private:
     // shared among threads, and near pairs from which the candidates are
     // sought in parallel blocks: both are a few nanoseconds a body or pair.
     static constexpr std::size_t parallel_join_bodies = 4096, parallel_near_pairs = 16384;
-    // Moved bodies from which their boxes are made in parallel blocks (four
-    // corners posed, some 50 ns a body).
+    // Moved bodies from which their boxes are made in parallel blocks (a
+    // box is a centre posed and a few products and comparisons).
     static constexpr std::size_t parallel_boxes = 4096;
 
     // Whether body i moved by over a quarter of its size at this step.
