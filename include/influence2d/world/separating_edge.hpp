@@ -13,19 +13,20 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/predicates/filters.hpp"
-#include "influence2d/scene/placed_polygon.hpp"
 
 namespace influence2d {
 
 /// A body of a pair, for the separating edge: the corners of its
 /// polygon's convex hull (the vertices hull_vertices names, in its order:
-/// counter-clockwise), its pose and its scale (the polygon's largest
-/// coordinate plus |tx| + |ty|).
+/// counter-clockwise), its pose, its scale (the polygon's largest
+/// coordinate plus |tx| + |ty|) and a point of it to aim from (the centre of
+/// its polygon's box, posed in double).
 struct hull_view {
     const point<double>* corners;  ///< the hull's corners, unposed: corners[0, count)
     std::uint32_t count;           ///< how many
     rotation_pose pose;            ///< where it stands
     double scale;                  ///< as the world's bodies'
+    point<double> centre;          ///< where the body is aimed from, posed
 };
 
 /// An edge of one body's convex hull whose line leaves every corner of the
@@ -66,29 +67,25 @@ bool separation_holds(const separating_edge& s, const hull_view& a, const hull_v
     return s.side == 1 ? hull_edge_separates(a, s.edge, b, e) : hull_edge_separates(b, s.edge, a, e);
 }
 
-/// A separating edge of bodies a and b, found apart at their present poses
-/// and placed there (`placed_a`, `placed_b`: their boxes), or none:
+/// A separating edge of bodies a and b at their present poses, or none:
 ///
 ///   for (inner, outer) in (a, b), (b, a):
 ///     k <- the hull edge of inner whose outward normal points most nearly
-///          from inner's box centre to outer's (inner's corners in double)
+///          from inner's centre to outer's (inner's corners in double)
 ///     edge k of inner certainly separates (separation_holds): edge k
 ///   none
 ///
 /// One edge per side is tried: bodies apart whose hulls overlap (one in
 /// another's hollow, teeth between teeth) have none, and pay two passes
-/// over their corners to learn it.
+/// over their corners to learn it; so do bodies that meet.
 template <class NT>
-separating_edge seek_separating_edge(const hull_view& a, const placed_polygon<NT>& placed_a, const hull_view& b,
-                                     const placed_polygon<NT>& placed_b) {
+separating_edge seek_separating_edge(const hull_view& a, const hull_view& b) {
     for (std::uint8_t side = 1; side <= 2; ++side) {
-        const hull_view& inner = side == 1 ? a : b;
-        const placed_polygon<NT>&pi = side == 1 ? placed_a : placed_b, &po = side == 1 ? placed_b : placed_a;
+        const hull_view &inner = side == 1 ? a : b, &outer = side == 1 ? b : a;
         const point<double>* h = inner.corners;
         const std::uint32_t n = inner.count;
         if (n < 2) continue;
-        const point<double> from = pi.bounds().centre(), to = po.bounds().centre();
-        const point<double> dir{to.x - from.x, to.y - from.y};
+        const point<double> dir{outer.centre.x - inner.centre.x, outer.centre.y - inner.centre.y};
         // The cosine's sign times its square, up to |dir|^2 (no root taken).
         std::uint32_t best = 0;
         double best_cos = -std::numeric_limits<double>::infinity();

@@ -81,6 +81,7 @@ struct world_statistics {
     std::size_t carried = 0;       ///< pairs whose boxes met and neither body moved (answer kept)
     std::size_t witness_hits = 0;  ///< candidates answered by the last step's witness (separated included)
     std::size_t separated = 0;     ///< candidates answered apart by the last step's separating edge
+    std::size_t found_apart = 0;   ///< candidates answered apart by a separating edge sought before the one-shot test
     std::size_t contacts = 0;      ///< contacts reported, summed over the steps
 };
 
@@ -278,6 +279,7 @@ private:
         bool no_crossing = false;  // shown is a located vertex sought after the edges: none met
         int shift = 0;             // the pair answered scaled by 2^shift (range_shift), 0: as it stands
         separating_edge apart;     // (shown none) a hull edge that kept the bodies apart
+        bool sought = false;       // a separating edge was sought at this step before the one-shot test
     };
 
     body& live(body_id i) {
@@ -620,10 +622,11 @@ private:
     // Whether body i moved by over a quarter of its size at this step.
     bool jumped_now(body_id i) const { return bodies_[i].moved && bodies_[i].jumped; }
 
-    // Body i's hull corners, pose and scale (a separating edge's test).
+    // Body i's hull corners, pose, scale and posed box centre (a separating
+    // edge's test and search).
     hull_view hull_of(body_id i) const {
         const body& b = bodies_[i];
-        return {hull_corners_.data() + b.hull_first, b.hull_count, b.pose, b.scale};
+        return {hull_corners_.data() + b.hull_first, b.hull_count, b.pose, b.scale, b.round.centre};
     }
 
     // Body i's polygon and pose, without its placing (pass 1).
@@ -736,15 +739,18 @@ private:
     //   pass 1: each pair whose witness is two edges tries them (four
     //           vertices posed, no polygon placed); each pair apart with a
     //           separating edge tries it (its ends and the other hull's
-    //           corners posed)
+    //           corners posed). A pair new, or whose two edges no longer
+    //           meet, seeks a separating edge (seek_separating_edge, from
+    //           the hulls' corners posed) when within is 0, neither body
+    //           jumped at this step and the pair is not scaled: found, the
+    //           pair is apart
     //   the bodies of the pairs left placed (place_candidates)
     //   pass 2: each pair left: bodies_within. A pair whose bodies did not
     //           jump (coherence on) seeks two edges that meet
     //           first (pass 1 can test them again at the next step); a
     //           located vertex found when no edges met (one body in the
-    //           other) is tried first; a pair apart seeks a separating edge
-    //           (seek_separating_edge) when within is 0, neither body
-    //           jumped at this step and the pair is not scaled
+    //           other) is tried first; a pair apart that did not seek in
+    //           pass 1 seeks a separating edge on the same conditions
     void narrow(std::vector<record>& tested) {
         const bool seeks_separation = options_.coherence && options_.within == 0;
         const unsigned threads = tested.size() < parallel_witness_tests ? 1u : options_.threads;
@@ -756,18 +762,31 @@ private:
                     if (!r.by_witness) r.apart = {};
                     continue;
                 }
-                if (r.shown.how != meeting::kind::edges) continue;
-                r.by_witness =
-                    r.shift == 0 ? edge_witness_holds<NT, Exact>(r.shown, posed(r.bodies.first), posed(r.bodies.second),
-                                                                 options_.within)
-                                 : edge_witness_holds<NT, Exact>(r.shown, scaled_view(r.bodies.first, r.shift, nullptr),
-                                                                 scaled_view(r.bodies.second, r.shift, nullptr),
-                                                                 scaled_length(options_.within, r.shift));
+                if (r.shown.how == meeting::kind::edges) {
+                    r.by_witness = r.shift == 0 ? edge_witness_holds<NT, Exact>(r.shown, posed(r.bodies.first),
+                                                                                posed(r.bodies.second), options_.within)
+                                                : edge_witness_holds<NT, Exact>(
+                                                      r.shown, scaled_view(r.bodies.first, r.shift, nullptr),
+                                                      scaled_view(r.bodies.second, r.shift, nullptr),
+                                                      scaled_length(options_.within, r.shift));
+                    if (r.by_witness) continue;
+                } else if (r.shown) {
+                    continue;  // (a located vertex: tried in pass 2, on the placings)
+                }
+                // (Bodies whose edges parted, or that have just come near,
+                // are more often apart than not on the time study's coherent
+                // scenes; a separating edge then spares the pair its
+                // placings and the one-shot test.)
+                if (seeks_separation && r.shift == 0 && !jumped_now(r.bodies.first) && !jumped_now(r.bodies.second)) {
+                    r.sought = true;
+                    r.apart = seek_separating_edge<NT>(hull_of(r.bodies.first), hull_of(r.bodies.second));
+                    if (r.apart) r.shown = {};
+                }
             }
         });
         std::vector<std::size_t> left;
         for (std::size_t k = 0; k < tested.size(); ++k)
-            if (!tested[k].by_witness) left.push_back(k);
+            if (!tested[k].by_witness && !tested[k].apart) left.push_back(k);
         const unsigned threads_left = left.size() < parallel_pair_tests ? 1u : batch_threads(options_.threads);
         place_candidates(tested, left, threads_left > 1);
         run_in_chunks(left.size(), threads_left, 16, [&](std::size_t first, std::size_t last) {
@@ -803,15 +822,15 @@ private:
                 r.no_crossing = located && (r.by_witness || prefer == witness_preference::edges);
                 // (Bodies that jumped at this step will likely jump again:
                 // an edge found for them would seldom serve.)
-                if (!r.shown && seeks_separation && r.shift == 0 && !jumped_now(r.bodies.first) &&
+                if (!r.shown && !r.sought && seeks_separation && r.shift == 0 && !jumped_now(r.bodies.first) &&
                     !jumped_now(r.bodies.second))
-                    r.apart = seek_separating_edge<NT>(hull_of(r.bodies.first), *bodies_[r.bodies.first].placed,
-                                                       hull_of(r.bodies.second), *bodies_[r.bodies.second].placed);
+                    r.apart = seek_separating_edge<NT>(hull_of(r.bodies.first), hull_of(r.bodies.second));
             }
         });
         for (const record& r : tested) {
             stats_.witness_hits += r.by_witness ? 1 : 0;
             stats_.separated += r.by_witness && r.apart ? 1 : 0;
+            stats_.found_apart += !r.by_witness && r.apart && r.sought ? 1 : 0;
         }
     }
 
