@@ -27,6 +27,22 @@ TEST_CASE("polygon: outer rings are stored counter-clockwise, holes clockwise", 
     CHECK(p.source_edge(4) == 4 + 2);
 }
 
+TEST_CASE("polygon: previous undoes next on every ring", "[polygon]") {
+    // Three rings of 3, 5 and 4 vertices, the middle one a hole.
+    polygon p({ring({{0, 0}, {9, 0}, {0, 9}}), ring({{1, 1}, {2, 1}, {3, 2}, {2, 3}, {1, 2}}, ring_role::hole),
+               ring({{20, 0}, {24, 0}, {24, 4}, {20, 4}})});
+    REQUIRE(p.size() == 12);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        INFO("vertex " << i);
+        CHECK(p.previous(p.next(i)) == i);
+        CHECK(p.next(p.previous(i)) == i);
+    }
+    CHECK(p.previous(0) == 2);
+    CHECK(p.previous(3) == 7);
+    CHECK(p.previous(8) == 11);
+    CHECK(p.previous(9) == 8);
+}
+
 TEST_CASE("polygon: ring orientation is decided exactly for a sliver", "[polygon]") {
     // Three nearly collinear vertices far from the origin: the shoelace sum in
     // double is 0 here, the exact one is negative (clockwise), so the ring is

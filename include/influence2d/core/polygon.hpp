@@ -3,6 +3,7 @@
 /// \file
 /// The polygon model: any number of closed rings of double coordinates.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -75,6 +76,13 @@ public:
     /// The index of the end vertex of edge i (the next vertex on its ring; the
     /// ring's first vertex after its last).
     std::size_t next(std::size_t i) const { return next_[i]; }
+    /// The index of the start vertex of the edge before edge i on its ring
+    /// (the ring's last vertex before its first); requires i < size().
+    std::size_t previous(std::size_t i) const {
+        if (i > 0 && next_[i - 1] == i) return i - 1;
+        // (i begins its ring: the ring's end follows i among the ring starts.)
+        return *std::upper_bound(ring_begin_.begin(), ring_begin_.end(), i) - 1;
+    }
     /// The number of rings, as given to the constructor.
     std::size_t ring_count() const { return ring_begin_.empty() ? 0 : ring_begin_.size() - 1; }
     /// The index of ring r's first vertex (and edge); requires r < ring_count().

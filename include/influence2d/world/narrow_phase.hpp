@@ -117,6 +117,53 @@ bool edge_witness_holds(const meeting& last, const body_view<NT>& a, const body_
     }
 }
 
+/// The edges next to the two of `last` (kind edges: A's edge i, B's edge j)
+/// that meet (or come within d) at the bodies' present poses, or none: edge
+/// i and the edges before and after it on its ring, against edge j and
+/// its two, (i, j) left out (the caller found it failing); their eight
+/// vertices posed in NT once, each pair tested exactly as witness_holds
+/// tests two edges. Bodies that slide or turn a little along each other
+/// most often meet by such a pair. With Exact not void, none when NT cannot
+/// settle a sign (the pair is then answered by bodies_within).
+template <class NT, class Exact = void>
+meeting nearby_edges_meet(const meeting& last, const body_view<NT>& a, const body_view<NT>& b, double d) {
+    const auto test = [&] {
+        using tr = number_traits<NT>;
+        const polygon &as = *a.shape, &bs = *b.shape;
+        // A's edges previous(i), i, next(i) run through its vertices
+        // ia[0..3], B's likewise.
+        const std::size_t i = last.a_index, j = last.b_index;
+        const std::size_t ia[4] = {as.previous(i), i, as.next(i), as.next(as.next(i))};
+        const std::size_t jb[4] = {bs.previous(j), j, bs.next(j), bs.next(bs.next(j))};
+        point<NT> pa[4], pb[4];
+        for (int k = 0; k < 4; ++k) {
+            pa[k] = a.pose.template apply<NT>(as.vertex(ia[k]));
+            pb[k] = b.pose.template apply<NT>(bs.vertex(jb[k]));
+        }
+        const NT dt = tr::from_double(d);
+        const NT d2 = dt * dt;
+        for (int x = 0; x < 3; ++x)
+            for (int y = 0; y < 3; ++y) {
+                if (x == 1 && y == 1) continue;
+                const bool met = d > 0 ? segments_within(pa[x], pa[x + 1], pb[y], pb[y + 1], d2)
+                                       : segments_intersect(pa[x], pa[x + 1], pb[y], pb[y + 1]);
+                if (met) {
+                    meeting m;
+                    m.how = meeting::kind::edges;
+                    m.a_index = ia[x];
+                    m.b_index = jb[y];
+                    return m;
+                }
+            }
+        return meeting{};
+    };
+    if constexpr (std::is_void_v<Exact>) {
+        return test();
+    } else {
+        return fallback<>::run(test, [] { return meeting{}; });
+    }
+}
+
 /// Whether bodies a and b come within d of each other (d = 0: their closed
 /// regions meet), and what shows it, in stored numbering. `last` is what
 /// showed it at the last step (kind none when they were apart or the pair

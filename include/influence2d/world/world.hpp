@@ -82,6 +82,7 @@ struct world_statistics {
     std::size_t witness_hits = 0;  ///< candidates answered by the last step's witness (separated included)
     std::size_t separated = 0;     ///< candidates answered apart by the last step's separating edge
     std::size_t found_apart = 0;   ///< candidates answered apart by a separating edge sought before the one-shot test
+    std::size_t nearby_edges = 0;  ///< candidates answered by edges next to the last step's two
     std::size_t contacts = 0;      ///< contacts reported, summed over the steps
 };
 
@@ -280,6 +281,7 @@ private:
         int shift = 0;             // the pair answered scaled by 2^shift (range_shift), 0: as it stands
         separating_edge apart;     // (shown none) a hull edge that kept the bodies apart
         bool sought = false;       // a separating edge was sought at this step before the one-shot test
+        bool nearby = false;       // answered by edges next to the last step's two (nearby_edges_meet)
     };
 
     body& live(body_id i) {
@@ -739,11 +741,13 @@ private:
     //   pass 1: each pair whose witness is two edges tries them (four
     //           vertices posed, no polygon placed); each pair apart with a
     //           separating edge tries it (its ends and the other hull's
-    //           corners posed). A pair new, or whose two edges no longer
-    //           meet, seeks a separating edge (seek_separating_edge, from
-    //           the hulls' corners posed) when within is 0, neither body
-    //           jumped at this step and the pair is not scaled: found, the
-    //           pair is apart
+    //           corners posed). When neither body jumped at this step, a
+    //           pair new, or whose two edges no longer meet, seeks a
+    //           separating edge (seek_separating_edge, from the hulls'
+    //           corners posed) when within is 0 and the pair is not
+    //           scaled: found, the pair is apart; then a pair whose two
+    //           edges no longer meet tries the edges next to them
+    //           (nearby_edges_meet): found, the pair meets by them
     //   the bodies of the pairs left placed (place_candidates)
     //   pass 2: each pair left: bodies_within. A pair whose bodies did not
     //           jump (coherence on) seeks two edges that meet
@@ -773,20 +777,38 @@ private:
                 } else if (r.shown) {
                     continue;  // (a located vertex: tried in pass 2, on the placings)
                 }
+                if (jumped_now(r.bodies.first) || jumped_now(r.bodies.second)) continue;
                 // (Bodies whose edges parted, or that have just come near,
                 // are more often apart than not on the time study's coherent
                 // scenes; a separating edge then spares the pair its
-                // placings and the one-shot test.)
-                if (seeks_separation && r.shift == 0 && !jumped_now(r.bodies.first) && !jumped_now(r.bodies.second)) {
+                // placings and the one-shot test. Edges that parted most
+                // often leave the bodies meeting by their neighbours.)
+                if (seeks_separation && r.shift == 0) {
                     r.sought = true;
                     r.apart = seek_separating_edge<NT>(hull_of(r.bodies.first), hull_of(r.bodies.second));
-                    if (r.apart) r.shown = {};
+                    if (r.apart) {
+                        r.shown = {};
+                        continue;
+                    }
+                }
+                if (r.shown.how == meeting::kind::edges) {
+                    const meeting m =
+                        r.shift == 0
+                            ? nearby_edges_meet<NT, Exact>(r.shown, posed(r.bodies.first), posed(r.bodies.second),
+                                                           options_.within)
+                            : nearby_edges_meet<NT, Exact>(r.shown, scaled_view(r.bodies.first, r.shift, nullptr),
+                                                           scaled_view(r.bodies.second, r.shift, nullptr),
+                                                           scaled_length(options_.within, r.shift));
+                    if (m) {
+                        r.shown = m;
+                        r.nearby = true;
+                    }
                 }
             }
         });
         std::vector<std::size_t> left;
         for (std::size_t k = 0; k < tested.size(); ++k)
-            if (!tested[k].by_witness && !tested[k].apart) left.push_back(k);
+            if (!tested[k].by_witness && !tested[k].apart && !tested[k].nearby) left.push_back(k);
         const unsigned threads_left = left.size() < parallel_pair_tests ? 1u : batch_threads(options_.threads);
         place_candidates(tested, left, threads_left > 1);
         run_in_chunks(left.size(), threads_left, 16, [&](std::size_t first, std::size_t last) {
@@ -831,6 +853,7 @@ private:
             stats_.witness_hits += r.by_witness ? 1 : 0;
             stats_.separated += r.by_witness && r.apart ? 1 : 0;
             stats_.found_apart += !r.by_witness && r.apart && r.sought ? 1 : 0;
+            stats_.nearby_edges += r.nearby ? 1 : 0;
         }
     }
 
