@@ -117,16 +117,18 @@ bool edge_witness_holds(const meeting& last, const body_view<NT>& a, const body_
     }
 }
 
-/// The edges next to the two of `last` (kind edges: A's edge i, B's edge j)
+/// Two edges about the two of `last` (kind edges: A's edge i, B's edge j)
 /// that meet (or come within d) at the bodies' present poses, or none: edge
 /// i and the edges before and after it on its ring, against edge j and
-/// its two, (i, j) left out (the caller found it failing); their eight
-/// vertices posed in NT once, each pair tested exactly as witness_holds
-/// tests two edges. Bodies that slide or turn a little along each other
-/// most often meet by such a pair. With Exact not void, none when NT cannot
-/// settle a sign (the pair is then answered by bodies_within).
+/// its two, (i, j) first and only `with_last` (the caller may have found it
+/// failing); their eight vertices posed in NT once, each pair tested
+/// exactly as witness_holds tests two edges. Bodies that slide or turn a
+/// little along each other most often meet by such a pair. With Exact not
+/// void, none when NT cannot settle a sign (the pair is then answered by
+/// bodies_within).
 template <class NT, class Exact = void>
-meeting nearby_edges_meet(const meeting& last, const body_view<NT>& a, const body_view<NT>& b, double d) {
+meeting nearby_edges_meet(const meeting& last, bool with_last, const body_view<NT>& a, const body_view<NT>& b,
+                          double d) {
     const auto test = [&] {
         using tr = number_traits<NT>;
         const polygon &as = *a.shape, &bs = *b.shape;
@@ -142,19 +144,21 @@ meeting nearby_edges_meet(const meeting& last, const body_view<NT>& a, const bod
         }
         const NT dt = tr::from_double(d);
         const NT d2 = dt * dt;
-        for (int x = 0; x < 3; ++x)
-            for (int y = 0; y < 3; ++y) {
-                if (x == 1 && y == 1) continue;
-                const bool met = d > 0 ? segments_within(pa[x], pa[x + 1], pb[y], pb[y + 1], d2)
-                                       : segments_intersect(pa[x], pa[x + 1], pb[y], pb[y + 1]);
-                if (met) {
-                    meeting m;
-                    m.how = meeting::kind::edges;
-                    m.a_index = ia[x];
-                    m.b_index = jb[y];
-                    return m;
-                }
+        // Edge x of A's three against edge y of B's, (i, j) = (1, 1)
+        // first, then the pairs keeping one of i and j, then the others.
+        static constexpr int order[9][2] = {{1, 1}, {1, 0}, {1, 2}, {0, 1}, {2, 1}, {0, 0}, {0, 2}, {2, 0}, {2, 2}};
+        for (int n = with_last ? 0 : 1; n < 9; ++n) {
+            const int x = order[n][0], y = order[n][1];
+            const bool met = d > 0 ? segments_within(pa[x], pa[x + 1], pb[y], pb[y + 1], d2)
+                                   : segments_intersect(pa[x], pa[x + 1], pb[y], pb[y + 1]);
+            if (met) {
+                meeting m;
+                m.how = meeting::kind::edges;
+                m.a_index = ia[x];
+                m.b_index = jb[y];
+                return m;
             }
+        }
         return meeting{};
     };
     if constexpr (std::is_void_v<Exact>) {

@@ -282,6 +282,20 @@ private:
         separating_edge apart;     // (shown none) a hull edge that kept the bodies apart
         bool sought = false;       // a separating edge was sought at this step before the one-shot test
         bool nearby = false;       // answered by edges next to the last step's two (nearby_edges_meet)
+        // (shown none) the two edges that last showed the bodies meeting
+        // (edge parted_a of the first body's polygon, parted_b of the
+        // second's), when `parted`
+        bool parted = false;
+        std::uint32_t parted_a = 0, parted_b = 0;
+
+        // Remembers the edges of `was` (when two edges) as those that last
+        // showed the bodies meeting: the pair is found apart.
+        void part(const meeting& was) {
+            if (was.how != meeting::kind::edges || was.a_index > UINT32_MAX || was.b_index > UINT32_MAX) return;
+            parted = true;
+            parted_a = static_cast<std::uint32_t>(was.a_index);
+            parted_b = static_cast<std::uint32_t>(was.b_index);
+        }
     };
 
     body& live(body_id i) {
@@ -595,6 +609,9 @@ private:
             if (had && options_.coherence) {
                 r.shown = last_[k].shown;
                 r.no_crossing = last_[k].no_crossing;
+                r.parted = last_[k].parted;
+                r.parted_a = last_[k].parted_a;
+                r.parted_b = last_[k].parted_b;
                 // (A body that jumped has likely crossed the line; a pair
                 // answered scaled seeks none.)
                 if (!a.jumped && !b.jumped && r.shift == 0) r.apart = last_[k].apart;
@@ -761,12 +778,13 @@ private:
         run_in_chunks(tested.size(), threads, 256, [&](std::size_t first, std::size_t last) {
             for (std::size_t k = first; k < last; ++k) {
                 record& r = tested[k];
+                bool edge_failed = false;
                 if (r.apart) {
                     r.by_witness = separation_holds<NT>(r.apart, hull_of(r.bodies.first), hull_of(r.bodies.second));
-                    if (!r.by_witness) r.apart = {};
-                    continue;
-                }
-                if (r.shown.how == meeting::kind::edges) {
+                    if (r.by_witness) continue;
+                    r.apart = {};
+                    edge_failed = true;
+                } else if (r.shown.how == meeting::kind::edges) {
                     r.by_witness = r.shift == 0 ? edge_witness_holds<NT, Exact>(r.shown, posed(r.bodies.first),
                                                                                 posed(r.bodies.second), options_.within)
                                                 : edge_witness_holds<NT, Exact>(
@@ -783,26 +801,33 @@ private:
                 // scenes; a separating edge then spares the pair its
                 // placings and the one-shot test. Edges that parted most
                 // often leave the bodies meeting by their neighbours.)
-                if (seeks_separation && r.shift == 0) {
+                if (seeks_separation && r.shift == 0 && !edge_failed) {
                     r.sought = true;
                     r.apart = seek_separating_edge<NT>(hull_of(r.bodies.first), hull_of(r.bodies.second));
                     if (r.apart) {
+                        r.part(r.shown);
                         r.shown = {};
                         continue;
                     }
                 }
-                if (r.shown.how == meeting::kind::edges) {
-                    const meeting m =
-                        r.shift == 0
-                            ? nearby_edges_meet<NT, Exact>(r.shown, posed(r.bodies.first), posed(r.bodies.second),
-                                                           options_.within)
-                            : nearby_edges_meet<NT, Exact>(r.shown, scaled_view(r.bodies.first, r.shift, nullptr),
-                                                           scaled_view(r.bodies.second, r.shift, nullptr),
-                                                           scaled_length(options_.within, r.shift));
-                    if (m) {
-                        r.shown = m;
-                        r.nearby = true;
-                    }
+                // (Edges that parted most often leave the bodies meeting
+                // by their neighbours; bodies that come back together, by
+                // the edges they parted at, or theirs.)
+                const bool failed = r.shown.how == meeting::kind::edges;
+                if (!failed && !r.parted) continue;
+                meeting around;
+                around.how = meeting::kind::edges;
+                around.a_index = failed ? r.shown.a_index : r.parted_a;
+                around.b_index = failed ? r.shown.b_index : r.parted_b;
+                const meeting m = r.shift == 0 ? nearby_edges_meet<NT, Exact>(around, !failed, posed(r.bodies.first),
+                                                                              posed(r.bodies.second), options_.within)
+                                               : nearby_edges_meet<NT, Exact>(
+                                                     around, !failed, scaled_view(r.bodies.first, r.shift, nullptr),
+                                                     scaled_view(r.bodies.second, r.shift, nullptr),
+                                                     scaled_length(options_.within, r.shift));
+                if (m) {
+                    r.shown = m;
+                    r.nearby = true;
                 }
             }
         });
@@ -830,6 +855,7 @@ private:
                 }
                 record& r = tested[left[k]];
                 const meeting contained = r.no_crossing ? r.shown : meeting{};
+                const meeting was = r.shown;
                 // (A pair of bodies that did not jump will likely be tested
                 // again at the next step, where two edges are retested
                 // from four vertices and a located vertex needs both bodies
@@ -840,6 +866,7 @@ private:
                               ? bodies_within<NT, Exact>(contained, view(r.bodies.first), view(r.bodies.second),
                                                          options_.within, &r.by_witness, prefer)
                               : scaled_within(r, contained, &r.by_witness, prefer);
+                if (!r.shown) r.part(was);
                 const bool located = r.shown && r.shown.how != meeting::kind::edges;
                 r.no_crossing = located && (r.by_witness || prefer == witness_preference::edges);
                 // (Bodies that jumped at this step will likely jump again:
@@ -866,7 +893,7 @@ private:
         witnesses_.clear();
         const auto take = [&](const record& r) {
             if (!r.shown) {
-                if (r.apart) last_.push_back(r);  // apart, its separating edge kept
+                if (r.apart || r.parted) last_.push_back(r);  // apart, its separating edge or parted edges kept
                 return;
             }
             last_.push_back(r);
