@@ -11,6 +11,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -58,6 +59,23 @@ TEST_CASE("range scaling: the shift, 0 inside the window and for the exact types
     CHECK(range_shift<float>(1000.0) == -9);
     CHECK(range_shift<exact_rational>(std::ldexp(1.0, 900)) == 0);
     CHECK(range_shift<certified>(std::ldexp(1.0, -900)) == 0);
+    // The window's edges, where its quick comparisons end: the doubles on
+    // either side of 2^-W and 2^(W+1) against ilogb's exponent.
+    for (const double x :
+         {std::ldexp(1.0, -64), std::ldexp(1.0, 65), std::ldexp(1.0, -8), std::ldexp(1.0, 9), std::ldexp(1.0, -1024)})
+        for (const double y : {std::nextafter(x, 0.0), x, std::nextafter(x, HUGE_VAL)}) {
+            INFO(y);
+            const auto shift = [y](int w) {
+                const int e = std::ilogb(y);
+                return e > w || e < -w ? -e : 0;
+            };
+            CHECK(range_shift<double>(y) == shift(64));
+            CHECK(range_shift<float>(y) == shift(8));
+            CHECK(range_shift<long double>(y) == shift(1024));
+        }
+    CHECK(range_shift<long double>(std::numeric_limits<double>::max()) == 0);
+    CHECK(range_shift<double>(-1.0) == 0);
+    CHECK(range_shift<double>(HUGE_VAL) == 0);
 }
 
 TEST_CASE("range scaling: a scaled polygon keeps its rings, orientation and edge numbers", "[range_scaling]") {

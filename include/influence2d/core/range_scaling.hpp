@@ -65,6 +65,15 @@ inline double largest_coordinate(const polygon& p) {
 /// The largest magnitude of a pose's translation.
 inline double largest_coordinate(const pose& q) { return std::max(std::fabs(q.tx), std::fabs(q.ty)); }
 
+/// 2^e as a double, for e in [-1074, 1024) (a power of two is exact from
+/// the least subnormal to the largest power below the overflow).
+constexpr double exact_power_of_two(int e) {
+    double x = 1;
+    for (; e > 0; --e) x *= 2;
+    for (; e < 0; ++e) x /= 2;
+    return x;
+}
+
 /// The power of two 2^k by which a query in NT whose largest coordinate is
 /// `largest` is scaled: 0 for a type other than float, double and long double, for
 /// `largest` 0, not finite, or in [2^-W, 2^W]; else -ilogb(largest), which
@@ -76,6 +85,11 @@ int range_shift(double largest) {
         return 0;
     } else {
         constexpr int w = unscaled_exponent_limit<NT>();
+        // (The window's doubles, exact: ilogb(largest) lies in [-w, w]
+        // exactly when largest lies in [2^-w, 2^(w+1)); most queries do.)
+        constexpr double low = exact_power_of_two(-w),
+                         high = w + 1 < 1024 ? exact_power_of_two(w + 1) : std::numeric_limits<double>::infinity();
+        if (largest >= low && largest < high) return 0;
         if (!(largest > 0) || !std::isfinite(largest)) return 0;
         const int e = std::ilogb(largest);
         return e > w || e < -w ? -e : 0;
