@@ -35,12 +35,22 @@ struct rotation_pose {
     double tx = 0;  ///< translation along x
     double ty = 0;  ///< translation along y
 
-    /// Takes the cosine and sine of `p.theta` once, in double. Throws
+    /// Takes the cosine and sine of `p.theta` once, in double (for a
+    /// theta of zero, their values without the calls: cos(+-0) is 1 and
+    /// sin(+-0) is +-0 exactly, IEEE 754 and C's Annex F). Throws
     /// invalid_input naming the first component of p that is NaN or infinite;
     /// the check is one comparison: x - x is 0 for every finite x and NaN
     /// otherwise, so the sum of the three differences is 0 exactly when all
     /// three are finite.
-    explicit rotation_pose(const pose& p) : c(std::cos(p.theta)), s(std::sin(p.theta)), tx(p.tx), ty(p.ty) { check(p); }
+    explicit rotation_pose(const pose& p) : tx(p.tx), ty(p.ty) {
+        check(p);
+        if (p.theta != 0) {
+            c = std::cos(p.theta);
+            s = std::sin(p.theta);
+        } else {
+            s = p.theta;  // (c keeps its 1)
+        }
+    }
 
     /// Throws invalid_input as the constructor does for a NaN or infinite
     /// component of p, without taking a cosine or a sine.
