@@ -166,10 +166,14 @@ public:
     }
 
     /// Adds a shape that bodies may take; its preparation is shared by them.
-    /// Throws invalid_input for an empty polygon or one beyond NT's range.
+    /// Throws invalid_input for an empty polygon, one beyond NT's range, or
+    /// one whose hull would take the shapes' hulls past 2^32 corners in all
+    /// (each body holds where its hull's corners lie in 32 bits).
     shape_id add_shape(const polygon& p) {
         accepted_polygon<NT>(p, "world's");
         const std::vector<std::uint32_t> hull = hull_vertices(p);
+        if (hull.size() > UINT32_MAX - hull_corners_.size())
+            throw invalid_input("world: the shapes' hulls would pass 2^32 corners in all");
         const box& local = p.bounds();
         shapes_.push_back(std::make_unique<shape_entry>(
             shape_entry{p,
