@@ -237,6 +237,20 @@ inline bool certainly_farther(const point<double>& p, const point<double>& q, do
                                         reach * reach * (1 + farther_widening) + std::numeric_limits<double>::min();
 }
 
+/// Whether every point within e of p and every point within e of q (on each
+/// coordinate) lie less than r apart. Two such points lie at most
+/// |p - q| + 2 sqrt(2) e apart, so |p - q| < r - 3e suffices; it is compared
+/// squared in double, each side widened by farther_widening (the same
+/// roundings as certainly_farther's) and the left one by the least normal
+/// double as well. False when r - 3e is not positive and for a NaN.
+inline bool certainly_nearer(const point<double>& p, const point<double>& q, double r, double e) {
+    const double dx = p.x - q.x, dy = p.y - q.y, reach = r - 3 * e;
+    if (!(reach > 0)) return false;
+    const double apart2 = dx * dx + dy * dy;
+    return apart2 * (1 + farther_widening) + std::numeric_limits<double>::min() <
+           reach * reach * (1 - farther_widening);
+}
+
 /// Whether some point of box b may lie within g of the line through u and v:
 /// false only when every corner lies certainly on one side, beyond g (then
 /// no point within g of the segment [u, v] lies in b). True for u == v and

@@ -19,6 +19,7 @@
 #include "influence2d/core/pose.hpp"
 #include "influence2d/core/prefetch.hpp"
 #include "influence2d/number/traits.hpp"
+#include "influence2d/scene/bounding_disc.hpp"
 #include "influence2d/scene/edge_boxes.hpp"
 
 namespace influence2d {
@@ -82,6 +83,7 @@ public:
             bounds_.add(approx_own_[j]);
         }
         runs_.clear();
+        inner_ = disc{};
         if constexpr (!std::is_same_v<NT, double>) {
             all_.clear();
             if constexpr (!by_value) made_.assign(shape_.size(), std::nullopt);
@@ -114,6 +116,13 @@ public:
     /// two runs overlap, overlapping_run_pairs, and a locate passes over
     /// each run off its ray whole).
     void make_run_bounds() { edge_run_boxes(shape_, *approx_, runs_); }
+    /// A disc in the placed polygon's closed region, its centre posed in
+    /// double as a vertex is (within the filters' margin of the exact one),
+    /// radius 0 when none is known (placed anew: none).
+    const disc& inner() const { return inner_; }
+    /// Sets inner() for the present placing: the caller knows the disc to
+    /// lie in the region (inner_radius, scene/inner_disc.hpp, posed).
+    void set_inner(const disc& d) { inner_ = d; }
 
     /// Whether vertex j in NT is returned by value, made anew on each call
     /// (NT trivially copyable: a double, or a double with its error bound,
@@ -180,6 +189,7 @@ private:
     std::vector<point<double>> approx_own_;
     box bounds_;
     std::vector<box> runs_;  // run_bounds(), once made
+    disc inner_;             // inner(), radius 0: none
     bool finite_ = true;
     std::vector<std::optional<point<NT>>> made_;  // the vertices made so far, until all()
     std::vector<point<NT>> all_;                  // every vertex, once all() asked

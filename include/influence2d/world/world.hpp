@@ -26,6 +26,7 @@
 #include "influence2d/query/batch.hpp"
 #include "influence2d/scene/bounding_disc.hpp"
 #include "influence2d/scene/hull_vertices.hpp"
+#include "influence2d/scene/inner_disc.hpp"
 #include "influence2d/scene/placed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
 #include "influence2d/world/box_tree.hpp"
@@ -181,7 +182,8 @@ public:
                         static_cast<std::uint32_t>(hull_corners_.size()),
                         static_cast<std::uint32_t>(hull.size()),
                         bounding_disc(p),
-                        {local.max_x / 2 - local.min_x / 2, local.max_y / 2 - local.min_y / 2}}));
+                        {local.max_x / 2 - local.min_x / 2, local.max_y / 2 - local.min_y / 2},
+                        inner_radius(p)}));
         for (std::uint32_t k : hull) hull_corners_.push_back(p.vertex(k));
         return static_cast<shape_id>(shapes_.size() - 1);
     }
@@ -259,6 +261,7 @@ private:
         std::uint32_t hull_first, hull_count;  // hull_corners_[hull_first, + hull_count): its hull's corners
         disc round;                            // bounding_disc(shape)
         point<double> half;                    // half the sides of shape's box
+        double inner;                          // inner_radius(shape): a disc about the box centre in the region
     };
     struct body {
         shape_id shape = 0;
@@ -750,6 +753,9 @@ private:
                     else
                         b.placed = std::make_unique<placed_polygon<NT>>(shapes_[b.shape]->shape, b.pose);
                     b.placed->make_run_bounds();
+                    // (The shape's inner disc about its box centre, posed as
+                    // the bounding disc's centre is: b.round.)
+                    b.placed->set_inner({b.round.centre, shapes_[b.shape]->inner});
                 }
                 if constexpr (!placed_polygon<NT>::by_value)
                     if (b.all_made) b.placed->all();
