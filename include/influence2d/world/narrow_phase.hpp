@@ -55,6 +55,19 @@ struct body_view {
     placed_polygon<NT>* placed;  ///< shape placed by pose, shared between the body's pairs
 };
 
+/// Whether vertex j of `guest` lies in the closed region of `host`, both
+/// placed, the two bodies' scales summing to `scale`: certainly within the
+/// host's inner disc (placed_polygon::inner, its radius shrunk by the
+/// pose's scaling), or else located (locate_placed), exactly in NT.
+template <class NT>
+bool vertex_in(placed_polygon<NT>& host, placed_polygon<NT>& guest, std::size_t j, double scale) {
+    const double e = placing_margin<NT>(scale);
+    const disc& in = host.inner();
+    if (in.radius > 0 && certainly_nearer(guest.approx()[j], in.centre, in.radius * (1 - pose_scale_widening), e))
+        return true;
+    return locate_placed(host, guest.approx()[j], guest[j], e) != location::outside;
+}
+
 /// Whether what showed bodies a and b within d at the last step (`last`,
 /// stored numbering) still does at their present poses, decided exactly in
 /// NT: for two edges, the exact segment test (d = 0) or distance test on the
@@ -84,16 +97,8 @@ bool witness_holds(const meeting& last, const body_view<NT>& a, const body_view<
                         v = b.pose.template apply<NT>(bs.vertex(bs.next(j)));
         return d > 0 ? segments_within(p, q, u, v, d2) : segments_intersect(p, q, u, v);
     }
-    case meeting::kind::b_vertex_in_a: {
-        const std::size_t j = last.b_index;
-        return locate_placed(*a.placed, b.placed->approx()[j], (*b.placed)[j], placing_margin<NT>(a.scale + b.scale)) !=
-               location::outside;
-    }
-    case meeting::kind::a_vertex_in_b: {
-        const std::size_t i = last.a_index;
-        return locate_placed(*b.placed, a.placed->approx()[i], (*a.placed)[i], placing_margin<NT>(a.scale + b.scale)) !=
-               location::outside;
-    }
+    case meeting::kind::b_vertex_in_a: return vertex_in(*a.placed, *b.placed, last.b_index, a.scale + b.scale);
+    case meeting::kind::a_vertex_in_b: return vertex_in(*b.placed, *a.placed, last.a_index, a.scale + b.scale);
     default: return false;
     }
 }
