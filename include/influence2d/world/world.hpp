@@ -773,8 +773,10 @@ private:
     //           separating edge (seek_separating_edge, from the hulls'
     //           corners posed) when within is 0 and the pair is not
     //           scaled: found, the pair is apart; then a pair whose two
-    //           edges no longer meet tries the edges next to them
-    //           (nearby_edges_meet): found, the pair meets by them
+    //           edges no longer meet tries the edges next to them, and a
+    //           pair apart at the last step (its separating edge failed,
+    //           or it had none) the two edges it parted at and those next
+    //           to them (nearby_edges_meet): found, the pair meets by them
     //   the bodies of the pairs left placed (place_candidates)
     //   pass 2: each pair left: bodies_within. A pair whose bodies did not
     //           jump (coherence on) seeks two edges that meet
@@ -809,8 +811,7 @@ private:
                 // (Bodies whose edges parted, or that have just come near,
                 // are more often apart than not on the time study's coherent
                 // scenes; a separating edge then spares the pair its
-                // placings and the one-shot test. Edges that parted most
-                // often leave the bodies meeting by their neighbours.)
+                // placings and the one-shot test.)
                 if (seeks_separation && r.shift == 0 && !edge_failed) {
                     r.sought = true;
                     r.apart = seek_separating_edge<NT>(hull_of(r.bodies.first), hull_of(r.bodies.second));
