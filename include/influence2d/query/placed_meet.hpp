@@ -175,12 +175,9 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e,
         for (std::size_t r = first; r < std::min(last, gs.ring_count()); ++r) {
             const std::size_t k = near ? ring_vertex_near(gs, guest.approx(), r, host_centre) : gs.ring_begin(r);
             if (outside(guest.approx()[k], host_window)) continue;
-            // (A vertex certainly in the host's inner disc, which its
-            // posing may have shrunk by pose_scale_widening, lies in the
-            // host's interior: no locate.)
-            const disc& in = host.inner();
-            const location l = in.radius > 0 && certainly_nearer(guest.approx()[k], in.centre,
-                                                                 in.radius * (1 - pose_scale_widening), e)
+            // (A vertex certainly in the host's inner disc lies in its
+            // interior: no locate.)
+            const location l = host.in_inner(guest.approx()[k], e)
                                    ? location::inside
                                    : locate_placed(host, guest.approx()[k], guest[k], e);
             if (l == location::outside) continue;

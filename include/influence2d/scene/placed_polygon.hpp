@@ -19,6 +19,7 @@
 #include "influence2d/core/pose.hpp"
 #include "influence2d/core/prefetch.hpp"
 #include "influence2d/number/traits.hpp"
+#include "influence2d/predicates/filters.hpp"
 #include "influence2d/scene/bounding_disc.hpp"
 #include "influence2d/scene/edge_boxes.hpp"
 
@@ -123,6 +124,13 @@ public:
     /// Sets inner() for the present placing: the caller knows the disc to
     /// lie in the region (inner_radius, scene/inner_disc.hpp, posed).
     void set_inner(const disc& d) { inner_ = d; }
+    /// Whether p, known to within e on each coordinate, certainly lies in
+    /// inner() (certainly_nearer, the radius shrunk by pose_scale_widening
+    /// for the pose's scaling, the centre within e too): then in the
+    /// region's interior, whatever a locate would pass over.
+    bool in_inner(const point<double>& p, double e) const {
+        return inner_.radius > 0 && certainly_nearer(p, inner_.centre, inner_.radius * (1 - pose_scale_widening), e);
+    }
 
     /// Whether vertex j in NT is returned by value, made anew on each call
     /// (NT trivially copyable: a double, or a double with its error bound,

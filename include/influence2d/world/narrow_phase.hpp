@@ -57,15 +57,13 @@ struct body_view {
 
 /// Whether vertex j of `guest` lies in the closed region of `host`, both
 /// placed, the two bodies' scales summing to `scale`: certainly within the
-/// host's inner disc (placed_polygon::inner, its radius shrunk by the
-/// pose's scaling), or else located (locate_placed), exactly in NT.
+/// host's inner disc (placed_polygon::in_inner), or else located
+/// (locate_placed), exactly in NT.
 template <class NT>
 bool vertex_in(placed_polygon<NT>& host, placed_polygon<NT>& guest, std::size_t j, double scale) {
     const double e = placing_margin<NT>(scale);
-    const disc& in = host.inner();
-    if (in.radius > 0 && certainly_nearer(guest.approx()[j], in.centre, in.radius * (1 - pose_scale_widening), e))
-        return true;
-    return locate_placed(host, guest.approx()[j], guest[j], e) != location::outside;
+    return host.in_inner(guest.approx()[j], e) ||
+           locate_placed(host, guest.approx()[j], guest[j], e) != location::outside;
 }
 
 /// Whether what showed bodies a and b within d at the last step (`last`,
