@@ -3,7 +3,7 @@
 // (scene/inner_disc.hpp), against CGAL's exact rationals: the centre in the
 // region, every edge of every ring at least the radius from it (exact
 // squared distances), and the radius no smaller than the exact least
-// distance by more than twice its slack; none where the centre is outside,
+// distance by more than 2^-39 of the scale; none where the centre is outside,
 // on the boundary, or in a hole.
 
 #include <catch2/catch.hpp>
@@ -45,15 +45,17 @@ double check_inner(const polygon& p) {
     const test_exact::point_2 m(Q(c.x), Q(c.y));
     const Q least = least_distance2(exact, m);
     const bool inside = test_exact::in_region(exact, m) && least > 0;
-    const Q slack = Q(2 * inner_radius_slack) * Q(coordinate_scale(p));
+    // (2^-39 of the scale: far above point_segment_estimate's proven
+    // errors, 2^-47 of sums of differences at most eight times the scale.)
+    const Q slack = Q(0x1p-39) * Q(coordinate_scale(p));
     INFO(p.size() << " vertices, radius " << r);
     CHECK(r >= 0);
     if (r > 0) {
         CHECK(inside);
         CHECK(Q(r) * Q(r) <= least);  // every edge at least r away: the disc lies in the region
     }
-    // Not loose: an interior centre farther than twice the slack from every
-    // edge gets a radius within twice the slack of that distance.
+    // Not loose: an interior centre farther than the slack from every edge
+    // gets a radius within the slack of that distance.
     if (inside && least > slack * slack) CHECK((Q(r) + slack) * (Q(r) + slack) >= least);
     return r;
 }
