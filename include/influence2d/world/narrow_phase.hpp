@@ -55,6 +55,15 @@ struct body_view {
     placed_polygon<NT>* placed;  ///< shape placed by pose, shared between the body's pairs
 };
 
+/// Whether the edges [p, q] and [u, v], posed in NT, come within d of each
+/// other (d2 = d * d in NT): the exact distance test, or for d = 0 the
+/// exact segment test.
+template <class NT>
+bool edges_within(const point<NT>& p, const point<NT>& q, const point<NT>& u, const point<NT>& v, double d,
+                  const NT& d2) {
+    return d > 0 ? segments_within(p, q, u, v, d2) : segments_intersect(p, q, u, v);
+}
+
 /// Whether vertex j of `guest` lies in the closed region of `host`, both
 /// placed, the two bodies' scales summing to `scale`: certainly within the
 /// host's inner disc (placed_polygon::in_inner), or else located
@@ -93,7 +102,7 @@ bool witness_holds(const meeting& last, const body_view<NT>& a, const body_view<
                         q = a.pose.template apply<NT>(as.vertex(as.next(i)));
         const point<NT> u = b.pose.template apply<NT>(bs.vertex(j)),
                         v = b.pose.template apply<NT>(bs.vertex(bs.next(j)));
-        return d > 0 ? segments_within(p, q, u, v, d2) : segments_intersect(p, q, u, v);
+        return edges_within(p, q, u, v, d, d2);
     }
     case meeting::kind::b_vertex_in_a: return vertex_in(*a.placed, *b.placed, last.b_index, a.scale + b.scale);
     case meeting::kind::a_vertex_in_b: return vertex_in(*b.placed, *a.placed, last.a_index, a.scale + b.scale);
@@ -152,9 +161,7 @@ meeting nearby_edges_meet(const meeting& last, bool with_last, const body_view<N
         static constexpr int order[9][2] = {{1, 1}, {1, 0}, {1, 2}, {0, 1}, {2, 1}, {0, 0}, {0, 2}, {2, 0}, {2, 2}};
         for (int n = with_last ? 0 : 1; n < 9; ++n) {
             const int x = order[n][0], y = order[n][1];
-            const bool met = d > 0 ? segments_within(pa[x], pa[x + 1], pb[y], pb[y + 1], d2)
-                                   : segments_intersect(pa[x], pa[x + 1], pb[y], pb[y + 1]);
-            if (met) {
+            if (edges_within(pa[x], pa[x + 1], pb[y], pb[y + 1], d, d2)) {
                 meeting m;
                 m.how = meeting::kind::edges;
                 m.a_index = ia[x];
