@@ -26,6 +26,7 @@ from .polygon import Polygon, as_polygon, as_polygons
 from .poses import as_poses
 from .queries import first_contact, intersects, separation
 from .study import study, study_names
+from .world import World
 
 InvalidInput.__module__ = "influence2d"
 
@@ -46,7 +47,7 @@ def __getattr__(name):
 
 
 __all__ = [
-    "InvalidInput", "Polygon", "Detector", "intersects", "separation", "first_contact", "pairs", "audit",
+    "InvalidInput", "Polygon", "Detector", "World", "intersects", "separation", "first_contact", "pairs", "audit",
     "audit_report", "audit_layer", "study", "study_names", "as_polygon", "as_polygons", "as_poses",
     "NUMBER_TYPES",
 ]

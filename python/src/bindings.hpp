@@ -65,5 +65,6 @@ void bind_detector(py::module_& m);
 void bind_pairs(py::module_& m);
 void bind_audit(py::module_& m);
 void bind_study(py::module_& m);
+void bind_world(py::module_& m);
 
 }  // namespace influence2d::python

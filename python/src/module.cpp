@@ -17,4 +17,5 @@ PYBIND11_MODULE(_core, m) {
     bind_pairs(m);
     bind_audit(m);
     bind_study(m);
+    bind_world(m);
 }

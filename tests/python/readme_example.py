@@ -15,4 +15,9 @@ contact, t = influence2d.first_contact(a, b, poses[:2], poses[:2] + [0.5, 0.0, 0
 layer = [shapely.geometry.box(i, 0, i + 1, 1) for i in range(4)]
 join = influence2d.pairs(layer)                     # (k, 2) int64: [[0, 1], [1, 2], [2, 3]]
 findings = influence2d.audit("POLYGON ((0 0, 0 1, 1 1, 1 0, 0 0))")   # [{'kind': 'reversed_orientation', ...}]
-print(hits, dist, contact, t, join.tolist(), [f["kind"] for f in findings])
+world = influence2d.World()                         # many bodies stepped, certified
+square = world.add_shape(b)
+world.add_bodies([square] * 3, [[0.0, 0.0, 0.0], [0.5, 0.0, 0.0], [2.0, 0.0, 0.0]])
+world.move([2], [[0.75, 0.25, 0.5]])                # ids and poses as arrays
+touching = world.step()                             # (k, 2) int64: [[0, 1], [1, 2]]
+print(hits, dist, contact, t, join.tolist(), [f["kind"] for f in findings], touching.tolist())

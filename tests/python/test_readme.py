@@ -12,7 +12,7 @@ def test_readme_example_runs(capsys):
     runpy.run_path(os.path.join(HERE, "readme_example.py"), run_name="__main__")
     out = capsys.readouterr().out
     assert out.strip() == ("[ True False  True] [0.  0.5 0. ] [ True False] [ 0. nan] [[0, 1], [1, 2], [2, 3]] "
-                           "['reversed_orientation']")
+                           "['reversed_orientation'] [[0, 1], [1, 2]]")
 
 
 def test_readme_shows_the_example():

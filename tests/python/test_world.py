@@ -1,0 +1,347 @@
+# SPDX-License-Identifier: BSL-1.0
+"""World: many bodies stepped from Python, against the exact reference (every
+pair of posed bodies tested in rational arithmetic, exact_reference.py),
+with events, witnesses, threads, coherence and a translated copy of the
+scene checked against each other; and every refused input leaving the world
+as it was."""
+
+import math
+
+import numpy as np
+import pytest
+import shapely.geometry
+
+import influence2d
+import exact_reference
+from conftest import dyadic, star_polygon
+
+
+def shapes_of(rng):
+    """Stars, a unit square (squares on a unit grid touch exactly), a star
+    with a hole, and a multipolygon of two stars."""
+    square = shapely.geometry.box(0, 0, 1, 1)
+    holed = shapely.geometry.Polygon(
+        [(-1.5, -1.5), (1.5, -1.5), (1.5, 1.5), (-1.5, 1.5)],
+        [list(reversed(star_polygon(rng, 7, radius=1.0).exterior.coords))])
+    two = shapely.geometry.MultiPolygon([star_polygon(rng, 6, radius=0.6, center=(-0.8, 0.0)),
+                                         star_polygon(rng, 5, radius=0.6, center=(0.9, 0.2))])
+    assert holed.is_valid and two.is_valid
+    return [star_polygon(rng, 9, radius=1.0), star_polygon(rng, 12, radius=0.7), square, holed, two,
+            star_polygon(rng, 4, radius=0.5)]
+
+
+class Scene:
+    """Bodies (shape, pose, fixed) and their steps: each step a list of
+    ("move", ids, poses), ("remove", ids) or ("add", shapes, poses, fixed)."""
+
+    def __init__(self, shapes, shape_of, poses, fixed, steps):
+        self.shapes, self.shape_of, self.poses, self.fixed, self.steps = shapes, shape_of, poses, fixed, steps
+
+
+def random_scene(rng, count=22, steps=7, turn=True):
+    shapes = shapes_of(rng)
+    shape_of = [rng.randrange(len(shapes)) for _ in range(count)]
+    # Unit squares on the unit grid (touching exactly), the others anywhere
+    # in the box; a few bodies fixed.
+    poses = []
+    for s in shape_of:
+        if s == 2:
+            poses.append((float(rng.randrange(6)), float(rng.randrange(6)), 0.0))
+        else:
+            poses.append((dyadic(rng.uniform(0, 6)), dyadic(rng.uniform(0, 6)),
+                          dyadic(rng.uniform(-3, 3)) if turn else 0.0))
+    fixed = [k % 7 == 0 for k in range(count)]
+    movable = [not f for f in fixed]
+    kinds = list(shape_of)
+    plan = []
+    alive = list(range(count))
+    total = count
+    for step in range(steps):
+        actions = []
+        moved = rng.sample([b for b in alive if movable[b]], rng.randrange(1, 8))
+        new = []
+        for b in moved:
+            d = (dyadic(rng.uniform(-0.3, 0.3)), dyadic(rng.uniform(-0.3, 0.3)))
+            new.append((d, dyadic(rng.uniform(-0.2, 0.2)) if turn and kinds[b] != 2 else 0.0))
+        actions.append(("move", moved, new))
+        if step == 3:
+            gone = rng.sample(alive, 2)
+            alive = [b for b in alive if b not in gone]
+            actions.append(("remove", gone))
+        if step == 4:
+            s = rng.randrange(len(shapes))
+            actions.append(("add", [s], [(dyadic(rng.uniform(0, 6)), dyadic(rng.uniform(0, 6)), 0.0)], [False]))
+            alive.append(total)
+            movable.append(True)
+            kinds.append(s)
+            total += 1
+        plan.append(actions)
+    return Scene(shapes, shape_of, poses, fixed, plan)
+
+
+def play(scene, world, record):
+    """Runs the scene in `world`; calls record(world, state) after each step,
+    state the bodies' exact poses, shapes, fixed flags and liveness."""
+    shape_ids = world.add_shapes(scene.shapes)
+    assert list(shape_ids) == list(range(len(scene.shapes)))
+    state = {"poses": list(scene.poses), "shape": list(scene.shape_of), "fixed": list(scene.fixed),
+             "alive": [True] * len(scene.poses)}
+    ids = world.add_bodies(scene.shape_of, np.array(scene.poses), np.array(scene.fixed))
+    assert list(ids) == list(range(len(scene.poses)))
+    world.step()
+    record(world, state)
+    for actions in scene.steps:
+        for action in actions:
+            if action[0] == "move":
+                _, bodies, deltas = action
+                poses = []
+                for b, ((dx, dy), dt) in zip(bodies, deltas):
+                    tx, ty, th = state["poses"][b]
+                    state["poses"][b] = (tx + dx, ty + dy, th + dt)
+                    poses.append(state["poses"][b])
+                world.move(bodies, np.array(poses, dtype=np.float64).reshape(-1, 3))
+            elif action[0] == "remove":
+                world.remove(action[1])
+                for b in action[1]:
+                    state["alive"][b] = False
+            else:
+                _, shapes, poses, fixed = action
+                got = world.add_bodies(shapes, np.array(poses), np.array(fixed))
+                assert list(got) == list(range(len(state["poses"]), len(state["poses"]) + len(shapes)))
+                state["poses"] += poses
+                state["shape"] += shapes
+                state["fixed"] += fixed
+                state["alive"] += [True] * len(shapes)
+        world.step()
+        record(world, state)
+
+
+def reach(geom):
+    """The largest distance of a vertex from the shape's own origin."""
+    return max(math.hypot(x, y) for r in exact_reference.rings_of(geom) for x, y in r[0])
+
+
+def reference_contacts(scene, state):
+    """Every pair (i < j) of live bodies, not both fixed, whose exactly posed
+    closed regions meet."""
+    rings = [exact_reference.oriented(exact_reference.rings_of(g)) for g in scene.shapes]
+    radius = [reach(g) for g in scene.shapes]
+    posed = {}
+    out = []
+    n = len(state["poses"])
+    for i in range(n):
+        for j in range(i + 1, n):
+            if not (state["alive"][i] and state["alive"][j]) or (state["fixed"][i] and state["fixed"][j]):
+                continue
+            (xi, yi, _), (xj, yj, _) = state["poses"][i], state["poses"][j]
+            # Posed vertices lie within the shape's reach of the pose's
+            # translation (a turn keeps lengths; c and s are within 2^-52
+            # of a unit vector): a pair farther apart than both reaches
+            # and a margin is apart.
+            if math.hypot(xi - xj, yi - yj) > radius[state["shape"][i]] + radius[state["shape"][j]] + 1e-6:
+                continue
+            for k in (i, j):
+                if k not in posed:
+                    posed[k] = exact_reference.posed(rings[state["shape"][k]], state["poses"][k])
+            if exact_reference.regions_meet(posed[i], posed[j]):
+                out.append((i, j))
+    return out
+
+
+def as_pairs(array):
+    return [tuple(int(v) for v in row) for row in array]
+
+
+@pytest.mark.parametrize("number_type", ["certified", "exact"])
+def test_contacts_match_the_exact_reference_at_every_step(rng, number_type):
+    scene = random_scene(rng)
+    met = []
+
+    def record(world, state):
+        got = as_pairs(world.contacts)
+        assert got == sorted(got)
+        assert got == reference_contacts(scene, state), f"step {len(met)}"
+        met.append(len(got))
+
+    play(scene, influence2d.World(number_type), record)
+    # Not vacuous: contacts at every step, touching squares among them.
+    assert len(met) == len(scene.steps) + 1 and min(met) > 0
+
+
+def test_double_matches_the_reference_where_posing_is_exact(rng):
+    # Unturned bodies on a dyadic grid: posing is exact in double, so double
+    # must give the exact answers, touching pairs included.
+    scene = random_scene(rng, turn=False)
+    play(scene, influence2d.World("double"),
+         lambda w, state: (as_pairs(w.contacts) == reference_contacts(scene, state)) or pytest.fail("differs"))
+
+
+def run_all(scene, **options):
+    """Contacts, events, witnesses and statistics after each step."""
+    out = []
+
+    def record(world, state):
+        out.append((world.contacts.copy(), world.events(), world.witnesses() if options.get("witness") else None))
+
+    world = influence2d.World(**options)
+    play(scene, world, record)
+    return out, world.statistics
+
+
+def test_events_are_the_difference_of_consecutive_contacts(rng):
+    steps, _ = run_all(random_scene(rng))
+    before = set()
+    changes = 0
+    for contacts, (pairs, begins), _ in steps:
+        now = set(as_pairs(contacts))
+        expected = sorted([(p, True) for p in now - before] + [(p, False) for p in before - now])
+        assert sorted(zip(as_pairs(pairs), (bool(b) for b in begins))) == expected
+        assert as_pairs(pairs) == sorted(as_pairs(pairs))
+        changes += len(expected)
+        before = now
+    assert changes > len(steps)
+
+
+def test_witnesses_show_each_contact(rng):
+    scene = random_scene(rng)
+    shown = {"edge": 0, "vertex": 0}
+
+    def record(world, state):
+        wit = world.witnesses()
+        contacts = as_pairs(world.contacts)
+        assert all(len(v) == len(contacts) for v in wit.values())
+        for k, (i, j) in enumerate(contacts):
+            # Each body's rings in input order (the witnesses' numbering),
+            # posed exactly.
+            rings = {b: [r for r, _ in exact_reference.rings_of(scene.shapes[state["shape"][b]])] for b in (i, j)}
+            posed = {b: exact_reference.posed(rings[b], state["poses"][b]) for b in (i, j)}
+            oriented = {b: exact_reference.posed(exact_reference.oriented(
+                exact_reference.rings_of(scene.shapes[state["shape"][b]])), state["poses"][b]) for b in (i, j)}
+
+            def at(b, index):
+                for ring in posed[b]:
+                    if index < len(ring):
+                        return ring, index
+                    index -= len(ring)
+                raise AssertionError(f"index {index} beyond body {b}'s vertices")
+
+            kinds = (str(wit["first_kind"][k]), str(wit["second_kind"][k]))
+            index = (int(wit["first_index"][k]), int(wit["second_index"][k]))
+            if kinds == ("edge", "edge"):
+                (ra, ia), (rb, ib) = at(i, index[0]), at(j, index[1])
+                assert exact_reference.segments_meet(ra[ia], ra[(ia + 1) % len(ra)], rb[ib], rb[(ib + 1) % len(rb)])
+                shown["edge"] += 1
+            elif kinds == ("vertex", "interior"):
+                ring, v = at(i, index[0])
+                assert exact_reference.contains(oriented[j], ring[v]) and index[1] == -1
+                shown["vertex"] += 1
+            elif kinds == ("interior", "vertex"):
+                ring, v = at(j, index[1])
+                assert exact_reference.contains(oriented[i], ring[v]) and index[0] == -1
+                shown["vertex"] += 1
+            else:
+                raise AssertionError(f"contact {(i, j)}: witness kinds {kinds}")
+
+    play(scene, influence2d.World(witness=True), record)
+    assert shown["edge"] > 0
+
+
+def test_threads_and_coherence_change_nothing(rng):
+    scene = random_scene(rng)
+    serial, stats = run_all(scene, witness=True)
+    assert stats["witness_hits"] > 0  # coherence was used
+    for options in ({"threads": 2}, {"threads": 0}, {"coherence": False}):
+        other, _ = run_all(scene, witness=True, **options)
+        for (c0, (p0, b0), w0), (c1, (p1, b1), w1) in zip(serial, other):
+            assert np.array_equal(c0, c1) and np.array_equal(p0, p1) and np.array_equal(b0, b1)
+            # (Without coherence a contact may be shown by other features.)
+            assert "coherence" in options or all(np.array_equal(w0[key], w1[key]) for key in w0), options
+
+
+def test_translating_the_whole_scene_changes_no_contact(rng):
+    # Every posed coordinate moves by the same dyadic offset, exactly: the
+    # exact contacts are the same.
+    scene = random_scene(rng)
+    moved = Scene(scene.shapes, scene.shape_of, [(tx + 96.5, ty - 40.25, th) for tx, ty, th in scene.poses],
+                  scene.fixed,
+                  [[(a[0], a[1], [(x + 96.5, y - 40.25, t) for x, y, t in a[2]], a[3]) if a[0] == "add" else a
+                    for a in actions] for actions in scene.steps])
+    first, _ = run_all(scene)
+    second, _ = run_all(moved)
+    assert [as_pairs(c) for c, _, _ in first] == [as_pairs(c) for c, _, _ in second]
+
+
+def test_within_counts_pairs_near_enough():
+    w = influence2d.World(within=0.5)
+    s = w.add_shape("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))")
+    w.add_bodies([s, s, s], [[0.0, 0.0, 0.0], [1.5, 0.0, 0.0], [3.0625, 0.0, 0.0]])
+    assert as_pairs(w.step()) == [(0, 1)]  # 0.5 apart counts, 0.5625 does not
+    w.move([2], [[3.0, 0.0, 0.0]])
+    assert as_pairs(w.step()) == [(0, 1), (1, 2)]
+    w.move([2], [[3.0000001, 0.0, 0.0]])
+    assert as_pairs(w.step()) == [(0, 1)]
+
+
+def test_fixed_bodies_are_not_tested_against_each_other():
+    w = influence2d.World()
+    s = w.add_shape("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))")
+    w.add_bodies([s, s], [[0.0, 0.0, 0.0], [0.5, 0.0, 0.0]], fixed=True)
+    w.add_body(s, (0.25, 0.5, 0.0))
+    assert as_pairs(w.step()) == [(0, 2), (1, 2)]
+
+
+def test_refused_input_leaves_the_world_as_it_was():
+    w = influence2d.World(witness=True)
+    s = w.add_shape("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))")
+    w.add_bodies([s, s, s], [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [5.0, 0.0, 0.0]])
+    w.remove([2])
+    before = as_pairs(w.step())
+    stats = w.statistics
+    bad_calls = [
+        (lambda: w.move([0, 0], [[0.5, 0.0, 0.0], [0.5, 0.0, 0.0]]), "bodies[1] is 0, listed already at [0]"),
+        (lambda: w.move([0, 2], [[0.5, 0.0, 0.0], [0.5, 0.0, 0.0]]), "bodies[1] is 2: the body was removed"),
+        (lambda: w.move([0, 9], [[0.5, 0.0, 0.0], [0.5, 0.0, 0.0]]), "bodies[1] is 9: no body 9 (there are 3)"),
+        (lambda: w.move([0, -1], [[0.5, 0.0, 0.0], [0.5, 0.0, 0.0]]), "bodies[1] is -1"),
+        (lambda: w.move([0, 1], [[0.5, 0.0, 0.0], [0.5, 0.0, np.nan]]), "poses[1, 2] (theta) is nan"),
+        (lambda: w.move([0, 1], [[0.5, 0.0, 0.0]]), "2 bodies for 1 poses"),
+        (lambda: w.move([0.0, 1.0], [[0.5, 0.0, 0.0], [0.5, 0.0, 0.0]]), "expected integer ids"),
+        (lambda: w.move([[0, 1]], [[0.5, 0.0, 0.0], [0.5, 0.0, 0.0]]), "expected a 1-D array of ids"),
+        (lambda: w.move([0], [[0.5, 0.0]]), "expected an array of shape (n, 3)"),
+        (lambda: w.remove([1, 2]), "bodies[1] is 2: the body was removed"),
+        (lambda: w.add_bodies([0, 1], [[0.0, 0.0, 0.0], [0.0, 0.0, 0.0]]), "shapes[1] is 1: no shape 1"),
+        (lambda: w.add_bodies([0, 0], [[0.0, 0.0, 0.0], [0.0, np.inf, 0.0]]), "poses[1, 1] (ty) is inf"),
+        (lambda: w.add_bodies([0, 0], [[0.0, 0.0, 0.0]]), "2 shape ids for 1 poses"),
+        (lambda: w.add_bodies([0], [[0.0, 0.0, 0.0]], fixed=[1]), "fixed: expected a bool"),
+        (lambda: w.add_bodies([0], [[0.0, 0.0, 0.0]], fixed=np.array([True, False])), "fixed: expected 1 flags"),
+        (lambda: w.add_shapes(["POLYGON ((0 0, 1 0, 0 1, 0 0))", "POLYGON ((0 0, 1 0))"]), "shapes[1]"),
+        (lambda: w.add_shape("POLYGON ((0 0, nan 0, 0 1, 0 0))"), "shape"),
+    ]
+    for call, message in bad_calls:
+        with pytest.raises(influence2d.InvalidInput) as e:
+            call()
+        assert isinstance(e.value, ValueError)
+        assert message in str(e.value), (message, str(e.value))
+    assert len(w) == 3 and w.shape_count == 1 and list(w.alive) == [True, True, False]
+    assert w.statistics == stats
+    assert as_pairs(w.step()) == before  # nothing moved: every pair carried
+    assert w.statistics["candidates"] == stats["candidates"]
+
+
+@pytest.mark.parametrize("options, message", [
+    ({"number_type": "float"}, "number_type 'float'"),
+    ({"within": -1.0}, "distance"),
+    ({"within": float("nan")}, "distance"),
+    ({"within": "near"}, "within: expected a number"),
+    ({"threads": -1}, "threads is -1"),
+    ({"threads": 1.5}, "threads: expected an integer"),
+])
+def test_refused_options(options, message):
+    with pytest.raises(influence2d.InvalidInput, match=message):
+        influence2d.World(**options)
+
+
+def test_witnesses_need_the_option():
+    w = influence2d.World()
+    w.step()
+    with pytest.raises(influence2d.InvalidInput, match="witness=True"):
+        w.witnesses()
