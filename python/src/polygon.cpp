@@ -58,7 +58,7 @@ std::vector<std::int64_t> offsets_of(const py::array_t<std::int64_t, py::array::
 py_polygon from_coords(const py::array& coords,
                        const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& ring_offsets,
                        const py::object& polygon_offsets) {
-    if (!coords.dtype().is(py::dtype::of<double>()))
+    if (!coords.dtype().equal(py::dtype::of<double>()))
         throw invalid_input("coords: expected float64 coordinates, got dtype " + std::string(py::str(coords.dtype())));
     if (coords.ndim() != 2 || coords.shape(1) != 2) {
         std::string shape;

@@ -37,7 +37,7 @@ pose_rows pose_rows_of(const py::array& poses, const char* what) {
     if (poses.ndim() != 2 || poses.shape(1) != 3)
         throw invalid_input(std::string(what) + ": expected an array of shape (n, 3) (tx, ty, theta), got shape (" +
                             shape + ")");
-    if (!poses.dtype().is(py::dtype::of<double>()))
+    if (!poses.dtype().equal(py::dtype::of<double>()))
         throw invalid_input(std::string(what) + ": expected dtype float64, got " + std::string(py::str(poses.dtype())));
     if (!(poses.flags() & py::array::c_style))
         throw invalid_input(std::string(what) + ": expected a C-contiguous array (numpy.ascontiguousarray)");

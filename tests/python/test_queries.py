@@ -128,6 +128,20 @@ def test_threads_do_not_change_the_answers(np_rng, rng):
     assert (influence2d.Detector(a, b, number_type="certified").collide(poses) == one).all()
 
 
+def test_arrays_unpickled_are_taken_as_they_are(np_rng, rng):
+    # An array that crossed a pickle (a Dask task's, a multiprocessing
+    # worker's) holds a float64 dtype equal to numpy's but not the same
+    # object; it was once refused as "expected dtype float64, got float64".
+    import pickle
+    a, b = star_polygon(rng, 9), star_polygon(rng, 7)
+    poses = random_poses(np_rng, 50, 1.5, math.pi)
+    back = pickle.loads(pickle.dumps(poses, protocol=5))
+    assert (influence2d.intersects(a, b, back) == influence2d.intersects(a, b, poses)).all()
+    assert (influence2d.Detector(a, b).collide(back) == influence2d.Detector(a, b).collide(poses)).all()
+    coords = pickle.loads(pickle.dumps(np.array(a.exterior.coords), protocol=5))
+    assert influence2d.Polygon.from_coords(coords, np.array([0, len(coords)])).num_vertices == len(coords) - 1
+
+
 def test_empty_pose_array():
     out = influence2d.intersects("POLYGON ((0 0, 1 0, 0 1, 0 0))", "POLYGON ((0 0, 1 0, 0 1, 0 0))",
                                  np.zeros((0, 3)))
