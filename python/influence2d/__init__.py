@@ -8,8 +8,8 @@ WKB accepted wherever a Polygon is.
 >>> influence2d.intersects(a, "POLYGON ((0 0, 1 0, 0 1, 0 0))", np.array([[4.0, 0.0, 0.0], [4.5, 0.0, 0.0]]))
 array([ True, False])
 
-``influence2d.dask`` runs the audit of a layer, the layer join and the
-precision study on Dask's distributed scheduler; it is imported on first use
+``influence2d.dask`` runs the audit of a layer, the layer join, the precision
+study and a world's steps on Dask's distributed scheduler; it is imported on first use
 (``import influence2d.dask``, or the attribute), not with the package.
 
 Errors in the input (non-finite values, empty or malformed polygons, arrays
@@ -26,7 +26,7 @@ from .polygon import Polygon, as_polygon, as_polygons
 from .poses import as_poses
 from .queries import first_contact, intersects, separation
 from .study import study, study_names
-from .world import World
+from .world import World, world_contacts
 
 InvalidInput.__module__ = "influence2d"
 
@@ -47,7 +47,7 @@ def __getattr__(name):
 
 
 __all__ = [
-    "InvalidInput", "Polygon", "Detector", "World", "intersects", "separation", "first_contact", "pairs", "audit",
-    "audit_report", "audit_layer", "study", "study_names", "as_polygon", "as_polygons", "as_poses",
+    "InvalidInput", "Polygon", "Detector", "World", "world_contacts", "intersects", "separation", "first_contact",
+    "pairs", "audit", "audit_report", "audit_layer", "study", "study_names", "as_polygon", "as_polygons", "as_poses",
     "NUMBER_TYPES",
 ]

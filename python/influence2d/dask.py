@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: BSL-1.0
 """The work that outgrows one machine, on Dask's distributed scheduler: the
 audit of a layer in chunks, the layer join partitioned by boxes, the
-precision study split by scenes; each on a ``distributed.Client`` (a
+precision study split by scenes, a world's steps split into runs; each on a
+``distributed.Client`` (a
 LocalCluster, or a real cluster by its scheduler address,
 ``Client("tcp://scheduler:8786")``), each with the same result as the
 single-process call of the package.
@@ -21,8 +22,13 @@ from .audit import _item, audit_layer
 from .pairs import pairs as _local_pairs
 from .polygon import Polygon, as_polygons
 from .study import _frames, study_names
+from .world import _frame as _world_frame
+from .world import _Plan as _WorldPlan
+from .world import _plan_of as _world_plan_of
+from .world import _play as _world_play
+from .world import _within as _world_within
 
-__all__ = ["audit", "pairs", "study"]
+__all__ = ["audit", "pairs", "study", "world_contacts"]
 
 #: Disagreements the study keeps as examples per number type and decision
 #: (or query): the command's and the package's fixed count.
@@ -410,6 +416,84 @@ def pairs(layer, other=None, client=None, within=0.0, number_type="certified", p
     tasks = _join_tasks(client, first, second, within, number_type, threads, count)
     found = np.concatenate([np.empty((0, 2), dtype=np.int64)] + client.gather(tasks)).astype(np.int64, copy=False)
     return found[np.lexsort((found[:, 1], found[:, 0]))]
+
+
+# --- world ------------------------------------------------------------------
+
+def _world_part(polygons, plan, number_type, within, events, threads, skip_first):
+    """One task: a run of consecutive steps of the table (with, when it is
+    not the first, a step before it that sets every body where the earlier
+    steps left it), its contacts or events."""
+    return _world_play([p._p for p in polygons], plan, number_type, within, events, threads, skip_first)
+
+
+def _world_parts(plan, count):
+    """The table cut into at most ``count`` runs of consecutive steps of
+    about equal rows, each a plan of its own: a run after the first starts
+    with one step, numbered as the step before the run, that adds every
+    body the earlier rows made at its last pose there (so the run's first
+    contacts and events are the single run's); and whether it has that
+    step."""
+    steps = len(plan.starts)
+    cuts = np.unique(np.searchsorted(plan.starts, np.linspace(0, len(plan.step), count + 1)[1:-1], side="left"))
+    cuts = cuts[(cuts > 0) & (cuts < steps)]
+    bounds = np.concatenate(([0], cuts, [steps]))
+    out = []
+    for i0, i1 in zip(bounds[:-1], bounds[1:]):
+        begin, end = plan.starts[i0], plan.ends[i1 - 1]
+        if i0 == 0:
+            keep, state = np.arange(begin, end), 0
+        else:
+            # Each body's last row before the run, moved to the step before it.
+            _, last_from_end = np.unique(plan.body[:begin][::-1], return_index=True)
+            state = len(last_from_end)
+            keep = np.concatenate((np.sort(begin - 1 - last_from_end), np.arange(begin, end)))
+        step = plan.step[keep]
+        if state:
+            step[:state] = plan.step[begin - 1]
+        out.append((_WorldPlan(step, plan.body[keep], plan.shape[keep], plan.poses[keep], plan.fixed[keep]), i0 > 0))
+    return out
+
+
+def world_contacts(shapes, steps, client, number_type="certified", within=0.0, events=False, parts=None, threads=1):
+    """The same DataFrame as :func:`influence2d.world_contacts` (the
+    contacts, or events, after each step of a table of steps), found on the
+    workers: the table is cut into ``parts`` runs of consecutive steps
+    (default: two per worker thread), one task each, on ``threads``
+    threads of a worker. A run after the first starts with every body where
+    the earlier steps left it (one step made of their last rows), so its
+    contacts and events are those of the single run: the world's answer to a
+    step depends only on its bodies' poses. The shapes are sent to the
+    workers once.
+
+    >>> from distributed import Client, LocalCluster
+    >>> import pandas as pd, influence2d.dask
+    >>> steps = pd.DataFrame({"step": [0, 0, 1, 2, 3], "body": [1, 2, 2, 2, 2], "shape": [0] * 5,
+    ...                       "tx": [0.0, 3.0, 2.0, 1.0, 0.5], "ty": [0.0] * 5, "theta": [0.0] * 5})
+    >>> with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as cluster, \\
+    ...         Client(cluster) as client:
+    ...     found = influence2d.dask.world_contacts(["POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))"], steps, client,
+    ...                                             events=True, parts=3)
+    >>> found
+       step  a  b  event
+    0     2  1  2  begin
+    """
+    import pandas as pd
+    client = _client(client)
+    threads = _count(threads, "threads", least=0)
+    count = max(1, 2 * sum(client.nthreads().values())) if parts is None else _count(parts, "parts")
+    polygons = as_polygons(shapes, "shapes")
+    plan = _world_plan_of(steps, len(polygons))
+    within, events = _world_within(within), bool(events)
+    _core.World(number_type, within, False, True, threads)  # the number type and distance checked
+    if not len(plan.step):
+        return _world_frame(*_world_play([], plan, number_type, within, events, threads), events)
+    shared = client.scatter(polygons, broadcast=True, hash=False)
+    tasks = [client.submit(_world_part, shared, part, number_type, within, events, threads, skip, pure=False)
+             for part, skip in _world_parts(plan, count)]
+    found = client.gather(tasks)
+    return _world_frame(np.concatenate([f[0] for f in found]), np.concatenate([f[1] for f in found]),
+                        np.concatenate([f[2] for f in found]), events)
 
 
 # --- study ------------------------------------------------------------------

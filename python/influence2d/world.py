@@ -10,7 +10,7 @@ from ._core import InvalidInput
 from .polygon import as_polygon, as_polygons
 from .poses import as_poses
 
-__all__ = ["World"]
+__all__ = ["World", "world_contacts"]
 
 _KINDS = np.array(["vertex", "edge", "interior"])
 
@@ -33,6 +33,21 @@ def _ids(values, name):
     if a.dtype.kind == "u" and a.max() > np.iinfo(np.int64).max:
         raise InvalidInput(f"{name}: id {a.max()} is beyond int64")
     return np.ascontiguousarray(a, dtype=np.int64)
+
+
+def _within(within):
+    """``within`` as a float (the world refuses a negative or NaN one)."""
+    try:
+        return float(within)
+    except (TypeError, ValueError):
+        raise InvalidInput(f"within: expected a number, got {within!r}") from None
+
+
+def _threads(threads):
+    """``threads`` as an int (the world refuses one below 0)."""
+    if not isinstance(threads, (int, np.integer)) or isinstance(threads, bool):
+        raise InvalidInput(f"threads: expected an integer, got {threads!r}")
+    return int(threads)
 
 
 class World:
@@ -70,13 +85,7 @@ class World:
     """
 
     def __init__(self, number_type="certified", within=0.0, witness=False, coherence=True, threads=1):
-        try:
-            within = float(within)
-        except (TypeError, ValueError):
-            raise InvalidInput(f"within: expected a number, got {within!r}") from None
-        if not isinstance(threads, (int, np.integer)) or isinstance(threads, bool):
-            raise InvalidInput(f"threads: expected an integer, got {threads!r}")
-        self._w = _core.World(number_type, within, bool(witness), bool(coherence), int(threads))
+        self._w = _core.World(number_type, _within(within), bool(witness), bool(coherence), _threads(threads))
         self._number_type = number_type
 
     @property
@@ -202,3 +211,177 @@ class World:
     def __repr__(self):
         return (f"World(number_type={self._number_type!r}, bodies={len(self)}, shapes={self.shape_count}, "
                 f"contacts={len(self.contacts)})")
+
+
+# --- A scene from a table of steps --------------------------------------------
+
+#: The columns of a table of steps (the tool's STEPS.csv), ``fixed`` optional.
+STEP_COLUMNS = ("step", "body", "shape", "tx", "ty", "theta")
+
+
+class _Plan:
+    """A table of steps, checked: its columns as arrays, each body's
+    internal id (in order of first appearance), whether each row adds its
+    body, and where each step's rows begin."""
+
+    def __init__(self, step, body, shape, poses, fixed):
+        self.step, self.body, self.shape, self.poses, self.fixed = step, body, shape, poses, fixed
+        users, first, inverse = np.unique(body, return_index=True, return_inverse=True)
+        order = np.argsort(first, kind="stable")
+        rank = np.empty(len(users), dtype=np.int64)
+        rank[order] = np.arange(len(users))
+        self.internal = rank[inverse]
+        self.user_of = users[order]
+        self.adds = first[inverse] == np.arange(len(body))
+        self.starts = np.concatenate(([0], np.flatnonzero(np.diff(step)) + 1)).astype(np.int64)[:len(step)]
+        self.ends = np.concatenate((self.starts[1:], [len(step)])).astype(np.int64)[:len(self.starts)]
+
+
+def _integers(frame, column, least=0):
+    values = frame[column].to_numpy()
+    if values.dtype.kind not in "iu":
+        raise InvalidInput(f"steps, column {column}: expected integers, got dtype {values.dtype}")
+    bad = np.flatnonzero(values < least) if values.dtype.kind == "i" else np.flatnonzero(values > np.iinfo(np.int64).max)
+    if len(bad):
+        raise InvalidInput(f"steps, row {bad[0]}, column {column}: {values[bad[0]]} is not an integer from {least} "
+                           "to 2^63 - 1")
+    return values.astype(np.int64)
+
+
+def _plan_of(steps, shape_count):
+    """The table ``steps`` (a pandas DataFrame, or anything pandas makes one
+    of, with the columns of STEP_COLUMNS and optionally ``fixed``) checked
+    as the tool checks STEPS.csv: integer steps, bodies and shape ids, a
+    shape id below ``shape_count``, finite poses, steps never going back
+    (the rows of a step consecutive), a body listed once per step and
+    keeping its shape and fixedness; each refusal names the row (its
+    position) and column."""
+    import pandas as pd
+    if not isinstance(steps, pd.DataFrame):
+        try:
+            steps = pd.DataFrame(steps)
+        except (TypeError, ValueError) as e:
+            raise InvalidInput(f"steps: not a table ({e})") from None
+    missing = [c for c in STEP_COLUMNS if c not in steps.columns]
+    if missing:
+        raise InvalidInput(f"steps: no column {missing[0]!r} (expected the columns "
+                           f"{', '.join(STEP_COLUMNS)} and optionally fixed)")
+    step, body, shape = (_integers(steps, c) for c in ("step", "body", "shape"))
+    poses = np.empty((len(steps), 3))
+    for c, name in enumerate(("tx", "ty", "theta")):
+        values = steps[name].to_numpy()
+        if values.dtype.kind not in "iuf":
+            raise InvalidInput(f"steps, column {name}: expected numbers, got dtype {values.dtype}")
+        poses[:, c] = values
+        bad = np.flatnonzero(~np.isfinite(poses[:, c]))
+        if len(bad):
+            raise InvalidInput(f"steps, row {bad[0]}, column {name}: {poses[bad[0], c]} is not a finite number")
+    if "fixed" in steps.columns:
+        fixed = steps["fixed"].to_numpy()
+        if fixed.dtype.kind in "iu":
+            bad = np.flatnonzero((fixed != 0) & (fixed != 1))
+            if len(bad):
+                raise InvalidInput(f"steps, row {bad[0]}, column fixed: {fixed[bad[0]]} is not 0 or 1")
+        elif fixed.dtype.kind != "b":
+            raise InvalidInput(f"steps, column fixed: expected bools or 0 and 1, got dtype {fixed.dtype}")
+        fixed = fixed.astype(bool)
+    else:
+        fixed = np.zeros(len(steps), dtype=bool)
+    bad = np.flatnonzero(shape >= shape_count)
+    if len(bad):
+        raise InvalidInput(f"steps, row {bad[0]}, column shape: no shape {shape[bad[0]]} (there are {shape_count})")
+    bad = np.flatnonzero(np.diff(step) < 0)
+    if len(bad):
+        k = bad[0] + 1
+        raise InvalidInput(f"steps, row {k}: step {step[k]} after step {step[k - 1]}: steps must not go back (the "
+                           "rows of a step are consecutive)")
+    order = np.lexsort((np.arange(len(step)), body, step))
+    twice = np.flatnonzero((np.diff(step[order]) == 0) & (np.diff(body[order]) == 0))
+    if len(twice):
+        k, was = order[twice[0] + 1], order[twice[0]]
+        raise InvalidInput(f"steps, row {k}: body {body[k]} is listed twice in step {step[k]} (also row {was})")
+    _, first, inverse = np.unique(body, return_index=True, return_inverse=True)
+    for name, values, what in (("shape", shape, "keeps its shape"), ("fixed", fixed, "stays fixed or free")):
+        bad = np.flatnonzero(values != values[first[inverse]])
+        if len(bad):
+            k = bad[0]
+            raise InvalidInput(f"steps, row {k}, column {name}: body {body[k]} has {name} {values[first[inverse[k]]]} "
+                               f"since row {first[inverse[k]]}, not {values[k]}: a body {what}")
+    return _Plan(step, body, shape, np.ascontiguousarray(poses), fixed)
+
+
+def _play(polygons, plan, number_type, within, events, threads, skip_first=False):
+    """The contacts (or events) after each step of ``plan``, in a world of
+    ``polygons`` (the _core objects): arrays step, a, b (the bodies' ids
+    in the table, a < b) and, for events, begins; sorted by step, a, b. The
+    first step's rows are left out with ``skip_first`` (it only sets the
+    bodies where an earlier part of the table left them)."""
+    w = _core.World(number_type, within, False, True, threads)
+    w.add_shapes(polygons)
+    out_step, out_pairs, out_begins = [], [], []
+    for k, (s, e) in enumerate(zip(plan.starts, plan.ends)):
+        adds = plan.adds[s:e]
+        if adds.any():
+            rows = np.arange(s, e)[adds]
+            w.add_bodies(plan.shape[rows], plan.poses[rows], plan.fixed[rows])
+        if not adds.all():
+            rows = np.arange(s, e)[~adds]
+            w.move(plan.internal[rows], plan.poses[rows])
+        contacts = w.step()
+        if skip_first and k == 0:
+            continue
+        if events:
+            pairs, begins = w.events()
+        else:
+            pairs, begins = contacts, np.ones(len(contacts), dtype=bool)
+        users = plan.user_of[pairs].reshape(-1, 2)
+        a, b = users.min(axis=1), users.max(axis=1)
+        order = np.lexsort((b, a))
+        out_step.append(np.full(len(order), plan.step[s], dtype=np.int64))
+        out_pairs.append(np.column_stack((a[order], b[order])))
+        out_begins.append(begins[order])
+    if not out_step:
+        return np.zeros(0, np.int64), np.zeros((0, 2), np.int64), np.zeros(0, bool)
+    return np.concatenate(out_step), np.concatenate(out_pairs), np.concatenate(out_begins)
+
+
+def _frame(step, pairs, begins, events):
+    """The contacts (or events) as the tool's CONTACTS.csv: a DataFrame of
+    step, a, b (and event, "begin" or "end")."""
+    import pandas as pd
+    frame = pd.DataFrame({"step": step, "a": pairs[:, 0], "b": pairs[:, 1]})
+    if events:
+        frame["event"] = np.where(begins, "begin", "end")
+    return frame
+
+
+def world_contacts(shapes, steps, number_type="certified", within=0.0, events=False, threads=1):
+    """The ``influence2d world`` command on a table: bodies of ``shapes`` (a
+    sequence of polygons; shape k the k-th) placed and moved as ``steps``
+    says (a pandas DataFrame, or a dict of columns, with the columns
+    ``step, body, shape, tx, ty, theta`` and optionally ``fixed``: a body
+    appears at its first row and keeps its last pose until a later row
+    moves it; steps never go back). Returns a DataFrame ``step, a, b``: one
+    row per pair of bodies a < b (the table's ids) in contact after each
+    step, sorted by step, a, b; with ``events=True`` the contacts that began
+    or ended, with a column ``event`` ("begin" or "end"). Bad input raises
+    InvalidInput naming the row and column.
+
+    >>> import pandas as pd
+    >>> steps = pd.DataFrame({"step": [0, 0, 0, 1], "body": [10, 20, 30, 30], "shape": [0, 0, 0, 0],
+    ...                       "tx": [0.0, 1.0, 3.0, 2.0], "ty": [0.0] * 4, "theta": [0.0] * 4})
+    >>> world_contacts(["POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))"], steps)
+       step   a   b
+    0     0  10  20
+    1     1  10  20
+    2     1  20  30
+    >>> world_contacts(["POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))"], steps, events=True)
+       step   a   b  event
+    0     0  10  20  begin
+    1     1  20  30  begin
+    """
+    polygons = [p._p for p in as_polygons(shapes, "shapes")]
+    plan = _plan_of(steps, len(polygons))
+    return _frame(*_play(polygons, plan, number_type, _within(within), bool(events), _threads(threads)),
+                  bool(events))
+

@@ -20,6 +20,7 @@ import influence2d.dask
 from conftest import star_polygon
 from test_audit import POLYGONS
 from test_pairs import layer_of
+from test_world import steps_table
 
 distributed = pytest.importorskip("distributed")
 
@@ -293,6 +294,32 @@ def test_study_with_families_in_another_order_and_no_queries(client):
 # --- bad input ---------------------------------------------------------------
 
 SQUARE = shapely.geometry.box(0, 0, 1, 1)
+STEPS = pd.DataFrame({"step": [0, 1], "body": [0, 0], "shape": [0, 0], "tx": [0.0, 1.0], "ty": [0.0, 0.0],
+                      "theta": [0.0, 0.0]})
+
+
+# --- world ------------------------------------------------------------------
+
+@pytest.mark.parametrize("number_type", ["certified", "exact", "double"])
+@pytest.mark.parametrize("parts", [1, 3, 7, 1000])
+def test_world_contacts_is_the_single_process_run(client, rng, number_type, parts):
+    shapes, table = steps_table(rng, bodies=14, steps=20)
+    for events in (False, True):
+        want = influence2d.world_contacts(shapes, table, number_type=number_type, events=events)
+        got = influence2d.dask.world_contacts(shapes, table, client, number_type=number_type, events=events,
+                                              parts=parts)
+        pandas.testing.assert_frame_equal(got, want)
+        assert len(want) > table["step"].nunique()
+
+
+def test_world_contacts_of_one_step_and_of_none(client):
+    square = "POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))"
+    table = pd.DataFrame({"step": [4, 4], "body": [0, 1], "shape": [0, 0], "tx": [0.0, 1.0], "ty": [0.0, 0.0],
+                          "theta": [0.0, 0.0]})
+    pandas.testing.assert_frame_equal(influence2d.dask.world_contacts([square], table, client, parts=5),
+                                      influence2d.world_contacts([square], table))
+    pandas.testing.assert_frame_equal(influence2d.dask.world_contacts([square], table.iloc[:0], client),
+                                      influence2d.world_contacts([square], table.iloc[:0]))
 
 
 @pytest.mark.parametrize("call, message", [
@@ -318,6 +345,12 @@ SQUARE = shapely.geometry.box(0, 0, 1, 1)
     (lambda c: influence2d.dask.study(cases=-1, client=c), "cases is -1"),
     (lambda c: influence2d.dask.study(scenes_per_task=0, client=c), "scenes_per_task is 0"),
     (lambda c: influence2d.dask.study(), "client: expected a distributed.Client, got NoneType"),
+    (lambda c: influence2d.dask.world_contacts([SQUARE], STEPS, None), "client: expected a distributed.Client"),
+    (lambda c: influence2d.dask.world_contacts([SQUARE], STEPS, c, parts=0), "parts is 0"),
+    (lambda c: influence2d.dask.world_contacts([SQUARE], STEPS, c, within=-1.0), "distance"),
+    (lambda c: influence2d.dask.world_contacts([SQUARE], STEPS, c, number_type="float"), "number_type 'float'"),
+    (lambda c: influence2d.dask.world_contacts([SQUARE], STEPS.assign(shape=[0, 1]), c), "row 1, column shape"),
+    (lambda c: influence2d.dask.world_contacts([SQUARE, None], STEPS, c), "shapes[1]"),
 ])
 def test_bad_input_is_refused_naming_the_value(client, call, message):
     with pytest.raises(influence2d.InvalidInput) as e:

@@ -345,3 +345,120 @@ def test_witnesses_need_the_option():
     w.step()
     with pytest.raises(influence2d.InvalidInput, match="witness=True"):
         w.witnesses()
+
+
+# --- world_contacts: a table of steps ------------------------------------------
+
+def steps_table(rng, bodies=18, steps=24, turn=True):
+    """A table of steps as the tool reads STEPS.csv: bodies of the shapes of
+    shapes_of with ids 1000 + 7k, joining at their own steps, some fixed;
+    each step moves a few free bodies a little (some in several steps in a
+    row, so that contacts persist). Step numbers are sparse."""
+    shapes = shapes_of(rng)
+    kind = [rng.randrange(len(shapes)) for _ in range(bodies)]
+    joins = sorted(rng.randrange(steps // 3) for _ in range(bodies))
+    fixed = [k % 6 == 0 for k in range(bodies)]
+    pose = {}
+    rows = []
+    for s in range(steps):
+        number = 3 * s + (s % 2)
+        present = [k for k in range(bodies) if joins[k] <= s]
+        free = [k for k in present if not fixed[k] and k in pose]
+        movers = set(rng.sample(free, min(5, len(free))))
+        for k in present:
+            if k not in pose:
+                pose[k] = (float(rng.randrange(6)), float(rng.randrange(6)), 0.0) if kind[k] == 2 else \
+                    (dyadic(rng.uniform(0, 6)), dyadic(rng.uniform(0, 6)), dyadic(rng.uniform(-3, 3)) if turn else 0.0)
+            elif k in movers:
+                tx, ty, th = pose[k]
+                pose[k] = (tx + dyadic(rng.uniform(-0.25, 0.25)), ty + dyadic(rng.uniform(-0.25, 0.25)),
+                           th + (dyadic(rng.uniform(-0.1, 0.1)) if turn and kind[k] != 2 else 0.0))
+            else:
+                continue
+            rows.append((number, 1000 + 7 * k, kind[k], *pose[k], int(fixed[k])))
+    rng.shuffle(rows)  # (the rows of a step in any order)
+    rows.sort(key=lambda r: r[0])
+    import pandas as pd
+    return shapes, pd.DataFrame(rows, columns=["step", "body", "shape", "tx", "ty", "theta", "fixed"])
+
+
+def tool_contacts(tool, tmp_path, shapes, table, *options):
+    """`influence2d world` on the same shapes and steps, its CONTACTS.csv as
+    a DataFrame."""
+    import pandas as pd
+    from conftest import run_tool
+    (tmp_path / "shapes.wkt").write_text("".join(g.wkt + "\n" for g in shapes))
+    with open(tmp_path / "steps.csv", "w") as f:
+        f.write("step,body,shape,tx,ty,theta,fixed\n")
+        for r in table.itertuples(index=False):
+            f.write(f"{r.step},{r.body},{r.shape},{float(r.tx)!r},{float(r.ty)!r},{float(r.theta)!r},{r.fixed}\n")
+    run_tool(tool, "world", "--shapes", tmp_path / "shapes.wkt", "--steps", tmp_path / "steps.csv", *options,
+             "--out", tmp_path / "contacts.csv")
+    return pd.read_csv(tmp_path / "contacts.csv")
+
+
+@pytest.mark.parametrize("number_type", ["certified", "exact", "double"])
+def test_world_contacts_is_the_tool_on_the_same_steps(tool, tmp_path, rng, number_type):
+    import pandas.testing
+    shapes, table = steps_table(rng)
+    for events in (False, True):
+        got = influence2d.world_contacts(shapes, table, number_type=number_type, events=events)
+        want = tool_contacts(tool, tmp_path, shapes, table, "--number-type", number_type,
+                             *(["--events"] if events else []))
+        pandas.testing.assert_frame_equal(got, want, check_dtype=False)
+        assert len(got) > 2 * table["step"].nunique()  # many contacts (or events), not a few
+
+
+def test_world_contacts_answers_as_the_exact_reference(rng):
+    shapes, table = steps_table(rng, steps=10)
+    got = influence2d.world_contacts(shapes, table, within=0.0)
+    scene = Scene(shapes, [], [], [], [])
+    state = {"poses": [], "shape": [], "fixed": [], "alive": []}
+    index = {}
+    for number, rows in table.groupby("step", sort=True):
+        for r in rows.itertuples(index=False):
+            if r.body not in index:
+                index[r.body] = len(state["poses"])
+                state["poses"].append(None)
+                state["shape"].append(r.shape)
+                state["fixed"].append(bool(r.fixed))
+                state["alive"].append(True)
+            state["poses"][index[r.body]] = (r.tx, r.ty, r.theta)
+        ids = {v: k for k, v in index.items()}
+        want = sorted(tuple(sorted((ids[i], ids[j]))) for i, j in reference_contacts(scene, state))
+        assert as_pairs(got[got["step"] == number][["a", "b"]].to_numpy()) == want, number
+
+
+def test_world_contacts_of_no_steps():
+    import pandas as pd
+    got = influence2d.world_contacts(["POLYGON ((0 0, 1 0, 0 1, 0 0))"], pd.DataFrame(
+        {c: np.zeros(0, dtype=np.int64 if c in ("step", "body", "shape") else float)
+         for c in ("step", "body", "shape", "tx", "ty", "theta")}))
+    assert list(got.columns) == ["step", "a", "b"] and len(got) == 0
+
+
+def bad_table(change):
+    import pandas as pd
+    table = pd.DataFrame({"step": [0, 0, 1, 1], "body": [5, 6, 5, 6], "shape": [0, 0, 0, 0],
+                          "tx": [0.0, 1.0, 0.5, 1.5], "ty": [0.0] * 4, "theta": [0.0] * 4, "fixed": [0, 0, 0, 0]})
+    change(table)
+    return table
+
+
+@pytest.mark.parametrize("change, message", [
+    (lambda t: t.__setitem__("step", [0, 1, 0, 1]), "steps, row 2: step 0 after step 1: steps must not go back"),
+    (lambda t: t.__setitem__("body", [5, 6, 5, 5]), "steps, row 3: body 5 is listed twice in step 1 (also row 2)"),
+    (lambda t: t.__setitem__("shape", [0, 0, 0, 1]), "steps, row 3, column shape: no shape 1 (there are 1)"),
+    (lambda t: t.__setitem__("fixed", [0, 0, 1, 0]), "steps, row 2, column fixed: body 5 has fixed False since row 0"),
+    (lambda t: t.__setitem__("fixed", [0, 2, 0, 0]), "steps, row 1, column fixed: 2 is not 0 or 1"),
+    (lambda t: t.__setitem__("tx", [0.0, np.nan, 0.0, 0.0]), "steps, row 1, column tx: nan is not a finite number"),
+    (lambda t: t.__setitem__("theta", [0.0, 0.0, 0.0, np.inf]), "steps, row 3, column theta: inf"),
+    (lambda t: t.__setitem__("body", [5.0, 6.0, 5.0, 6.0]), "steps, column body: expected integers, got dtype float64"),
+    (lambda t: t.__setitem__("step", [0, 0, -1, 1]), "steps, row 2, column step: -1 is not an integer from 0"),
+    (lambda t: t.__setitem__("ty", ["a", "b", "c", "d"]), "steps, column ty: expected numbers"),
+    (lambda t: t.drop(columns="theta", inplace=True), "steps: no column 'theta'"),
+])
+def test_world_contacts_refuses_a_bad_table_naming_the_row(change, message):
+    with pytest.raises(influence2d.InvalidInput) as e:
+        influence2d.world_contacts(["POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))"], bad_table(change))
+    assert message in str(e.value), str(e.value)
