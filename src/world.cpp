@@ -302,6 +302,7 @@ struct world_run {
     std::size_t contacts = 0;     ///< pairs in contact, summed over the steps
     std::size_t events = 0;       ///< contacts begun or ended, summed over the steps
     double seconds = 0;           ///< the steps alone
+    world_statistics work;        ///< the world's counters after the last step
 };
 
 /// Runs the plan in world<NT, Exact>: the shapes added first, then, timed,
@@ -338,6 +339,7 @@ world_run run_steps(const world_inputs& in, const world_cli_options& o) {
                 for (const body_pair& p : contacts) r.rows.push_back({s, p, true});
         }
     });
+    r.work = w.statistics();
     return r;
 }
 
@@ -385,6 +387,8 @@ void run_world(const world_cli_options& o) {
                 << "events:        " << r.events << "\n"
                 << "number type:   " << o.number_type << "\n"
                 << "threads:       " << batch_threads(o.threads) << "\n"
+                << "candidates:    " << r.work.candidates << " (answered by their last witness " << r.work.witness_hits
+                << ", again in exact rationals " << r.work.exact_pairs << ")\n"
                 << "time per step: "
                 << (steps == 0 ? std::string("n/a") : fixed(r.seconds * 1e6 / static_cast<double>(steps), 3) + " us")
                 << "\n"

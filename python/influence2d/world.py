@@ -190,8 +190,10 @@ class World:
         boxes escaped, tree rebuilds, candidate pairs, pairs carried
         untested, witness hits, pairs kept apart by their separating edge
         (separated) or by one sought before the pair test (found_apart),
-        pairs answered by edges next to the last step's (nearby_edges), and
-        contacts reported."""
+        pairs answered by edges next to the last step's (nearby_edges),
+        pairs answered again in exact rationals because double could not
+        settle a sign (exact_pairs; "certified" only), and contacts
+        reported."""
         return self._w.statistics()
 
     @property

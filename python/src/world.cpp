@@ -223,6 +223,7 @@ public:
         d["separated"] = s.separated;
         d["found_apart"] = s.found_apart;
         d["nearby_edges"] = s.nearby_edges;
+        d["exact_pairs"] = s.exact_pairs;
         d["contacts"] = s.contacts;
         return d;
     }

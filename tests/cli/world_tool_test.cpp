@@ -156,6 +156,8 @@ TEST_CASE("cli: world writes the contacts and events of a hand-made scene", "[cl
         CHECK(r.out.find("bodies:        3\nsteps:         4\ncontacts:      4\nevents:        5\n") !=
               std::string::npos);
         CHECK(r.out.find(std::string("number type:   ") + type + "\n") != std::string::npos);
+        CHECK(r.out.find("\ncandidates:    ") != std::string::npos);
+        if (std::string(type) != "certified") CHECK(r.out.find(", again in exact rationals 0)\n") != std::string::npos);
         CHECK(has_time_per_step(r.out));
         const run_result e = run_cli(dir, common + " --number-type " + type + " --events");
         REQUIRE(e.exit_code == 0);

@@ -556,6 +556,43 @@ TEST_CASE("world: turned bodies touching at the edge of their bounding discs", "
     CHECK(touching == static_cast<std::size_t>(pairs));  // every A and its B touch
 }
 
+TEST_CASE("world: the pairs answered again in exact rationals are counted", "[world]") {
+    // Unit squares turned by 0.3: B stands at (c, s), so that its left edge
+    // lies exactly on A's right edge (posed in double, their vertices are
+    // rounded, and the filter cannot settle that they touch); C stands
+    // three units further. Certified answers the touching pair again in
+    // exact rationals, at every step it is tested; the apart pairs, and
+    // every pair of the double and exact worlds, need no such answer.
+    const rotation_pose q(pose{0, 0, 0.3});
+    const std::vector<pose> where = {{0, 0, 0.3}, {q.c, q.s, 0.3}, {4 * q.c, 4 * q.s, 0.3}};
+    certified_world certified;
+    world<double> rounded;
+    world<exact_rational> exact;
+    const auto s = certified.add_shape(test_shapes::square(0, 0, 1));
+    rounded.add_shape(test_shapes::square(0, 0, 1));
+    exact.add_shape(test_shapes::square(0, 0, 1));
+    for (const pose& p : where) {
+        certified.add_body(s, p);
+        rounded.add_body(s, p);
+        exact.add_body(s, p);
+    }
+    const std::string want = show({{0, 1}});
+    for (int step = 1; step <= 3; ++step) {
+        INFO(step);
+        CHECK(show(certified.step()) == want);
+        CHECK(show(exact.step()) == want);
+        rounded.step();
+        CHECK(certified.statistics().exact_pairs == static_cast<std::size_t>(step));
+        CHECK(rounded.statistics().exact_pairs == 0);
+        CHECK(exact.statistics().exact_pairs == 0);
+        for (std::uint32_t i = 0; i < 2; ++i) {  // moved to where they stand: tested again
+            certified.move(i, where[i]);
+            rounded.move(i, where[i]);
+            exact.move(i, where[i]);
+        }
+    }
+}
+
 TEST_CASE("world: bad input is refused with invalid_input", "[world]") {
     world_options o;
     o.within = -1;

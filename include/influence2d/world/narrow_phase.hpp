@@ -185,15 +185,18 @@ meeting nearby_edges_meet(const meeting& last, bool with_last, const body_view<N
 /// seeking the witness `prefer` first); `*by_witness`, when given, says
 /// whether `last` answered. Exact when NT is. With Exact not void, a sign
 /// NT cannot settle (uncertain_sign) makes the pair answered again in
-/// Exact, both bodies posed anew in it.
+/// Exact, both bodies posed anew in it; `*in_exact`, when given, says
+/// whether it was.
 ///
 ///   last still holds (witness_holds):    last
 ///   else placed_within on the placed bodies, with the margin of their
 ///   posing (placing_margin of the sum of their scales)
 template <class NT, class Exact = void>
 meeting bodies_within(const meeting& last, const body_view<NT>& a, const body_view<NT>& b, double d,
-                      bool* by_witness = nullptr, witness_preference prefer = witness_preference::cheapest) {
+                      bool* by_witness = nullptr, witness_preference prefer = witness_preference::cheapest,
+                      bool* in_exact = nullptr) {
     if (by_witness != nullptr) *by_witness = false;
+    if (in_exact != nullptr) *in_exact = false;
     const auto in = [&](auto tag, placed_polygon<decltype(tag)>& pa, placed_polygon<decltype(tag)>& pb,
                         const meeting& witness, const body_view<decltype(tag)>* va,
                         const body_view<decltype(tag)>* vb) -> meeting {
@@ -212,6 +215,7 @@ meeting bodies_within(const meeting& last, const body_view<NT>& a, const body_vi
         return fast();
     } else {
         return fallback<>::run(fast, [&] {
+            if (in_exact != nullptr) *in_exact = true;
             placed_polygon<Exact> pa(*a.shape, a.pose), pb(*b.shape, b.pose);
             return in(Exact{}, pa, pb, meeting{}, static_cast<const body_view<Exact>*>(nullptr),
                       static_cast<const body_view<Exact>*>(nullptr));

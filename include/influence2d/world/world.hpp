@@ -84,6 +84,7 @@ struct world_statistics {
     std::size_t separated = 0;     ///< candidates answered apart by the last step's separating edge
     std::size_t found_apart = 0;   ///< candidates answered apart by a separating edge sought before the one-shot test
     std::size_t nearby_edges = 0;  ///< candidates answered by edges next to the last step's two
+    std::size_t exact_pairs = 0;   ///< candidates answered again in the Exact type (a sign NT could not settle)
     std::size_t contacts = 0;      ///< contacts reported, summed over the steps
 };
 
@@ -289,6 +290,7 @@ private:
         separating_edge apart;     // (shown none) a hull edge that kept the bodies apart
         bool sought = false;       // a separating edge was sought at this step before the one-shot test
         bool nearby = false;       // answered by edges next to the last step's two (nearby_edges_meet)
+        bool in_exact = false;     // answered again in Exact (bodies_within)
         // (shown none) the two edges that last showed the bodies meeting
         // (edge parted_a of the first body's polygon, parted_b of the
         // second's), when `parted`
@@ -698,14 +700,15 @@ private:
     // with it), `last` tried first: both bodies placed at their scaled poses
     // for this pair alone, with run boxes as the world's placings (the same
     // search, the same witness).
-    meeting scaled_within(const record& r, const meeting& last, bool* by_witness, witness_preference prefer) const {
+    meeting scaled_within(const record& r, const meeting& last, bool* by_witness, witness_preference prefer,
+                          bool* in_exact) const {
         const body_view<NT> a = scaled_view(r.bodies.first, r.shift, nullptr),
                             b = scaled_view(r.bodies.second, r.shift, nullptr);
         placed_polygon<NT> pa(*a.shape, a.pose), pb(*b.shape, b.pose);
         pa.make_run_bounds();
         pb.make_run_bounds();
         return bodies_within<NT, Exact>(last, {a.shape, a.pose, a.scale, &pa}, {b.shape, b.pose, b.scale, &pb},
-                                        scaled_length(options_.within, r.shift), by_witness, prefer);
+                                        scaled_length(options_.within, r.shift), by_witness, prefer, in_exact);
     }
 
     // The bodies of the candidates `which` placed at their poses, each
@@ -875,8 +878,8 @@ private:
                 const witness_preference prefer = steady ? witness_preference::edges : witness_preference::cheapest;
                 r.shown = r.shift == 0
                               ? bodies_within<NT, Exact>(contained, view(r.bodies.first), view(r.bodies.second),
-                                                         options_.within, &r.by_witness, prefer)
-                              : scaled_within(r, contained, &r.by_witness, prefer);
+                                                         options_.within, &r.by_witness, prefer, &r.in_exact)
+                              : scaled_within(r, contained, &r.by_witness, prefer, &r.in_exact);
                 if (!r.shown) r.part(was);
                 const bool located = r.shown && r.shown.how != meeting::kind::edges;
                 r.no_crossing = located && (r.by_witness || prefer == witness_preference::edges);
@@ -892,6 +895,7 @@ private:
             stats_.separated += r.by_witness && r.apart ? 1 : 0;
             stats_.found_apart += !r.by_witness && r.apart && r.sought ? 1 : 0;
             stats_.nearby_edges += r.nearby ? 1 : 0;
+            stats_.exact_pairs += r.in_exact ? 1 : 0;
         }
     }
 
