@@ -462,3 +462,19 @@ def test_world_contacts_refuses_a_bad_table_naming_the_row(change, message):
     with pytest.raises(influence2d.InvalidInput) as e:
         influence2d.world_contacts(["POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))"], bad_table(change))
     assert message in str(e.value), str(e.value)
+
+
+def test_statistics_count_the_pairs_answered_in_exact_rationals():
+    # Unit squares turned by 0.3, the second at (cos 0.3, sin 0.3): its left
+    # edge lies exactly on the first's right edge, which double cannot
+    # settle; certified answers the pair again in exact rationals.
+    c, s = math.cos(0.3), math.sin(0.3)
+    poses = np.array([[0.0, 0.0, 0.3], [c, s, 0.3], [4 * c, 4 * s, 0.3]])
+    for number_type, exact_pairs in (("certified", 1), ("exact", 0), ("double", 0)):
+        w = influence2d.World(number_type)
+        w.add_bodies([w.add_shape("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))")] * 3, poses)
+        if number_type != "double":
+            assert as_pairs(w.step()) == [(0, 1)]
+        else:
+            w.step()
+        assert w.statistics["exact_pairs"] == exact_pairs, number_type
