@@ -240,6 +240,8 @@ class _Plan:
 
 
 def _integers(frame, column, least=0):
+    """The table's column as int64, refused unless of an integer dtype with
+    every value from ``least`` to 2^63 - 1."""
     values = frame[column].to_numpy()
     if values.dtype.kind not in "iu":
         raise InvalidInput(f"steps, column {column}: expected integers, got dtype {values.dtype}")
