@@ -2,16 +2,20 @@
 // The box tree's joins (world/box_tree.hpp) against every pair of boxes
 // tested directly: self_join and join find each meeting pair once, and so do
 // their parts (self_join_parts, join_parts) however finely they are cut.
-// Random boxes of mixed sizes, points, empty boxes and repeated boxes.
+// Random boxes of mixed sizes, points, empty boxes and repeated boxes. The
+// Hilbert positions the boxes are ordered by (world/hilbert_curve.hpp)
+// against the curve's properties and its level-by-level walk.
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <utility>
 #include <vector>
 
 #include "influence2d/world/box_tree.hpp"
+#include "influence2d/world/hilbert_curve.hpp"
 #include "support/effort.hpp"
 #include "support/random.hpp"
 
@@ -123,4 +127,63 @@ TEST_CASE("box_tree: an empty tree has no parts", "[box_tree]") {
     for (const box_tree::join_part& p : parts)
         one.join_part_pairs(p, one, [&](std::uint32_t, std::uint32_t) { ++found; });
     CHECK(found == 0);
+}
+
+namespace {
+
+/// The classic rotate-and-flip walk of the Hilbert curve, one level at a
+/// time (the definition hilbert_position's table steps are made from).
+std::uint32_t walked_position(std::uint32_t x, std::uint32_t y) {
+    std::uint32_t d = 0;
+    for (std::uint32_t s = 1u << 15; s > 0; s >>= 1) {
+        const std::uint32_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
+        d += s * s * ((3 * rx) ^ ry);
+        if (ry == 0) {
+            if (rx == 1) {
+                x = s - 1 - (x & (s - 1)) + (x & ~(s - 1));
+                y = s - 1 - (y & (s - 1)) + (y & ~(s - 1));
+            }
+            std::swap(x, y);
+        }
+    }
+    return d;
+}
+
+}  // namespace
+
+TEST_CASE("hilbert_position: the walk's positions, consecutive cells neighbours", "[box_tree]") {
+    // Every aligned block of 256 x 256 cells is a run of 65,536 consecutive
+    // positions along the curve, each cell next to the one before it.
+    for (const auto& [x0, y0] : std::vector<std::pair<std::uint32_t, std::uint32_t>>{
+             {0, 0}, {65280, 65280}, {256 * 97, 256 * 160}, {0, 65280}, {65280, 0}}) {
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> at(65536, {0xffffffffu, 0});
+        std::uint32_t first = 0xffffffffu;
+        for (std::uint32_t x = x0; x < x0 + 256; ++x)
+            for (std::uint32_t y = y0; y < y0 + 256; ++y) first = std::min(first, hilbert_position(x, y));
+        REQUIRE(first % 65536 == 0);
+        for (std::uint32_t x = x0; x < x0 + 256; ++x)
+            for (std::uint32_t y = y0; y < y0 + 256; ++y) {
+                const std::uint32_t k = hilbert_position(x, y) - first;
+                REQUIRE(k < 65536);
+                REQUIRE(at[k].first == 0xffffffffu);  // each position once
+                at[k] = {x, y};
+            }
+        for (std::size_t k = 1; k < at.size(); ++k) {
+            const auto dx = static_cast<long>(at[k].first) - static_cast<long>(at[k - 1].first);
+            const auto dy = static_cast<long>(at[k].second) - static_cast<long>(at[k - 1].second);
+            REQUIRE(std::abs(dx) + std::abs(dy) == 1);
+        }
+    }
+    // The same positions as the walk, level by level, over the whole grid.
+    test_random::rng g(16);
+    for (int k = 0; k < 200000; ++k) {
+        const auto x = static_cast<std::uint32_t>(g.uniform(0, 65536)),
+                   y = static_cast<std::uint32_t>(g.uniform(0, 65536));
+        REQUIRE(hilbert_position(x, y) == walked_position(x, y));
+    }
+    for (std::uint32_t v = 0; v < 65536; ++v)
+        for (const std::uint32_t w : {0u, 1u, 32767u, 32768u, 65535u}) {
+            REQUIRE(hilbert_position(v, w) == walked_position(v, w));
+            REQUIRE(hilbert_position(w, v) == walked_position(w, v));
+        }
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "influence2d/core/box.hpp"
+#include "influence2d/world/hilbert_curve.hpp"
 
 namespace influence2d {
 
@@ -60,7 +61,7 @@ public:
             if (where[ids[k]] != absent) next.push_back({boxes[k], ids[k], 0});
         for (entry& e : next) {
             const point<double> c = e.bounds.centre();
-            e.key = curve_position(quantized(c.x, centres.min_x, sx), quantized(c.y, centres.min_y, sy));
+            e.key = hilbert_position(quantized(c.x, centres.min_x, sx), quantized(c.y, centres.min_y, sy));
         }
         sort_by_key(next);
         entries_ = std::move(next);
@@ -230,26 +231,6 @@ private:
         if (!(q > 0)) return 0;  // (NaN too)
         return q >= 65535 ? 65535u : static_cast<std::uint32_t>(q);
     }
-    // The position of cell (x, y) along a Hilbert curve over 2^16 x 2^16
-    // cells (the classic rotate-and-flip walk, one bit of each coordinate per
-    // level). Unlike a Z-order curve, consecutive cells are always
-    // neighbours, so runs of entries stay compact and the nodes' boxes small.
-    static std::uint32_t curve_position(std::uint32_t x, std::uint32_t y) {
-        std::uint32_t d = 0;
-        for (std::uint32_t s = 1u << 15; s > 0; s >>= 1) {
-            const std::uint32_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
-            d += s * s * ((3 * rx) ^ ry);
-            if (ry == 0) {  // rotate the quadrant
-                if (rx == 1) {
-                    x = s - 1 - (x & (s - 1)) + (x & ~(s - 1));
-                    y = s - 1 - (y & (s - 1)) + (y & ~(s - 1));
-                }
-                std::swap(x, y);
-            }
-        }
-        return d;
-    }
-
     // Insertion sort while it stays cheap (at most 8 moves per entry on
     // average: the entries were nearly in order), else a radix sort. A
     // first pass counts the descents: entries out of order in more than an
