@@ -3,8 +3,9 @@
 // of verification/world_scenes.hpp and each body count, every method steps
 // through the same poses (posing included for every method), the methods
 // interleaved step by step in a rotating order; the time per step is the
-// median over the steps after the first (which builds what each method
-// keeps). Every method's pairs are compared with the certified world's
+// mean over the steps after the first (which builds what each method keeps),
+// so that the steps that rebuild a tree count as often as they come; the
+// median step is shown beside it. Every method's pairs are compared with the certified world's
 // (exact) at every step. Real layers (--layers DIR, from
 // scripts/real_layers.sh): all meeting pairs of each layer, the methods
 // interleaved over repeated runs, medians. A program of its own because it
@@ -120,6 +121,12 @@ std::vector<method> methods_for(const world_scene& s) {
     return m;
 }
 
+double mean(const std::vector<double>& v) {
+    double sum = 0;
+    for (double x : v) sum += x;
+    return v.empty() ? 0 : sum / static_cast<double>(v.size());
+}
+
 double median(std::vector<double> v) {
     if (v.empty()) return 0;
     std::sort(v.begin(), v.end());
@@ -137,7 +144,8 @@ struct row {
     std::string scene;
     std::size_t bodies = 0;
     std::string method;
-    double step_us = 0;        // median time per step after the first
+    double step_us = 0;        // time per step: the mean over the steps after the first
+    double median_us = 0;      // the median of those steps
     double first_ms = 0;       // the first step
     double contacts = 0;       // mean contacts per step
     std::size_t wrong = 0;     // pairs differing from the certified world's, over all steps
@@ -170,6 +178,7 @@ std::vector<row> run_scene(const std::string& name, std::size_t bodies, std::siz
         row r{name,
               s.steps.front().size(),
               methods[m].name,
+              mean(seconds[m]) * 1e6,
               median(seconds[m]) * 1e6,
               first[m] * 1e3,
               static_cast<double>(contacts[m]) / static_cast<double>(s.steps.size()),
@@ -276,7 +285,7 @@ std::vector<row> run_layer(const std::string& path, const std::string& name, int
         }
     std::vector<row> out;
     for (std::size_t m = 0; m < n; ++m)
-        out.push_back({name, layer.size(), methods[m].first, median(seconds[m]) * 1e6, 0,
+        out.push_back({name, layer.size(), methods[m].first, median(seconds[m]) * 1e6, median(seconds[m]) * 1e6, 0,
                        static_cast<double>(answers[m].size()), differences(answers[m], answers[0]), 0});
 #if INFLUENCE2D_HAVE_GEOS
     for (GEOSGeometry* g : gg) GEOSGeom_destroy_r(geos->ctx, g);
@@ -296,9 +305,9 @@ std::string number(double x, int digits) {
 /// ratio to the fastest peer.
 std::string table(const std::vector<row>& rows) {
     std::string t =
-        "| scene | bodies | method | time per step (us) | first step (ms) | contacts per step | x fastest peer | wrong "
-        "pairs | heap (KiB) |\n"
-        "|---|---:|---|---:|---:|---:|---:|---:|---:|\n";
+        "| scene | bodies | method | time per step (us) | median step (us) | first step (ms) | contacts per step | x "
+        "fastest peer | wrong pairs | heap (KiB) |\n"
+        "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|\n";
     std::map<std::pair<std::string, std::size_t>, double> fastest_peer;
     const auto is_peer = [](const std::string& m) {
         return m.find("GEOS") != std::string::npos || m.find("Boost") != std::string::npos ||
@@ -312,7 +321,7 @@ std::string table(const std::vector<row>& rows) {
     for (const row& r : rows) {
         const double f = fastest_peer[{r.scene, r.bodies}];
         t += "| " + r.scene + " | " + std::to_string(r.bodies) + " | " + r.method + " | " + number(r.step_us, 1) +
-             " | " + number(r.first_ms, 2) + " | " + number(r.contacts, 1) + " | " +
+             " | " + number(r.median_us, 1) + " | " + number(r.first_ms, 2) + " | " + number(r.contacts, 1) + " | " +
              (f > 0 && r.step_us > 0 ? number(f / r.step_us, 2) : std::string("-")) + " | " + std::to_string(r.wrong) +
              " | " + (r.heap_kib ? std::to_string(r.heap_kib) : std::string("-")) + " |\n";
     }
@@ -320,11 +329,11 @@ std::string table(const std::vector<row>& rows) {
 }
 
 std::string csv(const std::vector<row>& rows) {
-    std::string t = "scene,bodies,method,step_us,first_ms,contacts,wrong,heap_kib\n";
+    std::string t = "scene,bodies,method,step_us,first_ms,contacts,wrong,heap_kib,median_step_us\n";
     for (const row& r : rows)
         t += r.scene + "," + std::to_string(r.bodies) + ",\"" + r.method + "\"," + number(r.step_us, 3) + "," +
              number(r.first_ms, 3) + "," + number(r.contacts, 2) + "," + std::to_string(r.wrong) + "," +
-             std::to_string(r.heap_kib) + "\n";
+             std::to_string(r.heap_kib) + "," + number(r.median_us, 3) + "\n";
     return t;
 }
 
@@ -449,8 +458,10 @@ void run(const bench_options& o) {
         write_output(o.out + "/world.md",
                      "# The world's time study\n\nMade by `influence2d-world-bench" +
                          std::string(o.quick ? " --quick" : "") +
-                         "`: time per step (median over the steps after the first), the methods interleaved step by "
-                         "step; `x fastest peer` is the fastest peer's time over the method's (above 1: faster); "
+                         "`: time per step (the mean over the steps after the first, so that a step that rebuilds a "
+                         "tree counts as often as it comes; the median step beside it; a layer's join: the median of "
+                         "its runs in both), the methods interleaved step by step; `x fastest peer` is the fastest "
+                         "peer's time per step over the method's (above 1: faster); "
                          "`wrong pairs` counts the pairs that differ from the certified world's over all steps.\n\n" +
                          text + "\n![time per step](world_time.png)\n");
         write_output(o.out + "/world.csv", csv(rows));

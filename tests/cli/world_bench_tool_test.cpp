@@ -22,7 +22,7 @@ TEST_CASE("cli world bench: every scene, every method, the answers compared", "[
     REQUIRE(r.exit_code == 0);
     CHECK(r.out.find("coherence, ") != std::string::npos);
     const std::string csv = slurp(dir / "out" / "world.csv");
-    REQUIRE(csv.rfind("scene,bodies,method,step_us,first_ms,contacts,wrong,heap_kib\n", 0) == 0);
+    REQUIRE(csv.rfind("scene,bodies,method,step_us,first_ms,contacts,wrong,heap_kib,median_step_us\n", 0) == 0);
     std::istringstream lines(csv);
     std::string line;
     std::getline(lines, line);
@@ -30,7 +30,7 @@ TEST_CASE("cli world bench: every scene, every method, the answers compared", "[
     std::size_t rows = 0;
     while (std::getline(lines, line)) {
         ++rows;
-        // scene,bodies,"method",step_us,first_ms,contacts,wrong,heap_kib
+        // scene,bodies,"method",step_us,first_ms,contacts,wrong,heap_kib,median_step_us
         const std::size_t q1 = line.find('"'), q2 = line.find('"', q1 + 1);
         REQUIRE(q2 != std::string::npos);
         const std::string scene = line.substr(0, line.find(','));
@@ -38,7 +38,7 @@ TEST_CASE("cli world bench: every scene, every method, the answers compared", "[
         std::vector<std::string> rest;
         std::istringstream fields(line.substr(q2 + 2));
         for (std::string f; std::getline(fields, f, ',');) rest.push_back(f);
-        REQUIRE(rest.size() == 5);
+        REQUIRE(rest.size() == 6);
         INFO(line);
         if (method == "certified") contacts[scene] = std::stod(rest[2]);
         // The library's worlds and the peers agree with the certified world
