@@ -11,6 +11,11 @@
    prepared once with shapely.prepared.prep, then intersects.
 3. pairs on a layer against shapely's STRtree query plus intersects on
    each candidate, per layer and per pair found.
+4. A World of many drifting bodies stepped from Python (move every body,
+   step) against the tool's own timed step loop on the same scene
+   (`influence2d world`, its "time per step" line), and against shapely:
+   every body posed with affine_transform, an STRtree of the posed bodies
+   and intersects on each candidate pair, per step.
 
 Each figure is the median of --repeats runs. Run it alone on the machine:
 
@@ -131,8 +136,10 @@ def main():
     p.add_argument("--layer-size", type=int, default=10_000)
     p.add_argument("--repeats", type=int, default=5)
     p.add_argument("--number-type", default="certified")
-    p.add_argument("--parts", default="overhead,shapely,pairs",
-                   help="which measurements, comma-separated (default: all three)")
+    p.add_argument("--bodies", type=int, default=2_000, help="bodies of the world (4.)")
+    p.add_argument("--steps", type=int, default=40, help="steps of the world (4.; shapely runs a tenth of them)")
+    p.add_argument("--parts", default="overhead,shapely,pairs,world",
+                   help="which measurements, comma-separated (default: all four)")
     o = p.parse_args()
     rng = np.random.default_rng(20240601)
     threads = os.cpu_count()
@@ -154,6 +161,8 @@ def main():
         measure_shapely(o, a, b, a_geom, b_geom, poses, threads)
     if "pairs" in parts:
         measure_pairs(o, rng, threads)
+    if "world" in parts:
+        measure_world(o, rng)
 
 
 def measure_overhead(o, a, b, poses, threads):
@@ -200,6 +209,94 @@ def measure_pairs(o, rng, threads):
           f"influence2d {t_ours1 * 1e3:.1f} ms on 1 thread ({t_tree / t_ours1:.1f}x), {t_ours * 1e3:.1f} ms on "
           f"{threads} ({t_tree / t_ours:.1f}x, {t_ours / max(k, 1) * 1e6:.2f} us/pair); from shapely geometries "
           f"(WKB read included) {t_convert * 1e3:.1f} ms")
+
+
+def drifting_scene(count, steps, rng):
+    """Star bodies (8 to 24 vertices, 8 shapes) on a jittered grid, each
+    drifting at its own small velocity and turn rate: the poses of every
+    body at every step, (steps, count, 3)."""
+    side = int(math.ceil(math.sqrt(count)))
+    shapes = []
+    for _ in range(8):
+        n = int(rng.integers(8, 25))
+        angles = np.sort(rng.uniform(0, 2 * math.pi, n))
+        radii = rng.uniform(0.35, 0.7, n)
+        shapes.append(shapely.geometry.Polygon(np.column_stack([radii * np.cos(angles), radii * np.sin(angles)])))
+    kind = rng.integers(0, len(shapes), count)
+    start = np.column_stack([np.arange(count) % side + rng.uniform(-0.2, 0.2, count),
+                             np.arange(count) // side + rng.uniform(-0.2, 0.2, count),
+                             rng.uniform(-math.pi, math.pi, count)])
+    velocity = np.column_stack([rng.uniform(-0.01, 0.01, count), rng.uniform(-0.01, 0.01, count),
+                                rng.uniform(-0.02, 0.02, count)])
+    poses = start[None, :, :] + np.arange(steps)[:, None, None] * velocity[None, :, :]
+    return shapes, kind, np.ascontiguousarray(poses)
+
+
+def world_run(shapes, kind, poses, number_type):
+    """The contacts of every step of a World stepped from Python."""
+    w = influence2d.World(number_type)
+    w.add_shapes(shapes)
+    ids = w.add_bodies(kind, poses[0])
+    found = [w.step()]
+    for k in range(1, len(poses)):
+        w.move(ids, poses[k])
+        found.append(w.step())
+    return found
+
+
+def tool_seconds_per_step(tool, shapes, kind, poses, number_type, directory, repeats):
+    with open(os.path.join(directory, "shapes.wkt"), "w") as f:
+        f.writelines(g.wkt + "\n" for g in shapes)
+    with open(os.path.join(directory, "steps.csv"), "w") as f:
+        f.write("step,body,shape,tx,ty,theta\n")
+        for k, step in enumerate(poses.tolist()):
+            f.writelines(f"{k},{b},{kind[b]},{tx!r},{ty!r},{th!r}\n" for b, (tx, ty, th) in enumerate(step))
+    per_step = []
+    for _ in range(repeats):
+        out = subprocess.run([tool, "world", "--shapes", os.path.join(directory, "shapes.wkt"), "--steps",
+                              os.path.join(directory, "steps.csv"), "--number-type", number_type], capture_output=True,
+                             text=True, check=True)
+        m = re.search(r"^time per step:\s*([0-9.eE+-]+) us", out.stdout, re.M)
+        if not m:
+            raise SystemExit("no 'time per step' line in the tool's output:\n" + out.stdout)
+        per_step.append(float(m.group(1)) * 1e-6)
+    return statistics.median(per_step)
+
+
+def shapely_step(shapes, kind, poses):
+    """One step in shapely: every body posed, an STRtree of them, each
+    candidate pair (i < j) tested."""
+    posed = [shapely.affinity.affine_transform(shapes[k], [math.cos(t), -math.sin(t), math.sin(t), math.cos(t), x, y])
+             for k, (x, y, t) in zip(kind.tolist(), poses.tolist())]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        tree = shapely.strtree.STRtree(posed)
+    index = {id(g): k for k, g in enumerate(posed)}
+    found = []
+    for i, g in enumerate(posed):
+        for h in tree.query(g):
+            j = index[id(h)]
+            if j > i and g.intersects(h):
+                found.append((i, j))
+    return sorted(found)
+
+
+def measure_world(o, rng):
+    """4. A World stepped from Python, against the tool and shapely."""
+    shapes, kind, poses = drifting_scene(o.bodies, o.steps, rng)
+    found = world_run(shapes, kind, poses, o.number_type)
+    t_py = median_seconds(lambda: world_run(shapes, kind, poses, o.number_type), o.repeats) / len(poses)
+    with tempfile.TemporaryDirectory() as d:
+        t_tool = tool_seconds_per_step(o.tool, shapes, kind, poses, o.number_type, d, o.repeats)
+    few = max(1, len(poses) // 10)
+    t_shp = median_seconds(lambda: [shapely_step(shapes, kind, p) for p in poses[:few]], max(1, o.repeats // 2)) / few
+    same = sum(shapely_step(shapes, kind, poses[k]) == sorted(map(tuple, found[k].tolist())) for k in range(few))
+    contacts = sum(len(f) for f in found) / len(found)
+    print(f"world, {o.bodies} bodies drifting, {len(poses)} steps, {contacts:.0f} contacts a step: python (move all, "
+          f"step) {t_py * 1e6:.1f} us/step, C++ (the tool's step loop) {t_tool * 1e6:.1f} us/step, overhead "
+          f"{100 * (t_py / t_tool - 1):+.1f}%; shapely (affine_transform, STRtree, intersects) {t_shp * 1e3:.2f} "
+          f"ms/step ({t_shp / t_py:.1f}x); same contacts as shapely in {same} of {few} steps")
+
 
 if __name__ == "__main__":
     sys.exit(main())
