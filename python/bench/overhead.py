@@ -266,19 +266,9 @@ def tool_seconds_per_step(tool, shapes, kind, poses, number_type, directory, rep
 def shapely_step(shapes, kind, poses):
     """One step in shapely: every body posed, an STRtree of them, each
     candidate pair (i < j) tested."""
-    posed = [shapely.affinity.affine_transform(shapes[k], [math.cos(t), -math.sin(t), math.sin(t), math.cos(t), x, y])
-             for k, (x, y, t) in zip(kind.tolist(), poses.tolist())]
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        tree = shapely.strtree.STRtree(posed)
-    index = {id(g): k for k, g in enumerate(posed)}
-    found = []
-    for i, g in enumerate(posed):
-        for h in tree.query(g):
-            j = index[id(h)]
-            if j > i and g.intersects(h):
-                found.append((i, j))
-    return sorted(found)
+    return strtree_pairs([shapely.affinity.affine_transform(shapes[k], [math.cos(t), -math.sin(t), math.sin(t),
+                                                                        math.cos(t), x, y])
+                          for k, (x, y, t) in zip(kind.tolist(), poses.tolist())])
 
 
 def measure_world(o, rng):

@@ -45,6 +45,9 @@ enum class number_kind { double_type, certified_type, exact_type };
 /// invalid_input naming it otherwise.
 number_kind number_kind_of(const std::string& name);
 
+/// An array's shape as numpy writes it: (4, 2), (4,).
+std::string shape_text(const py::array& a);
+
 /// An (n, 3) float64 C-contiguous array of poses (tx, ty, theta) read in
 /// place, checked: shape, dtype, layout, every component finite. Throws
 /// invalid_input naming `what` and the first bad row and component.

@@ -30,13 +30,16 @@ unsigned threads_of(long threads) {
 // A pose is three doubles, so that a row of the array is one.
 static_assert(sizeof(pose) == 3 * sizeof(double) && alignof(pose) == alignof(double));
 
+std::string shape_text(const py::array& a) {
+    std::string s;
+    for (py::ssize_t d = 0; d < a.ndim(); ++d) s += (d ? ", " : "") + std::to_string(a.shape(d));
+    return "(" + s + (a.ndim() == 1 ? ",)" : ")");
+}
+
 pose_rows pose_rows_of(const py::array& poses, const char* what) {
-    std::string shape;
-    for (py::ssize_t d = 0; d < poses.ndim(); ++d) shape += (d ? ", " : "") + std::to_string(poses.shape(d));
-    if (poses.ndim() == 1) shape += ",";
     if (poses.ndim() != 2 || poses.shape(1) != 3)
-        throw invalid_input(std::string(what) + ": expected an array of shape (n, 3) (tx, ty, theta), got shape (" +
-                            shape + ")");
+        throw invalid_input(std::string(what) + ": expected an array of shape (n, 3) (tx, ty, theta), got shape " +
+                            shape_text(poses));
     if (!poses.dtype().equal(py::dtype::of<double>()))
         throw invalid_input(std::string(what) + ": expected dtype float64, got " + std::string(py::str(poses.dtype())));
     if (!(poses.flags() & py::array::c_style))

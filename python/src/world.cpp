@@ -4,10 +4,12 @@
 // (bodies added, moved, removed) is checked whole before the world changes,
 // so a refused call leaves it as it was; a step runs with the GIL released.
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <pybind11/stl.h>
@@ -61,12 +63,6 @@ std::unique_ptr<world_source> make_world(number_kind kind, const world_options& 
 
 /// An (n,) int64 C-contiguous array of ids, read in place.
 using id_array = py::array_t<std::int64_t, py::array::c_style>;
-
-std::string shape_text(const py::array& a) {
-    std::string s;
-    for (py::ssize_t d = 0; d < a.ndim(); ++d) s += (d ? ", " : "") + std::to_string(a.shape(d));
-    return "(" + s + (a.ndim() == 1 ? ",)" : ")");
-}
 
 /// The ids of `a` (1-D), checked against `count` ids in all.
 const std::int64_t* ids_of(const id_array& a, const char* what, std::size_t count, const char* kind) {
@@ -258,19 +254,28 @@ private:
     }
 
     // The ids of `bodies`, each a body alive and listed once (the caller
-    // holds the mutex).
+    // holds the mutex); the first refused place, in order, is named. The
+    // repeats are found among the listed ids sorted (O(k log k) for k ids,
+    // whatever the number of bodies).
     const std::int64_t* live_ids(const id_array& bodies, const char* what) {
         const std::int64_t* b = ids_of(bodies, what, alive_.size(), "body");
-        std::vector<std::int64_t> seen(alive_.size(), -1);
-        for (py::ssize_t k = 0; k < bodies.shape(0); ++k) {
-            const auto i = static_cast<std::size_t>(b[k]);
-            if (!alive_[i])
+        const py::ssize_t n = bodies.shape(0);
+        std::vector<std::pair<std::int64_t, py::ssize_t>> sorted(static_cast<std::size_t>(n));
+        for (py::ssize_t k = 0; k < n; ++k) sorted[static_cast<std::size_t>(k)] = {b[k], k};
+        std::sort(sorted.begin(), sorted.end());
+        py::ssize_t repeat = n, before = 0;  // the first place whose id came before, and that earlier place
+        for (std::size_t m = 1; m < sorted.size(); ++m)
+            if (sorted[m].first == sorted[m - 1].first && sorted[m].second < repeat) {
+                repeat = sorted[m].second;
+                before = sorted[m - 1].second;
+            }
+        for (py::ssize_t k = 0; k < n; ++k) {
+            if (!alive_[static_cast<std::size_t>(b[k])])
                 throw invalid_input(std::string(what) + "[" + std::to_string(k) + "] is " + std::to_string(b[k]) +
                                     ": the body was removed");
-            if (seen[i] >= 0)
+            if (k == repeat)
                 throw invalid_input(std::string(what) + "[" + std::to_string(k) + "] is " + std::to_string(b[k]) +
-                                    ", listed already at [" + std::to_string(seen[i]) + "]");
-            seen[i] = k;
+                                    ", listed already at [" + std::to_string(before) + "]");
         }
         return b;
     }
