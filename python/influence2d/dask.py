@@ -2,10 +2,9 @@
 """The work that outgrows one machine, on Dask's distributed scheduler: the
 audit of a layer in chunks, the layer join partitioned by boxes, the
 precision study split by scenes, a world's steps split into runs; each on a
-``distributed.Client`` (a
-LocalCluster, or a real cluster by its scheduler address,
-``Client("tcp://scheduler:8786")``), each with the same result as the
-single-process call of the package.
+``distributed.Client`` (a LocalCluster, or a real cluster by its scheduler
+address, ``Client("tcp://scheduler:8786")``), each with the same result as
+the single-process call of the package.
 
 The workers import ``influence2d`` themselves: it must be installed (or on
 their PYTHONPATH) where they run. Polygons pickle, so the partitions are
@@ -462,9 +461,9 @@ def world_contacts(shapes, steps, client, number_type="certified", within=0.0, e
     (default: two per worker thread), one task each, on ``threads``
     threads of a worker. A run after the first starts with every body where
     the earlier steps left it (one step made of their last rows), so its
-    contacts and events are those of the single run: the world's answer to a
-    step depends only on its bodies' poses. The shapes are sent to the
-    workers once.
+    contacts and events are those of the single run: in "certified" and
+    "exact" the world's answer to a step is the exact one for its bodies'
+    poses, whatever came before. The shapes are sent to the workers once.
 
     >>> from distributed import Client, LocalCluster
     >>> import pandas as pd, influence2d.dask
@@ -478,7 +477,6 @@ def world_contacts(shapes, steps, client, number_type="certified", within=0.0, e
        step  a  b  event
     0     2  1  2  begin
     """
-    import pandas as pd
     client = _client(client)
     threads = _count(threads, "threads", least=0)
     count = max(1, 2 * sum(client.nthreads().values())) if parts is None else _count(parts, "parts")
