@@ -222,9 +222,10 @@ STEP_COLUMNS = ("step", "body", "shape", "tx", "ty", "theta")
 
 
 class _Plan:
-    """A table of steps, checked: its columns as arrays, each body's
-    internal id (in order of first appearance), whether each row adds its
-    body, and where each step's rows begin."""
+    """A table of steps: its columns as arrays, each body's internal id (in
+    order of first appearance), the row where each row's body first
+    appears, whether each row adds its body, and where each step's rows
+    begin."""
 
     def __init__(self, step, body, shape, poses, fixed):
         self.step, self.body, self.shape, self.poses, self.fixed = step, body, shape, poses, fixed
@@ -234,7 +235,8 @@ class _Plan:
         rank[order] = np.arange(len(users))
         self.internal = rank[inverse]
         self.user_of = users[order]
-        self.adds = first[inverse] == np.arange(len(body))
+        self.first_row = first[inverse]
+        self.adds = self.first_row == np.arange(len(body))
         self.starts = np.concatenate(([0], np.flatnonzero(np.diff(step)) + 1)).astype(np.int64)[:len(step)]
         self.ends = np.concatenate((self.starts[1:], [len(step)])).astype(np.int64)[:len(self.starts)]
 
@@ -304,14 +306,14 @@ def _plan_of(steps, shape_count):
     if len(twice):
         k, was = order[twice[0] + 1], order[twice[0]]
         raise InvalidInput(f"steps, row {k}: body {body[k]} is listed twice in step {step[k]} (also row {was})")
-    _, first, inverse = np.unique(body, return_index=True, return_inverse=True)
+    plan = _Plan(step, body, shape, np.ascontiguousarray(poses), fixed)
     for name, values, what in (("shape", shape, "keeps its shape"), ("fixed", fixed, "stays fixed or free")):
-        bad = np.flatnonzero(values != values[first[inverse]])
+        bad = np.flatnonzero(values != values[plan.first_row])
         if len(bad):
-            k = bad[0]
-            raise InvalidInput(f"steps, row {k}, column {name}: body {body[k]} has {name} {values[first[inverse[k]]]} "
-                               f"since row {first[inverse[k]]}, not {values[k]}: a body {what}")
-    return _Plan(step, body, shape, np.ascontiguousarray(poses), fixed)
+            k, was = bad[0], plan.first_row[bad[0]]
+            raise InvalidInput(f"steps, row {k}, column {name}: body {body[k]} has {name} {values[was]} since row "
+                               f"{was}, not {values[k]}: a body {what}")
+    return plan
 
 
 def _play(polygons, plan, number_type, within, events, threads, skip_first=False):
