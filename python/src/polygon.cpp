@@ -37,8 +37,8 @@ py_polygon from_wkb(const py::bytes& data, const std::string& source) {
 std::vector<std::int64_t> offsets_of(const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& a,
                                      const char* name, std::int64_t limit) {
     if (a.ndim() != 1 || a.shape(0) < 2)
-        throw invalid_input(std::string(name) + ": expected a 1-D array of at least 2 offsets, got shape (" +
-                            (a.ndim() >= 1 ? std::to_string(a.shape(0)) : std::string()) + ")");
+        throw invalid_input(std::string(name) + ": expected a 1-D array of at least 2 offsets, got shape " +
+                            shape_text(a));
     std::vector<std::int64_t> o(a.data(), a.data() + a.shape(0));
     for (std::size_t k = 0; k < o.size(); ++k) {
         if (o[k] < 0 || o[k] > limit)
@@ -60,11 +60,8 @@ py_polygon from_coords(const py::array& coords,
                        const py::object& polygon_offsets) {
     if (!coords.dtype().equal(py::dtype::of<double>()))
         throw invalid_input("coords: expected float64 coordinates, got dtype " + std::string(py::str(coords.dtype())));
-    if (coords.ndim() != 2 || coords.shape(1) != 2) {
-        std::string shape;
-        for (py::ssize_t d = 0; d < coords.ndim(); ++d) shape += (d ? ", " : "") + std::to_string(coords.shape(d));
-        throw invalid_input("coords: expected an array of shape (n, 2), got shape (" + shape + ")");
-    }
+    if (coords.ndim() != 2 || coords.shape(1) != 2)
+        throw invalid_input("coords: expected an array of shape (n, 2), got shape " + shape_text(coords));
     const auto n = static_cast<std::int64_t>(coords.shape(0));
     const char* base = static_cast<const char*>(coords.data());
     const py::ssize_t s0 = coords.strides(0), s1 = coords.strides(1);

@@ -172,6 +172,21 @@ TEST_CASE("adapters: standard and own point types give the hand-built polygon, o
     CHECK(cw.source_edge(0) != 0);
 }
 
+TEST_CASE("adapters: only a closing repetition is dropped, not a repeat of the first point before it", "[adapters]") {
+    // Closed, with the first point repeated once before the closing one: the
+    // repeat stays as a zero-length edge, as any other repeated point does.
+    std::vector<xy> ring = closed(outer_square);
+    ring.push_back(outer_square[0]);
+    const polygon p = make_polygon(ring);
+    REQUIRE(p.size() == 5);
+    CHECK(p.vertex(4) == p.vertex(0));
+    polygon_builder b;
+    b.add_outer(ring);
+    REQUIRE(b.rings().size() == 1);
+    CHECK(b.rings()[0].vertices.size() == ring.size());
+    require_same(b.build(), p);
+}
+
 TEST_CASE("adapters: holes and several outer rings", "[adapters]") {
     const std::vector<std::vector<xy>> holes{closed(square_hole)};
     require_same(make_polygon(outer_square, holes), hand_square_with_hole());

@@ -208,6 +208,27 @@ TEST_CASE("wkt: to_wkt round-trips exactly with closed rings in stored orientati
     CHECK(m2.role(2) == ring_role::outer);
 }
 
+TEST_CASE("wkt: only the closing point is dropped, and a first vertex repeated before it stays an edge", "[io][wkt]") {
+    // The text's ring has five points, the last the closing one: four
+    // vertices, the fourth equal to the first (a zero-length edge 3 -> 0).
+    // Dropping the repeat as well would renumber the edges, and the text
+    // written back would read back one vertex shorter.
+    for (const char* text : {"POLYGON((0 0,1 0,0 1,0 0,0 0))", "MULTIPOLYGON(((0 0,1 0,0 1,0 0,0 0)))"}) {
+        INFO(text);
+        const polygon p = read_wkt(text);
+        REQUIRE(p.size() == 4);
+        CHECK(p.vertex(3) == p.vertex(0));
+        const std::string written = to_wkt(p);
+        CHECK(written == "POLYGON((0 0,1 0,0 1,0 0,0 0))");
+        const polygon q = read_wkt(written);
+        CHECK(q.vertices() == p.vertices());
+    }
+    // Repeated thrice before the closing point: three zero-length edges.
+    const polygon r = read_wkt("POLYGON((0 0,1 0,0 1,0 0,0 0,0 0,0 0))");
+    CHECK(r.size() == 6);
+    CHECK(read_wkt(to_wkt(r)).vertices() == r.vertices());
+}
+
 TEST_CASE("wkt: an empty polygon has no ring and no WKT", "[wkt]") {
     const influence2d::polygon empty;
     CHECK(empty.ring_count() == 0);

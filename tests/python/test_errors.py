@@ -98,7 +98,11 @@ def test_bad_shapely_geometries():
 
 def test_bad_coords():
     xy = np.array([[0, 0], [1, 0], [0, 1], [0, 0]], dtype=np.float64)
-    raises("shape", Polygon.from_coords, np.zeros((4, 3)), [0, 4])
+    raises(r"shape \(n, 2\), got shape \(4, 3\)$", Polygon.from_coords, np.zeros((4, 3)), [0, 4])
+    raises(r"got shape \(8,\)$", Polygon.from_coords, np.zeros(8), [0, 4])
+    raises(r"ring_offsets: expected a 1-D array of at least 2 offsets, got shape \(1,\)$", Polygon.from_coords,
+           xy, [0])
+    raises(r"ring_offsets: .* got shape \(2, 2\)$", Polygon.from_coords, xy, [[0, 4], [0, 4]])
     raises("float64", Polygon.from_coords, xy.astype(np.float32), [0, 4])
     raises(r"ring_offsets\[1\] is 9", Polygon.from_coords, xy, [0, 9])
     raises(r"ring_offsets\[2\] is 1, less than", Polygon.from_coords, xy, [0, 2, 1])

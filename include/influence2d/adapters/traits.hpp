@@ -236,7 +236,6 @@ public:
                                    read(r, k, "y", [&] { return point_traits<P>::y(p); })});
             ++k;
         }
-        if (in.vertices.size() > 1 && in.vertices.front() == in.vertices.back()) in.vertices.pop_back();
         rings_.push_back(std::move(in));
         return *this;
     }
@@ -260,7 +259,8 @@ public:
 
     /// How many rings have been added.
     std::size_t ring_count() const { return rings_.size(); }
-    /// The rings as added so far, closing repetitions dropped.
+    /// The rings as added so far, closing repetitions included (the polygon
+    /// drops them, and only them).
     const std::vector<ring_input>& rings() const { return rings_; }
 
     /// The polygon of the rings added (see the class comment for errors).

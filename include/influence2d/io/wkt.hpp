@@ -165,8 +165,10 @@ inline void check_coordinate_tuples(std::string_view source, const std::string& 
 }
 
 /// Appends ring `index` of the text as a ring_input after checking it:
-/// finite coordinates, closed (first point repeated at the end, which is
-/// dropped), three distinct vertices. An empty ring adds nothing, unless it
+/// finite coordinates, closed (first point repeated at the end), three
+/// distinct vertices. The closing point goes in with the others: polygon
+/// drops it, and only it, so a ring whose last vertex before the closing
+/// point equals the first keeps that vertex as a zero-length edge. An empty ring adds nothing, unless it
 /// is an exterior followed by holes (empty_exterior_with_holes): refused.
 inline void append_ring(std::string_view source, const std::vector<wkt_ring>& read, std::size_t index,
                         std::vector<ring_input>& rings) {
@@ -186,7 +188,7 @@ inline void append_ring(std::string_view source, const std::vector<wkt_ring>& re
                          format_coordinate(b.y) + ")");
     ring_input in;
     in.role = r.role;
-    in.vertices.assign(pts.begin(), pts.end() - 1);
+    in.vertices.assign(pts.begin(), pts.end());
     if (polygon::count_distinct(in.vertices) < 3)
         fail(source, ring_place(index) + ": fewer than three distinct vertices");
     rings.push_back(std::move(in));
