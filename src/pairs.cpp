@@ -83,9 +83,10 @@ void run_pairs(const pairs_cli_options& o) {
         if (two) check_polygon_lines<NT>(in.other, o.other_path);
         // layer_pairs<certified, exact_rational> is certified_layer_pairs.
         std::vector<body_pair> pairs;
+        layer_statistics work;
         const double seconds = seconds_taken([&] {
-            pairs = two ? layer_pairs<NT, Exact>(in.layer.polygons, in.other.polygons, o.within, o.threads)
-                        : layer_pairs<NT, Exact>(in.layer.polygons, o.within, o.threads);
+            pairs = two ? layer_pairs<NT, Exact>(in.layer.polygons, in.other.polygons, o.within, o.threads, &work)
+                        : layer_pairs<NT, Exact>(in.layer.polygons, o.within, o.threads, &work);
         });
         if (!o.out.empty()) write_output(o.out, pairs_csv(pairs));
 
@@ -94,6 +95,7 @@ void run_pairs(const pairs_cli_options& o) {
         if (two) summary << " and " << in.other.polygons.size();
         summary << "\n"
                 << "pairs:         " << pairs.size() << "\n"
+                << "candidates:    " << work.candidates << " (again in exact rationals " << work.exact_pairs << ")\n"
                 << "number type:   " << o.number_type << "\n"
                 << "threads:       " << batch_threads(o.threads) << "\n"
                 << "time: " << fixed(seconds * 1e3, 3) << " ms\n";

@@ -284,6 +284,10 @@ TEST_CASE("cli: pairs finds the touching squares of a layer, of two layers, and 
         CHECK(slurp(out) == grid_pairs(3, 0));
         CHECK(r.out.find("polygons:      10\npairs:         20\n") != std::string::npos);
         CHECK(r.out.find("\ntime: ") != std::string::npos);
+        // The candidates: the pairs of squares whose boxes meet, 20 (the
+        // far square's box meets none).
+        CHECK(r.out.find("\ncandidates:    20 (again in exact rationals ") != std::string::npos);
+        if (std::string(type) != "certified") CHECK(r.out.find(" (again in exact rationals 0)\n") != std::string::npos);
     }
     for (const char* type : {"certified", "exact"}) {
         INFO(type);

@@ -770,6 +770,53 @@ TEST_CASE("layer_pairs: cells along long shared borders against the exact refere
     CHECK(meeting_pairs >= 20 * static_cast<std::size_t>(rounds));
 }
 
+TEST_CASE("layer_pairs: the candidates and those answered again in exact rationals are counted", "[world]") {
+    // Unit squares in a row, 0.5 apart exactly, and a far one. Within 0.5,
+    // each neighbour lies exactly at the distance: a sign the certified
+    // filter cannot settle, so each such pair is answered again in exact
+    // rationals; double and exact rationals never are. The candidates are
+    // the pairs whose boxes, grown by within / 2, meet, counted here
+    // directly.
+    std::vector<polygon> layer;
+    for (int k = 0; k < 5; ++k) layer.push_back(test_shapes::square(1.5 * k, 0, 1));
+    layer.push_back(test_shapes::square(100, 100, 1));
+    const auto boxes_meeting = [&](double within) {
+        std::size_t n = 0;
+        for (std::size_t i = 0; i < layer.size(); ++i)
+            for (std::size_t j = i + 1; j < layer.size(); ++j) {
+                const box a = layer[i].bounds().inflated(within / 2), b = layer[j].bounds().inflated(within / 2);
+                n += a.min_x <= b.max_x && b.min_x <= a.max_x && a.min_y <= b.max_y && b.min_y <= a.max_y;
+            }
+        return n;
+    };
+    REQUIRE(boxes_meeting(0.5) == 4);
+    const std::string want = show({{0, 1}, {1, 2}, {2, 3}, {3, 4}});
+    for (unsigned threads : {1u, 2u}) {
+        INFO(threads << " threads");
+        layer_statistics certified_work, double_work, exact_work;
+        CHECK(show(certified_layer_pairs(layer, 0.5, threads, &certified_work)) == want);
+        CHECK(show(layer_pairs<double>(layer, 0.5, threads, &double_work)) == want);
+        CHECK(show(layer_pairs<exact_rational>(layer, 0.5, threads, &exact_work)) == want);
+        CHECK(certified_work.candidates == 4);
+        CHECK(double_work.candidates == 4);
+        CHECK(exact_work.candidates == 4);
+        CHECK(certified_work.exact_pairs == 4);
+        CHECK(double_work.exact_pairs == 0);
+        CHECK(exact_work.exact_pairs == 0);
+        // Meeting only: no candidate.
+        layer_statistics meet_work{7, 7};
+        CHECK(certified_layer_pairs(layer, 0, threads, &meet_work).empty());
+        CHECK(meet_work.candidates == boxes_meeting(0));
+        CHECK(meet_work.exact_pairs == 0);
+        // Two layers: the even squares against the odd ones (and the far one).
+        const std::vector<polygon> even = {layer[0], layer[2], layer[4]}, odd = {layer[1], layer[3], layer[5]};
+        layer_statistics two;
+        CHECK(show(certified_layer_pairs(even, odd, 0.5, threads, &two)) == show({{0, 0}, {1, 0}, {1, 1}, {2, 1}}));
+        CHECK(two.candidates == 4);
+        CHECK(two.exact_pairs == 4);
+    }
+}
+
 TEST_CASE("layer_pairs: a crowded layer answered by two threads, exact vertices made before they share", "[world]") {
     // Enough candidates (128 and more) for the pair tests to run on two
     // threads, each polygon placed once for all its pairs: in exact

@@ -21,15 +21,15 @@ using certified_world = world<certified, exact_rational>;
 
 /// The exact answer of layer_pairs (world/layer_pairs.hpp) for one layer.
 inline std::vector<body_pair> certified_layer_pairs(const std::vector<polygon>& layer, double within = 0,
-                                                    unsigned threads = 1) {
-    return layer_pairs<certified, exact_rational>(layer, within, threads);
+                                                    unsigned threads = 1, layer_statistics* statistics = nullptr) {
+    return layer_pairs<certified, exact_rational>(layer, within, threads, statistics);
 }
 
 /// The exact answer of layer_pairs for two layers.
 inline std::vector<body_pair> certified_layer_pairs(const std::vector<polygon>& first,
                                                     const std::vector<polygon>& second, double within = 0,
-                                                    unsigned threads = 1) {
-    return layer_pairs<certified, exact_rational>(first, second, within, threads);
+                                                    unsigned threads = 1, layer_statistics* statistics = nullptr) {
+    return layer_pairs<certified, exact_rational>(first, second, within, threads, statistics);
 }
 
 }  // namespace influence2d

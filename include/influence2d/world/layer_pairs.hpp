@@ -27,6 +27,13 @@
 
 namespace influence2d {
 
+/// What a join did besides its answer, for audits and precision studies
+/// (layer_pairs' `statistics`).
+struct layer_statistics {
+    std::size_t candidates = 0;   ///< pairs whose grown boxes meet: each tested by bodies_within
+    std::size_t exact_pairs = 0;  ///< candidates answered again in the Exact type (a sign NT could not settle)
+};
+
 namespace layer_pairs_detail {
 
 /// The layer's boxes (each polygon's own box grown by half the distance,
@@ -72,10 +79,11 @@ std::vector<std::unique_ptr<placed_polygon<NT>>> placed_layer(const std::vector<
 }
 
 /// The candidates' answers (in parallel blocks) and the pairs within d;
-/// `same` when both layers are one.
+/// `same` when both layers are one. Counts into `statistics` when given.
 template <class NT, class Exact>
 std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::vector<polygon>& second, bool same,
-                                 const std::vector<body_pair>& candidates, double within, unsigned threads) {
+                                 const std::vector<body_pair>& candidates, double within, unsigned threads,
+                                 layer_statistics* statistics) {
     const unsigned pair_threads = candidates.size() < 128 ? 1u : threads;
     std::vector<char> named_first(first.size(), 0), named_second(second.size(), 0);
     for (const body_pair& c : candidates) {
@@ -86,19 +94,27 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::v
     const auto placed_second = same ? std::vector<std::unique_ptr<placed_polygon<NT>>>{}
                                     : placed_layer<NT>(second, named_second, pair_threads);
     const auto& second_placed = same ? placed_first : placed_second;
-    std::vector<char> meets(candidates.size(), 0);
+    std::vector<char> meets(candidates.size(), 0), in_exact(candidates.size(), 0);
     run_in_blocks(candidates.size(), pair_threads, [&](std::size_t lo, std::size_t hi) {
         const rotation_pose here(pose{});
         for (std::size_t k = lo; k < hi; ++k) {
             const polygon &a = first[candidates[k].first], &b = second[candidates[k].second];
             placed_polygon<NT>&pa = *placed_first[candidates[k].first], &pb = *second_placed[candidates[k].second];
             const body_view<NT> va{&a, here, coordinate_scale(a), &pa}, vb{&b, here, coordinate_scale(b), &pb};
-            meets[k] = bodies_within<NT, Exact>(meeting{}, va, vb, within) ? 1 : 0;
+            bool exact = false;
+            meets[k] =
+                bodies_within<NT, Exact>(meeting{}, va, vb, within, nullptr, witness_preference::cheapest, &exact) ? 1
+                                                                                                                   : 0;
+            in_exact[k] = exact ? 1 : 0;
         }
     });
     std::vector<body_pair> out;
     for (std::size_t k = 0; k < candidates.size(); ++k)
         if (meets[k]) out.push_back(candidates[k]);
+    if (statistics != nullptr) {
+        statistics->candidates = candidates.size();
+        statistics->exact_pairs = static_cast<std::size_t>(std::count(in_exact.begin(), in_exact.end(), 1));
+    }
     return out;
 }
 
@@ -152,13 +168,17 @@ inline std::vector<polygon> scaled_layer(const std::vector<polygon>& layer, int 
 ///   each candidate, in parallel blocks of `threads` (0: every hardware
 ///   thread): bodies_within on the two placings
 ///
-/// Throws invalid_input for an empty polygon (naming it), one beyond NT's
-/// range, or a distance that is negative, NaN or infinite.
+/// `statistics`, when given, receives the number of candidates and of those
+/// answered again in Exact. Throws invalid_input for an empty polygon
+/// (naming it), one beyond NT's range, or a distance that is negative, NaN
+/// or infinite.
 template <class NT, class Exact = void>
-std::vector<body_pair> layer_pairs(const std::vector<polygon>& layer, double within = 0, unsigned threads = 1) {
+std::vector<body_pair> layer_pairs(const std::vector<polygon>& layer, double within = 0, unsigned threads = 1,
+                                   layer_statistics* statistics = nullptr) {
     within = layer_pairs_detail::checked_distance(within);
     if (const int k = layer_pairs_detail::layers_shift<NT>(layer, layer))
-        return layer_pairs<NT, Exact>(layer_pairs_detail::scaled_layer(layer, k), scaled_length(within, k), threads);
+        return layer_pairs<NT, Exact>(layer_pairs_detail::scaled_layer(layer, k), scaled_length(within, k), threads,
+                                      statistics);
     std::vector<box> boxes;
     std::vector<std::uint32_t> ids;
     layer_pairs_detail::boxes_of<NT>(layer, "first", within, boxes, ids);
@@ -167,7 +187,7 @@ std::vector<body_pair> layer_pairs(const std::vector<polygon>& layer, double wit
     std::vector<body_pair> candidates;
     tree.self_join([&](std::uint32_t i, std::uint32_t j) { candidates.push_back({std::min(i, j), std::max(i, j)}); });
     std::sort(candidates.begin(), candidates.end());
-    return layer_pairs_detail::within_of<NT, Exact>(layer, layer, true, candidates, within, threads);
+    return layer_pairs_detail::within_of<NT, Exact>(layer, layer, true, candidates, within, threads, statistics);
 }
 
 /// Every pair (i, j) of a polygon i of `first` and a polygon j of `second`
@@ -175,11 +195,12 @@ std::vector<body_pair> layer_pairs(const std::vector<polygon>& layer, double wit
 /// one-layer form otherwise (a box tree over each layer, the two joined).
 template <class NT, class Exact = void>
 std::vector<body_pair> layer_pairs(const std::vector<polygon>& first, const std::vector<polygon>& second,
-                                   double within = 0, unsigned threads = 1) {
+                                   double within = 0, unsigned threads = 1, layer_statistics* statistics = nullptr) {
     within = layer_pairs_detail::checked_distance(within);
     if (const int k = layer_pairs_detail::layers_shift<NT>(first, second))
         return layer_pairs<NT, Exact>(layer_pairs_detail::scaled_layer(first, k),
-                                      layer_pairs_detail::scaled_layer(second, k), scaled_length(within, k), threads);
+                                      layer_pairs_detail::scaled_layer(second, k), scaled_length(within, k), threads,
+                                      statistics);
     std::vector<box> a_boxes, b_boxes;
     std::vector<std::uint32_t> a_ids, b_ids;
     layer_pairs_detail::boxes_of<NT>(first, "first", within, a_boxes, a_ids);
@@ -190,7 +211,7 @@ std::vector<body_pair> layer_pairs(const std::vector<polygon>& first, const std:
     std::vector<body_pair> candidates;
     a_tree.join(b_tree, [&](std::uint32_t i, std::uint32_t j) { candidates.push_back({i, j}); });
     std::sort(candidates.begin(), candidates.end());
-    return layer_pairs_detail::within_of<NT, Exact>(first, second, false, candidates, within, threads);
+    return layer_pairs_detail::within_of<NT, Exact>(first, second, false, candidates, within, threads, statistics);
 }
 
 }  // namespace influence2d
