@@ -386,6 +386,12 @@ TEST_CASE("study: the final answer alone, in a type whose answers are all right,
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     const std::string md = slurp(dir / "out" / "study.md");
-    CHECK(md.find("quad: 0 wrong at") != std::string::npos);
+    // quad's rate is reported in either of the advice's two forms: as the
+    // fastest type (which 20 frames timed on a busy machine may make it) or
+    // beside the fastest.
+    const bool beside = md.find("quad: 0 wrong at") != std::string::npos;
+    const bool fastest = md.find("the fastest type was quad, at ") != std::string::npos &&
+                         md.find("; it answered 0 of 20 frames wrongly") != std::string::npos;
+    CHECK(beside != fastest);
     CHECK(md.find("their predicates disagreed") == std::string::npos);
 }
