@@ -48,6 +48,10 @@ struct ring_input {
 /// cross, rings of zero area (their edges are still boundary).
 class polygon {
 public:
+    /// The most vertices (and edges) a polygon holds: their numbers are kept
+    /// in 32 bits, here and in the edge boxes and trees that name them.
+    static constexpr std::size_t max_vertices = 0xffffffffu;
+
     /// An empty placeholder to assign to: no ring, no vertex (size() and
     /// ring_count() are 0). Detectors and the readers' writers need a polygon
     /// built from rings.
@@ -55,8 +59,8 @@ public:
 
     /// Builds the polygon from its rings, in time linear in the vertices.
     /// Throws invalid_input naming ring and vertex for a non-finite coordinate
-    /// or a ring with fewer than three distinct vertices, and for an empty
-    /// list. Each ring is reversed when the exact sign of its area disagrees
+    /// or a ring with fewer than three distinct vertices, for an empty list,
+    /// and for more than max_vertices vertices in all. Each ring is reversed when the exact sign of its area disagrees
     /// with its role; a ring of zero area keeps the input order.
     explicit polygon(std::vector<ring_input> rings) {
         if (rings.empty()) throw invalid_input("polygon has no ring");
@@ -104,8 +108,8 @@ public:
     /// Bytes of the heap blocks the polygon holds.
     std::size_t heap_bytes() const {
         return vertices_.capacity() * sizeof(point<double>) +
-               (next_.capacity() + ring_begin_.capacity() + source_edge_.capacity()) * sizeof(std::size_t) +
-               roles_.capacity() * sizeof(ring_role);
+               (next_.capacity() + source_edge_.capacity()) * sizeof(std::uint32_t) +
+               ring_begin_.capacity() * sizeof(std::size_t) + roles_.capacity() * sizeof(ring_role);
     }
     /// The same polygon with every coordinate multiplied by 2^k (std::ldexp):
     /// its rings, their orientation and the edge numbers kept, centroid, box
@@ -217,13 +221,16 @@ private:
         const bool want_ccw = ring.role == ring_role::outer;
         const bool reverse = sign != 0 && ((sign > 0) != want_ccw);
         const std::size_t n = vs.size(), base = vertices_.size();
+        if (n > max_vertices - base)
+            throw invalid_input("ring " + std::to_string(r) + ": the polygon would have more than " +
+                                std::to_string(max_vertices) + " vertices");
         ring_begin_.push_back(base);
         roles_.push_back(ring.role);
         for (std::size_t k = 0; k < n; ++k) {
             // Reversed ring: internal edge k runs along input edge n-2-k (mod n).
             vertices_.push_back(reverse ? vs[n - 1 - k] : vs[k]);
-            next_.push_back(k + 1 < n ? base + k + 1 : base);
-            source_edge_.push_back(base + (reverse ? (2 * n - 2 - k) % n : k));
+            next_.push_back(static_cast<std::uint32_t>(k + 1 < n ? base + k + 1 : base));
+            source_edge_.push_back(static_cast<std::uint32_t>(base + (reverse ? (2 * n - 2 - k) % n : k)));
         }
     }
 
@@ -251,10 +258,12 @@ private:
     }
 
     std::vector<point<double>> vertices_;
-    std::vector<std::size_t> next_;
+    // (Per vertex: 32 bits suffice, max_vertices, and a layer's join reads
+    // next_ beside the vertices for every edge it tests.)
+    std::vector<std::uint32_t> next_;
     std::vector<std::size_t> ring_begin_;
     std::vector<ring_role> roles_;
-    std::vector<std::size_t> source_edge_;
+    std::vector<std::uint32_t> source_edge_;
     point<double> centroid_;
     box bounds_;
     long double area_ = 0;
