@@ -223,7 +223,7 @@ def _at(found, at_a, at_b):
 def _layer_pairs(first, second, within, number_type, threads):
     """The (k, 2) local index pairs of two packed partitions (_core.Layer;
     ``second`` None: within ``first``); the arguments checked by the caller."""
-    return _core.pairs(first, second, within, number_type, threads).reshape(-1, 2).astype(np.int64, copy=False)
+    return _core.pairs(first, second, within, number_type, threads)[0].reshape(-1, 2).astype(np.int64, copy=False)
 
 
 def _near(part, around, reach):

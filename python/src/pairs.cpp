@@ -153,8 +153,10 @@ const std::vector<polygon>& layer_of(const py::object& items, const char* name, 
     return copy;
 }
 
-py::array_t<std::int64_t> pairs(const py::object& first, const py::object& second, double within,
-                                const std::string& number_type, long threads) {
+/// The pairs as a (k, 2) int64 array, with the join's layer_statistics:
+/// (pairs, candidates, exact_pairs).
+py::tuple pairs(const py::object& first, const py::object& second, double within, const std::string& number_type,
+                long threads) {
     const number_kind kind = number_kind_of(number_type);
     const unsigned t = threads_of(threads);
     std::vector<polygon> copy_a, copy_b;
@@ -162,17 +164,19 @@ py::array_t<std::int64_t> pairs(const py::object& first, const py::object& secon
     const bool two = !second.is_none();
     const std::vector<polygon>& b = two ? layer_of(second, "other", copy_b) : copy_b;
     std::vector<body_pair> found;
+    layer_statistics stats;
     {
         py::gil_scoped_release release;
         switch (kind) {
         case number_kind::certified_type:
-            found = two ? certified_layer_pairs(a, b, within, t) : certified_layer_pairs(a, within, t);
+            found = two ? certified_layer_pairs(a, b, within, t, &stats) : certified_layer_pairs(a, within, t, &stats);
             break;
         case number_kind::double_type:
-            found = two ? layer_pairs<double>(a, b, within, t) : layer_pairs<double>(a, within, t);
+            found = two ? layer_pairs<double>(a, b, within, t, &stats) : layer_pairs<double>(a, within, t, &stats);
             break;
         case number_kind::exact_type:
-            found = two ? layer_pairs<exact_rational>(a, b, within, t) : layer_pairs<exact_rational>(a, within, t);
+            found = two ? layer_pairs<exact_rational>(a, b, within, t, &stats)
+                        : layer_pairs<exact_rational>(a, within, t, &stats);
             break;
         }
     }
@@ -182,7 +186,7 @@ py::array_t<std::int64_t> pairs(const py::object& first, const py::object& secon
         o[2 * k] = found[k].first;
         o[2 * k + 1] = found[k].second;
     }
-    return out;
+    return py::make_tuple(out, stats.candidates, stats.exact_pairs);
 }
 
 }  // namespace

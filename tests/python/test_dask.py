@@ -221,8 +221,8 @@ def test_a_packed_partition_takes_and_joins_its_polygons(rng):
     picked = layer.take(np.array([4, 0, 4, 29]))
     assert len(picked) == 4 and np.array_equal(picked.bounds(), boxes[[4, 0, 4, 29]])
     whole = influence2d._core.Layer.concat([layer.take(np.arange(0, 12)), layer.take(np.arange(12, 30))])
-    assert np.array_equal(influence2d._core.pairs(whole, None, 0.0, "certified", 1),
-                          influence2d._core.pairs(layer, None, 0.0, "certified", 1))
+    assert np.array_equal(influence2d._core.pairs(whole, None, 0.0, "certified", 1)[0],
+                          influence2d._core.pairs(layer, None, 0.0, "certified", 1)[0])
     for bad, message in [(np.array([30]), r"positions\[0\] is 30, outside a layer of 30"),
                          (np.array([0, -1]), r"positions\[1\] is -1"), (np.zeros((2, 2)), "one-dimensional")]:
         with pytest.raises(influence2d.InvalidInput, match=message):
@@ -246,10 +246,10 @@ def test_a_packed_partition_pickles_whole_and_joins_as_its_polygons(rng):
     packed = pickle.loads(pickle.dumps(influence2d._core.Layer(core)))
     assert len(packed) == len(layer)
     for number_type in ("double", "certified"):
-        want = influence2d._core.pairs(core, None, 0.0, number_type, 1)
-        assert np.array_equal(influence2d._core.pairs(packed, None, 0.0, number_type, 1), want)
-        assert np.array_equal(influence2d._core.pairs(packed, packed, 0.25, number_type, 1),
-                              influence2d._core.pairs(core, core, 0.25, number_type, 1))
+        want = influence2d._core.pairs(core, None, 0.0, number_type, 1)[0]
+        assert np.array_equal(influence2d._core.pairs(packed, None, 0.0, number_type, 1)[0], want)
+        assert np.array_equal(influence2d._core.pairs(packed, packed, 0.25, number_type, 1)[0],
+                              influence2d._core.pairs(core, core, 0.25, number_type, 1)[0])
     state = influence2d._core.Layer(core).__getstate__()
     for bad, message in [(state[:3], "expected 4 byte strings"), ((state[0], state[1], state[2], state[3][:-8]),
                          "coordinates run short"), ((state[0] + b"\0" * 7, *state[1:]), "ring counts run short"),

@@ -90,6 +90,28 @@ def test_geoseries_when_geopandas_is_there(rng):
     assert influence2d.pairs(gpd.GeoSeries(layer)).tolist() == influence2d.pairs(layer).tolist()
 
 
+def test_statistics_count_the_candidates_and_the_pairs_answered_again(rng):
+    # A row of unit squares exactly 0.5 apart: each neighbour is within 0.5
+    # only at the distance itself, a sign certified leaves to rationals.
+    row = [shapely.geometry.box(1.5 * k, 0, 1.5 * k + 1, 1) for k in range(5)]
+    for number_type, again in [("certified", 4), ("double", 0), ("exact", 0)]:
+        got, stats = influence2d.pairs(row, within=0.5, number_type=number_type, return_statistics=True)
+        assert got.tolist() == [[0, 1], [1, 2], [2, 3], [3, 4]]
+        assert stats == {"candidates": 4, "exact_pairs": again}
+    assert influence2d.pairs(row, return_statistics=True)[1] == {"candidates": 0, "exact_pairs": 0}
+    # Random stars: the candidates are the pairs whose boxes, each grown by
+    # half the distance, meet: apart by at most the distance along x and
+    # along y (shapely's bounds; no tie this close); the pairs among them.
+    layer = [star_polygon(rng, 7, radius=0.4, center=(rng.uniform(0, 6), rng.uniform(0, 6))) for _ in range(50)]
+    bounds = [g.bounds for g in layer]
+    gaps = [max(p[0] - q[2], q[0] - p[2], p[1] - q[3], q[1] - p[3])
+            for i, p in enumerate(bounds) for q in bounds[i + 1:]]
+    assert all(abs(gap - 0.3) > 1e-9 for gap in gaps)
+    got, stats = influence2d.pairs(layer, other=None, within=0.3, return_statistics=True)
+    assert stats["candidates"] == sum(gap <= 0.3 for gap in gaps) >= len(got)
+    assert got.tolist() == influence2d.pairs(layer, within=0.3).tolist()
+
+
 def test_no_pair_and_empty_layers():
     assert influence2d.pairs([]).shape == (0, 2)
     assert influence2d.pairs(["POLYGON ((0 0, 1 0, 0 1, 0 0))"], []).shape == (0, 2)
