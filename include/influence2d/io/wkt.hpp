@@ -168,8 +168,9 @@ inline void check_coordinate_tuples(std::string_view source, const std::string& 
 /// finite coordinates, closed (first point repeated at the end), three
 /// distinct vertices. The closing point goes in with the others: polygon
 /// drops it, and only it, so a ring whose last vertex before the closing
-/// point equals the first keeps that vertex as a zero-length edge. An empty ring adds nothing, unless it
-/// is an exterior followed by holes (empty_exterior_with_holes): refused.
+/// point equals the first keeps that vertex as a zero-length edge. An empty
+/// ring adds nothing, unless it is an exterior followed by holes
+/// (empty_exterior_with_holes): refused.
 inline void append_ring(std::string_view source, const std::vector<wkt_ring>& read, std::size_t index,
                         std::vector<ring_input>& rings) {
     const wkt_ring& r = read[index];
@@ -188,7 +189,7 @@ inline void append_ring(std::string_view source, const std::vector<wkt_ring>& re
                          format_coordinate(b.y) + ")");
     ring_input in;
     in.role = r.role;
-    in.vertices.assign(pts.begin(), pts.end());
+    in.vertices = pts;
     if (polygon::count_distinct(in.vertices) < 3)
         fail(source, ring_place(index) + ": fewer than three distinct vertices");
     rings.push_back(std::move(in));
@@ -276,9 +277,10 @@ inline polygon polygon_of_rings(const std::vector<wkt_ring>& read, std::string_v
 /// Throws invalid_input with a message starting with `source` for what
 /// read_wkt_rings refuses, an unclosed ring, an empty exterior ring followed
 /// by holes, a non-finite coordinate, a ring with fewer than three distinct
-/// vertices, and a geometry whose rings are all empty. Degenerate but usable rings (repeated
-/// vertices, collinear runs, self-intersections, zero area) are accepted as
-/// polygon takes them; audit_rings (audit/audit.hpp) lists them.
+/// vertices, and a geometry whose rings are all empty. Degenerate but usable
+/// rings (repeated vertices, collinear runs, self-intersections, zero area)
+/// are accepted as polygon takes them; audit_rings (audit/audit.hpp) lists
+/// them.
 inline polygon read_wkt(std::string_view text, std::string_view source = "<text>") {
     return polygon_of_rings(read_wkt_rings(text, source), source);
 }

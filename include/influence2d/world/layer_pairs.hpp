@@ -102,9 +102,9 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::v
             placed_polygon<NT>&pa = *placed_first[candidates[k].first], &pb = *second_placed[candidates[k].second];
             const body_view<NT> va{&a, here, coordinate_scale(a), &pa}, vb{&b, here, coordinate_scale(b), &pb};
             bool exact = false;
-            meets[k] =
-                bodies_within<NT, Exact>(meeting{}, va, vb, within, nullptr, witness_preference::cheapest, &exact) ? 1
-                                                                                                                   : 0;
+            const meeting m =
+                bodies_within<NT, Exact>(meeting{}, va, vb, within, nullptr, witness_preference::cheapest, &exact);
+            meets[k] = m ? 1 : 0;
             in_exact[k] = exact ? 1 : 0;
         }
     });
