@@ -55,9 +55,18 @@ void boxes_of(const std::vector<polygon>& layer, const char* which, double withi
     }
 }
 
+/// The candidates (or polygons) a thread takes at a time in a join: a
+/// pair's test costs from tens of nanoseconds to microseconds (a polygon of
+/// many rings inside the box of another of many runs), and the costly ones
+/// gather where the sorted pairs name the same large polygon, so that one
+/// contiguous block per thread leaves one thread with most of the work.
+/// Sixteen keeps the handing out (a few atomic steps a chunk) far below the
+/// tests' cost.
+inline constexpr std::size_t join_grain = 16;
+
 /// Each polygon of `layer` that some candidate names (`named`), placed where
 /// it stands once for all its pairs, with its run boxes (in parallel
-/// blocks); every vertex in NT made too when NT's placings keep them and
+/// chunks); every vertex in NT made too when NT's placings keep them and
 /// several threads will read them.
 template <class NT>
 std::vector<std::unique_ptr<placed_polygon<NT>>> placed_layer(const std::vector<polygon>& layer,
@@ -66,7 +75,7 @@ std::vector<std::unique_ptr<placed_polygon<NT>>> placed_layer(const std::vector<
     for (std::size_t k = 0; k < layer.size(); ++k)
         if (named[k]) which.push_back(k);
     std::vector<std::unique_ptr<placed_polygon<NT>>> placed(layer.size());
-    run_in_blocks(which.size(), which.size() < 64 ? 1u : threads, [&](std::size_t lo, std::size_t hi) {
+    run_in_chunks(which.size(), which.size() < 64 ? 1u : threads, join_grain, [&](std::size_t lo, std::size_t hi) {
         for (std::size_t k = lo; k < hi; ++k) {
             auto p = std::make_unique<placed_polygon<NT>>(layer[which[k]]);
             p->make_run_bounds();
@@ -78,7 +87,7 @@ std::vector<std::unique_ptr<placed_polygon<NT>>> placed_layer(const std::vector<
     return placed;
 }
 
-/// The candidates' answers (in parallel blocks) and the pairs within d;
+/// The candidates' answers (in parallel chunks) and the pairs within d;
 /// `same` when both layers are one. Counts into `statistics` when given.
 template <class NT, class Exact>
 std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::vector<polygon>& second, bool same,
@@ -95,7 +104,7 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::v
                                     : placed_layer<NT>(second, named_second, pair_threads);
     const auto& second_placed = same ? placed_first : placed_second;
     std::vector<char> meets(candidates.size(), 0), in_exact(candidates.size(), 0);
-    run_in_blocks(candidates.size(), pair_threads, [&](std::size_t lo, std::size_t hi) {
+    run_in_chunks(candidates.size(), pair_threads, join_grain, [&](std::size_t lo, std::size_t hi) {
         const rotation_pose here(pose{});
         for (std::size_t k = lo; k < hi; ++k) {
             const polygon &a = first[candidates[k].first], &b = second[candidates[k].second];
@@ -165,8 +174,8 @@ inline std::vector<polygon> scaled_layer(const std::vector<polygon>& layer, int 
 ///                 box_tree::self_join), sorted
 ///   each polygon some candidate names placed where it stands, once for
 ///   all its pairs, with its run boxes (placed_layer)
-///   each candidate, in parallel blocks of `threads` (0: every hardware
-///   thread): bodies_within on the two placings
+///   each candidate, on `threads` threads (0: every hardware thread) taking
+///   join_grain candidates at a time: bodies_within on the two placings
 ///
 /// `statistics`, when given, receives the number of candidates and of those
 /// answered again in Exact. Throws invalid_input for an empty polygon
