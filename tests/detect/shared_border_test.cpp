@@ -15,6 +15,7 @@
 #include "influence2d/detect/detector.hpp"
 #include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "verification/cgal_reference.hpp"
 
 using namespace influence2d;
 
@@ -91,5 +92,54 @@ TEST_CASE(
         CHECK(met >= poses.size() / 5);
         CHECK(met < poses.size());
         CHECK(met_edges * 5 < met * 1000);
+    }
+}
+
+TEST_CASE("shared border: the edge pair that met last answers the frames after it while it meets, as the reference",
+          "[detect][coherence]") {
+    // The upper side walked about a pose that overlaps the lower one (0.25
+    // down): most frames cross the border at the edges they crossed at
+    // before. Each frame against CGAL's exact answer (cgal_reference, which
+    // tests every pair and containment itself), at d = 0 and d = 0.05.
+    const std::vector<point<double>> b = border(400);
+    const polygon below = side_of(b, -1), above = side_of(b, 1);
+    std::vector<pose> poses = walk(150, 11);
+    for (pose& p : poses) p.ty -= 0.25;
+    // Two jumps among the steps: the pair kept from before a jump is not
+    // asked after it (p moved more than the skin).
+    poses[50].tx += 40;
+    poses[100].ty += 30;
+    for (const double d : {0.0, 0.05}) {
+        const verification::cgal_reference ref(below, above, d);
+        detector_options yes_no, no_coherence, witnesses;
+        yes_no.distance = no_coherence.distance = witnesses.distance = d;
+        no_coherence.temporal_coherence = false;
+        witnesses.witness = true;
+        detector<exact_rational> exact(below, above, yes_no);
+        detector<exact_rational> fresh(below, above, no_coherence);
+        detector<exact_rational> witnessed(below, above, witnesses);
+        detector<double> fast(below, above, yes_no);
+        brute_force_detector<double> fast_ref(below, above, yes_no);
+        certified_detector<detector> certified(below, above, yes_no);
+        std::size_t met = 0;
+        for (std::size_t k = 0; k < poses.size(); ++k) {
+            INFO("d " << d << " frame " << k << " pose " << poses[k].tx << ", " << poses[k].ty << ", "
+                      << poses[k].theta);
+            const bool want = ref.collide(poses[k]).collides;
+            met += want;
+            REQUIRE(exact.collide(poses[k]).collides == want);
+            REQUIRE(fresh.collide(poses[k]).collides == want);
+            REQUIRE(witnessed.collide(poses[k]).collides == want);
+            REQUIRE(certified.collide(poses[k]).collides == want);
+            REQUIRE(fast.collide(poses[k]).collides == fast_ref.collide(poses[k]).collides);
+        }
+        // Most frames meet; most of those are answered by the last pair, and
+        // none without coherence or with witnesses asked for.
+        CHECK(met * 10 >= poses.size() * 9);
+        CHECK(met < poses.size());
+        CHECK(exact.statistics().last_pair_frames * 2 >= met);
+        CHECK(exact.statistics().last_pair_frames < met);
+        CHECK(fresh.statistics().last_pair_frames == 0);
+        CHECK(witnessed.statistics().last_pair_frames == 0);
     }
 }

@@ -40,6 +40,7 @@ struct detector_statistics {
     std::size_t tree_frames = 0;         ///< frames whose pairs came from A's edge tree
     std::size_t jump_frames = 0;         ///< frames with no coherence to use (both edge trees, or every pair)
     std::size_t convex_frames = 0;       ///< frames answered by the separating-edge test of two convex polygons
+    std::size_t last_pair_frames = 0;    ///< frames answered by the edge pair that met last (last_pair_meets)
 };
 
 namespace detector_detail {
@@ -65,6 +66,9 @@ struct coherence_state {
     bool has_last = false;
     bool last_step_small = false;  ///< whether the previous frame moved less than the skin
     std::uint32_t separating = 0;  ///< the edge that last separated two convex polygons (convex_regions_meet)
+    std::uint32_t met_a = 0;       ///< A's edge of the pair that last met (test_pair)
+    std::uint32_t met_b = 0;       ///< B's edge of that pair
+    bool has_met = false;          ///< whether a pair has met since the detector was made
 };
 
 /// The separation distance in NT and its square.
@@ -91,6 +95,9 @@ struct distance_state {
 ///   with every vertex of the other strictly outside its line, the last
 ///   frame's first (convex_regions_meet):                       disjoint
 ///       else they meet; done unless witnesses are asked for
+///   no witnesses asked, p within the skin of the last frame's, and the edge
+///   pair that met last (features::coherence) meets again by the pair tests
+///   (last_pair_meets):                                          they meet
 ///   p jumped (a random pose, a first frame far from the last, or no
 ///   features::coherence: coherent_step):
 ///       few edge pairs (every_pair_pays): B posed in double, every pair
@@ -293,6 +300,10 @@ private:
             if (!convex_meet(f)) return {};
             if (!witnessing()) return {true, {}};
         }
+        if (last_pair_meets(f)) {
+            tally(&detector_statistics::last_pair_frames);
+            return {true, {}};
+        }
         if (!coherent_step(f)) return every_pair_pays() ? every_pair(f) : pairs_through_trees(f);
         refresh_candidates(f);
         if (circle_test_pays() &&
@@ -364,6 +375,33 @@ private:
             return in_skin || moving_steadily;
         }
         return false;
+    }
+
+    /// Whether the edge pair that met last (kept by test_pair with
+    /// features::coherence) still meets, by the pair tests: asked first
+    /// when no witness is (a frame then needs one meeting pair, not all)
+    /// and p moved at most the skin since the last frame. Along a
+    /// trajectory two overlapping polygons most often keep crossing at the
+    /// same two edges for many frames; one pair test then answers the frame
+    /// where the search would descend the trees or scan the candidates
+    /// first. A pair that no longer meets costs one test, and the frame
+    /// goes on as before; one that meets counts as the small step it was
+    /// for the next frame's coherent_step.
+    bool last_pair_meets(const frame& f) {
+        if constexpr (with_coherence) {
+            detector_detail::coherence_state& c = coherence_state::value;
+            if (!options_.temporal_coherence || !c.has_met || witnessing() || !c.has_last ||
+                filter_length(f.p.x - c.last.x, f.p.y - c.last.y) > c.skin)
+                return false;
+            const std::size_t j = c.met_b;
+            if (!test_pair(c.met_a, j, b_.approximate_now(j), b_.approximate_now(next_b(j)), f.margin)) return false;
+            c.last = f.p;
+            c.last_step_small = true;
+            return true;
+        } else {
+            (void)f;
+            return false;
+        }
     }
 
     /// Whether two convex polygons are small enough for the separating-edge
@@ -851,6 +889,13 @@ private:
             meet = cross();
         if constexpr (with_witness)
             if (meet && options_.witness) witness_state::value.add(e, j);
+        if constexpr (with_coherence)
+            if (meet) {
+                detector_detail::coherence_state& c = coherence_state::value;
+                c.met_a = e;
+                c.met_b = static_cast<std::uint32_t>(j);
+                c.has_met = true;
+            }
         return meet;
     }
 
