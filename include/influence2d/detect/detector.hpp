@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 #include "influence2d/assert.hpp"
@@ -860,10 +861,12 @@ private:
     /// they meet, with witnesses). For d == 0 two filters in double come
     /// first, each the paper's detailed test with the roles of the edges
     /// swapped: both ends of one edge strictly on the same side of the other's
-    /// line (alpha of the same non-zero sign), so the edges cannot meet. Only
-    /// then are the vertices posed in NT: the signs of alpha (orientation
-    /// against the static edge's line, alpha up to the constant sigma_e) and
-    /// the segment test (d == 0), or the exact distance test (d > 0).
+    /// line (alpha of the same non-zero sign), so the edges cannot meet; in a
+    /// type other than double, then, edges that certainly cross in double
+    /// (segments_certainly_cross) meet, at any d. Only then are the vertices
+    /// posed in NT: the signs of alpha (orientation against the static edge's
+    /// line, alpha up to the constant sigma_e) and the segment test (d == 0),
+    /// or the exact distance test (d > 0).
     /// u and v are the moving edge's ends posed in double.
     bool test_pair(std::uint32_t e, std::size_t j, const point<double>& u, const point<double>& v,
                    double frame_margin) {
@@ -876,17 +879,20 @@ private:
         const auto& cov = a_->covering;
         const point<NT>& a = cov.start(e);
         const point<NT>& b = cov.end(e);
-        const auto cross = [&] {
+        const auto decide = [&] {
+            // (Two edges that cross clearly, A's ends exact and B's posed in
+            // double within the frame margin, cross in NT too, and so come
+            // within any d: no vertex posed in NT. In double the doubles are
+            // the decision's own: no second filter.)
+            if constexpr (!std::is_same_v<NT, double>)
+                if (segments_certainly_cross(as.vertex(e), as.vertex(as.next(e)), u, v, frame_margin)) return true;
+            if constexpr (with_distance)
+                if (options_.distance > 0)
+                    return segments_within(a, b, b_.vertex(j), b_.vertex(k), distance_state::value.distance2);
             return segments_intersect(orientation(a, b, b_.vertex(j)), orientation(a, b, b_.vertex(k)), a, b,
                                       b_.vertex(j), b_.vertex(k));
         };
-        bool meet;
-        if constexpr (with_distance)
-            meet = options_.distance > 0
-                       ? segments_within(a, b, b_.vertex(j), b_.vertex(k), distance_state::value.distance2)
-                       : cross();
-        else
-            meet = cross();
+        const bool meet = decide();
         if constexpr (with_witness)
             if (meet && options_.witness) witness_state::value.add(e, j);
         if constexpr (with_coherence)
