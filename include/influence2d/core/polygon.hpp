@@ -60,8 +60,9 @@ public:
     /// Builds the polygon from its rings, in time linear in the vertices.
     /// Throws invalid_input naming ring and vertex for a non-finite coordinate
     /// or a ring with fewer than three distinct vertices, for an empty list,
-    /// and for more than max_vertices vertices in all. Each ring is reversed when the exact sign of its area disagrees
-    /// with its role; a ring of zero area keeps the input order.
+    /// and for more than max_vertices vertices in all. Each ring is reversed
+    /// when the exact sign of its area disagrees with its role; a ring of
+    /// zero area keeps the input order.
     explicit polygon(std::vector<ring_input> rings) {
         if (rings.empty()) throw invalid_input("polygon has no ring");
         for (std::size_t r = 0; r < rings.size(); ++r) add_ring(r, std::move(rings[r]));
