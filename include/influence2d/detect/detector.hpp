@@ -70,6 +70,12 @@ struct coherence_state {
     std::uint32_t met_a = 0;       ///< A's edge of the pair that last met (test_pair)
     std::uint32_t met_b = 0;       ///< B's edge of that pair
     bool has_met = false;          ///< whether a pair has met since the detector was made
+
+    /// Whether p lies within the skin of `from` (a filter in double; a
+    /// distance that is not a number counts as within).
+    bool within_skin(const point<double>& from, const point<double>& p) const {
+        return !(filter_length(p.x - from.x, p.y - from.y) > skin);
+    }
 };
 
 /// The separation distance in NT and its square.
@@ -350,7 +356,7 @@ private:
     void refresh_candidates(const frame& f) {
         if constexpr (with_coherence) {
             const detector_detail::coherence_state& c = coherence_state::value;
-            if (c.valid && !(filter_length(f.p.x - c.center.x, f.p.y - c.center.y) > c.skin)) return;
+            if (c.valid && c.within_skin(c.center, f.p)) return;
         }
         gather(f.p, f.margin);
     }
@@ -367,8 +373,8 @@ private:
         if constexpr (with_coherence) {
             detector_detail::coherence_state& c = coherence_state::value;
             if (!options_.temporal_coherence) return false;
-            const bool in_skin = c.valid && !(filter_length(f.p.x - c.center.x, f.p.y - c.center.y) > c.skin);
-            const bool small_step = c.has_last && !(filter_length(f.p.x - c.last.x, f.p.y - c.last.y) > c.skin);
+            const bool in_skin = c.valid && c.within_skin(c.center, f.p);
+            const bool small_step = c.has_last && c.within_skin(c.last, f.p);
             const bool moving_steadily = small_step && c.last_step_small;
             c.last = f.p;
             c.has_last = true;
@@ -392,7 +398,7 @@ private:
         if constexpr (with_coherence) {
             detector_detail::coherence_state& c = coherence_state::value;
             if (!options_.temporal_coherence || !c.has_met || witnessing() || !c.has_last ||
-                filter_length(f.p.x - c.last.x, f.p.y - c.last.y) > c.skin)
+                !c.within_skin(c.last, f.p))
                 return false;
             const std::size_t j = c.met_b;
             if (!test_pair(c.met_a, j, b_.approximate_now(j), b_.approximate_now(next_b(j)), f.margin)) return false;
@@ -873,8 +879,8 @@ private:
         const polygon& as = a_->shape;
         INFLUENCE2D_ASSERT(e < as.size() && j < b_.size(), "an edge pair beyond the polygons' edges");
         const std::size_t k = next_b(j);
-        if (distance() == 0 && !segments_may_meet(as.vertex(e), as.vertex(as.next(e)), u, v, frame_margin))
-            return false;
+        const point<double>&p = as.vertex(e), &q = as.vertex(as.next(e));
+        if (distance() == 0 && !segments_may_meet(p, q, u, v, frame_margin)) return false;
         tally(&detector_statistics::segment_tests);
         const auto& cov = a_->covering;
         const point<NT>& a = cov.start(e);
@@ -885,7 +891,7 @@ private:
             // within any d: no vertex posed in NT. In double the doubles are
             // the decision's own: no second filter.)
             if constexpr (!std::is_same_v<NT, double>)
-                if (segments_certainly_cross(as.vertex(e), as.vertex(as.next(e)), u, v, frame_margin)) return true;
+                if (segments_certainly_cross(p, q, u, v, frame_margin)) return true;
             if constexpr (with_distance)
                 if (options_.distance > 0)
                     return segments_within(a, b, b_.vertex(j), b_.vertex(k), distance_state::value.distance2);
