@@ -68,6 +68,10 @@ public:
         a_rings_ = make_rings(a_, pts);
     }
 
+    /// Whether A's closed region holds the point (x, y), exactly (the rule
+    /// of in_region below, on CGAL's predicates).
+    bool static_region_holds(double x, double y) const { return in_region(a_rings_, point_2(x, y)); }
+
     frame_result collide(const pose& p) const {
         const FT c(std::cos(p.theta)), s(std::sin(p.theta)), tx(p.tx), ty(p.ty);
         std::vector<point_2> pts;

@@ -35,8 +35,8 @@ std::vector<point<double>> border(std::size_t n) {
 polygon side_of(const std::vector<point<double>>& b, double side) {
     ring_input r;
     r.vertices = b;
-    r.vertices.push_back({100, 10 * side});
-    r.vertices.push_back({0, 10 * side});
+    r.vertices.push_back({b.back().x, 10 * side});
+    r.vertices.push_back({b.front().x, 10 * side});
     return polygon({r});
 }
 
@@ -101,45 +101,64 @@ TEST_CASE("shared border: the edge pair that met last answers the frames after i
     // down): most frames cross the border at the edges they crossed at
     // before. Each frame against CGAL's exact answer (cgal_reference, which
     // tests every pair and containment itself), at d = 0 and d = 0.05.
-    const std::vector<point<double>> b = border(400);
-    const polygon below = side_of(b, -1), above = side_of(b, 1);
+    // Near the origin a vertex of one side deep in the other
+    // (vertices_deep_inside) answers the frames the trees' search would, and
+    // the last pair then has none to answer; both sides moved to x = 2^40,
+    // where their cells are too small against the coordinates' rounding to
+    // be built, the last pair answers them.
+    const std::vector<point<double>> near = border(400);
+    std::vector<point<double>> moved = near;
+    for (point<double>& v : moved) v.x += 0x1p40;
     std::vector<pose> poses = walk(150, 11);
     for (pose& p : poses) p.ty -= 0.25;
     // Two jumps among the steps: the pair kept from before a jump is not
     // asked after it (p moved more than the skin).
     poses[50].tx += 40;
     poses[100].ty += 30;
-    for (const double d : {0.0, 0.05}) {
-        const verification::cgal_reference ref(below, above, d);
-        detector_options yes_no, no_coherence, witnesses;
-        yes_no.distance = no_coherence.distance = witnesses.distance = d;
-        no_coherence.temporal_coherence = false;
-        witnesses.witness = true;
-        detector<exact_rational> exact(below, above, yes_no);
-        detector<exact_rational> fresh(below, above, no_coherence);
-        detector<exact_rational> witnessed(below, above, witnesses);
-        detector<double> fast(below, above, yes_no);
-        brute_force_detector<double> fast_ref(below, above, yes_no);
-        certified_detector<detector> certified(below, above, yes_no);
-        std::size_t met = 0;
-        for (std::size_t k = 0; k < poses.size(); ++k) {
-            INFO("d " << d << " frame " << k << " pose " << poses[k].tx << ", " << poses[k].ty << ", "
-                      << poses[k].theta);
-            const bool want = ref.collide(poses[k]).collides;
-            met += want;
-            REQUIRE(exact.collide(poses[k]).collides == want);
-            REQUIRE(fresh.collide(poses[k]).collides == want);
-            REQUIRE(witnessed.collide(poses[k]).collides == want);
-            REQUIRE(certified.collide(poses[k]).collides == want);
-            REQUIRE(fast.collide(poses[k]).collides == fast_ref.collide(poses[k]).collides);
+    for (const bool far : {false, true})
+        for (const double d : {0.0, 0.05}) {
+            const polygon below = side_of(far ? moved : near, -1), above = side_of(far ? moved : near, 1);
+            // Far away, each pose turns about (2^40, 0) instead of the origin.
+            std::vector<pose> posed = poses;
+            if (far)
+                for (pose& p : posed) {
+                    p.tx += 0x1p40 - std::cos(p.theta) * 0x1p40;
+                    p.ty -= std::sin(p.theta) * 0x1p40;
+                }
+            INFO("far " << far);
+            const verification::cgal_reference ref(below, above, d);
+            detector_options yes_no, no_coherence, witnesses;
+            yes_no.distance = no_coherence.distance = witnesses.distance = d;
+            no_coherence.temporal_coherence = false;
+            witnesses.witness = true;
+            detector<exact_rational> exact(below, above, yes_no);
+            detector<exact_rational> fresh(below, above, no_coherence);
+            detector<exact_rational> witnessed(below, above, witnesses);
+            detector<double> fast(below, above, yes_no);
+            brute_force_detector<double> fast_ref(below, above, yes_no);
+            certified_detector<detector> certified(below, above, yes_no);
+            std::size_t met = 0;
+            for (std::size_t k = 0; k < poses.size(); ++k) {
+                INFO("d " << d << " frame " << k << " pose " << posed[k].tx << ", " << posed[k].ty << ", "
+                          << posed[k].theta);
+                const bool want = ref.collide(posed[k]).collides;
+                met += want;
+                REQUIRE(exact.collide(posed[k]).collides == want);
+                REQUIRE(fresh.collide(posed[k]).collides == want);
+                REQUIRE(witnessed.collide(posed[k]).collides == want);
+                REQUIRE(certified.collide(posed[k]).collides == want);
+                REQUIRE(fast.collide(posed[k]).collides == fast_ref.collide(posed[k]).collides);
+            }
+            // Most frames meet; most of those are answered by the last pair
+            // (near the origin, by it or a deep vertex), and none by the last
+            // pair without coherence or with witnesses asked for.
+            CHECK(met * 10 >= poses.size() * 9);
+            CHECK(met < poses.size());
+            const detector_statistics& st = exact.statistics();
+            CHECK((far ? st.last_pair_frames : st.last_pair_frames + st.interior_frames) * 2 >= met);
+            CHECK(st.last_pair_frames < met);
+            if (far) CHECK(st.interior_frames == 0);
+            CHECK(fresh.statistics().last_pair_frames == 0);
+            CHECK(witnessed.statistics().last_pair_frames == 0);
         }
-        // Most frames meet; most of those are answered by the last pair, and
-        // none without coherence or with witnesses asked for.
-        CHECK(met * 10 >= poses.size() * 9);
-        CHECK(met < poses.size());
-        CHECK(exact.statistics().last_pair_frames * 2 >= met);
-        CHECK(exact.statistics().last_pair_frames < met);
-        CHECK(fresh.statistics().last_pair_frames == 0);
-        CHECK(witnessed.statistics().last_pair_frames == 0);
-    }
 }

@@ -42,6 +42,7 @@ struct detector_statistics {
     std::size_t jump_frames = 0;         ///< frames with no coherence to use (both edge trees, or every pair)
     std::size_t convex_frames = 0;       ///< frames answered by the separating-edge test of two convex polygons
     std::size_t last_pair_frames = 0;    ///< frames answered by the edge pair that met last (last_pair_meets)
+    std::size_t interior_frames = 0;     ///< jumps answered by a vertex deep in the other region (vertices_deep_inside)
 };
 
 namespace detector_detail {
@@ -239,15 +240,18 @@ public:
         return collide_at(q);
     }
 
-    /// Builds now what frames otherwise build on first use: A's cone index
-    /// and edge tree, B's edge tree (shared with every detector on the same
-    /// prepared polygons) and the detector's edge grid. Frames after it cost
+    /// Builds now what frames otherwise build on first use: A's cone index,
+    /// edge tree and deep cells, B's edge tree and deep cells (shared with
+    /// every detector on the same prepared polygons) and the detector's edge
+    /// grid. Frames after it cost
     /// the same from the first one on, as a real-time loop wants; answers are
     /// unchanged. Costs about what the first frames would have paid.
     void build_structures() {
         (void)a_->areas();
         (void)a_tree();
         (void)b_tree();
+        (void)a_->interior();
+        (void)b_.scene().interior();
         if (!grid_built_) build_grid();
     }
 
@@ -411,6 +415,40 @@ private:
         }
     }
 
+    /// Whether a few vertices alone show that the regions meet (see
+    /// deep_probes for which): B's vertices posed in double (within the
+    /// frame margin of their values in NT) looked up in A's deep cells
+    /// (interior_cells::holds), then A's vertices placed in B's frame by the
+    /// inverse pose in double, looked up in B's (within twice the margin,
+    /// plus B's scale times pose_scale_widening for the pose's scale
+    /// factor). A vertex of one polygon in the other's closed region is a
+    /// point of both regions: the frame collides, at any separation
+    /// distance. Asked by the trees' search without witnesses (a witness is
+    /// an edge pair), while probe_odds finds it worth asking: two polygons
+    /// that overlap by much of their area (random poses near contact, poses
+    /// that jump about a shared border) most often have such a vertex,
+    /// found by a look-up each, where the descent of both trees visits
+    /// dozens of node pairs before the first crossing.
+    bool vertices_deep_inside(const frame& f) {
+        const interior_cells& in_a = a_->interior();
+        const std::size_t nb = b_.size(), na = a_->shape.size();
+        if (!in_a.empty()) {
+            const auto posed_deep = [&](std::size_t j) { return in_a.holds(b_.approximate_now(j), f.margin); };
+            if (deep_b_.found(posed_deep, nb)) return true;
+        }
+        const interior_cells& in_b = b_.scene().interior();
+        if (in_b.empty()) return false;
+        const double c = f.t.c, s = f.t.s, tx = f.t.tx, ty = f.t.ty;
+        const double margin = 2 * f.margin + b_.scene().scale * pose_scale_widening;
+        const polygon& as = a_->shape;
+        const auto placed_deep = [&](std::size_t e) {
+            const point<double>& v = as.vertex(e);
+            const double x = v.x - tx, y = v.y - ty;
+            return in_b.holds({c * x + s * y, c * y - s * x}, margin);
+        };
+        return deep_a_.found(placed_deep, na);
+    }
+
     /// Whether two convex polygons are small enough for the separating-edge
     /// test: it tests at most na + nb edges, each against up to the other's
     /// vertices (na nb orientations when they meet in the worst order), where
@@ -479,6 +517,8 @@ private:
     }
 
     /// The pair search without candidates, for a frame with no coherence to use:
+    /// first a vertex of either polygon deep in the other's region
+    /// (vertices_deep_inside, while probe_odds finds it worth asking); then
     /// A's edge tree (in A's frame) and B's (in B's frame, its circles posed
     /// by the frame's pose) traversed together (edge_tree::query_pairs):
     /// below a leaf of B each of its edges, posed in double only then, finds
@@ -489,6 +529,14 @@ private:
     /// with B's box taken from its posed bounding circle.
     frame_result pairs_through_trees(const frame& f) {
         tally(&detector_statistics::jump_frames);
+        if (!witnessing() && interior_odds_.worth_asking()) {
+            const bool deep = vertices_deep_inside(f);
+            interior_odds_.record(deep);
+            if (deep) {
+                tally(&detector_statistics::interior_frames);
+                return {true, {}};
+            }
+        }
         if constexpr (with_witness)
             if (options_.witness) witness_state::value.clear();
         // The posed circles hold B's posed edges up to the pose's scale
@@ -945,6 +993,51 @@ private:
     /// posed circle and a box distance per node pair plus a segment query
     /// per moving edge.
     static constexpr std::size_t every_pair_limit = 64;
+    /// The vertices of each polygon looked up in the other's deep cells
+    /// (vertices_deep_inside).
+    static constexpr std::size_t interior_probes = 16;
+    /// Which vertices of one polygon vertices_deep_inside looks up in the
+    /// other's deep cells: the one found there last, then up to
+    /// interior_probes spread along the rings (numbers k n / probes); the
+    /// one found is kept for the next frame, where poses that jump about
+    /// one region (a range of poses along a shared border) most often find
+    /// it again.
+    struct deep_probes {
+        std::uint32_t last = 0;
+        template <class Deep>
+        bool found(Deep&& deep, std::size_t n) {
+            if (deep(last)) return true;
+            const std::size_t probes = std::min(n, interior_probes);
+            for (std::size_t k = 0; k < probes; ++k) {
+                const std::size_t j = k * n / probes;
+                if (deep(j)) {
+                    last = static_cast<std::uint32_t>(j);
+                    return true;
+                }
+            }
+            return false;
+        }
+    };
+    deep_probes deep_b_, deep_a_;
+    /// Whether the look-ups of vertices_deep_inside are worth their cost in
+    /// this detector's frames: a score that a frame they answer raises by
+    /// hit_gain and one they cannot answer lowers by 1, within
+    /// [-score_limit, hit_gain]. While it is above -score_limit they are
+    /// asked at every search; below, at every trial_period-th one only (a
+    /// trial that can raise it again). They pay when they answer more than
+    /// one search in hit_gain + 1: failed look-ups cost a tenth of a tree
+    /// descent or less, one that answers saves the descent.
+    struct probe_odds {
+        static constexpr int hit_gain = 8, score_limit = 8;
+        static constexpr unsigned trial_period = 16;
+        int score = 0;
+        unsigned skipped = 0;
+        bool worth_asking() { return score > -score_limit || ++skipped % trial_period == 0; }
+        void record(bool answered) {
+            score = answered ? std::min(score + hit_gain, hit_gain) : std::max(score - 1, -score_limit);
+        }
+    };
+    probe_odds interior_odds_;
     /// Two convex polygons take the separating-edge test when the product of
     /// their sizes is at most this (convex_pair_pays). Measured on random
     /// poses near contact (the time study's convex family, double and

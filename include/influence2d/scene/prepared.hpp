@@ -24,6 +24,7 @@
 #include "influence2d/influence/edge_tree.hpp"
 #include "influence2d/influence/influence_areas.hpp"
 #include "influence2d/predicates/convexity.hpp"
+#include "influence2d/scene/interior_cells.hpp"
 
 namespace influence2d {
 
@@ -110,18 +111,25 @@ struct static_scene {
     const edge_tree& tree() const {
         return tree_.get([this] { return edge_tree(shape); });
     }
+    /// The cells deep in A's region, in A's frame (built on first use;
+    /// thread-safe).
+    const interior_cells& interior() const {
+        return interior_.get([this] { return interior_cells(shape); });
+    }
     /// Bytes of the heap blocks held by the parts built so far (for an exact
     /// NT, the numbers' own limbs are not counted).
     std::size_t heap_bytes() const {
         std::size_t bytes = shape.heap_bytes() + covering.heap_bytes();
         if (const edge_tree* t = tree_.if_built()) bytes += t->heap_bytes();
         if (const influence_areas<NT>* i = areas_.if_built()) bytes += i->heap_bytes();
+        if (const interior_cells* c = interior_.if_built()) bytes += c->heap_bytes();
         return bytes;
     }
 
 private:
     built_once<influence_areas<NT>> areas_;
     built_once<edge_tree> tree_;
+    built_once<interior_cells> interior_;
 };
 
 /// The moving polygon B prepared in its own frame: its centroid and bounding
@@ -151,14 +159,21 @@ struct moving_scene {
     const edge_tree& tree() const {
         return tree_.get([this] { return edge_tree(shape); });
     }
+    /// The cells deep in B's region, in B's own frame (built on first use;
+    /// thread-safe).
+    const interior_cells& interior() const {
+        return interior_.get([this] { return interior_cells(shape); });
+    }
     /// Bytes of the heap blocks held by the parts built so far.
     std::size_t heap_bytes() const {
         const edge_tree* t = tree_.if_built();
-        return shape.heap_bytes() + (t ? t->heap_bytes() : 0);
+        const interior_cells* c = interior_.if_built();
+        return shape.heap_bytes() + (t ? t->heap_bytes() : 0) + (c ? c->heap_bytes() : 0);
     }
 
 private:
     built_once<edge_tree> tree_;
+    built_once<interior_cells> interior_;
 };
 
 /// A prepared for detectors in NT, to be shared by many (detector's

@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: BSL-1.0
+#pragma once
+/// \file
+/// Which points certainly lie in a polygon's closed region, answered by one
+/// look-up in a grid over its box: the cells that hold no point of the
+/// boundary and lie in the region, with their eight neighbours.
+
+#include <algorithm>
+#include <bitset>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "influence2d/core/box.hpp"
+#include "influence2d/core/point.hpp"
+#include "influence2d/core/polygon.hpp"
+#include "influence2d/influence/bounds.hpp"
+
+namespace influence2d {
+
+/// A grid of square cells over a polygon's box that marks the cells lying
+/// deep in its closed region: a deep cell and its eight neighbours hold no
+/// point of the boundary and lie in the region. A point whose cell, found
+/// in double, is deep lies in the region, and so does every point within
+/// half a cell of it: holds() answers "certainly inside" with one look-up,
+/// and false when it cannot tell. Built once per polygon (see
+/// static_scene::interior), in time linear in the cells and the edges.
+///
+///   size the cells: about cells_per_edge cells per edge, square
+///   mark every cell an edge may touch (closed cells: each edge's slabs
+///     widened by the slack)
+///   for each row, the edges crossing the horizontal line through its
+///     cells' centres, by exact comparisons of y (half open, as for a
+///     ray), each at its x in double with its direction
+///   an unmarked cell is inside when the crossings left of its centre
+///     wind about it (a sum of directions not zero)
+///   a cell is deep when it and its eight neighbours are inside
+///
+/// The one comparison in double, a crossing's x against a centre's, is
+/// right for every unmarked cell: the edge meets the centre's line at a
+/// point of the cell when it is within half a side of the centre, and the
+/// cell is then marked, so an unmarked cell's crossings lie more than
+/// half a side from its centre, far beyond the rounding of their x (below
+/// the slack, which is at most an eighth of a side).
+class interior_cells {
+public:
+    /// A grid with no cell: holds() is always false.
+    interior_cells() = default;
+
+    /// Builds the grid over `shape`. A polygon whose box is flat, or whose
+    /// cells would be too small against the rounding of its coordinates,
+    /// gets no deep cell.
+    explicit interior_cells(const polygon& shape) {
+        const box& b = shape.bounds();
+        const double width = b.max_x - b.min_x, height = b.max_y - b.min_y;
+        if (shape.size() < 3 || !(width > 0) || !(height > 0) || !std::isfinite(width * height)) return;
+        const double wanted = std::clamp(static_cast<double>(shape.size()) * cells_per_edge, min_cells, max_cells);
+        side_ = std::sqrt(width * height / wanted);
+        const double columns = std::ceil(width / side_), rows = std::ceil(height / side_);
+        slack_ = marking_slack * (coordinate_scale(shape) + side_);
+        if (!(slack_ <= side_ * max_slack_per_side) || !(columns >= 3 && rows >= 3 && columns * rows <= 2 * max_cells))
+            return;
+        nx_ = static_cast<std::size_t>(columns);
+        ny_ = static_cast<std::size_t>(rows);
+        words_ = (nx_ + 63) / 64;
+        x0_ = b.min_x;
+        y0_ = b.min_y;
+        inverse_side_ = 1 / side_;
+        std::vector<std::uint64_t> marked(words_ * ny_, 0);
+        for (std::size_t e = 0; e < shape.size(); ++e) mark(shape.vertex(e), shape.vertex(shape.next(e)), marked);
+        const std::vector<std::uint64_t> inside = inside_cells(shape, marked);
+        bits_.assign(words_ * ny_, 0);
+        std::vector<std::uint64_t> column(words_);
+        for (std::size_t j = 1; j + 1 < ny_; ++j) {
+            const std::uint64_t* below = &inside[(j - 1) * words_];
+            const std::uint64_t* row = &inside[j * words_];
+            const std::uint64_t* above = &inside[(j + 1) * words_];
+            // Column neighbours first (three rows), then row neighbours by
+            // shifts across words; bits past the last column stay clear.
+            for (std::size_t w = 0; w < words_; ++w) column[w] = below[w] & row[w] & above[w];
+            for (std::size_t w = 0; w < words_; ++w) {
+                const std::uint64_t from_left = (column[w] << 1) | (w > 0 ? column[w - 1] >> 63 : 0);
+                const std::uint64_t from_right = (column[w] >> 1) | (w + 1 < words_ ? column[w + 1] << 63 : 0);
+                const std::uint64_t deep = column[w] & from_left & from_right;
+                bits_[j * words_ + w] = deep;
+                deep_ += std::bitset<64>(deep).count();
+            }
+        }
+        if (deep_ == 0) bits_.clear();
+    }
+
+    /// Whether every point within `margin` of q certainly lies in the
+    /// polygon's closed region: q's cell (found in double) is deep and the
+    /// margin is at most half a side. False for a point off the grid, a NaN
+    /// coordinate, or a margin that is not a number.
+    bool holds(const point<double>& q, double margin) const {
+        if (bits_.empty() || !(margin <= side_ / 2)) return false;
+        const double u = (q.x - x0_) * inverse_side_, v = (q.y - y0_) * inverse_side_;
+        if (!(u >= 0 && v >= 0 && u < static_cast<double>(nx_) && v < static_cast<double>(ny_))) return false;
+        const auto i = static_cast<std::size_t>(u);
+        return (bits_[static_cast<std::size_t>(v) * words_ + i / 64] >> (i % 64)) & 1;
+    }
+
+    /// Whether no cell is deep (holds() is then always false).
+    bool empty() const { return bits_.empty(); }
+    /// The number of deep cells.
+    std::size_t deep_cells() const { return deep_; }
+    /// The side of a cell (0 without a grid).
+    double cell_side() const { return side_; }
+    /// Bytes of the heap blocks held.
+    std::size_t heap_bytes() const { return bits_.capacity() * sizeof(std::uint64_t); }
+
+private:
+    /// About 128 cells per edge (16 bytes of bits): fine enough that the
+    /// thin parts of real polygons (a country a few cells wide) keep deep
+    /// cells.
+    static constexpr double cells_per_edge = 128;
+    /// Bounds on the cells: at least 64 x 64 for a polygon of few edges, at
+    /// most 2^20 (128 KiB of bits) for one of many.
+    static constexpr double min_cells = 4096, max_cells = 1048576;
+    /// The widening of each edge's marked slabs, relative to the
+    /// coordinates' scale plus a side. A cell's sides, x0 + i side, an
+    /// edge's y over a slab (a difference, a quotient clamped to [0, 1], a
+    /// product and a sum), a crossing's x, and a point's cell index
+    /// ((x - x0) / side, with the side's reciprocal rounded) are each within
+    /// a few units in the last place (2^-52) of the scale plus a side; 2^-40
+    /// covers them with room, so that every cell a closed edge touches is
+    /// marked, both cells when it runs along their shared side, and a
+    /// point's computed cell is within the slack of its own.
+    static constexpr double marking_slack = 0x1p-40;
+    /// Cells smaller than 8 slacks are not built: the slack and a margin of
+    /// half a side then stay below one side, so that every point within
+    /// the margin of a point whose computed cell is c lies in c's 3 x 3
+    /// block.
+    static constexpr double max_slack_per_side = 0.125;
+
+    /// The grid column (or row, with y0 for x0 and ny for nx) of coordinate
+    /// x, clamped to [0, n - 1].
+    std::size_t cell_of(double x, double origin, std::size_t n) const {
+        const double u = std::floor((x - origin) * inverse_side_);
+        return u <= 0 ? 0 : u >= static_cast<double>(n - 1) ? n - 1 : static_cast<std::size_t>(u);
+    }
+    /// The centre's coordinate of column (row) i.
+    double centre_of(std::size_t i, double origin) const { return origin + (static_cast<double>(i) + 0.5) * side_; }
+
+    /// Marks every cell the closed edge [a, b] may touch: over each column
+    /// the edge's x range meets (widened by the slack), the rows of its y
+    /// range over that column's slab (widened by the slack).
+    void mark(const point<double>& a, const point<double>& b, std::vector<std::uint64_t>& marked) const {
+        const double lo_x = std::min(a.x, b.x), hi_x = std::max(a.x, b.x);
+        const double lo_y = std::min(a.y, b.y), hi_y = std::max(a.y, b.y);
+        const std::size_t first = cell_of(lo_x - slack_, x0_, nx_), last = cell_of(hi_x + slack_, x0_, nx_);
+        for (std::size_t i = first; i <= last; ++i) {
+            const double l = std::max(lo_x, x0_ + static_cast<double>(i) * side_ - slack_);
+            const double r = std::min(hi_x, x0_ + static_cast<double>(i + 1) * side_ + slack_);
+            double y_l = lo_y, y_r = hi_y;
+            if (a.x != b.x) {
+                const double tl = std::clamp((l - a.x) / (b.x - a.x), 0.0, 1.0);
+                const double tr = std::clamp((r - a.x) / (b.x - a.x), 0.0, 1.0);
+                y_l = a.y + tl * (b.y - a.y);
+                y_r = a.y + tr * (b.y - a.y);
+            }
+            const double bottom = std::max(lo_y, std::min(y_l, y_r)) - slack_;
+            const double top = std::min(hi_y, std::max(y_l, y_r)) + slack_;
+            const std::size_t row_end = cell_of(top, y0_, ny_);
+            for (std::size_t j = cell_of(bottom, y0_, ny_); j <= row_end; ++j)
+                marked[j * words_ + i / 64] |= std::uint64_t{1} << (i % 64);
+        }
+    }
+
+    /// The unmarked cells whose centre the boundary winds about, as bits
+    /// of rows (see the class comment).
+    std::vector<std::uint64_t> inside_cells(const polygon& shape, const std::vector<std::uint64_t>& marked) const {
+        struct crossing {
+            std::size_t row;
+            double x;
+            int direction;  ///< +1 upwards, -1 downwards
+        };
+        std::vector<crossing> crossings;
+        for (std::size_t e = 0; e < shape.size(); ++e) {
+            const point<double>&a = shape.vertex(e), &b = shape.vertex(shape.next(e));
+            if (a.y == b.y) continue;
+            const std::size_t last = cell_of(std::max(a.y, b.y) + slack_, y0_, ny_);
+            for (std::size_t j = cell_of(std::min(a.y, b.y) - slack_, y0_, ny_); j <= last; ++j) {
+                const double y = centre_of(j, y0_);
+                const int direction = a.y <= y && y < b.y ? 1 : b.y <= y && y < a.y ? -1 : 0;
+                if (direction != 0) crossings.push_back({j, a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y), direction});
+            }
+        }
+        std::sort(crossings.begin(), crossings.end(),
+                  [](const crossing& l, const crossing& r) { return l.row != r.row ? l.row < r.row : l.x < r.x; });
+        std::vector<std::uint64_t> inside(words_ * ny_, 0);
+        std::size_t c = 0;
+        for (std::size_t j = 0; j < ny_; ++j) {
+            long long winding = 0;
+            for (std::size_t i = 0; i < nx_; ++i) {
+                const double x = centre_of(i, x0_);
+                for (; c < crossings.size() && crossings[c].row == j && crossings[c].x < x; ++c)
+                    winding += crossings[c].direction;
+                const std::size_t w = j * words_ + i / 64;
+                const std::uint64_t bit = std::uint64_t{1} << (i % 64);
+                if (winding != 0 && !(marked[w] & bit)) inside[w] |= bit;
+            }
+            while (c < crossings.size() && crossings[c].row == j) ++c;
+        }
+        return inside;
+    }
+
+    double x0_ = 0, y0_ = 0, side_ = 0, inverse_side_ = 0, slack_ = 0;
+    std::size_t nx_ = 0, ny_ = 0, words_ = 0, deep_ = 0;
+    std::vector<std::uint64_t> bits_;  ///< row j's bits at j words_: bit i of the row is cell (i, j) deep
+};
+
+}  // namespace influence2d

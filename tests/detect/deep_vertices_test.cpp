@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: BSL-1.0
+// Jumps answered by a vertex of one polygon deep in the other's region
+// (detector::vertices_deep_inside, scene/interior_cells.hpp): every frame
+// against CGAL's exact answer (verification::cgal_reference, which tests
+// every edge pair and locates every ring itself), in exact rationals and
+// certified, at d = 0 and d > 0, both roles, on random multipolygons with
+// holes and islands, a long shared border, the time study's families and
+// all of them far from the origin; the route answers many of the frames.
+
+#include <catch2/catch.hpp>
+
+#include "support/effort.hpp"
+#include "support/random_scenes.hpp"
+#include "support/shapes.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "influence2d/detect/brute_force.hpp"
+#include "influence2d/detect/detector.hpp"
+#include "influence2d/exact/certified_detector.hpp"
+#include "influence2d/number/cgal.hpp"
+#include "verification/cgal_reference.hpp"
+#include "verification/families.hpp"
+
+using namespace influence2d;
+using test_scenes::rng;
+
+namespace {
+
+/// The wiggly border y = b(x) from x = 0 to 100 (n + 1 vertices), and the
+/// region below it (side -1) or above it (side +1), 10 deep.
+polygon border_side(std::size_t n, double side) {
+    ring_input r;
+    for (std::size_t k = 0; k <= n; ++k) {
+        const double x = 100.0 * static_cast<double>(k) / static_cast<double>(n);
+        r.vertices.push_back({x, 0.2 * std::sin(3.1 * x) + 0.1 * std::sin(7.3 * x)});
+    }
+    r.vertices.push_back({100, 10 * side});
+    r.vertices.push_back({0, 10 * side});
+    return polygon({r});
+}
+
+/// Random poses (independent: every frame a jump) that move B by up to
+/// `shift` and turn it by up to `turn` about the origin.
+std::vector<pose> scattered(rng& g, std::size_t count, double shift, double turn) {
+    std::vector<pose> out;
+    for (std::size_t k = 0; k < count; ++k)
+        out.push_back({g.uniform(-shift, shift), g.uniform(-shift, shift), g.uniform(-turn, turn)});
+    return out;
+}
+
+/// Runs the poses through detectors in exact rationals and certified (and
+/// double against the brute force in double), each frame against the
+/// reference; returns the frames the exact detector answered by a deep
+/// vertex.
+std::size_t check_scene(const polygon& a, const polygon& b, const std::vector<pose>& poses, double d) {
+    const verification::cgal_reference ref(a, b, d);
+    detector_options o;
+    o.distance = d;
+    detector<exact_rational> exact(a, b, o);
+    certified_detector<detector> certified(a, b, o);
+    detector<double> fast(a, b, o);
+    brute_force_detector<double> fast_ref(a, b, o);
+    for (std::size_t k = 0; k < poses.size(); ++k) {
+        INFO("d " << d << " frame " << k << " pose " << poses[k].tx << ", " << poses[k].ty << ", " << poses[k].theta);
+        const bool want = ref.collide(poses[k]).collides;
+        REQUIRE(exact.collide(poses[k]).collides == want);
+        REQUIRE(certified.collide(poses[k]).collides == want);
+        REQUIRE(fast.collide(poses[k]).collides == fast_ref.collide(poses[k]).collides);
+    }
+    return exact.statistics().interior_frames;
+}
+
+}  // namespace
+
+TEST_CASE("deep vertices: jumps of overlapping polygons answer as the exact reference", "[detect][exact]") {
+    rng g(2612);
+    std::size_t deep = 0, frames = 0;
+    const int rounds = test_effort::scaled(16);
+    for (int round = 0; round < rounds; ++round) {
+        polygon a, b;
+        double shift = 3, turn = 0.05;
+        switch (round % 4) {
+        case 0:  // a long shared border, the moving side shifted across it
+            a = border_side(300, -1);
+            b = border_side(300, 1);
+            break;
+        case 1:  // random multipolygons (holes, islands in holes) in one range
+            a = test_scenes::random_multi(g, 12, 12).to_polygon();
+            b = test_scenes::random_multi(g, 12, 12).to_polygon();
+            shift = 6;
+            turn = 3;
+            break;
+        case 2:  // the families, 1024 x 64 and 64 x 1024
+        {
+            const verification::family f = verification::all_families[round / 4 % 5];
+            a = verification::make_family_polygon(f, round % 8 < 4 ? 1024 : 64, 11 + round);
+            b = verification::make_family_polygon(f, round % 8 < 4 ? 64 : 1024, 12 + round);
+            shift = 0.5;
+            turn = 3;
+            break;
+        }
+        default:  // a swallower and a multipolygon
+            a = test_scenes::random_swallower(g).to_polygon();
+            b = test_scenes::random_multi(g, 8, 8).to_polygon();
+            shift = 8;
+            turn = 3;
+        }
+        // Every other round far from the origin: A moved by 2^20, the poses
+        // with it.
+        std::vector<pose> poses = scattered(g, 60, shift, turn);
+        if (round % 2 == 1) {
+            const point<double> far{0x1p20, -0x1p19};
+            a = test_shapes::translated(a, far.x, far.y);
+            for (pose& p : poses) {
+                p.tx += far.x;
+                p.ty += far.y;
+            }
+        }
+        for (const bool swapped : {false, true}) {
+            for (const double d : {0.0, 0.05}) {
+                INFO("round " << round << " swapped " << swapped);
+                deep += swapped ? check_scene(b, a, poses, d) : check_scene(a, b, poses, d);
+                frames += poses.size();
+            }
+        }
+    }
+    // The route answers a good share of the frames.
+    INFO(deep << " of " << frames << " frames answered by a deep vertex");
+    CHECK(deep * 5 > frames);
+}
+
+TEST_CASE("deep vertices: not asked with witnesses, which need edge pairs", "[detect]") {
+    const polygon a = border_side(200, -1), b = border_side(200, 1);
+    rng g(2613);
+    const std::vector<pose> poses = scattered(g, 40, 3, 0.05);
+    detector_options o;
+    o.witness = true;
+    detector<exact_rational> witnessed(a, b, o);
+    const verification::cgal_reference ref(a, b, 0, true);
+    for (const pose& p : poses) {
+        const frame_result want = ref.collide(p);
+        const frame_result got = witnessed.collide(p);
+        REQUIRE(got.collides == want.collides);
+        REQUIRE(got.pairs == want.pairs);
+    }
+    CHECK(witnessed.statistics().interior_frames == 0);
+}

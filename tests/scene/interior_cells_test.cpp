@@ -1,0 +1,183 @@
+// SPDX-License-Identifier: BSL-1.0
+// The cells deep in a polygon's region (scene/interior_cells.hpp), against
+// CGAL's exact rationals: every point the grid holds lies in the closed
+// region with every point within the margin of it (the point inside, each
+// edge of each ring at least the margin away, exactly), on random
+// multipolygons, messy rings and the time study's families at scales from
+// 2^-600 to 2^500 and far from the origin, on points anywhere in the box and
+// just off the boundary, and on boundaries that run exactly along the
+// cells' sides.
+
+#include <catch2/catch.hpp>
+
+#include "support/effort.hpp"
+#include "support/exact_regions.hpp"
+#include "support/random_scenes.hpp"
+#include "support/shapes.hpp"
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "influence2d/scene/interior_cells.hpp"
+#include "verification/families.hpp"
+
+namespace {
+
+using namespace influence2d;
+using test_scenes::rng;
+using Q = exact_rational;
+
+/// What one polygon's check found.
+struct tally {
+    std::size_t asked = 0, inside = 0, held = 0;  ///< the random points of the box
+};
+
+/// Whether every point within m of q lies in p's closed region, exactly: q
+/// in the region and every edge at least m from it.
+bool disc_in_region(const test_exact::placed_shape& p, const point<double>& q, double m) {
+    const test_exact::point_2 x(Q(q.x), Q(q.y));
+    if (!test_exact::in_region(p, x)) return false;
+    const Q m2 = Q(m) * Q(m);
+    for (std::size_t i = 0; i < p.v.size(); ++i) {
+        const Q d2 = p.v[i] == p.end(i) ? CGAL::squared_distance(x, p.v[i])
+                                        : CGAL::squared_distance(x, test_exact::segment_2(p.v[i], p.end(i)));
+        if (d2 < m2) return false;
+    }
+    return true;
+}
+
+/// Asks the grid of p about `count` random points of its box and points
+/// just off each edge (on either side, at fractions of a cell's side), each
+/// with the largest margin holds() takes; every point held must pass
+/// disc_in_region.
+tally check_cells(const polygon& p, rng& g, std::size_t count) {
+    const interior_cells cells(p);
+    const test_exact::placed_shape exact = test_exact::place(p, pose{});
+    const double m = cells.cell_side() / 2;
+    tally t;
+    const auto ask = [&](const point<double>& q) {
+        if (!cells.holds(q, m)) return false;
+        INFO("point (" << q.x << ", " << q.y << "), margin " << m << ", " << p.size() << " vertices");
+        CHECK(disc_in_region(exact, q, m));
+        return true;
+    };
+    const box& b = p.bounds();
+    for (std::size_t k = 0; k < count; ++k) {
+        const point<double> q{g.uniform(b.min_x, b.max_x), g.uniform(b.min_y, b.max_y)};
+        ++t.asked;
+        t.inside += test_exact::in_region(exact, test_exact::point_2(Q(q.x), Q(q.y))) ? 1 : 0;
+        t.held += ask(q) ? 1 : 0;
+    }
+    const double side = cells.cell_side();
+    for (std::size_t e = 0; e < p.size(); e += 1 + p.size() / 64) {
+        const point<double>&u = p.vertex(e), &v = p.vertex(p.next(e));
+        const double dx = v.x - u.x, dy = v.y - u.y, length = std::hypot(dx, dy);
+        if (!(length > 0)) continue;
+        for (const double f : {0.25, 0.5, 1.0, 1.5, 2.0})
+            for (const double sign : {-1.0, 1.0}) {
+                const double off = sign * f * side / length;
+                ask({u.x / 2 + v.x / 2 - off * dy, u.y / 2 + v.y / 2 + off * dx});
+            }
+    }
+    // Not with a margin beyond half a side, nor a NaN one, nor a NaN point.
+    const point<double> c = b.centre();
+    CHECK_FALSE(cells.holds(c, std::nextafter(m, 1e300)));
+    CHECK_FALSE(cells.holds(c, std::nan("")));
+    CHECK_FALSE(cells.holds({std::nan(""), c.y}, 0));
+    return t;
+}
+
+}  // namespace
+
+TEST_CASE("interior_cells: every point held lies in the region with its margin, against exact regions", "[scene]") {
+    rng g(2611);
+    tally all;
+    const int rounds = test_effort::scaled(120);
+    for (int round = 0; round < rounds; ++round) {
+        const int k = std::array<int, 5>{0, -600, -40, 7, 500}[static_cast<std::size_t>(round % 5)];
+        polygon base = test_scenes::random_multi(g, 10 + round % 30, 2 + round % 6).to_polygon();
+        if (round % 4 == 1) base = test_scenes::random_swallower(g).to_polygon();
+        if (round % 4 == 2) base = polygon(test_scenes::random_messy(g, 8 + round % 10));
+        if (round % 4 == 3) {
+            const verification::family f = verification::all_families[round / 4 % 5];
+            base = verification::make_family_polygon(f, std::array<std::size_t, 3>{8, 64, 1024}[round % 3], 7 + round);
+        }
+        polygon p = base.scaled_by_power_of_two(k);
+        // Every seventh far from the origin: the cells then shrink against
+        // the coordinates' rounding.
+        if (round % 7 == 6) p = test_shapes::translated(base, 0x1p20, -0x1p19);
+        INFO("round " << round << " at 2^" << k);
+        const tally t = check_cells(p, g, 200);
+        all.asked += t.asked;
+        all.inside += t.inside;
+        all.held += t.held;
+    }
+    // Not empty: the grid holds most random points of the regions.
+    INFO(all.held << " held of " << all.inside << " inside, " << all.asked << " asked");
+    CHECK(all.held * 2 > all.inside);
+}
+
+TEST_CASE("interior_cells: boundaries along the cells' sides, touching parts and a slit", "[scene]") {
+    // 64 x 64 boxes of fewer than 32 edges get 4,096 unit cells: these
+    // boundaries run exactly along cell sides.
+    const std::vector<polygon> shapes{
+        // Two squares sharing the side x = 32.
+        polygon({test_shapes::ring({{0, 0}, {32, 0}, {32, 64}, {0, 64}}),
+                 test_shapes::ring({{32, 0}, {64, 0}, {64, 64}, {32, 64}})}),
+        // A square with a square hole whose sides are cell sides.
+        polygon({test_shapes::square_ring(0, 0, 64), test_shapes::square_ring(16, 16, 32, ring_role::hole)}),
+        // A slit of width 0 from the top down to y = 20 along x = 30: the
+        // two sides of the slit are the same line.
+        polygon({test_shapes::ring({{0, 0}, {64, 0}, {64, 64}, {30, 64}, {30, 20}, {30, 64}, {0, 64}})}),
+        // A comb: teeth of one cell width, one cell apart.
+        polygon({test_shapes::ring({{0, 0},
+                                    {64, 0},
+                                    {64, 8},
+                                    {63, 8},
+                                    {63, 64},
+                                    {62, 64},
+                                    {62, 8},
+                                    {2, 8},
+                                    {2, 64},
+                                    {1, 64},
+                                    {1, 8},
+                                    {0, 8}})}),
+    };
+    for (std::size_t s = 0; s < shapes.size(); ++s) {
+        const polygon& p = shapes[s];
+        const interior_cells cells(p);
+        const test_exact::placed_shape exact = test_exact::place(p, pose{});
+        INFO("shape " << s << ", cell side " << cells.cell_side());
+        CHECK(cells.cell_side() == 1);
+        std::size_t held = 0;
+        // Every lattice point, cell centre and quarter point: sides, corners
+        // and centres.
+        for (int i = 0; i <= 256; ++i)
+            for (int j = 0; j <= 256; ++j) {
+                const point<double> q{i / 4.0, j / 4.0};
+                if (!cells.holds(q, 0.5)) continue;
+                ++held;
+                INFO("point (" << q.x << ", " << q.y << ")");
+                CHECK(disc_in_region(exact, q, 0.5));
+            }
+        CHECK(held > 0);
+    }
+}
+
+TEST_CASE("interior_cells: none for a flat box or cells below the coordinates' rounding", "[scene]") {
+    // A sliver 2^-30 as high as wide: fewer than three rows of cells.
+    const polygon flat({test_shapes::ring({{0, 0}, {4, 0}, {2, 0x1p-28}})});
+    CHECK(interior_cells(flat).empty());
+    // A unit square at 2^40: a side of 1/64 is below 8 slacks (2^-40 of
+    // 2^40 each).
+    const interior_cells far(test_shapes::square(0x1p40, 0x1p40, 1));
+    CHECK(far.empty());
+    CHECK_FALSE(far.holds({0x1p40 + 0.5, 0x1p40 + 0.5}, 0));
+    // A default grid holds nothing.
+    CHECK_FALSE(interior_cells().holds({0, 0}, 0));
+    // The square itself near the origin: most of it is deep.
+    const interior_cells near(test_shapes::square(0, 0, 1));
+    CHECK(near.deep_cells() > 3000);
+    CHECK(near.holds({0.5, 0.5}, 0.001));
+}
