@@ -429,6 +429,15 @@ private:
     /// that jump about a shared border) most often have such a vertex,
     /// found by a look-up each, where the descent of both trees visits
     /// dozens of node pairs before the first crossing.
+    /// Whether vertices_deep_inside may be asked: both polygons' deep cells
+    /// were built (by another detector sharing them, or build_structures),
+    /// or this detector has searched the trees (n_A + n_B) /
+    /// interior_build_edges times already, and builds them now.
+    bool interiors_pay() {
+        if (a_->interior_if_built() && b_.scene().interior_if_built()) return true;
+        return ++searches_without_interiors_ > (a_->shape.size() + b_.size()) / interior_build_edges;
+    }
+
     bool vertices_deep_inside(const frame& f) {
         const interior_cells& in_a = a_->interior();
         const std::size_t nb = b_.size(), na = a_->shape.size();
@@ -529,7 +538,7 @@ private:
     /// with B's box taken from its posed bounding circle.
     frame_result pairs_through_trees(const frame& f) {
         tally(&detector_statistics::jump_frames);
-        if (!witnessing() && interior_odds_.worth_asking()) {
+        if (!witnessing() && interiors_pay() && interior_odds_.worth_asking()) {
             const bool deep = vertices_deep_inside(f);
             interior_odds_.record(deep);
             if (deep) {
@@ -996,6 +1005,14 @@ private:
     /// The vertices of each polygon looked up in the other's deep cells
     /// (vertices_deep_inside).
     static constexpr std::size_t interior_probes = 16;
+    /// A detector searches the trees (n_A + n_B) / interior_build_edges times
+    /// before it builds the deep cells (interiors_pay): building them costs
+    /// 0.2 to 1.5 us per edge on the time study's 1,024-gons and a search of
+    /// two such polygons 1.2 to 9 us, so the searches before cost a third
+    /// of the build or more, and a detector asked a few frames never builds
+    /// them.
+    static constexpr std::size_t interior_build_edges = 16;
+    std::size_t searches_without_interiors_ = 0;
     /// Which vertices of one polygon vertices_deep_inside looks up in the
     /// other's deep cells: the one found there last, then up to
     /// interior_probes spread along the rings (numbers k n / probes); the

@@ -170,14 +170,14 @@ private:
     }
 
     /// The unmarked cells whose centre the boundary winds about, as bits
-    /// of rows (see the class comment).
+    /// of rows (see the class comment). Each crossing adds its direction to
+    /// the first cell of its row whose centre lies right of it; the sums
+    /// along a row then count the crossings left of each centre. A
+    /// crossing's cell found in double can be off only for the cells whose
+    /// centre is within its rounding of the crossing, which are marked.
     std::vector<std::uint64_t> inside_cells(const polygon& shape, const std::vector<std::uint64_t>& marked) const {
-        struct crossing {
-            std::size_t row;
-            double x;
-            int direction;  ///< +1 upwards, -1 downwards
-        };
-        std::vector<crossing> crossings;
+        const std::size_t stride = nx_ + 1;
+        std::vector<std::int32_t> delta(stride * ny_, 0);
         for (std::size_t e = 0; e < shape.size(); ++e) {
             const point<double>&a = shape.vertex(e), &b = shape.vertex(shape.next(e));
             if (a.y == b.y) continue;
@@ -185,24 +185,24 @@ private:
             for (std::size_t j = cell_of(std::min(a.y, b.y) - slack_, y0_, ny_); j <= last; ++j) {
                 const double y = centre_of(j, y0_);
                 const int direction = a.y <= y && y < b.y ? 1 : b.y <= y && y < a.y ? -1 : 0;
-                if (direction != 0) crossings.push_back({j, a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y), direction});
+                if (direction == 0) continue;
+                const double x = a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y);
+                const double right = std::floor((x - x0_) * inverse_side_ - 0.5) + 1;
+                const std::size_t i = right <= 0                          ? 0
+                                      : right >= static_cast<double>(nx_) ? nx_
+                                                                          : static_cast<std::size_t>(right);
+                delta[j * stride + i] += direction;
             }
         }
-        std::sort(crossings.begin(), crossings.end(),
-                  [](const crossing& l, const crossing& r) { return l.row != r.row ? l.row < r.row : l.x < r.x; });
         std::vector<std::uint64_t> inside(words_ * ny_, 0);
-        std::size_t c = 0;
         for (std::size_t j = 0; j < ny_; ++j) {
             long long winding = 0;
             for (std::size_t i = 0; i < nx_; ++i) {
-                const double x = centre_of(i, x0_);
-                for (; c < crossings.size() && crossings[c].row == j && crossings[c].x < x; ++c)
-                    winding += crossings[c].direction;
+                winding += delta[j * stride + i];
                 const std::size_t w = j * words_ + i / 64;
                 const std::uint64_t bit = std::uint64_t{1} << (i % 64);
                 if (winding != 0 && !(marked[w] & bit)) inside[w] |= bit;
             }
-            while (c < crossings.size() && crossings[c].row == j) ++c;
         }
         return inside;
     }

@@ -116,6 +116,8 @@ struct static_scene {
     const interior_cells& interior() const {
         return interior_.get([this] { return interior_cells(shape); });
     }
+    /// The deep cells if some caller built them, else nullptr (never builds).
+    const interior_cells* interior_if_built() const { return interior_.if_built(); }
     /// Bytes of the heap blocks held by the parts built so far (for an exact
     /// NT, the numbers' own limbs are not counted).
     std::size_t heap_bytes() const {
@@ -164,6 +166,8 @@ struct moving_scene {
     const interior_cells& interior() const {
         return interior_.get([this] { return interior_cells(shape); });
     }
+    /// The deep cells if some caller built them, else nullptr (never builds).
+    const interior_cells* interior_if_built() const { return interior_.if_built(); }
     /// Bytes of the heap blocks held by the parts built so far.
     std::size_t heap_bytes() const {
         const edge_tree* t = tree_.if_built();
