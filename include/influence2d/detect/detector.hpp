@@ -240,18 +240,21 @@ public:
         return collide_at(q);
     }
 
-    /// Builds now what frames otherwise build on first use: A's cone index,
-    /// edge tree and deep cells, B's edge tree and deep cells (shared with
-    /// every detector on the same prepared polygons) and the detector's edge
-    /// grid. Frames after it cost
+    /// Builds now what frames otherwise build on first use: A's cone index
+    /// and edge tree, B's edge tree, both polygons' deep cells when the pair
+    /// can search the trees (not two small convex polygons, nor a pair of at
+    /// most every_pair_limit edge pairs; all shared with every detector on
+    /// the same prepared polygons) and the detector's edge grid. Frames after it cost
     /// the same from the first one on, as a real-time loop wants; answers are
     /// unchanged. Costs about what the first frames would have paid.
     void build_structures() {
         (void)a_->areas();
         (void)a_tree();
         (void)b_tree();
-        (void)a_->interior();
-        (void)b_.scene().interior();
+        if (!convex_route_ && !every_pair_pays()) {
+            (void)a_->interior();
+            (void)b_.scene().interior();
+        }
         if (!grid_built_) build_grid();
     }
 

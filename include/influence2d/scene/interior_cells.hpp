@@ -116,9 +116,10 @@ private:
     /// thin parts of real polygons (a country a few cells wide) keep deep
     /// cells.
     static constexpr double cells_per_edge = 128;
-    /// Bounds on the cells: at least 64 x 64 for a polygon of few edges, at
-    /// most 2^20 (128 KiB of bits) for one of many.
-    static constexpr double min_cells = 4096, max_cells = 1048576;
+    /// Bounds on the cells: at least 32 x 32 for a polygon of few edges (a
+    /// few microseconds to build), at most 2^20 (128 KiB of bits) for one
+    /// of many.
+    static constexpr double min_cells = 1024, max_cells = 1048576;
     /// The widening of each edge's marked slabs, relative to the
     /// coordinates' scale plus a side. A cell's sides, x0 + i side, an
     /// edge's y over a slab (a difference, a quotient clamped to [0, 1], a
