@@ -28,17 +28,10 @@ using test_scenes::rng;
 
 namespace {
 
-/// The wiggly border y = b(x) from x = 0 to 100 (n + 1 vertices), and the
-/// region below it (side -1) or above it (side +1), 10 deep.
+/// The region below the wiggly border of n edges (side -1) or above it
+/// (side +1).
 polygon border_side(std::size_t n, double side) {
-    ring_input r;
-    for (std::size_t k = 0; k <= n; ++k) {
-        const double x = 100.0 * static_cast<double>(k) / static_cast<double>(n);
-        r.vertices.push_back({x, 0.2 * std::sin(3.1 * x) + 0.1 * std::sin(7.3 * x)});
-    }
-    r.vertices.push_back({100, 10 * side});
-    r.vertices.push_back({0, 10 * side});
-    return polygon({r});
+    return test_shapes::border_side(test_shapes::wiggly_border(n), side);
 }
 
 /// Random poses (independent: every frame a jump) that move B by up to

@@ -11,6 +11,8 @@
 #include <random>
 #include <vector>
 
+#include "support/shapes.hpp"
+
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/detector.hpp"
 #include "influence2d/exact/certified_detector.hpp"
@@ -20,25 +22,6 @@
 using namespace influence2d;
 
 namespace {
-
-/// The wiggly border y = b(x) from x = 0 to 100, n + 1 vertices.
-std::vector<point<double>> border(std::size_t n) {
-    std::vector<point<double>> out;
-    for (std::size_t k = 0; k <= n; ++k) {
-        const double x = 100.0 * static_cast<double>(k) / static_cast<double>(n);
-        out.push_back({x, 0.2 * std::sin(3.1 * x) + 0.1 * std::sin(7.3 * x)});
-    }
-    return out;
-}
-
-/// The region below the border (side -1) or above it (side +1), 10 deep.
-polygon side_of(const std::vector<point<double>>& b, double side) {
-    ring_input r;
-    r.vertices = b;
-    r.vertices.push_back({b.back().x, 10 * side});
-    r.vertices.push_back({b.front().x, 10 * side});
-    return polygon({r});
-}
 
 /// A random walk of small steps about the shared position: translations
 /// within 0.3, turns about the origin within 0.002 rad.
@@ -63,8 +46,8 @@ TEST_CASE(
     "shared border: a coherent walk of two large polygons answers as the reference and pays for the pairs it "
     "needs",
     "[detect][coherence]") {
-    const std::vector<point<double>> b = border(1000);
-    const polygon below = side_of(b, -1), above = side_of(b, 1);
+    const std::vector<point<double>> b = test_shapes::wiggly_border(1000);
+    const polygon below = test_shapes::border_side(b, -1), above = test_shapes::border_side(b, 1);
     const std::vector<pose> poses = walk(120, 7);
     for (const bool roles_swapped : {false, true}) {
         const polygon& a = roles_swapped ? above : below;
@@ -106,7 +89,7 @@ TEST_CASE("shared border: the edge pair that met last answers the frames after i
     // the last pair then has none to answer; both sides moved to x = 2^40,
     // where their cells are too small against the coordinates' rounding to
     // be built, the last pair answers them.
-    const std::vector<point<double>> near = border(400);
+    const std::vector<point<double>> near = test_shapes::wiggly_border(400);
     std::vector<point<double>> moved = near;
     for (point<double>& v : moved) v.x += 0x1p40;
     std::vector<pose> poses = walk(150, 11);
@@ -117,7 +100,8 @@ TEST_CASE("shared border: the edge pair that met last answers the frames after i
     poses[100].ty += 30;
     for (const bool far : {false, true})
         for (const double d : {0.0, 0.05}) {
-            const polygon below = side_of(far ? moved : near, -1), above = side_of(far ? moved : near, 1);
+            const polygon below = test_shapes::border_side(far ? moved : near, -1),
+                          above = test_shapes::border_side(far ? moved : near, 1);
             // Far away, each pose turns about (2^40, 0) instead of the origin.
             std::vector<pose> posed = poses;
             if (far)

@@ -31,6 +31,26 @@ inline ring_input ring(std::vector<point<double>> v, ring_role role = ring_role:
     return ring_input{std::move(v), role};
 }
 
+/// The wiggly border y = 0.2 sin(3.1 x) + 0.1 sin(7.3 x) from x = 0 to 100,
+/// n + 1 vertices (two large polygons' long shared border).
+inline std::vector<point<double>> wiggly_border(std::size_t n) {
+    std::vector<point<double>> out;
+    for (std::size_t k = 0; k <= n; ++k) {
+        const double x = 100.0 * static_cast<double>(k) / static_cast<double>(n);
+        out.push_back({x, 0.2 * std::sin(3.1 * x) + 0.1 * std::sin(7.3 * x)});
+    }
+    return out;
+}
+
+/// The region below the border b (side -1) or above it (side +1), 10 deep.
+inline polygon border_side(const std::vector<point<double>>& b, double side) {
+    ring_input r;
+    r.vertices = b;
+    r.vertices.push_back({b.back().x, 10 * side});
+    r.vertices.push_back({b.front().x, 10 * side});
+    return polygon({r});
+}
+
 /// n points at sorted random angles on an ellipse about c (axes rx, ry),
 /// turned by a random angle: a convex polygon's vertices, counter-clockwise,
 /// but for the rounding of their doubles (is_convex_polygon decides).

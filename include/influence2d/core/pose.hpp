@@ -78,6 +78,16 @@ struct rotation_pose {
         return point<NT>{cx * qx - sx * qy + tr::from_double(tx), sx * qx + cx * qy + tr::from_double(ty)};
     }
 
+    /// A point of the posed frame taken back to the unposed one in double:
+    /// the transposed rotation applied to q - t, `x = c*(qx - tx) +
+    /// s*(qy - ty)`, `y = c*(qy - ty) - s*(qx - tx)`. The inverse of the
+    /// pose up to its rotation doubles' scale factor c^2 + s^2 (within 2^-52
+    /// of 1; pose_scale_widening) and the rounding of these operations.
+    point<double> unapply_in_double(const point<double>& q) const {
+        const double x = q.x - tx, y = q.y - ty;
+        return {c * x + s * y, c * y - s * x};
+    }
+
 private:
     [[noreturn]] static void refuse(const pose& p) {
         const char* name = !std::isfinite(p.tx) ? "tx" : !std::isfinite(p.ty) ? "ty" : "theta";

@@ -418,6 +418,15 @@ private:
         }
     }
 
+    /// Whether vertices_deep_inside may be asked: both polygons' deep cells
+    /// were built (by another detector sharing them, or build_structures),
+    /// or this detector has searched the trees (n_A + n_B) /
+    /// interior_build_edges times already, and builds them now.
+    bool interiors_pay() {
+        if (a_->interior_if_built() && b_.scene().interior_if_built()) return true;
+        return ++searches_without_interiors_ > (a_->shape.size() + b_.size()) / interior_build_edges;
+    }
+
     /// Whether a few vertices alone show that the regions meet (see
     /// deep_probes for which): B's vertices posed in double (within the
     /// frame margin of their values in NT) looked up in A's deep cells
@@ -432,33 +441,18 @@ private:
     /// that jump about a shared border) most often have such a vertex,
     /// found by a look-up each, where the descent of both trees visits
     /// dozens of node pairs before the first crossing.
-    /// Whether vertices_deep_inside may be asked: both polygons' deep cells
-    /// were built (by another detector sharing them, or build_structures),
-    /// or this detector has searched the trees (n_A + n_B) /
-    /// interior_build_edges times already, and builds them now.
-    bool interiors_pay() {
-        if (a_->interior_if_built() && b_.scene().interior_if_built()) return true;
-        return ++searches_without_interiors_ > (a_->shape.size() + b_.size()) / interior_build_edges;
-    }
-
     bool vertices_deep_inside(const frame& f) {
         const interior_cells& in_a = a_->interior();
-        const std::size_t nb = b_.size(), na = a_->shape.size();
         if (!in_a.empty()) {
             const auto posed_deep = [&](std::size_t j) { return in_a.holds(b_.approximate_now(j), f.margin); };
-            if (deep_b_.found(posed_deep, nb)) return true;
+            if (deep_b_.found(posed_deep, b_.size())) return true;
         }
         const interior_cells& in_b = b_.scene().interior();
         if (in_b.empty()) return false;
-        const double c = f.t.c, s = f.t.s, tx = f.t.tx, ty = f.t.ty;
         const double margin = 2 * f.margin + b_.scene().scale * pose_scale_widening;
         const polygon& as = a_->shape;
-        const auto placed_deep = [&](std::size_t e) {
-            const point<double>& v = as.vertex(e);
-            const double x = v.x - tx, y = v.y - ty;
-            return in_b.holds({c * x + s * y, c * y - s * x}, margin);
-        };
-        return deep_a_.found(placed_deep, na);
+        const auto placed_deep = [&](std::size_t e) { return in_b.holds(f.t.unapply_in_double(as.vertex(e)), margin); };
+        return deep_a_.found(placed_deep, as.size());
     }
 
     /// Whether two convex polygons are small enough for the separating-edge
@@ -574,11 +568,8 @@ private:
             // order of the frame margin's, and the pose's scale factor,
             // below pose_scale_widening: both inside the grows); A's edges
             // query B's subtrees.
-            const double c = f.t.c, s = f.t.s, tx = f.t.tx, ty = f.t.ty;
-            const auto place = [=](const point<double>& q) {
-                const double x = q.x - tx, y = q.y - ty;
-                return point<double>{c * x + s * y, c * y - s * x};
-            };
+            const rotation_pose t = f.t;
+            const auto place = [t](const point<double>& q) { return t.unapply_in_double(q); };
             const polygon& as = a_->shape;
             const auto ends = [&](std::uint32_t e) {
                 return std::pair<point<double>, point<double>>(place(as.vertex(e)), place(as.vertex(as.next(e))));
