@@ -202,7 +202,7 @@ public:
             throw std::invalid_argument("detector: built without features::distance, options.distance must be 0");
         reach_ = moving_reach(b_.radius(), distance());
         if constexpr (with_coherence) coherence_state::value.skin = options_.temporal_coherence ? 0.25 * reach_ : 0.0;
-        margin_ = posing_margin<NT>(a_->scale + a_->radius + reach_ + skin() + b_.scene().scale);
+        margin_ = placing_margin<NT>(a_->scale + a_->radius + reach_ + skin() + b_.scene().scale);
         const polygon& as = a_->shape;
         a_ring_boxes_.resize(with_holes ? as.ring_count() : 1);
         for (std::size_t r = 0; r < a_ring_boxes_.size(); ++r)
@@ -339,14 +339,20 @@ private:
 
     /// Poses B's centroid for the frame. Rounding of the posed coordinates is
     /// relative to the magnitudes of the terms that make them: B's own
-    /// coordinates (in margin_), the translation, and the result.
+    /// coordinates and A's (in margin_), the translation, and the result;
+    /// placing_margin of their sum (the posings' own rounding for a type
+    /// that places as finely as double, posing_margin for float). Every
+    /// filter below takes the margin as the distance on each coordinate
+    /// between a point in double and the same point in NT and bounds its
+    /// own rounding separately (certain_side, farther_widening, the trees'
+    /// and grid's grows), or rounds a few times by at most u times the
+    /// scale, which placing_slack covers.
     frame begin_frame(const pose& q) {
-        using tr = number_traits<NT>;
         frame f{rotation_pose(q), {}, 0, 0};
         b_.place(f.t);
         f.p = b_.approximate_centroid();
         f.margin =
-            margin_ + tr::filter_slack * (std::fabs(f.p.x) + std::fabs(f.p.y) + std::fabs(q.tx) + std::fabs(q.ty));
+            margin_ + placing_margin<NT>(std::fabs(f.p.x) + std::fabs(f.p.y) + std::fabs(q.tx) + std::fabs(q.ty));
         f.n = reach_ + f.margin;
         return f;
     }
@@ -470,8 +476,8 @@ private:
     /// margin of it and within |p - O_A| of O_A; so two vertices lie within
     /// R_A + r_B + |p - O_A| + 4 margin in the Euclidean norm (each double
     /// within margin sqrt 2 of its point), within
-    /// sqrt 2 (< 1.5) times that in the L1 norm (a bound the computation's
-    /// few roundings stay far below, as the frame margin is far above them).
+    /// sqrt 2 (< 1.5) times that in the L1 norm (the 6% between sqrt 2 and
+    /// 1.5 is far above the computation's few roundings of 2^-53 each).
     bool convex_meet(const frame& f) {
         b_.place_approximate();
         const polygon& as = a_->shape;
