@@ -122,8 +122,9 @@ private:
     static constexpr double min_cells = 1024, max_cells = 1048576;
     /// The widening of each edge's marked slabs, relative to the
     /// coordinates' scale plus a side. A cell's sides, x0 + i side, an
-    /// edge's y over a slab (a difference, a quotient clamped to [0, 1], a
-    /// product and a sum), a crossing's x, and a point's cell index
+    /// edge's y over a slab (a difference, a product by the rounded
+    /// reciprocal of the edge's dx clamped to [0, 1], a product and a sum),
+    /// a crossing's x, and a point's cell index
     /// ((x - x0) / side, with the side's reciprocal rounded) are each within
     /// a few units in the last place (2^-52) of the scale plus a side; 2^-40
     /// covers them with room, so that every cell a closed edge touches is
@@ -137,10 +138,11 @@ private:
     static constexpr double max_slack_per_side = 0.125;
 
     /// The grid column (or row, with y0 for x0 and ny for nx) of coordinate
-    /// x, clamped to [0, n - 1].
+    /// x, clamped to [0, n - 1] (0 for a NaN). (The conversion truncates,
+    /// which is the floor for the positive values it is given.)
     std::size_t cell_of(double x, double origin, std::size_t n) const {
-        const double u = std::floor((x - origin) * inverse_side_);
-        return u <= 0 ? 0 : u >= static_cast<double>(n - 1) ? n - 1 : static_cast<std::size_t>(u);
+        const double u = (x - origin) * inverse_side_;
+        return !(u > 0) ? 0 : u >= static_cast<double>(n - 1) ? n - 1 : static_cast<std::size_t>(u);
     }
     /// The centre's coordinate of column (row) i.
     double centre_of(std::size_t i, double origin) const { return origin + (static_cast<double>(i) + 0.5) * side_; }
@@ -152,15 +154,16 @@ private:
         const double lo_x = std::min(a.x, b.x), hi_x = std::max(a.x, b.x);
         const double lo_y = std::min(a.y, b.y), hi_y = std::max(a.y, b.y);
         const std::size_t first = cell_of(lo_x - slack_, x0_, nx_), last = cell_of(hi_x + slack_, x0_, nx_);
+        const double inverse_dx = a.x != b.x ? 1 / (b.x - a.x) : 0, dy = b.y - a.y;
         for (std::size_t i = first; i <= last; ++i) {
             const double l = std::max(lo_x, x0_ + static_cast<double>(i) * side_ - slack_);
             const double r = std::min(hi_x, x0_ + static_cast<double>(i + 1) * side_ + slack_);
             double y_l = lo_y, y_r = hi_y;
             if (a.x != b.x) {
-                const double tl = std::clamp((l - a.x) / (b.x - a.x), 0.0, 1.0);
-                const double tr = std::clamp((r - a.x) / (b.x - a.x), 0.0, 1.0);
-                y_l = a.y + tl * (b.y - a.y);
-                y_r = a.y + tr * (b.y - a.y);
+                const double tl = std::clamp((l - a.x) * inverse_dx, 0.0, 1.0);
+                const double tr = std::clamp((r - a.x) * inverse_dx, 0.0, 1.0);
+                y_l = a.y + tl * dy;
+                y_r = a.y + tr * dy;
             }
             const double bottom = std::max(lo_y, std::min(y_l, y_r)) - slack_;
             const double top = std::min(hi_y, std::max(y_l, y_r)) + slack_;
@@ -182,27 +185,34 @@ private:
         for (std::size_t e = 0; e < shape.size(); ++e) {
             const point<double>&a = shape.vertex(e), &b = shape.vertex(shape.next(e));
             if (a.y == b.y) continue;
+            const double inverse_slope = (b.x - a.x) / (b.y - a.y);
             const std::size_t last = cell_of(std::max(a.y, b.y) + slack_, y0_, ny_);
             for (std::size_t j = cell_of(std::min(a.y, b.y) - slack_, y0_, ny_); j <= last; ++j) {
                 const double y = centre_of(j, y0_);
                 const int direction = a.y <= y && y < b.y ? 1 : b.y <= y && y < a.y ? -1 : 0;
                 if (direction == 0) continue;
-                const double x = a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y);
-                const double right = std::floor((x - x0_) * inverse_side_ - 0.5) + 1;
-                const std::size_t i = right <= 0                          ? 0
-                                      : right >= static_cast<double>(nx_) ? nx_
-                                                                          : static_cast<std::size_t>(right);
+                const double x = a.x + (y - a.y) * inverse_slope;
+                // The first centre right of x: column floor(v) + 1 for
+                // v = (x - x0) / side - 1/2 (truncation for v >= 0).
+                const double v = (x - x0_) * inverse_side_ - 0.5;
+                const std::size_t i = !(v >= 0)                           ? 0
+                                      : v >= static_cast<double>(nx_ - 1) ? nx_
+                                                                          : static_cast<std::size_t>(v) + 1;
                 delta[j * stride + i] += direction;
             }
         }
         std::vector<std::uint64_t> inside(words_ * ny_, 0);
         for (std::size_t j = 0; j < ny_; ++j) {
+            const std::int32_t* d = &delta[j * stride];
             long long winding = 0;
-            for (std::size_t i = 0; i < nx_; ++i) {
-                winding += delta[j * stride + i];
-                const std::size_t w = j * words_ + i / 64;
-                const std::uint64_t bit = std::uint64_t{1} << (i % 64);
-                if (winding != 0 && !(marked[w] & bit)) inside[w] |= bit;
+            for (std::size_t w = 0; w < words_; ++w) {
+                const std::size_t end = std::min<std::size_t>(64, nx_ - 64 * w);
+                std::uint64_t wound = 0;
+                for (std::size_t k = 0; k < end; ++k) {
+                    winding += d[64 * w + k];
+                    wound |= static_cast<std::uint64_t>(winding != 0) << k;
+                }
+                inside[j * words_ + w] = wound & ~marked[j * words_ + w];
             }
         }
         return inside;
