@@ -19,6 +19,18 @@ struct every_ring {
     bool operator()(std::size_t) const { return true; }
 };
 
+/// Where the point v (exact in double, as A's vertices are) lies in the
+/// posed B: Feito's test on B's vertices in NT, or the filtered crossings
+/// of one_contains_other's `b_margin`.
+template <class NT>
+location located_in(posed_polygon<NT>& b, std::optional<double> b_margin, const point<NT>& v) {
+    if constexpr (number_traits<NT>::category != number_category::floating)
+        if (b_margin)
+            return locate_by_crossings<NT>(b.shape(), b.approximate_all(), {}, 0, to_double_point(v), *b_margin, v,
+                                           [&](std::size_t i) -> const point<NT>& { return b.vertex(i); });
+    return locate(b.shape(), b.vertices(), b.centroid(), v);
+}
+
 /// Whether the closed regions of A and the posed B meet, given that their
 /// boundaries do not (the caller found no boundary pair).
 ///
@@ -42,11 +54,17 @@ struct every_ring {
 /// they drop must certainly lie outside the other polygon. `reach`, when
 /// given, bounds the distance from B's centroid to every point of B (with any
 /// rounding margin). Exact when NT is; a ring of B costs a locate in A
-/// through A's cone index, a ring of A a scan of B's edges. With MultiRing
-/// false both polygons are taken to have one ring.
+/// through A's cone index, a ring of A a scan of B's edges: Feito's test on
+/// B's vertices posed in NT, or, in an exact or filtered NT given
+/// `b_margin` (B's vertices posed in double are within it of their values
+/// in NT, on each coordinate), the crossings of a ray settled in double and
+/// taken in NT only where the doubles cannot tell (locate_by_crossings), so
+/// that B is not posed in NT whole. With MultiRing false both polygons are
+/// taken to have one ring.
 template <class NT, bool MultiRing = true, class AFilter = every_ring, class BFilter = every_ring>
 bool one_contains_other(const static_scene<NT>& a, posed_polygon<NT>& b, std::optional<double> reach = std::nullopt,
-                        AFilter a_ring_may_be_in_b = {}, BFilter b_ring_may_be_in_a = {}) {
+                        AFilter a_ring_may_be_in_b = {}, BFilter b_ring_may_be_in_a = {},
+                        std::optional<double> b_margin = std::nullopt) {
     const polygon& bs = b.shape();
     for (std::size_t r = 0; r < (MultiRing ? bs.ring_count() : 1); ++r)
         if (b_ring_may_be_in_a(r) && a.areas().locate(b.vertex(bs.ring_begin(r))) != location::outside) return true;
@@ -57,7 +75,7 @@ bool one_contains_other(const static_scene<NT>& a, posed_polygon<NT>& b, std::op
         if (!a_ring_may_be_in_b(r)) continue;
         const point<NT>& v = a.covering.start(as.ring_begin(r));
         if (reach && compare_values<NT>(squared_distance(v, b.centroid()), reach2) > 0) continue;
-        if (locate(bs, b.vertices(), b.centroid(), v) != location::outside) return true;
+        if (located_in(b, b_margin, v) != location::outside) return true;
     }
     return false;
 }

@@ -140,7 +140,9 @@ struct distance_state {
 ///       distance test (d > 0), on the two edges' vertices posed in NT
 ///   containment (no pair met): the regions meet iff one contains a ring of
 ///       the other; a ring's vertex outside the other polygon's bounding
-///       circle or box (in double, widened) is outside it without a locate
+///       circle or box (in double, widened) is outside it without a locate;
+///       in an exact or filtered NT, A's vertices are located in B by
+///       crossings settled in double first (one_contains_other)
 ///
 /// Features (features.hpp) are chosen at compile time; `detector<NT>` has them
 /// all. Without `witness` and `distance` the frame stops at the first meeting
@@ -837,7 +839,8 @@ private:
             const point<double> v = approximate(bs.ring_begin(r));
             return !(filter_length(v.x - o.x, v.y - o.y) > a_reach);  // NaN: may be
         };
-        return one_contains_other<NT, with_holes>(*a_, b_, std::optional<double>(n), a_ring_may_fit, b_ring_may_fit);
+        return one_contains_other<NT, with_holes>(*a_, b_, std::optional<double>(n), a_ring_may_fit, b_ring_may_fit,
+                                                  std::optional<double>(frame_margin));
     }
 
     /// Whether every moving edge, posed by t in double, is farther than
