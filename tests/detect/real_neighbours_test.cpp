@@ -16,6 +16,7 @@
 
 #include "support/effort.hpp"
 #include "support/random.hpp"
+#include "support/shapes.hpp"
 
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/detector.hpp"
@@ -36,16 +37,6 @@ std::vector<polygon> neighbours() {
     for (std::string line; std::getline(in, line);)
         if (!line.empty()) out.push_back(read_wkt(line, path));
     return out;
-}
-
-/// p moved by (ox, oy): each coordinate the double nearest to the sum, so
-/// that vertices the neighbours share stay shared.
-polygon moved(const polygon& p, double ox, double oy) {
-    std::vector<ring_input> rings(p.ring_count());
-    for (std::size_t r = 0; r < p.ring_count(); ++r)
-        for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
-            rings[r].vertices.push_back({p.vertex(i).x + ox, p.vertex(i).y + oy});
-    return polygon(rings);
 }
 
 /// Poses about the point o: the identity (the shared border touches), a
@@ -78,7 +69,10 @@ TEST_CASE("real neighbours: exact modes answer as the exact reference at their c
     for (const double offset : {0.0, 1e7, 0x1p40})
         for (const auto& [i, j] : {std::pair<int, int>{0, 1}, {1, 0}, {2, 3}, {3, 2}}) {
             const point<double> o{offset, offset / 2};
-            const polygon a = moved(layer[i], o.x, o.y), b = moved(layer[j], o.x, o.y);
+            // Each coordinate the double nearest to its sum with o, so that the
+            // vertices the neighbours share stay shared.
+            const polygon a = test_shapes::translated(layer[i], o.x, o.y),
+                          b = test_shapes::translated(layer[j], o.x, o.y);
             const std::vector<pose> poses = poses_about(o, count, 17 + static_cast<std::uint64_t>(4 * i + j));
             for (const double d : {0.0, 0.005}) {
                 detector_options options;
