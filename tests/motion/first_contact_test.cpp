@@ -33,6 +33,7 @@
 #include "influence2d/motion/first_contact.hpp"
 #include "influence2d/motion/trajectory.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "influence2d/number/double_word.hpp"
 #include "influence2d/predicates/contact_time.hpp"
 #include "influence2d/predicates/convexity.hpp"
 
@@ -755,6 +756,35 @@ TEST_CASE("contact times: the nearest double of a fraction", "[sweep][predicates
     CHECK(nearest_double(time_fraction<ER>{tiny, ER(std::ldexp(1.0, -900))}) == std::ldexp(1.0, -200));
     CHECK(nearest_double(time_fraction<ER>{tiny * tiny, tiny}) == 0);
     CHECK(nearest_double(time_fraction<double>{1, 3}) == 1.0 / 3);
+}
+
+TEST_CASE("sweep: a certified time midway between two doubles is rounded exactly", "[sweep][exit]") {
+    // 0.75 - 2^-54 lies midway between 0.75 - 2^-53 and 0.75: the double
+    // words cannot round it (their bound never settles a tie), the exact
+    // field rounds it to the even neighbour, 0.75.
+    const double tiny = std::ldexp(1.0, -54);
+    CHECK_THROWS_AS(nearest_double(time_fraction<double_word>{double_word(0.75) - double_word(tiny), double_word(1)}),
+                    uncertain_sign);
+    const exact_rational tie = exact_rational(0.75) - exact_rational(tiny);
+    REQUIRE(test_exact::nearest_double(tie) == 0.75);
+    // B's right side at 2^-54 reaches the wall at 0.75 at t = 0.75 - 2^-54.
+    const polygon wall = square(0.75, -5, 1, 5), b = square(-1, -1, tiny, 1);
+    const contact_result<exact_rational> ex = first_contact<exact_rational>(wall, b, {0, 0, 0}, {1, 0, 0});
+    REQUIRE(ex.contact);
+    CHECK(ex.time == tie);
+    const contact_result<double> ce = certified_first_contact(wall, b, {0, 0, 0}, {1, 0, 0});
+    CHECK(ce.contact);
+    CHECK(ce.time == 0.75);
+    CHECK(ce.moving_feature.kind == ex.moving_feature.kind);
+    CHECK(ce.moving_feature.index == ex.moving_feature.index);
+    // B, its one leftmost vertex at x = 2^-54, moving along (1, 1/2), leaves
+    // the block ending at 0.75 after s = 0.75 - 2^-54; the search in
+    // certified settles every sign, the rounding falls to the exact field.
+    const polygon block = square(-1, -5, 0.75, 5), c({ring({{tiny, -1}, {1, -1}, {1, 1}, {0.5, 1}})});
+    CHECK(exit_distance<exact_rational>(block, c, {0, 0, 0}, 1, 0.5) == tie);
+    bool by_filter = false;
+    CHECK(certified_exit_distance(block, c, {0, 0, 0}, 1, 0.5, &by_filter) == 0.75);
+    CHECK(by_filter);
 }
 
 TEST_CASE("sweep: far from 1 in scale, and directions of any length", "[sweep][exit]") {

@@ -18,13 +18,19 @@
 //       where the shapes are within its target separation, a few
 //       thousandths, not the contact itself) on the same translations and
 //       on motions that turn, with influence2d's first_contact<double> on
-//       those too.
+//       those too;
+//   exit_distance/<method>/<cell>   how far B, at a random pose of the
+//       annulus, must move along the direction of that pose's translation
+//       motion (above) to leave A: influence2d's exit_distance<double> and
+//       certified_exit_distance.
 // One iteration is one query; the queries cycle through 1,024 poses or
 // motions. Counters: max_relative_difference (separation: the largest
 // |d - d_GEOS| / max(d_GEOS, 1e-300) over the poses, checked once before
 // timing), exact_share (certified separation: the share of poses answered
 // in exact rationals), contacts (first contact: the share of motions with
-// contact).
+// contact), overlapping (exit distance: the share of poses where the
+// regions meet), by_filter (certified exit distance: the share answered by
+// the search in certified, without the exact search).
 
 #include <benchmark/benchmark.h>
 
@@ -35,9 +41,11 @@
 
 #include "bench_common.hpp"
 #include "influence2d/distance/separation.hpp"
+#include "influence2d/exact/certified_exit_distance.hpp"
 #include "influence2d/exact/certified_first_contact.hpp"
 #include "influence2d/exact/certified_separation.hpp"
 #include "influence2d/influence/bounds.hpp"
+#include "influence2d/motion/exit_distance.hpp"
 #include "influence2d/motion/first_contact.hpp"
 #include "influence2d/motion/trajectory.hpp"
 #include "verification/peers.hpp"
@@ -155,6 +163,28 @@ void first_contact_certified(benchmark::State& state, const cell& c, bool turnin
     state.counters["contacts"] = static_cast<double>(contacts) / static_cast<double>(std::max<std::size_t>(asked, 1));
 }
 
+/// The exit distance at the poses of a cell along the directions of its
+/// translations, in double or certified.
+void exit_distances(benchmark::State& state, const cell& c, bool certified) {
+    const std::vector<pose> poses = poses_of(c);
+    const auto motions = motions_of(c, false);
+    std::size_t k = 0, overlapping = 0, by_filter = 0, asked = 0;
+    for (auto _ : state) {
+        const double dx = motions[k].second.tx - motions[k].first.tx, dy = motions[k].second.ty - motions[k].first.ty;
+        bool filtered = false;
+        const double s = certified ? certified_exit_distance(c.a(), c.b(), poses[k], dx, dy, &filtered)
+                                   : exit_distance<double>(c.a(), c.b(), poses[k], dx, dy);
+        overlapping += s > 0;
+        by_filter += filtered;
+        ++asked;
+        benchmark::DoNotOptimize(s);
+        k = (k + 1) % poses.size();
+    }
+    const double n = static_cast<double>(std::max<std::size_t>(asked, 1));
+    state.counters["overlapping"] = static_cast<double>(overlapping) / n;
+    if (certified) state.counters["by_filter"] = static_cast<double>(by_filter) / n;
+}
+
 #if INFLUENCE2D_HAVE_GEOS
 /// GEOS's distance, A built (and prepared) once, B built posed per query.
 class geos_distance {
@@ -253,6 +283,8 @@ void register_query_benchmarks() {
                                      turning_model::angle_linear);
         benchmark::RegisterBenchmark(("first_contact/certified/" + c.name()).c_str(), first_contact_certified, c, false,
                                      turning_model::angle_linear);
+        benchmark::RegisterBenchmark(("exit_distance/double/" + c.name()).c_str(), exit_distances, c, false);
+        benchmark::RegisterBenchmark(("exit_distance/certified/" + c.name()).c_str(), exit_distances, c, true);
     }
     // Motions that turn: the angle-linear model's advancement and the
     // rational model's exact roots.

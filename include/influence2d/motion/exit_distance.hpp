@@ -280,8 +280,9 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
 /// The exit distance of exit_distance<Exact>, rounded to the nearest double,
 /// at nearly double's cost: the exit search run in `certified` (the events'
 /// times, their order and the meeting tests, each sign certain or raising
-/// uncertain_sign), then the one event at the exit evaluated again in Exact
-/// and rounded. The search takes the exact search's every branch, so its
+/// uncertain_sign), then the one event at the exit evaluated again from its
+/// site's three vertices and rounded, in double words where their bound
+/// settles the rounding, else in Exact (nearest_site_time). The search takes the exact search's every branch, so its
 /// exit is the exact exit; a sign that `certified` cannot settle (a tie
 /// between events, a touching meeting test, coordinates far from 1 in
 /// scale) sends the query to exit_search<Exact> whole. Throws as
@@ -293,36 +294,38 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
 ///   (exit, event) <- exit_search<certified>, or on uncertain_sign
 ///                    exit_search<Exact>
 ///   no event:                      0
-///   the event's time in Exact, times 2^shift, rounded to the nearest double
+///   the event's time times 2^shift, rounded to the nearest double: in
+///   double words, or in Exact when their bound leaves it in doubt
 template <class Exact>
 double filtered_exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, double dy,
                               bool* by_filter = nullptr) {
     using namespace exit_distance_detail;
-    using tr = number_traits<Exact>;
     accepted_polygon<Exact>(a, "static");
     accepted_polygon<Exact>(b, "moving");
     const rotation_pose t(q);
     check_direction(dx, dy);
     const unit_direction u(dx, dy);
     const double scale = coordinate_scale(a) + coordinate_scale(b) + std::fabs(q.tx) + std::fabs(q.ty);
-    const auto rounded = [&](const time_fraction<Exact>& s) {
-        return nearest_double(time_fraction<Exact>{s.num * u.factor<Exact>(), s.den});
-    };
     if (by_filter != nullptr) *by_filter = false;
     return fallback<>::run(
         [&] {
             const std::optional<timed_site<certified>> exit = exit_search<certified>(a, b, t, u.dx, u.dy, scale);
             if (by_filter != nullptr) *by_filter = true;
             if (!exit) return 0.0;
-            translation_frame<Exact> f(a, b, t, {tr::from_double(u.dx), tr::from_double(u.dy)});
-            time_fraction<Exact> times[2];
-            const int k = f.times(exit->site, false, times);
-            INFLUENCE2D_ASSERT(exit->which < k, "the exit's event is not one of its site's times");
-            return rounded(times[exit->which]);
+            return nearest_site_time<Exact>([&](auto tag) {
+                using W = decltype(tag);
+                using wt = number_traits<W>;
+                time_fraction<W> times[2];
+                const int k = site_times(a, b, t, point<W>{wt::from_double(u.dx), wt::from_double(u.dy)}, exit->site,
+                                         false, times);
+                INFLUENCE2D_ASSERT(exit->which < k, "the exit's event is not one of its site's times");
+                return time_fraction<W>{times[exit->which].num * u.factor<W>(), times[exit->which].den};
+            });
         },
         [&] {
             const std::optional<timed_site<Exact>> exit = exit_search<Exact>(a, b, t, u.dx, u.dy, scale);
-            return exit ? rounded(exit->time) : 0.0;
+            return exit ? nearest_double(time_fraction<Exact>{exit->time.num * u.factor<Exact>(), exit->time.den})
+                        : 0.0;
         });
 }
 

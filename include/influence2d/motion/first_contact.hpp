@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "influence2d/assert.hpp"
 #include "influence2d/core/feature.hpp"
 #include "influence2d/core/invalid_input.hpp"
 #include "influence2d/core/point.hpp"
@@ -120,7 +121,8 @@ contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose&
 /// start is decided in `certified` with the one-shot query's exact
 /// fallback; each event is computed and compared in `certified`, and again
 /// in Exact only when its signs are not certain; the earliest
-/// time is rounded from its exact value (one site evaluated exactly). For
+/// time is rounded from its site's three vertices in double words, or in
+/// Exact when their bound leaves the rounding in doubt (nearest_site_time). For
 /// a motion that turns: the answer of first_contact<Exact> (the same
 /// steps, the stop decided on separation<Exact>'s exact distance;
 /// docs/sweep.md); in the rational model rational_first_contact<Exact>,
@@ -164,9 +166,18 @@ contact_result<double> filtered_first_contact(const polygon& a, const polygon& b
     r.contact = true;
     std::tie(r.static_feature, r.moving_feature) = site_features(a, b, best->site);
     // Rounding to the nearest double asks for the time's sign against the
-    // midpoints between doubles, finer than certified's bound: exactly.
-    if (!best->exact) best->set_exact(*site_time(a, b, m.start, displacement<Exact>(from, to), best->site));
-    r.time = best->rounded;
+    // midpoints between doubles, finer than certified's bound: in double
+    // words, exactly when their bound cannot tell.
+    if (best->exact) {
+        r.time = best->rounded;
+        return r;
+    }
+    r.time = nearest_site_time<Exact>([&](auto tag) {
+        using W = decltype(tag);
+        std::optional<time_fraction<W>> t = site_time(a, b, m.start, displacement<W>(from, to), best->site);
+        INFLUENCE2D_ASSERT(t.has_value(), "the earliest event's site has no contact time");
+        return std::move(*t);
+    });
     return r;
 }
 

@@ -26,6 +26,7 @@
 #include "influence2d/distance/separation.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/number/certified.hpp"
+#include "influence2d/number/double_word.hpp"
 #include "influence2d/number/fallback.hpp"
 #include "influence2d/predicates/contact_time.hpp"
 #include "influence2d/predicates/orientation.hpp"
@@ -61,6 +62,11 @@ inline bool site_before(const contact_site& l, const contact_site& r) {
     if (l.moving_vertex != r.moving_vertex) return l.moving_vertex;
     if (l.vertex != r.vertex) return l.vertex < r.vertex;
     return l.edge < r.edge;
+}
+
+/// Whether two sites are the same vertex against the same edge.
+inline bool same_site(const contact_site& l, const contact_site& r) {
+    return l.moving_vertex == r.moving_vertex && l.vertex == r.vertex && l.edge == r.edge;
 }
 
 /// The site's features in input numbering: (A's, B's).
@@ -246,16 +252,41 @@ struct translation_frame {
     }
 };
 
+/// The contact times of one site in NT (contact_times: t in [0, 1] when
+/// bounded, t >= 0 otherwise; at most two), posing only the site's three
+/// vertices (B's by `start`; `d` the displacement in NT): the filtered
+/// searches' evaluation of one site, without the whole frame.
+template <class NT>
+int site_times(const polygon& a, const polygon& b, const rotation_pose& start, const point<NT>& d,
+               const contact_site& s, bool bounded, time_fraction<NT> out[2]) {
+    const auto in_a = [&](std::size_t i) { return to_point<NT>(a.vertex(i)); };
+    const auto in_b = [&](std::size_t j) { return start.apply<NT>(b.vertex(j)); };
+    if (s.moving_vertex) return contact_times(in_b(s.vertex), d, in_a(s.edge), in_a(a.next(s.edge)), bounded, out);
+    return contact_times(in_a(s.vertex), point<NT>{-d.x, -d.y}, in_b(s.edge), in_b(b.next(s.edge)), bounded, out);
+}
+
 /// The earliest contact time of one site in [0, 1] in NT, posing only the
-/// site's three vertices (B's by `start`; `d` the displacement in NT): the
-/// filtered search's exact evaluation of a site, without the whole frame.
+/// site's three vertices (site_times, bounded).
 template <class NT>
 std::optional<time_fraction<NT>> site_time(const polygon& a, const polygon& b, const rotation_pose& start,
                                            const point<NT>& d, const contact_site& s) {
-    const auto in_a = [&](std::size_t i) { return to_point<NT>(a.vertex(i)); };
-    const auto in_b = [&](std::size_t j) { return start.apply<NT>(b.vertex(j)); };
-    if (s.moving_vertex) return earliest_contact_time(in_b(s.vertex), d, in_a(s.edge), in_a(a.next(s.edge)));
-    return earliest_contact_time(in_a(s.vertex), point<NT>{-d.x, -d.y}, in_b(s.edge), in_b(b.next(s.edge)));
+    time_fraction<NT> t[2];
+    const int k = site_times(a, b, start, d, s, true, t);
+    if (k == 0) return std::nullopt;
+    if (k == 2 && compare_times(t[1], t[0]) < 0) return std::move(t[1]);
+    return std::move(t[0]);
+}
+
+/// The nearest double (ties to even) of an exact time that `time(tag)`
+/// computes in the number type of `tag` (a site's time from site_times,
+/// say): in double words when their bounds settle every sign on the way
+/// and the rounding (nearest_double), else in the exact field Exact. A
+/// double word's signs are the exact ones or raise uncertain_sign, so the
+/// computation takes the exact one's branches and names the same time.
+template <class Exact, class Time>
+double nearest_site_time(Time&& time) {
+    return fallback<>::run([&] { return nearest_double(time(double_word{})); },
+                           [&] { return nearest_double(time(Exact{})); });
 }
 
 /// The validated parts of a motion: its start and end as rotation poses
@@ -429,6 +460,9 @@ std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const p
         a, b, fast.b.approx(), fast.b.bounds(), {to.tx - from.tx, to.ty - from.ty},
         translation_margin<certified>(a, b, from, to),
         [&](const contact_site& s) {
+            // A site met again in a later window has the time it had: the
+            // filter cannot tell a time from itself, so it is not compared.
+            if (best && same_site(s, best->site)) return;
             filtered_event<Exact> c{s, std::nullopt, std::nullopt};
             try {
                 c.fast = fast.earliest(s);
