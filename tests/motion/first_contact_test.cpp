@@ -346,6 +346,42 @@ TEST_CASE("sweep: random translations of the families against the reference", "[
     CHECK(t.none > t.motions / 20);
 }
 
+TEST_CASE("sweep: random translations far from the origin against the reference", "[sweep][reference]") {
+    // The families moved to 1e7 and 2^40 (a double's last place there is
+    // 2^-12): the exact and certified answers against the reference, at the
+    // polygons' own coordinates, where the filters' margins are the widest.
+    test_scenes::rng g(0xfa7ULL);
+    std::size_t motions = 0, contacts = 0, double_differs = 0;
+    for (const double offset : {1e7, std::ldexp(1.0, 40)})
+        for (test_families::family f : verification::all_families) {
+            const polygon a = test_shapes::translated(renumbered(test_families::load(f, 64)), offset, -offset);
+            const polygon b = renumbered(test_families::load(f, 8));
+            const double reach = test_poses::reach(a, b);
+            for (int k = 0; k < test_effort::scaled(6); ++k) {
+                const auto [from, to] = random_translation(a, b, g, reach);
+                INFO(describe(a, b, from, to));
+                const exact_scene sc(a, b, from, to);
+                const std::optional<FT> expected = test_exact::first_contact(sc.a, sc.b0, sc.d);
+                const contact_result<exact_rational> ex = first_contact<exact_rational>(a, b, from, to);
+                REQUIRE(ex.contact == expected.has_value());
+                const contact_result<double> ce = certified_first_contact(a, b, from, to);
+                CHECK(ce.contact == ex.contact);
+                double_differs += first_contact<double>(a, b, from, to).contact != ex.contact;
+                ++motions;
+                if (!expected) continue;
+                ++contacts;
+                CHECK(ex.time == *expected);
+                CHECK(ce.time == test_exact::nearest_double(ex.time));
+                CHECK(ce.static_feature.index == ex.static_feature.index);
+                CHECK(ce.moving_feature.index == ex.moving_feature.index);
+            }
+        }
+    WARN("far translations: " << motions << " motions, " << contacts << " contacts; double's contact differs on "
+                              << double_differs);
+    CHECK(contacts > motions / 4);
+    CHECK(contacts < motions);
+}
+
 TEST_CASE("sweep: random multipolygons and swallowing polygons, both roles", "[sweep][reference]") {
     tally t;
     const int scenes = test_effort::scaled(16);

@@ -29,6 +29,7 @@
 #include "influence2d/number/double_word.hpp"
 #include "influence2d/number/fallback.hpp"
 #include "influence2d/predicates/contact_time.hpp"
+#include "influence2d/predicates/filters.hpp"
 #include "influence2d/predicates/orientation.hpp"
 #include "influence2d/query/intersects.hpp"
 #include "influence2d/query/placed_meet.hpp"
@@ -120,7 +121,8 @@ std::optional<std::pair<feature, feature>> meeting_at_start(const polygon& a, co
                                                             const rotation_pose& start) {
     placed_polygon<NT> pa(a), pb(b, start);
     const meeting met = placed_meet(
-        pa, pb, posing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) + std::fabs(from.ty)));
+        pa, pb,
+        placing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) + std::fabs(from.ty)));
     if (!met) return std::nullopt;
     return meeting_features(pa, pb, met);
 }
@@ -330,13 +332,18 @@ private:
     }
 };
 
-/// The filters' margin for a translation from `from` to `to`: the posing
-/// margin of one_shot with both translations in the scale (B's vertices in
-/// double at any time of the motion are within it of their NT values).
+/// The filters' margin for a translation from `from` to `to`: the placing
+/// margin of the one-shot query (intersects) with both translations in the
+/// scale. B's vertices in double at any time of the motion are within it of
+/// their NT values: the posing at the start rounds by a few units of
+/// double's last place of that scale, the displacement to - from, its
+/// product by a time in [0, 1] and the sum with a vertex by one each, all
+/// inside placing_slack (2^-46 = 128 units) of it; a float keeps
+/// posing_margin (placing_margin).
 template <class NT>
 double translation_margin(const polygon& a, const polygon& b, const pose& from, const pose& to) {
-    return posing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) + std::fabs(from.ty) +
-                             std::fabs(to.tx) + std::fabs(to.ty));
+    return placing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) + std::fabs(from.ty) +
+                              std::fabs(to.tx) + std::fabs(to.ty));
 }
 
 /// The displacement of a translation in NT: to - from on the input doubles.
@@ -378,6 +385,25 @@ std::optional<earliest_event<NT>> earliest_translation_event(const polygon& a, c
             return time_above(best->time);
         });
     return best;
+}
+
+/// Whether the site may have an event in [0, 1], in double: whether the
+/// path of its vertex over the motion (a segment: B's vertex from its place
+/// at the start, `b_start`, by `sweep`; A's vertex by -sweep against B's
+/// edge at the start) may meet the edge (segments_may_meet), every point
+/// within e of its exact place on each coordinate (the vertices at the
+/// start within the motion's margin, and the ends of the paths too: the
+/// margin holds B's vertices at any time of the motion, translation_margin).
+/// False only when the exact path and edge are apart, and then the site
+/// has no contact time in [0, 1].
+inline bool site_may_meet(const polygon& a, const polygon& b, const std::vector<point<double>>& b_start,
+                          point<double> sweep, double e, const contact_site& s) {
+    if (s.moving_vertex) {
+        const point<double> p = b_start[s.vertex];
+        return segments_may_meet(p, {p.x + sweep.x, p.y + sweep.y}, a.vertex(s.edge), a.vertex(a.next(s.edge)), e);
+    }
+    const point<double> p = a.vertex(s.vertex);
+    return segments_may_meet(p, {p.x - sweep.x, p.y - sweep.y}, b_start[s.edge], b_start[b.next(s.edge)], e);
 }
 
 /// An event of the filtered search: its site, its time in `certified` when
@@ -456,13 +482,16 @@ std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const p
         return site_time(a, b, start, *exact_d, s);
     };
     std::optional<filtered_event<Exact>> best;
+    const std::vector<point<double>>& b_start = fast.b.approx();
+    const point<double> sweep{to.tx - from.tx, to.ty - from.ty};
+    const double e = translation_margin<certified>(a, b, from, to);
     windowed_sites(
-        a, b, fast.b.approx(), fast.b.bounds(), {to.tx - from.tx, to.ty - from.ty},
-        translation_margin<certified>(a, b, from, to),
+        a, b, b_start, fast.b.bounds(), sweep, e,
         [&](const contact_site& s) {
             // A site met again in a later window has the time it had: the
             // filter cannot tell a time from itself, so it is not compared.
             if (best && same_site(s, best->site)) return;
+            if (!site_may_meet(a, b, b_start, sweep, e, s)) return;
             filtered_event<Exact> c{s, std::nullopt, std::nullopt};
             try {
                 c.fast = fast.earliest(s);
