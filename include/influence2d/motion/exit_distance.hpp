@@ -29,6 +29,7 @@
 #include "influence2d/number/fallback.hpp"
 #include "influence2d/predicates/contact_time.hpp"
 #include "influence2d/predicates/orientation.hpp"
+#include "influence2d/predicates/segments.hpp"
 #include "influence2d/query/intersects.hpp"
 #include "influence2d/query/placed_meet.hpp"
 #include "influence2d/scene/edge_boxes.hpp"
@@ -117,6 +118,34 @@ meeting meeting_between(translation_frame<NT>& f, const time_fraction<NT>& s0, c
     return placed_meet(pa, pb, posing_margin<NT>(big));
 }
 
+/// A witness of the meeting at s = (s0 + s1) / 2 among the edge pairs next
+/// to the site `s` (its vertex's two edges against its edge and that edge's
+/// two neighbours), in ring operations on both polygons scaled as in
+/// meeting_between; none when none of them meets. After an event at s0
+/// that touched the witness, the edges at that event are the likeliest to
+/// show the meeting on (s0, s1): a vertex that entered the other polygon
+/// there has edges that cross the one it passed. Six segment tests, where
+/// meeting_between tests the whole polygons.
+template <class NT>
+meeting witness_near(translation_frame<NT>& f, const time_fraction<NT>& s0, const time_fraction<NT>& s1,
+                     const contact_site& s) {
+    const NT n = s0.num * s1.den + s1.num * s0.den, half = s0.den * s1.den, d = half + half;
+    const point<NT> nd{n * f.d.x, n * f.d.y};
+    const polygon &as = f.a.shape(), &bs = f.b.shape();
+    const auto in_a = [&](std::size_t i) { return point<NT>{d * f.a[i].x, d * f.a[i].y}; };
+    const auto in_b = [&](std::size_t j) { return point<NT>{d * f.b[j].x + nd.x, d * f.b[j].y + nd.y}; };
+    const polygon &vs = s.moving_vertex ? bs : as, &es = s.moving_vertex ? as : bs;
+    const std::size_t vertex_edges[2] = {vs.previous(s.vertex), s.vertex};
+    const std::size_t edges[3] = {es.previous(s.edge), s.edge, es.next(s.edge)};
+    for (const std::size_t v : vertex_edges)
+        for (const std::size_t e : edges) {
+            const std::size_t i = s.moving_vertex ? e : v, j = s.moving_vertex ? v : e;
+            if (segments_intersect(in_a(i), in_a(as.next(i)), in_b(j), in_b(bs.next(j))))
+                return {meeting::kind::edges, i, j, location::boundary};
+        }
+    return {};
+}
+
 /// Whether an event at `s` can change what the witness `w` shows: it
 /// puts one of the witness's features in contact. A vertex located in the
 /// other polygon stays there until it reaches that polygon's boundary (an
@@ -175,20 +204,23 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
     std::vector<timed_site<NT>> events;
     const auto load = [&](double w_low, double w) {
         events.clear();
-        candidate_sites(a, b, f.b.approx(), f.b.bounds(), {std::max(w_low, 0.0) * dx, std::max(w_low, 0.0) * dy},
-                        {w * dx, w * dy}, e, [&](const contact_site& site) {
-                            if constexpr (exact) {
-                                try {
-                                    time_fraction<certified> none[2];
-                                    if (fast->times(site, false, none) == 0) return;
-                                } catch (const uncertain_sign&) {}
-                            }
-                            time_fraction<NT> times[2];
-                            const int k = f.times(site, false, times);
-                            for (int i = 0; i < k; ++i)
-                                if ((w_low < 0 || beyond(times[i], w_low)) && !beyond(times[i], w))
-                                    events.push_back({std::move(times[i]), site, i});
-                        });
+        const point<double> from{std::max(w_low, 0.0) * dx, std::max(w_low, 0.0) * dy}, to{w * dx, w * dy};
+        candidate_sites(a, b, f.b.approx(), f.b.bounds(), from, to, e, [&](const contact_site& site) {
+            // (A site whose path over the window misses its edge has no
+            // event there.)
+            if (!site_may_meet(a, b, f.b.approx(), from, to, e, site)) return;
+            if constexpr (exact) {
+                try {
+                    time_fraction<certified> none[2];
+                    if (fast->times(site, false, none) == 0) return;
+                } catch (const uncertain_sign&) {}
+            }
+            time_fraction<NT> times[2];
+            const int k = f.times(site, false, times);
+            for (int i = 0; i < k; ++i)
+                if ((w_low < 0 || beyond(times[i], w_low)) && !beyond(times[i], w))
+                    events.push_back({std::move(times[i]), site, i});
+        });
         std::sort(events.begin(), events.end(),
                   [](const timed_site<NT>& l, const timed_site<NT>& r) { return compare_times(l.time, r.time) < 0; });
     };
@@ -212,7 +244,8 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
         if (next == events.size()) return exit;  // after the last event, apart
         timed_site<NT> following = events[next++];
         if (stale) {
-            witness = meeting_between(f, last, following.time, scale, reach);
+            witness = exit ? witness_near(f, last, following.time, exit->site) : meeting{};
+            if (!witness) witness = meeting_between(f, last, following.time, scale, reach);
             if (!witness) return exit;
         }
         stale = touches(witness, following.site, a, b);
@@ -234,13 +267,16 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
 ///   the events (every time s >= 0 a vertex starts or stops lying on an
 ///   edge: contact_times, both ends of a sliding contact), gathered by
 ///   windows (0, s_max / 64], then doubled, from the sites whose boxes
-///   overlap, B's swept over the window; sorted: s_1 < s_2 < ... < s_K
+///   overlap, B's swept over the window, and whose vertex's path over it
+///   may meet the edge (site_may_meet); sorted: s_1 < s_2 < ... < s_K
 ///   last <- 0
 ///   loop:
 ///       if an event at `last` touches w's features (a located vertex
 ///       reaching an edge, an end of w's edge pair reaching the other):
-///           w <- the meeting at (last + next) / 2 (the one-shot query's
-///           steps on both polygons scaled to keep ring operations)
+///           w <- at (last + next) / 2, on both polygons scaled to keep
+///           ring operations: an edge pair next to the event at `last`
+///           that meets (witness_near), else the meeting there (the
+///           one-shot query's steps)
 ///           apart there:                              last
 ///       no next event:                                last (then apart)
 ///       last <- the next event
@@ -250,7 +286,7 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
 /// witness shows unless an event at its start touches it (docs/sweep.md,
 /// "Exit distance"). Time O((n + m) log(n + m) + k log k) for k events up to
 /// the exit, plus O((n + m) log(n + m)) for each event that touches the
-/// witness. In float, double or long double, a query whose largest coordinate
+/// witness and whose neighbouring edge pairs show no meeting. In float, double or long double, a query whose largest coordinate
 /// lies outside NT's safe window is answered on its polygons and pose scaled
 /// by a power of two 2^k, and the distance found scaled back by 2^-k
 /// (core/range_scaling.hpp), rounded as NT's range allows. Throws
@@ -282,12 +318,12 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
 /// times, their order and the meeting tests, each sign certain or raising
 /// uncertain_sign), then the one event at the exit evaluated again from its
 /// site's three vertices and rounded, in double words where their bound
-/// settles the rounding, else in Exact (nearest_site_time). The search takes the exact search's every branch, so its
-/// exit is the exact exit; a sign that `certified` cannot settle (a tie
-/// between events, a touching meeting test, coordinates far from 1 in
-/// scale) sends the query to exit_search<Exact> whole. Throws as
-/// exit_distance. `*by_filter`, when given, says whether the search in
-/// `certified` answered (no sign sent the query to Exact).
+/// settles the rounding, else in Exact (nearest_site_time). The search takes
+/// the exact search's every branch, so its exit is the exact exit; a sign that
+/// `certified` cannot settle (a tie between events, a touching meeting test,
+/// coordinates far from 1 in scale) sends the query to exit_search<Exact>
+/// whole. Throws as exit_distance. `*by_filter`, when given, says whether the
+/// search in `certified` answered (no sign sent the query to Exact).
 /// certified_exit_distance (exact/certified_exit_distance.hpp) is this query
 /// in exact rationals.
 ///

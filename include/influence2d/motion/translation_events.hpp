@@ -134,7 +134,8 @@ std::optional<std::pair<feature, feature>> meeting_at_start(const polygon& a, co
 /// and A's vertex i against B's edge j. Every vertex of B that reaches an
 /// edge of A during that part of the motion is the start of an edge of B
 /// whose swept box meets that edge's box, and likewise for A's vertices: no
-/// event of that part is left out. Sort and sweep along x (scene/edge_boxes.hpp).
+/// event of that part is left out. Sort and sweep along x
+/// (scene/edge_boxes.hpp).
 template <class Visit>
 void candidate_sites(const polygon& a, const polygon& b, const std::vector<point<double>>& b_start,
                      const box& b_start_box, point<double> from, point<double> to, double e, Visit&& visit) {
@@ -387,23 +388,25 @@ std::optional<earliest_event<NT>> earliest_translation_event(const polygon& a, c
     return best;
 }
 
-/// Whether the site may have an event in [0, 1], in double: whether the
-/// path of its vertex over the motion (a segment: B's vertex from its place
-/// at the start, `b_start`, by `sweep`; A's vertex by -sweep against B's
-/// edge at the start) may meet the edge (segments_may_meet), every point
-/// within e of its exact place on each coordinate (the vertices at the
-/// start within the motion's margin, and the ends of the paths too: the
-/// margin holds B's vertices at any time of the motion, translation_margin).
-/// False only when the exact path and edge are apart, and then the site
-/// has no contact time in [0, 1].
+/// Whether the site may have an event while B moves from its place at the
+/// start shifted by `from` to that place shifted by `to`, in double: whether
+/// the path of its vertex over that part of the motion (a segment: B's
+/// vertex from `b_start` by the shifts; A's vertex by their negatives
+/// against B's edge at the start) may meet the edge (segments_may_meet),
+/// every point within e of its exact place on each coordinate (the margin
+/// of the motion's filters holds B's vertices at any time of it). False
+/// only when the exact path and edge are apart, and then the site has no
+/// contact time in that part.
 inline bool site_may_meet(const polygon& a, const polygon& b, const std::vector<point<double>>& b_start,
-                          point<double> sweep, double e, const contact_site& s) {
+                          point<double> from, point<double> to, double e, const contact_site& s) {
     if (s.moving_vertex) {
         const point<double> p = b_start[s.vertex];
-        return segments_may_meet(p, {p.x + sweep.x, p.y + sweep.y}, a.vertex(s.edge), a.vertex(a.next(s.edge)), e);
+        return segments_may_meet({p.x + from.x, p.y + from.y}, {p.x + to.x, p.y + to.y}, a.vertex(s.edge),
+                                 a.vertex(a.next(s.edge)), e);
     }
     const point<double> p = a.vertex(s.vertex);
-    return segments_may_meet(p, {p.x - sweep.x, p.y - sweep.y}, b_start[s.edge], b_start[b.next(s.edge)], e);
+    return segments_may_meet({p.x - from.x, p.y - from.y}, {p.x - to.x, p.y - to.y}, b_start[s.edge],
+                             b_start[b.next(s.edge)], e);
 }
 
 /// An event of the filtered search: its site, its time in `certified` when
@@ -491,7 +494,7 @@ std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const p
             // A site met again in a later window has the time it had: the
             // filter cannot tell a time from itself, so it is not compared.
             if (best && same_site(s, best->site)) return;
-            if (!site_may_meet(a, b, b_start, sweep, e, s)) return;
+            if (!site_may_meet(a, b, b_start, {0, 0}, sweep, e, s)) return;
             filtered_event<Exact> c{s, std::nullopt, std::nullopt};
             try {
                 c.fast = fast.earliest(s);
