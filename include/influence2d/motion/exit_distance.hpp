@@ -97,50 +97,107 @@ inline double exit_reach(const box& ab, const box& bb, double dx, double dy, dou
     return std::max(0.0, s) * (1 + 0x1p-40) + std::numeric_limits<double>::min();
 }
 
-/// Whether A and B translated by s = (s0 + s1) / 2 times d meet, in ring
-/// operations, with what showed it (placed_meet): both polygons scaled by
-/// D = 2 s0.den s1.den > 0 (which changes no answer), B's vertices
-/// D p + N d with N = s0.num s1.den + s1.num s0.den. `scale` bounds the
-/// magnitudes of the unscaled inputs (the polygons and B's translation),
+/// A double x with s0 < x < s1, certainly (the comparisons exact, or
+/// certain in a filtered NT), if the doubles of the two times have one
+/// between them: their mean, or none.
+template <class NT>
+std::optional<double> double_between(const time_fraction<NT>& s0, const time_fraction<NT>& s1) {
+    using tr = number_traits<NT>;
+    const double lo = tr::to_double(s0.num) / tr::to_double(s0.den);
+    const double hi = tr::to_double(s1.num) / tr::to_double(s1.den);
+    const double x = lo + (hi - lo) / 2;
+    if (!std::isfinite(x)) return std::nullopt;
+    try {
+        const NT nx = tr::from_double(x);
+        if (compare_values<NT>(s0.num, nx * s0.den) < 0 && compare_values<NT>(s1.num, nx * s1.den) > 0) return x;
+    } catch (const uncertain_sign&) {}
+    return std::nullopt;
+}
+
+/// The places of A's and B's vertices at one s strictly between the events
+/// s0 < s1, in ring operations: at a double x between them (double_between),
+/// A where it stands and B's vertices p + x d; else at s = (s0 + s1) / 2 on
+/// both polygons scaled by D = 2 s0.den s1.den > 0 (which changes no
+/// answer), B's vertices D p + N d with N = s0.num s1.den + s1.num s0.den.
+/// The first keeps the coordinates' size (a filtered NT's bounds stay those
+/// of the posing far from the origin, where D's own error times the
+/// coordinates would swamp them); the second serves two events too close
+/// for a double between them.
+template <class NT>
+class places_between {
+public:
+    places_between(translation_frame<NT>& f, const time_fraction<NT>& s0, const time_fraction<NT>& s1) : f_(f) {
+        using tr = number_traits<NT>;
+        if (const std::optional<double> x = double_between(s0, s1)) {
+            const NT nx = tr::from_double(*x);
+            shift_ = {nx * f.d.x, nx * f.d.y};
+            shift_size_ = std::fabs(*x);
+            return;
+        }
+        const NT half = s0.den * s1.den;
+        const NT n = s0.num * s1.den + s1.num * s0.den;
+        shift_ = {n * f.d.x, n * f.d.y};
+        shift_size_ = std::fabs(tr::to_double(n));
+        factor_ = half + half;
+        factor_size_ = std::fabs(tr::to_double(*factor_));
+    }
+    /// A's vertex i.
+    point<NT> a(std::size_t i) const {
+        if (!factor_) return f_.a[i];
+        return {*factor_ * f_.a[i].x, *factor_ * f_.a[i].y};
+    }
+    /// B's vertex j.
+    point<NT> b(std::size_t j) const {
+        if (!factor_) return {f_.b[j].x + shift_.x, f_.b[j].y + shift_.y};
+        return {*factor_ * f_.b[j].x + shift_.x, *factor_ * f_.b[j].y + shift_.y};
+    }
+    /// A bound of the coordinates' magnitudes, for inputs within `scale`
+    /// and a direction of |dx| + |dy| = `reach`.
+    double magnitude(double scale, double reach) const { return factor_size_ * scale + shift_size_ * reach; }
+
+private:
+    translation_frame<NT>& f_;
+    std::optional<NT> factor_;
+    point<NT> shift_;
+    double factor_size_ = 1, shift_size_ = 0;
+};
+
+/// Whether A and B translated by an s strictly between the events s0 < s1
+/// meet (places_between), with what showed it (placed_meet). `scale`
+/// bounds the magnitudes of the inputs (the polygons and B's translation),
 /// `reach` |dx| + |dy|.
 template <class NT>
 meeting meeting_between(translation_frame<NT>& f, const time_fraction<NT>& s0, const time_fraction<NT>& s1,
                         double scale, double reach) {
-    using tr = number_traits<NT>;
-    const NT n = s0.num * s1.den + s1.num * s0.den, half = s0.den * s1.den, d = half + half;
+    const places_between<NT> at(f, s0, s1);
     const polygon &as = f.a.shape(), &bs = f.b.shape();
     std::vector<point<NT>> av(as.size()), bv(bs.size());
-    for (std::size_t i = 0; i < as.size(); ++i) av[i] = {d * f.a[i].x, d * f.a[i].y};
-    const point<NT> nd{n * f.d.x, n * f.d.y};
-    for (std::size_t j = 0; j < bs.size(); ++j) bv[j] = {d * f.b[j].x + nd.x, d * f.b[j].y + nd.y};
-    const double big = std::fabs(tr::to_double(d)) * scale + std::fabs(tr::to_double(n)) * reach;
+    for (std::size_t i = 0; i < as.size(); ++i) av[i] = at.a(i);
+    for (std::size_t j = 0; j < bs.size(); ++j) bv[j] = at.b(j);
     placed_polygon<NT> pa(as, av), pb(bs, bv);
-    return placed_meet(pa, pb, posing_margin<NT>(big));
+    return placed_meet(pa, pb, placing_margin<NT>(at.magnitude(scale, reach)));
 }
 
-/// A witness of the meeting at s = (s0 + s1) / 2 among the edge pairs next
-/// to the site `s` (its vertex's two edges against its edge and that edge's
-/// two neighbours), in ring operations on both polygons scaled as in
-/// meeting_between; none when none of them meets. After an event at s0
-/// that touched the witness, the edges at that event are the likeliest to
-/// show the meeting on (s0, s1): a vertex that entered the other polygon
-/// there has edges that cross the one it passed. Six segment tests, where
-/// meeting_between tests the whole polygons.
+/// A witness of the meeting at an s strictly between the events s0 < s1
+/// (places_between) among the edge pairs next to the site `s` (its
+/// vertex's two edges against its edge and that edge's two neighbours);
+/// none when none of them meets. After an event at s0 that touched the
+/// witness, the edges at that event are the likeliest to show the meeting
+/// on (s0, s1): a vertex that entered the other polygon there has edges
+/// that cross the one it passed. Six segment tests, where meeting_between
+/// tests the whole polygons.
 template <class NT>
 meeting witness_near(translation_frame<NT>& f, const time_fraction<NT>& s0, const time_fraction<NT>& s1,
                      const contact_site& s) {
-    const NT n = s0.num * s1.den + s1.num * s0.den, half = s0.den * s1.den, d = half + half;
-    const point<NT> nd{n * f.d.x, n * f.d.y};
+    const places_between<NT> at(f, s0, s1);
     const polygon &as = f.a.shape(), &bs = f.b.shape();
-    const auto in_a = [&](std::size_t i) { return point<NT>{d * f.a[i].x, d * f.a[i].y}; };
-    const auto in_b = [&](std::size_t j) { return point<NT>{d * f.b[j].x + nd.x, d * f.b[j].y + nd.y}; };
     const polygon &vs = s.moving_vertex ? bs : as, &es = s.moving_vertex ? as : bs;
     const std::size_t vertex_edges[2] = {vs.previous(s.vertex), s.vertex};
     const std::size_t edges[3] = {es.previous(s.edge), s.edge, es.next(s.edge)};
     for (const std::size_t v : vertex_edges)
         for (const std::size_t e : edges) {
             const std::size_t i = s.moving_vertex ? e : v, j = s.moving_vertex ? v : e;
-            if (segments_intersect(in_a(i), in_a(as.next(i)), in_b(j), in_b(bs.next(j))))
+            if (segments_intersect(at.a(i), at.a(as.next(i)), at.b(j), at.b(bs.next(j))))
                 return {meeting::kind::edges, i, j, location::boundary};
         }
     return {};
@@ -185,13 +242,13 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
     using tr = number_traits<NT>;
     translation_frame<NT> f(a, b, t, {tr::from_double(dx), tr::from_double(dy)});
     const double reach = std::fabs(dx) + std::fabs(dy);
-    const double e0 = posing_margin<NT>(scale);
+    const double e0 = placing_margin<NT>(scale);
     const time_fraction<NT> zero{NT(0), NT(1)};
     std::optional<timed_site<NT>> exit;
     meeting witness = placed_meet(f.a, f.b, e0);
     if (!witness) return exit;
     const double s_max = exit_reach(a.bounds(), f.b.bounds(), dx, dy, e0);
-    const double e = posing_margin<NT>(scale + s_max * reach);
+    const double e = placing_margin<NT>(scale + s_max * reach);
     const auto beyond = [](const time_fraction<NT>& s, double x) {
         return compare_values<NT>(s.num, tr::from_double(x) * s.den) > 0;
     };
@@ -273,8 +330,9 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
 ///   loop:
 ///       if an event at `last` touches w's features (a located vertex
 ///       reaching an edge, an end of w's edge pair reaching the other):
-///           w <- at (last + next) / 2, on both polygons scaled to keep
-///           ring operations: an edge pair next to the event at `last`
+///           w <- at a double between `last` and `next` (else at their
+///           midpoint, both polygons scaled to keep ring operations;
+///           places_between): an edge pair next to the event at `last`
 ///           that meets (witness_near), else the meeting there (the
 ///           one-shot query's steps)
 ///           apart there:                              last
