@@ -382,6 +382,22 @@ TEST_CASE("sweep: random translations far from the origin against the reference"
     CHECK(contacts < motions);
 }
 
+TEST_CASE("sweep: a contact at the motion's very end far from the origin", "[sweep]") {
+    // B's right side (x = 0) moves from 0.1 to 2^40, where A's left side
+    // stands: they touch at t = 1 exactly, the last instant of the motion,
+    // though to - from = 2^40 - 0.1 is not a double.
+    const double far = std::ldexp(1.0, 40);
+    const polygon a = square(far, -1, far + 2, 1), b = square(-1, -1, 0, 1);
+    const pose from{0.1, 0, 0}, to{far, 0, 0};
+    const contact_result<exact_rational> ex = first_contact<exact_rational>(a, b, from, to);
+    REQUIRE(ex.contact);
+    CHECK(ex.time == 1);
+    const contact_result<double> ce = certified_first_contact(a, b, from, to);
+    CHECK(ce.contact);
+    CHECK(ce.time == 1.0);
+    CHECK(first_contact<double>(a, b, from, to).contact);
+}
+
 TEST_CASE("sweep: random multipolygons and swallowing polygons, both roles", "[sweep][reference]") {
     tally t;
     const int scenes = test_effort::scaled(16);
