@@ -162,14 +162,11 @@ private:
     double factor_size_ = 1, shift_size_ = 0;
 };
 
-/// Whether A and B translated by an s strictly between the events s0 < s1
-/// meet (places_between), with what showed it (placed_meet). `scale`
-/// bounds the magnitudes of the inputs (the polygons and B's translation),
-/// `reach` |dx| + |dy|.
+/// Whether A and B, placed at an s strictly between two events (`at`),
+/// meet, with what showed it (placed_meet). `scale` bounds the magnitudes
+/// of the inputs (the polygons and B's translation), `reach` |dx| + |dy|.
 template <class NT>
-meeting meeting_between(translation_frame<NT>& f, const time_fraction<NT>& s0, const time_fraction<NT>& s1,
-                        double scale, double reach) {
-    const places_between<NT> at(f, s0, s1);
+meeting meeting_between(translation_frame<NT>& f, const places_between<NT>& at, double scale, double reach) {
     const polygon &as = f.a.shape(), &bs = f.b.shape();
     std::vector<point<NT>> av(as.size()), bv(bs.size());
     for (std::size_t i = 0; i < as.size(); ++i) av[i] = at.a(i);
@@ -179,17 +176,15 @@ meeting meeting_between(translation_frame<NT>& f, const time_fraction<NT>& s0, c
 }
 
 /// A witness of the meeting at an s strictly between the events s0 < s1
-/// (places_between) among the edge pairs next to the site `s` (its
-/// vertex's two edges against its edge and that edge's two neighbours);
-/// none when none of them meets. After an event at s0 that touched the
-/// witness, the edges at that event are the likeliest to show the meeting
-/// on (s0, s1): a vertex that entered the other polygon there has edges
-/// that cross the one it passed. Six segment tests, where meeting_between
-/// tests the whole polygons.
+/// (`at`) among the edge pairs next to the site `s` (its vertex's two
+/// edges against its edge and that edge's two neighbours); none when none
+/// of them meets. After an event at s0 that touched the witness, the edges
+/// at that event are the likeliest to show the meeting on (s0, s1): a
+/// vertex that entered the other polygon there has edges that cross the
+/// one it passed. Six segment tests, where meeting_between tests the whole
+/// polygons.
 template <class NT>
-meeting witness_near(translation_frame<NT>& f, const time_fraction<NT>& s0, const time_fraction<NT>& s1,
-                     const contact_site& s) {
-    const places_between<NT> at(f, s0, s1);
+meeting witness_near(const translation_frame<NT>& f, const places_between<NT>& at, const contact_site& s) {
     const polygon &as = f.a.shape(), &bs = f.b.shape();
     const polygon &vs = s.moving_vertex ? bs : as, &es = s.moving_vertex ? as : bs;
     const std::size_t vertex_edges[2] = {vs.previous(s.vertex), s.vertex};
@@ -301,8 +296,9 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
         if (next == events.size()) return exit;  // after the last event, apart
         timed_site<NT> following = events[next++];
         if (stale) {
-            witness = exit ? witness_near(f, last, following.time, exit->site) : meeting{};
-            if (!witness) witness = meeting_between(f, last, following.time, scale, reach);
+            const places_between<NT> at(f, last, following.time);
+            witness = exit ? witness_near(f, at, exit->site) : meeting{};
+            if (!witness) witness = meeting_between(f, at, scale, reach);
             if (!witness) return exit;
         }
         stale = touches(witness, following.site, a, b);
@@ -344,9 +340,10 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
 /// witness shows unless an event at its start touches it (docs/sweep.md,
 /// "Exit distance"). Time O((n + m) log(n + m) + k log k) for k events up to
 /// the exit, plus O((n + m) log(n + m)) for each event that touches the
-/// witness and whose neighbouring edge pairs show no meeting. In float, double or long double, a query whose largest coordinate
-/// lies outside NT's safe window is answered on its polygons and pose scaled
-/// by a power of two 2^k, and the distance found scaled back by 2^-k
+/// witness and whose neighbouring edge pairs show no meeting. In float,
+/// double or long double, a query whose largest coordinate lies outside
+/// NT's safe window is answered on its polygons and pose scaled by a power
+/// of two 2^k, and the distance found scaled back by 2^-k
 /// (core/range_scaling.hpp), rounded as NT's range allows. Throws
 /// invalid_input for an empty polygon, a NaN or infinite component of q or
 /// of the direction, a direction (0, 0), or one whose components differ by

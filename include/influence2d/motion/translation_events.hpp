@@ -255,29 +255,47 @@ struct translation_frame {
     }
 };
 
+/// A site in NT, posing only its three vertices (B's by `start`; `d` the
+/// displacement in NT): the moving vertex p, its displacement (d for B's
+/// vertex, -d for A's) and the ends of the edge. The filtered searches'
+/// evaluation of one site, without the whole frame.
+template <class NT>
+struct posed_site {
+    point<NT> p;   ///< the moving vertex at the start
+    point<NT> d;   ///< its displacement over the motion
+    point<NT> e0;  ///< the edge's start
+    point<NT> e1;  ///< the edge's end
+
+    /// The site s of A and B, B posed by `start` and displaced by dd.
+    posed_site(const polygon& a, const polygon& b, const rotation_pose& start, const point<NT>& dd,
+               const contact_site& s) {
+        const auto in_a = [&](std::size_t i) { return to_point<NT>(a.vertex(i)); };
+        const auto in_b = [&](std::size_t j) { return start.apply<NT>(b.vertex(j)); };
+        if (s.moving_vertex) {
+            p = in_b(s.vertex), d = dd, e0 = in_a(s.edge), e1 = in_a(a.next(s.edge));
+        } else {
+            p = in_a(s.vertex), d = {-dd.x, -dd.y}, e0 = in_b(s.edge), e1 = in_b(b.next(s.edge));
+        }
+    }
+};
+
 /// The contact times of one site in NT (contact_times: t in [0, 1] when
-/// bounded, t >= 0 otherwise; at most two), posing only the site's three
-/// vertices (B's by `start`; `d` the displacement in NT): the filtered
-/// searches' evaluation of one site, without the whole frame.
+/// bounded, t >= 0 otherwise; at most two), its vertices posed alone
+/// (posed_site).
 template <class NT>
 int site_times(const polygon& a, const polygon& b, const rotation_pose& start, const point<NT>& d,
                const contact_site& s, bool bounded, time_fraction<NT> out[2]) {
-    const auto in_a = [&](std::size_t i) { return to_point<NT>(a.vertex(i)); };
-    const auto in_b = [&](std::size_t j) { return start.apply<NT>(b.vertex(j)); };
-    if (s.moving_vertex) return contact_times(in_b(s.vertex), d, in_a(s.edge), in_a(a.next(s.edge)), bounded, out);
-    return contact_times(in_a(s.vertex), point<NT>{-d.x, -d.y}, in_b(s.edge), in_b(b.next(s.edge)), bounded, out);
+    const posed_site<NT> q(a, b, start, d, s);
+    return contact_times(q.p, q.d, q.e0, q.e1, bounded, out);
 }
 
-/// The earliest contact time of one site in [0, 1] in NT, posing only the
-/// site's three vertices (site_times, bounded).
+/// The earliest contact time of one site in [0, 1] in NT, its vertices
+/// posed alone (posed_site).
 template <class NT>
 std::optional<time_fraction<NT>> site_time(const polygon& a, const polygon& b, const rotation_pose& start,
                                            const point<NT>& d, const contact_site& s) {
-    time_fraction<NT> t[2];
-    const int k = site_times(a, b, start, d, s, true, t);
-    if (k == 0) return std::nullopt;
-    if (k == 2 && compare_times(t[1], t[0]) < 0) return std::move(t[1]);
-    return std::move(t[0]);
+    const posed_site<NT> q(a, b, start, d, s);
+    return earliest_contact_time(q.p, q.d, q.e0, q.e1);
 }
 
 /// The nearest double (ties to even) of an exact time that `time(tag)`
