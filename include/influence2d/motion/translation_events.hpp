@@ -487,11 +487,36 @@ int order(filtered_event<Exact>& c, filtered_event<Exact>& e, ExactTime&& exact_
     return compare_times(*c.exact, *e.exact);
 }
 
+/// A site's time in double, to order the sites of a window: the earliest
+/// contact time of its vertex posed in double (`b_start` for B's) moving by
+/// `sweep` against its edge; infinity when double finds none. An estimate
+/// only: it orders the work, never decides.
+inline double estimated_time(const polygon& a, const polygon& b, const std::vector<point<double>>& b_start,
+                             point<double> sweep, const contact_site& s) {
+    std::optional<time_fraction<double>> t =
+        s.moving_vertex ? earliest_contact_time(b_start[s.vertex], sweep, a.vertex(s.edge), a.vertex(a.next(s.edge)))
+                        : earliest_contact_time(a.vertex(s.vertex), point<double>{-sweep.x, -sweep.y}, b_start[s.edge],
+                                                b_start[b.next(s.edge)]);
+    const double q = t ? t->num / t->den : std::numeric_limits<double>::infinity();
+    return std::isnan(q) ? std::numeric_limits<double>::infinity() : q;
+}
+
 /// The earliest event as earliest_translation_event, exact, at nearly
-/// double's cost: each site's time is computed and compared in
-/// `certified`, and again in the exact field Exact only for the sites whose
-/// signs the bound cannot settle (and, when a comparison is not certain,
-/// the two compared).
+/// double's cost:
+///
+///   each window's sites (windowed_sites) whose vertex path over the
+///   motion may meet their edge (site_may_meet), in the order of their
+///   times in double (estimated_time):
+///       a site whose path up to the best event's time (a double above
+///       it, time_above) certainly misses its edge (site_may_meet) comes
+///       later: skipped
+///       else its time in `certified`, in the exact field Exact when its
+///       signs are not certain; compared with the best in certified, or
+///       exactly when the bound cannot settle the order (order)
+///
+/// The double times order the sites so that the earliest is met first and
+/// most others are then skipped by their paths alone; neither the order
+/// nor the skips change the answer, the least time by site_before.
 template <class Exact>
 std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const polygon& a, const polygon& b,
                                                                          const pose& from, const pose& to,
@@ -506,32 +531,49 @@ std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const p
     const std::vector<point<double>>& b_start = fast.b.approx();
     const point<double> sweep{to.tx - from.tx, to.ty - from.ty};
     const double e = translation_margin<certified>(a, b, from, to);
+    const auto evaluate = [&](const contact_site& s) {
+        // A site met again in a later window has the time it had: the
+        // filter cannot tell a time from itself, so it is not compared.
+        if (best && same_site(s, best->site)) return;
+        if (best) {
+            const double u = std::min(1.0, best->time_above());
+            if (!site_may_meet(a, b, b_start, {0, 0}, {u * sweep.x, u * sweep.y}, e, s)) return;
+        }
+        filtered_event<Exact> c{s, std::nullopt, std::nullopt};
+        try {
+            c.fast = fast.earliest(s);
+            if (!c.fast) return;
+        } catch (const uncertain_sign&) {
+            std::optional<time_fraction<Exact>> t = exact_time(s);
+            if (!t) return;
+            c.set_exact(std::move(*t));
+        }
+        if (best) {
+            const int o = order(c, *best, exact_time);
+            if (o > 0 || (o == 0 && !site_before(s, best->site))) return;
+        }
+        best = std::move(c);
+    };
+    // The window's sites, by their times in double, evaluated in that order.
+    std::vector<std::pair<double, contact_site>> pending;
+    const auto settle = [&] {
+        std::sort(pending.begin(), pending.end(), [](const auto& l, const auto& r) { return l.first < r.first; });
+        for (const auto& [when, s] : pending) evaluate(s);
+        pending.clear();
+    };
     windowed_sites(
         a, b, b_start, fast.b.bounds(), sweep, e,
         [&](const contact_site& s) {
-            // A site met again in a later window has the time it had: the
-            // filter cannot tell a time from itself, so it is not compared.
             if (best && same_site(s, best->site)) return;
             if (!site_may_meet(a, b, b_start, {0, 0}, sweep, e, s)) return;
-            filtered_event<Exact> c{s, std::nullopt, std::nullopt};
-            try {
-                c.fast = fast.earliest(s);
-                if (!c.fast) return;
-            } catch (const uncertain_sign&) {
-                std::optional<time_fraction<Exact>> t = exact_time(s);
-                if (!t) return;
-                c.set_exact(std::move(*t));
-            }
-            if (best) {
-                const int o = order(c, *best, exact_time);
-                if (o > 0 || (o == 0 && !site_before(s, best->site))) return;
-            }
-            best = std::move(c);
+            pending.push_back({estimated_time(a, b, b_start, sweep, s), s});
         },
         [&]() -> std::optional<double> {
+            settle();
             if (!best) return std::nullopt;
             return best->time_above();
         });
+    settle();
     return best;
 }
 
