@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <iterator>
 #include <limits>
 #include <map>
@@ -102,6 +103,8 @@ struct world_statistics {
 ///
 ///   step():
 ///     each body moved since the last step (in parallel blocks when many):
+///       its angle's cosine and sine, when the angle changed (move() keeps
+///       the angle alone, so that many moves share the threads);
 ///       its box: its polygon's box posed in double (the box of its four
 ///       posed corners, from its posed centre and half sides; the posed
 ///       polygon lies in their parallelogram), cut to the box of its
@@ -201,6 +204,7 @@ public:
         b.hull_first = shapes_[s]->hull_first;
         b.hull_count = shapes_[s]->hull_count;
         b.pose = rotation_pose(q);
+        b.theta = q.theta;
         b.fixed = fixed;
         bodies_.push_back(std::move(b));
         const body_id id = static_cast<body_id>(bodies_.size() - 1);
@@ -210,10 +214,19 @@ public:
 
     /// Moves body i to pose q (its place at the next step). Throws
     /// invalid_input for an unknown or removed body or a pose component
-    /// that is NaN or infinite.
+    /// that is NaN or infinite. The angle's cosine and sine are taken by the
+    /// next step (with the moved bodies' boxes, in parallel blocks when
+    /// many), and only for an angle that changed.
     void move(body_id i, const pose& q) {
-        const rotation_pose t(q);
-        live(i).pose = t;
+        rotation_pose::check(q);
+        body& b = live(i);
+        b.pose.tx = q.tx;
+        b.pose.ty = q.ty;
+        // (The same angle to the bit keeps its cosine and sine.)
+        if (std::memcmp(&q.theta, &b.theta, sizeof(double)) != 0) {
+            b.theta = q.theta;
+            b.turned = true;
+        }
         mark_moved(i);
     }
 
@@ -267,7 +280,9 @@ private:
     struct body {
         shape_id shape = 0;
         std::uint32_t hull_first = 0, hull_count = 0;  // its shape's (read by pass 1 without the shape)
-        rotation_pose pose{influence2d::pose{}};
+        rotation_pose pose{influence2d::pose{}};       // its cosine and sine those of theta once the step made them
+        double theta = 0;                              // the angle last given
+        bool turned = false;                           // theta changed since its cosine and sine were taken
         bool fixed = false;
         bool alive = true;
         bool moved = false;                          // since the last step
@@ -428,14 +443,19 @@ private:
             refits = 0;
         }
     }
-    // Body b's box at its present pose, and whether it escaped (b.escaped):
-    // it left its enlarged box, which is made anew, or it was removed.
+    // Body b's pose made (the cosine and sine of an angle that changed), its
+    // box at that pose, and whether it escaped (b.escaped): it left its
+    // enlarged box, which is made anew, or it was removed.
     void rebox(body& b) const {
         if (!b.alive) {
             b.escaped = true;
             return;
         }
         const point<double> was = b.bounds.centre();
+        if (b.turned) {
+            b.pose = rotation_pose(pose{b.pose.tx, b.pose.ty, b.theta});
+            b.turned = false;
+        }
         b.scale = shapes_[b.shape]->scale + std::fabs(b.pose.tx) + std::fabs(b.pose.ty);
         b.round = posed_disc(shapes_[b.shape]->round, b.pose);
         b.bounds = box_of(b);
