@@ -222,7 +222,42 @@ struct timed_site {
     time_fraction<NT> time;
     contact_site site;
     int which = 0;
+    /// The time's double, to sort by (sort_by_time; a NaN quotient of two
+    /// times beyond double's range is infinity); 0 in a floating NT, which
+    /// sorts by its times themselves.
+    double estimate = 0;
+
+    timed_site(time_fraction<NT> t, const contact_site& s, int w) : time(std::move(t)), site(s), which(w) {
+        using tr = number_traits<NT>;
+        if constexpr (tr::category != number_category::floating) {
+            const double q = tr::to_double(time.num) / tr::to_double(time.den);
+            estimate = std::isnan(q) ? std::numeric_limits<double>::infinity() : q;
+        }
+    }
 };
+
+/// Sorts the events by time (compare_times in NT). For a type other than
+/// the floating ones: by the doubles of their times first, then checked
+/// pair of neighbours by pair of neighbours in NT, and sorted by NT's
+/// comparisons only when one pair is out of order. A comparison sort
+/// compares every two neighbours of its result, so the check asks no sign
+/// that sorting by NT alone would not, and asks n - 1 where the sort asks
+/// about n log n (each a product of two times in `certified` or exact
+/// rationals).
+template <class NT>
+void sort_by_time(std::vector<timed_site<NT>>& events) {
+    using tr = number_traits<NT>;
+    if constexpr (tr::category != number_category::floating) {
+        std::sort(events.begin(), events.end(),
+                  [](const timed_site<NT>& l, const timed_site<NT>& r) { return l.estimate < r.estimate; });
+        bool ordered = true;
+        for (std::size_t k = 1; k < events.size() && ordered; ++k)
+            ordered = compare_times(events[k - 1].time, events[k].time) <= 0;
+        if (ordered) return;
+    }
+    std::sort(events.begin(), events.end(),
+              [](const timed_site<NT>& l, const timed_site<NT>& r) { return compare_times(l.time, r.time) < 0; });
+}
 
 /// The exit search of exit_distance (its pseudocode) for B posed by t and
 /// translated by s (dx, dy), the direction's largest component in [1, 2);
@@ -271,10 +306,9 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
             const int k = f.times(site, false, times);
             for (int i = 0; i < k; ++i)
                 if ((w_low < 0 || beyond(times[i], w_low)) && !beyond(times[i], w))
-                    events.push_back({std::move(times[i]), site, i});
+                    events.emplace_back(std::move(times[i]), site, i);
         });
-        std::sort(events.begin(), events.end(),
-                  [](const timed_site<NT>& l, const timed_site<NT>& r) { return compare_times(l.time, r.time) < 0; });
+        sort_by_time(events);
     };
     double w_low = -1, w = std::min(s_max, s_max * first_window);
     load(w_low, w);
@@ -321,7 +355,8 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
 ///   edge: contact_times, both ends of a sliding contact), gathered by
 ///   windows (0, s_max / 64], then doubled, from the sites whose boxes
 ///   overlap, B's swept over the window, and whose vertex's path over it
-///   may meet the edge (site_may_meet); sorted: s_1 < s_2 < ... < s_K
+///   may meet the edge (site_may_meet); sorted (sort_by_time: by their
+///   doubles, the order checked in NT): s_1 < s_2 < ... < s_K
 ///   last <- 0
 ///   loop:
 ///       if an event at `last` touches w's features (a located vertex
