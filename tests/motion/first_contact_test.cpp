@@ -558,6 +558,32 @@ TEST_CASE("exit distance: through, out of the solid into a hole, touching, apart
     CHECK(deep == 3);
 }
 
+TEST_CASE("exit distance: two events nearer than a double can tell, in either order", "[sweep][exit]") {
+    const double tiny = 0x1p-55;
+    for (const double side : {1.0, -1.0}) {
+        // A: two unit-high blocks with a gap; B from x = -2^-55 to
+        // 0.5 - 2^-54, over the first. Moving along +x (or, mirrored, -x) B
+        // leaves the first block at s = 1 + 2^-55 and touches the second at
+        // s = 1 + 2^-54: both times lie within an ulp above 1, where a
+        // rational's double (truncated or rounded) is 1, and only their
+        // exact order says where the interval from 0 ends (the second block
+        // would take it to about 3).
+        const auto at = [side](double x, double y) { return point<double>{side * x, y}; };
+        const polygon a({ring_input{{at(0, 0), at(1, 0), at(1, 1), at(0, 1)}, ring_role::outer},
+                         ring_input{{at(1.5, 0), at(3, 0), at(3, 1), at(1.5, 1)}, ring_role::outer}});
+        const double right = 0.5 - 2 * tiny;
+        std::vector<point<double>> corners = {at(-tiny, 0.25), at(right, 0.25), at(right, 0.75), at(-tiny, 0.75)};
+        for (int turn = 0; turn < 8; ++turn) {
+            std::vector<point<double>> ring;
+            for (int k = 0; k < 4; ++k) ring.push_back(corners[(turn + (turn < 4 ? k : 4 - k)) % 4]);
+            const polygon b({ring_input{ring, ring_role::outer}});
+            CAPTURE(side, turn);
+            CHECK(exit_distance<exact_rational>(a, b, pose{}, side, 0) == exact_rational(1) + exact_rational(tiny));
+            CHECK(certified_exit_distance(a, b, pose{}, side, 0) == 1.0);
+        }
+    }
+}
+
 TEST_CASE("exit distance: random overlaps of multipolygons against the reference", "[sweep][exit][reference]") {
     const int scenes = test_effort::scaled(24);
     std::size_t deep = 0;
