@@ -532,10 +532,10 @@ std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const p
     const point<double> sweep{to.tx - from.tx, to.ty - from.ty};
     const double e = translation_margin<certified>(a, b, from, to);
     const auto evaluate = [&](const contact_site& s) {
-        // A site met again in a later window has the time it had: the
-        // filter cannot tell a time from itself, so it is not compared.
-        if (best && same_site(s, best->site)) return;
         if (best) {
+            // A site met again in a later window has the time it had: the
+            // filter cannot tell a time from itself, so it is not compared.
+            if (same_site(s, best->site)) return;
             const double u = std::min(1.0, best->time_above());
             if (!site_may_meet(a, b, b_start, {0, 0}, {u * sweep.x, u * sweep.y}, e, s)) return;
         }
