@@ -16,8 +16,10 @@
 #include "influence2d/core/pose.hpp"
 #include "influence2d/detect/result.hpp"
 #include "influence2d/io/csv.hpp"
-#include "motion_queries.hpp"
+#include "influence2d/query/batch.hpp"
+#include "influence2d/query/both_posed.hpp"
 #include "number_types.hpp"
+#include "query_rows.hpp"
 #include "report.hpp"
 #include "scene_input.hpp"
 

@@ -5,10 +5,8 @@
 // its answers are exact, whether it answers frames in doubt again in exact
 // rationals, and how a detector runs in it. The option's accepted names, its
 // help text and the dispatch all come from that table: a new type is one line
-// there.
+// there (number_types.cpp).
 
-#include <atomic>
-#include <chrono>
 #include <cstddef>
 #include <map>
 #include <optional>
@@ -20,18 +18,9 @@
 
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
-#include "influence2d/core/range_scaling.hpp"
-#include "influence2d/detect/brute_force.hpp"
-#include "influence2d/detect/detector.hpp"
-#include "influence2d/detect/paper_detector.hpp"
 #include "influence2d/detect/result.hpp"
-#include "influence2d/exact/certified_detector.hpp"
-#include "influence2d/exact/interval_detector.hpp"
 #include "influence2d/motion/motion.hpp"
-#include "influence2d/number/cgal.hpp"
-#include "influence2d/number/multiprecision.hpp"
-#include "influence2d/query/batch.hpp"
-#include "motion_queries.hpp"
+#include "query_rows.hpp"
 
 namespace influence2d::cli {
 
@@ -55,78 +44,6 @@ struct frames_run {
     /// Types with an exact fallback: frames answered again in exact rationals.
     std::optional<std::size_t> exact_frames;
 };
-
-namespace number_type_detail {
-
-/// Times the frames: with one thread, the loop of one detector built before
-/// the clock starts; with more, the whole batch (each thread builds its
-/// detector from `make`, on shared prepared polygons where the detector
-/// takes them). `done(detector)` sees each detector after its frames.
-template <class Make, class Done>
-frames_run time_frames(const detector_job& job, Make&& make, Done&& done) {
-    frames_run r;
-    if (job.threads <= 1) {
-        auto det = make();
-        r.frames.resize(job.poses.size());
-        const auto start = std::chrono::steady_clock::now();
-        for (std::size_t i = 0; i < job.poses.size(); ++i) r.frames[i] = det.collide(job.poses[i]);
-        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        done(det);
-        return r;
-    }
-    const auto start = std::chrono::steady_clock::now();
-    r.frames = collide_batch(job.poses, make, job.threads, done);
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return r;
-}
-
-/// A plain number type: every algorithm's detector in NT; the sound one on
-/// A and B prepared once for every thread. In float, double and long double,
-/// a scene far from 1 in scale (its polygons and every pose's translation)
-/// runs scaled by a power of two into the type's range, d with it
-/// (core/range_scaling.hpp): the same answers, without overflow or underflow.
-template <class NT>
-frames_run run_in(const detector_job& job) {
-    if (const int k = batch_range_shift<NT>(job.a, job.b, job.poses.data(), job.poses.size())) {
-        const polygon a = job.a.scaled_by_power_of_two(k), b = job.b.scaled_by_power_of_two(k);
-        std::vector<pose> poses;
-        poses.reserve(job.poses.size());
-        for (const pose& p : job.poses) poses.push_back(scaled_by_power_of_two(p, k));
-        detector_job scaled{a, b, poses, job.options, job.algorithm, job.threads};
-        scaled.options.distance = scaled_length(job.options.distance, k);
-        return run_in<NT>(scaled);
-    }
-    const auto nothing = [](const auto&) {};
-    if (job.algorithm == "paper")
-        return time_frames(
-            job, [&] { return paper_detector<NT>(job.a, job.b, job.options); }, nothing);
-    if (job.algorithm == "brute-force")
-        return time_frames(
-            job, [&] { return brute_force_detector<NT>(job.a, job.b, job.options); }, nothing);
-    const auto a = prepare_static<NT>(job.a);
-    const auto b = prepare_moving<NT>(job.b);
-    return time_frames(
-        job, [&] { return detector<NT>(a, b, job.options); }, nothing);
-}
-
-/// A filtered type: Wrapper<Detector> runs Detector in a fast type and answers
-/// a frame again in exact rationals when a sign is not certain
-/// (certified_detector, interval_detector). Not for the paper's algorithm
-/// (number_type::exact_fallback says why).
-template <template <template <class...> class> class Wrapper>
-frames_run run_filtered(const detector_job& job) {
-    std::atomic<std::size_t> exact_frames{0};
-    const auto count = [&](const auto& det) { exact_frames += det.exact_frames(); };
-    frames_run r = job.algorithm == "brute-force"
-                       ? time_frames(
-                             job, [&] { return Wrapper<brute_force_detector>(job.a, job.b, job.options); }, count)
-                       : time_frames(
-                             job, [&] { return Wrapper<detector>(job.a, job.b, job.options); }, count);
-    r.exact_frames = exact_frames.load();
-    return r;
-}
-
-}  // namespace number_type_detail
 
 /// One number type of the tool.
 struct number_type {
@@ -154,25 +71,11 @@ struct number_type {
     bool (*meets_both)(const polygon&, const pose&, const polygon&, const pose&);
 };
 
-/// Every number type, in the order the help lists them.
-inline const number_type number_types[] = {
-    // clang-format off
-    {"float", "IEEE single precision, refusing coordinates beyond float's range", false, false, &number_type_detail::run_in<float>,
-     &separations_in<float>, &contacts_in<float>, nullptr},
-    {"double", "IEEE double precision", false, false, &number_type_detail::run_in<double>,
-     &separations_in<double>, &contacts_in<double>, nullptr},
-    {"long-double", "the platform's long double (64-bit significand on x86)", false, false, &number_type_detail::run_in<long double>,
-     &separations_in<long double>, &contacts_in<long double>, nullptr},
-    {"quad", "113-bit software floating point (Boost cpp_bin_float_quad)", false, false, &number_type_detail::run_in<quad>,
-     &separations_in<quad>, &contacts_in<quad>, nullptr},
-    {"exact", "CGAL's exact rationals, slower", true, false, &number_type_detail::run_in<exact_rational>,
-     &separations_in<exact_rational>, &contacts_in<exact_rational>, &exact_meets_both},
-    {"certified", "double with a running error bound, a frame whose signs it cannot certify answered again in exact rationals (counted as 'exact fallbacks')", true, true, &number_type_detail::run_filtered<certified_detector>,
-     &certified_separations, &certified_contacts, &certified_meets_both},
-    {"interval", "the same with CGAL's interval arithmetic (separation and sweep: as certified)", true, true, &number_type_detail::run_filtered<interval_detector>,
-     &certified_separations, &certified_contacts, &certified_meets_both},
-    // clang-format on
-};
+/// Every number type, in the order the help lists them. Defined in
+/// number_types.cpp, which holds every type's instantiations: they are
+/// compiled there once, not again in each command that names the types.
+inline constexpr std::size_t number_type_count = 7;
+extern const number_type number_types[number_type_count];
 
 /// The type --number-type takes when not given.
 inline constexpr const char* default_number_type = "double";

@@ -11,8 +11,8 @@
 
 #include "commands.hpp"
 #include "files.hpp"
-#include "motion_queries.hpp"
 #include "number_types.hpp"
+#include "query_rows.hpp"
 #include "report.hpp"
 #include "scene_input.hpp"
 
