@@ -141,10 +141,12 @@ TEST_CASE("interior_cells: boundaries along the cells' sides, touching parts and
         CHECK(cells.cell_side() == 2);
         std::size_t held = 0;
         // Every lattice point, cell centre and quarter point: sides, corners
-        // and centres.
-        for (int i = 0; i <= 256; ++i)
-            for (int j = 0; j <= 256; ++j) {
-                const point<double> q{i / 4.0, j / 4.0};
+        // and centres (every half point under a reduced effort, which
+        // still holds the lattice points and cell centres).
+        const int per_unit = test_effort::effort() < 1 ? 2 : 4;
+        for (int i = 0; i <= 64 * per_unit; ++i)
+            for (int j = 0; j <= 64 * per_unit; ++j) {
+                const point<double> q{i / static_cast<double>(per_unit), j / static_cast<double>(per_unit)};
                 if (!cells.holds(q, 1)) continue;
                 ++held;
                 INFO("point (" << q.x << ", " << q.y << ")");

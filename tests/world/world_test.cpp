@@ -46,17 +46,23 @@ struct body_state {
 
 /// Whether two exactly placed polygons are within d (d = 0: meet): their
 /// regions meet, or an edge pair is within d by CGAL's exact squared
-/// distance.
+/// distance. Edge boxes (which hold the exact edges) more than 2d apart on an
+/// axis hold no pair within d, and two polygons whose boxes (the union of
+/// their edge boxes) are so far apart are neither.
 bool exact_within(const test_exact::placed_shape& a, const test_exact::placed_shape& b, double d) {
-    if (test_exact::regions_meet(a, b)) return true;
-    if (d == 0) return false;
-    const test_exact::FT d2 = test_exact::FT(d) * test_exact::FT(d);
-    // Edge boxes (which hold the exact edges) more than 2d apart on an axis
-    // hold no pair within d.
     const auto far = [&](const CGAL::Bbox_2& l, const CGAL::Bbox_2& r) {
         return l.xmin() - r.xmax() > 2 * d || r.xmin() - l.xmax() > 2 * d || l.ymin() - r.ymax() > 2 * d ||
                r.ymin() - l.ymax() > 2 * d;
     };
+    const auto box_of = [](const test_exact::placed_shape& s) {
+        CGAL::Bbox_2 all;  // empty
+        for (const CGAL::Bbox_2& e : s.edge_box) all += e;
+        return all;
+    };
+    if (far(box_of(a), box_of(b))) return false;
+    if (test_exact::regions_meet(a, b)) return true;
+    if (d == 0) return false;
+    const test_exact::FT d2 = test_exact::FT(d) * test_exact::FT(d);
     for (std::size_t i = 0; i < a.v.size(); ++i)
         for (std::size_t j = 0; j < b.v.size(); ++j) {
             if (far(a.edge_box[i], b.edge_box[j])) continue;
