@@ -48,9 +48,13 @@ struct placed_shape {
     const polygon* shape = nullptr;
     std::vector<point_2> v;
     std::vector<CGAL::Bbox_2> edge_box;
+    CGAL::Bbox_2 box;  ///< the union of the edge boxes: holds every exact vertex
 
     placed_shape(const polygon& p, std::vector<point_2> pts) : shape(&p), v(std::move(pts)) {
-        for (std::size_t i = 0; i < v.size(); ++i) edge_box.push_back(box_of(v[i]) + box_of(v[p.next(i)]));
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            edge_box.push_back(box_of(v[i]) + box_of(v[p.next(i)]));
+            box += edge_box.back();
+        }
     }
     const point_2& end(std::size_t i) const { return v[shape->next(i)]; }
 };
