@@ -423,6 +423,80 @@ TEST_CASE("separation: closest points of two segments on a small grid, degenerat
     CHECK(meet < 3600);
 }
 
+/// The closest points the tie rule names, from CGAL's numbers alone: the
+/// least squared distance over every edge pair, ties to the least (A's
+/// stored edge, B's stored edge); within that pair the first of its four end
+/// candidates (A's start, A's end, B's start, B's end, each to the other
+/// segment) at the least distance, the other point the end's nearest point
+/// of the other segment. For boundaries apart.
+std::pair<P, P> tie_rule_points(const placed_shape& a, const placed_shape& b) {
+    const auto nearest_on = [](const P& p, const P& x, const P& y) {
+        if (x == y) return x;
+        const FT t = (p - x) * (y - x), l = (y - x) * (y - x);
+        if (t <= 0) return x;
+        if (t >= l) return y;
+        return x + (y - x) * (t / l);
+    };
+    FT best = -1;
+    std::pair<P, P> points;
+    for (std::size_t i = 0; i < a.v.size(); ++i)
+        for (std::size_t j = 0; j < b.v.size(); ++j) {
+            const P &x = a.v[i], &y = a.end(i), &u = b.v[j], &v = b.end(j);
+            const std::pair<P, P> ends[4] = {
+                {x, nearest_on(x, u, v)}, {y, nearest_on(y, u, v)}, {nearest_on(u, x, y), u}, {nearest_on(v, x, y), v}};
+            for (const auto& e : ends) {
+                const FT d = CGAL::squared_distance(e.first, e.second);
+                if (best < 0 || d < best) {
+                    best = d;
+                    points = e;
+                }
+            }
+        }
+    return points;
+}
+
+TEST_CASE("separation: exact ties between feature pairs go to the least edge pair, its first end candidate",
+          "[separation][reference]") {
+    // Axis-aligned and dyadic shapes and translations: parallel edges,
+    // vertices level with vertices, every distance tied several ways.
+    const std::vector<polygon> shapes = {
+        test_shapes::square(0, 0, 2), test_shapes::c_shape(),
+        polygon({test_shapes::ring({{0, 0}, {3, 0}, {1.5, 1.5}})}),
+        polygon({test_shapes::ring({{0, 0}, {1, -1}, {2, 0}, {2, 2}, {1, 3}, {0, 2}})})};
+    std::size_t apart = 0, ties = 0;
+    for (const polygon& a : shapes)
+        for (const polygon& b : shapes)
+            for (int gx = -32; gx <= 32; gx += 3)
+                for (int gy = -32; gy <= 32; gy += 5) {
+                    const pose q{gx / 4.0, gy / 4.0, 0};
+                    const reference_answer ref = reference(a, b, q);
+                    if (ref.meet) continue;
+                    ++apart;
+                    const std::pair<P, P> expected = tie_rule_points(ref.a, ref.b);
+                    const separation_result<ER> x = separation<ER>(a, b, q);
+                    INFO("pose " << q.tx << ", " << q.ty);
+                    REQUIRE(x.squared_distance == ref.squared);
+                    CHECK(to_p(x.static_point) == expected.first);
+                    CHECK(to_p(x.moving_point) == expected.second);
+                    const certified_separation_result c = certified_separation(a, b, q);
+                    CHECK((c.static_feature.kind == x.static_feature.kind &&
+                           c.static_feature.index == x.static_feature.index));
+                    CHECK((c.moving_feature.kind == x.moving_feature.kind &&
+                           c.moving_feature.index == x.moving_feature.index));
+                    CHECK(P(c.static_point.x, c.static_point.y) == expected.first);
+                    CHECK(P(c.moving_point.x, c.moving_point.y) == expected.second);
+                    // Ties: more than one edge pair at the least distance.
+                    std::size_t at_least = 0;
+                    for (std::size_t i = 0; i < a.size(); ++i)
+                        for (std::size_t j = 0; j < b.size(); ++j)
+                            at_least += pair_squared(ref.a, i, ref.b, j) == ref.boundary_squared;
+                    ties += at_least > 1;
+                }
+    INFO("poses apart " << apart << ", with tied edge pairs " << ties);
+    CHECK(apart > 1000);
+    CHECK(ties > apart / 2);
+}
+
 TEST_CASE("separation: the catalogue against the exact reference", "[separation][reference]") {
     tally t;
     for (const test_catalogue::test_case& c : test_catalogue::cases()) {

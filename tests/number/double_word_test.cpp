@@ -206,3 +206,40 @@ TEST_CASE("double_word: exact operations, the kept range, and rounding at a midp
     CHECK(third.known());
     CHECK_FALSE((double_word(1.0) / (third * double_word(3.0) - double_word(1.0))).known());
 }
+
+TEST_CASE("double_word: sum_of_products bounds a b + c d + t, with cancellation and at the kept range's ends",
+          "[double_word]") {
+    rng r(0x50f1d3a9ULL);
+    tally t;
+    std::size_t fell_back = 0;
+    for (int k = 0; k < 20000; ++k) {
+        const auto at = [&](int e) { return std::ldexp(r.signed_unit(), e); };
+        const int e = std::vector<int>{-930, -600, -60, 0, 60, 450, 890}[r.index(7)];
+        double a = at(e), b = at(r.chance(0.5) ? 0 : -e / 2), c = at(e), d = at(0), s = at(e);
+        switch (r.index(6)) {
+        case 0: c = -a * (1 + std::ldexp(r.signed_unit(), -static_cast<int>(r.index(60)))), d = b; break;
+        case 1: s = -(a * b + c * d); break;  // t cancels the products, up to their rounding
+        case 2: a = 0; break;
+        case 3: d = 0, s = 0; break;
+        case 4: b = std::ldexp(r.signed_unit(), -1000); break;  // a factor below the kept range
+        default: break;
+        }
+        const double_word w = double_word::sum_of_products(a, b, c, d, s);
+        const double_word generic = double_word(a) * double_word(b) + double_word(c) * double_word(d) + double_word(s);
+        fell_back += w.known() != generic.known();
+        t.check({w, exact_rational(a) * exact_rational(b) + exact_rational(c) * exact_rational(d) + exact_rational(s)});
+    }
+    INFO(t.first);
+    CHECK(t.violations == 0);
+    INFO("values " << t.values << ", known " << t.known << ", rounded " << t.rounded << ", unknown " << t.unknown
+                   << ", known by one route only " << fell_back);
+    CHECK(t.known > t.values / 2);
+    CHECK(t.rounded > t.known / 2);
+    CHECK(t.unknown > 500);
+    // Exact inputs give an exact word; a product beyond the kept range is unknown.
+    const double_word x = double_word::sum_of_products(3, 5, -2, 7, 1);
+    CHECK(x.exact_double());
+    CHECK(x.hi() == 2);
+    CHECK_FALSE(double_word::sum_of_products(0x1p500, 0x1p500, 1, 1, 0).known());
+    CHECK_FALSE(double_word::sum_of_products(0x1p-500, 0x1p-500, 0, 1, 0).known());
+}

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 
 #include "influence2d/core/box.hpp"
 #include "influence2d/core/pose.hpp"
@@ -359,6 +360,78 @@ TEST_CASE("distance bounds: the filtered closest_between_segments is the exact c
         CHECK(test_exact::squared_distance(p1, exact(a), exact(b)) == 0);
         CHECK(test_exact::squared_distance(p2, s.U, s.V) == 0);
     }
+}
+
+TEST_CASE("distance bounds: settled_closest_between settles only the exact closest pair's parts",
+          "[distance][bounds]") {
+    test_random::rng r(16);
+    std::size_t settled = 0, ties = 0, interiors = 0;
+    for (int k = 0; k < count(20000); ++k) {
+        const int e = random_exponent(r);
+        const point<double> a{at_scale(r, e), at_scale(r, e)},
+            b = r.chance(0.05) ? a : point<double>{at_scale(r, e), at_scale(r, e)};
+        point<double> q0{at_scale(r, e), at_scale(r, e)}, q1{at_scale(r, e), at_scale(r, e)};
+        const double near = std::ldexp(1.0, e - 1 - static_cast<int>(r.index(50)));
+        switch (r.index(5)) {
+        case 0:  // B's start near a, B's edge nearly square to the offset: a projection near an end
+            q0 = {a.x + near * r.signed_unit(), a.y + near * r.signed_unit()};
+            q1 = {q0.x - (q0.y - a.y) * 1e3 + near * r.signed_unit(), q0.y + (q0.x - a.x) * 1e3};
+            break;
+        case 1:  // B's edge parallel to A's, shifted: ties between ends
+            q0 = {a.x + near, a.y + near};
+            q1 = {b.x + near, b.y + near};
+            break;
+        case 2:  // B's start beyond a on the line of [a, b]
+            q0 = {a.x - (b.x - a.x) * r.unit(), a.y - (b.y - a.y) * r.unit()};
+            break;
+        default: break;
+        }
+        const bool posed = r.chance(0.5);
+        const posed_edge s = posed ? pose_edge(q0, q1, pose{at_scale(r, e - 40), at_scale(r, e - 40), 0.5})
+                                   : perturbed_edge(r, q0, q1, std::ldexp(r.unit(), e - 30));
+        if (!std::isfinite(s.u.x + s.u.y + s.v.x + s.v.y) || s.u == s.v) continue;
+        const std::optional<settled_closest> c = settled_closest_between(a, b, s.u, s.v, s.delta);
+        if (!c) continue;
+        ++settled;
+        const point<exact_rational> A{Q(a.x), Q(a.y)}, B{Q(b.x), Q(b.y)}, U{s.U.x(), s.U.y()}, V{s.V.x(), s.V.y()};
+        const Q d2 = test_exact::squared_distance(exact(a), exact(b), s.U, s.V);
+        INFO("case " << k << ", scale 2^" << e);
+        CHECK(d2 > 0);
+        CHECK(brackets(c->lower, c->upper, d2));
+        // The parts are those of the exact closest pair, and the points the
+        // parts give realise the distance (CGAL's), each on its segment at
+        // that part.
+        const segment_pair_closest<exact_rational> x = closest_between_segments(A, B, U, V);
+        CHECK(c->first_part == x.first_part);
+        CHECK(c->second_part == x.second_part);
+        const point<exact_rational> ends[4] = {A, B, U, V};
+        const segment_pair_closest<exact_rational> y =
+            closest_at_parts<exact_rational>(c->first_part, c->second_part, [&](int i) { return ends[i]; });
+        CHECK(y.squared == d2);
+        const exact_point p1(y.on_first.x, y.on_first.y), p2(y.on_second.x, y.on_second.y);
+        CHECK(CGAL::squared_distance(p1, p2) == d2);
+        CHECK(test_exact::squared_distance(p1, exact(a), exact(b)) == 0);
+        CHECK(test_exact::squared_distance(p2, s.U, s.V) == 0);
+        CHECK((p1 == exact(a)) == (c->first_part == segment_part::start));
+        CHECK((p2 == s.U) == (c->second_part == segment_part::start));
+        ties += c->first_part != segment_part::interior && c->second_part != segment_part::interior;
+        interiors += c->first_part == segment_part::interior || c->second_part == segment_part::interior;
+    }
+    INFO("settled " << settled << ", vertex to vertex " << ties << ", vertex to edge " << interiors);
+    CHECK(settled > at_least(8000));
+    CHECK(ties > at_least(500));
+    CHECK(interiors > at_least(3000));
+    // By hand: a vertex of each, the four end candidates two by two on the
+    // same points, settled; a crossing or a touch is not.
+    const std::optional<settled_closest> corner = settled_closest_between({0, 0}, {1, 0}, {-1, -1}, {-2, -1}, 1e-12);
+    REQUIRE(corner);
+    CHECK(corner->first_part == segment_part::start);
+    CHECK(corner->second_part == segment_part::start);
+    CHECK_FALSE(settled_closest_between({0, 0}, {2, 0}, {1, -1}, {1, 1}, 1e-12));
+    CHECK_FALSE(settled_closest_between({0, 0}, {2, 0}, {1, 0}, {1, 1}, 1e-12));
+    //   u---v          parallel and overlapping in projection: the ends tie
+    //   a-----b        with different parts, which double cannot order
+    CHECK_FALSE(settled_closest_between({0, 0}, {2, 0}, {0.5, 1}, {1.5, 1}, 1e-12));
 }
 
 TEST_CASE("distance bounds: node_gap_lower and box_gap_lower are lower bounds", "[distance][bounds]") {

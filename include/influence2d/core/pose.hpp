@@ -73,6 +73,8 @@ struct rotation_pose {
             if (s == 0 && c == 1 && exact_sum::exact_double_sum(q.x, tx, x) && exact_sum::exact_double_sum(q.y, ty, y))
                 return point<NT>{tr::from_double(x), tr::from_double(y)};
         }
+        if constexpr (has_sum_of_products<NT>::value)
+            return point<NT>{tr::sum_of_products(c, q.x, -s, q.y, tx), tr::sum_of_products(s, q.x, c, q.y, ty)};
         const NT cx = tr::from_double(c), sx = tr::from_double(s);
         const NT qx = tr::from_double(q.x), qy = tr::from_double(q.y);
         return point<NT>{cx * qx - sx * qy + tr::from_double(tx), sx * qx + cx * qy + tr::from_double(ty)};

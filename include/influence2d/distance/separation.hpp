@@ -291,6 +291,88 @@ chosen_pair<NT> closest_candidate(const search_input& in, const search_space& sp
     return best;
 }
 
+/// A pair phase 2 chose in double, with the candidate that realises its
+/// distance.
+struct settled_pair {
+    settled_closest closest;
+    std::uint32_t static_edge = 0, moving_edge = 0;
+};
+
+/// Phase 2 decided in double, for candidates and no pair certainly crossing:
+/// the pair closest_candidate chooses, when the bounds settle it, or nothing.
+/// Each candidate in the order evaluated_before is settled in double
+/// (settled_closest_between: its bounds, its candidate end, its features);
+/// against the best so far it is certainly nearer (its upper bound below the
+/// best's lower bound), certainly farther, or at the same features (the same
+/// points: the same distance, the least (A's edge, B's edge) kept, as
+/// closest_candidate keeps it); anything else is in doubt. The loop stops
+/// where closest_candidate's does, at a lower bound beyond the best's upper
+/// bound. An exact NT then evaluates the chosen pair alone, from the parts
+/// of its closest points (closest_at_parts), instead of every pair the
+/// bounds leave near the best.
+///
+///   for each candidate c in order:
+///       c.lower > best's upper bound: stop
+///       settle c in double; in doubt: nothing
+///       no best, or c certainly nearer: best <- c
+///       c certainly farther: next
+///       same features as best: best <- the least of the two pairs
+///       else: nothing
+template <class Approx>
+std::optional<settled_pair> settled_candidate(const search_input& in, Approx& approx, const search_space& space) {
+    std::optional<settled_pair> best;
+    for (const candidate& c : space.candidates) {
+        if (best && c.lower > best->closest.upper) break;
+        const std::uint32_t e = c.static_edge, f = c.moving_edge;
+        const std::optional<settled_closest> d = settled_closest_between(in.a.vertex(e), in.a.vertex(in.a.next(e)),
+                                                                         approx[f], approx[in.b.next(f)], in.delta);
+        if (!d) return std::nullopt;
+        if (!best || d->upper < best->closest.lower) {
+            best = settled_pair{*d, e, f};
+            continue;
+        }
+        if (d->lower > best->closest.upper) continue;
+        if (feature_key(in.a, e, d->first_part) != feature_key(in.a, best->static_edge, best->closest.first_part) ||
+            feature_key(in.b, f, d->second_part) != feature_key(in.b, best->moving_edge, best->closest.second_part))
+            return std::nullopt;
+        if (e < best->static_edge || (e == best->static_edge && f < best->moving_edge)) best = settled_pair{*d, e, f};
+    }
+    return best;
+}
+
+/// Phase 2 in an exact or filtered NT without comparing NT values: the pair
+/// phase 1 found certainly crossing, at its crossing point (crossing_closest:
+/// no sign taken again), or the pair settled in double (settled_candidate)
+/// with its closest points evaluated from their parts (closest_at_parts:
+/// only the ends these need are asked of a_vertex and b_vertex). Not found
+/// when the choice is in doubt. `evaluated` counts the pair evaluated.
+template <class NT, class Approx, class AVertex, class BVertex>
+chosen_pair<NT> settled_choice(const search_input& in, Approx& approx, const search_space& space, AVertex& a_vertex,
+                               BVertex& b_vertex, std::size_t& evaluated) {
+    chosen_pair<NT> best;
+    std::optional<std::pair<std::uint32_t, std::uint32_t>> pair = space.crossing;
+    std::optional<settled_pair> settled;
+    if (!pair) {
+        settled = settled_candidate(in, approx, space);
+        if (!settled) return best;
+        pair = std::make_pair(settled->static_edge, settled->moving_edge);
+    }
+    const auto [e, f] = *pair;
+    const std::size_t e2 = in.a.next(e), f2 = in.b.next(f);
+    ++evaluated;
+    if (!settled) {
+        best.closest = crossing_closest(a_vertex(e), a_vertex(e2), b_vertex(f), b_vertex(f2));
+    } else {
+        best.closest = closest_at_parts<NT>(settled->closest.first_part, settled->closest.second_part, [&](int i) {
+            return i == 0 ? a_vertex(e) : i == 1 ? a_vertex(e2) : b_vertex(i == 2 ? f : f2);
+        });
+    }
+    best.static_edge = e;
+    best.moving_edge = f;
+    best.found = true;
+    return best;
+}
+
 /// The closest points of A's edge e and B's edge f in NT, a_vertex(i) and
 /// b_vertex(j) giving A's vertex and B's posed vertex in NT: in a floating
 /// NT directly; in another, with the choice among the candidates made in
@@ -523,7 +605,10 @@ std::optional<inside_vertex> inside_in(static_side<NT>& side, const search_input
 ///
 ///   U <- the last frame's pair re-evaluated at this pose (or infinity)
 ///   phase 1: candidates, or a pair certainly crossing <- search_pairs
-///   phase 2: that pair, or the least candidate in NT (closest_candidate)
+///   phase 2: that pair; or, in an exact or filtered NT, the least
+///       candidate settled in double (settled_candidate), its closest points
+///       evaluated in NT from their parts; or the least candidate in NT
+///       (closest_candidate)
 ///   distance 0: the regions meet at that pair's common point
 ///   phase 3: a ring's vertex inside the other region: they meet there
 ///   else: the distance is the pair's
@@ -534,10 +619,14 @@ separation_result<NT> separate(static_side<NT>& side, const search_input& in, wo
     const auto a_vertex = [&](std::size_t i) { return side.vertex(i); };
     search_pairs(in, w.approx, pair_upper(in, w.approx, w.last), w.space);
     w.evaluated = 0;
-    const chosen_pair<NT> best = closest_candidate<NT>(
-        in, w.space,
-        [&](std::uint32_t e, std::uint32_t f) { return pair_closest<NT>(in, w.approx, a_vertex, b_vertex, e, f); },
-        w.evaluated);
+    chosen_pair<NT> best;
+    if constexpr (number_traits<NT>::category != number_category::floating)
+        best = settled_choice<NT>(in, w.approx, w.space, a_vertex, b_vertex, w.evaluated);
+    if (!best.found)
+        best = closest_candidate<NT>(
+            in, w.space,
+            [&](std::uint32_t e, std::uint32_t f) { return pair_closest<NT>(in, w.approx, a_vertex, b_vertex, e, f); },
+            w.evaluated);
     INFLUENCE2D_ASSERT(best.found, "phase 1 left no candidate");
     w.last = std::make_pair(best.static_edge, best.moving_edge);
     if (at_contact(best.closest.squared)) {

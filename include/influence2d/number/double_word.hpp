@@ -96,7 +96,7 @@ public:
     friend double_word operator-(const double_word& a) { return {-a.hi_, -a.lo_, a.error_}; }
     /// The sum: exact for two doubles (TwoSum), else the accurate sum of two
     /// words (Joldes, Muller and Popescu's algorithm 6) and word_rounding.
-    friend double_word operator+(const double_word& a, const double_word& b) {
+    [[gnu::always_inline]] friend double_word operator+(const double_word& a, const double_word& b) {
         if (!a.known() || !b.known()) return unknown();
         double sh, sl;
         two_sum(a.hi_, b.hi_, sh, sl);
@@ -110,13 +110,13 @@ public:
         return settled(zh, zl, a.error_ + b.error_, word_rounding * std::fabs(zh));
     }
     /// The difference: the sum with -b.
-    friend double_word operator-(const double_word& a, const double_word& b) { return a + (-b); }
+    [[gnu::always_inline]] friend double_word operator-(const double_word& a, const double_word& b) { return a + (-b); }
     /// The product: exact for two doubles (Dekker's product), else the
     /// product of two words (Joldes, Muller and Popescu's algorithm 10) and
     /// word_rounding. The propagated error of A B - a b for |A - a| <= ea,
     /// |B - b| <= eb is at most |a| eb + |b| ea + ea eb <= (|a.hi| + ea) eb
     /// (1 + 2^-52) + |b.hi| ea (1 + 2^-52), |a| <= |a.hi| (1 + 2^-53).
-    friend double_word operator*(const double_word& a, const double_word& b) {
+    [[gnu::always_inline]] friend double_word operator*(const double_word& a, const double_word& b) {
         if (!a.known() || !b.known()) return unknown();
         if (a.hi_ == 0 || b.hi_ == 0) return settled(0, 0, product_error(a, b), 0);
         double ch, cl;
@@ -155,6 +155,37 @@ public:
         double zh, zl;
         fast_two_sum(q, correction, zh, zl);
         return settled(zh, zl, 0, bound);
+    }
+
+    /// a b + c d + t for doubles, in one word, at less cost than those
+    /// operations one by one: the products exact (Dekker's, p1 + e1 = a b,
+    /// p2 + e2 = c d), their sum and then t by TwoSum (s1 + t1 = p1 + p2,
+    /// s2 + t2 = s1 + t), so that the value is s2 + (t2 + t1 + e1 + e2)
+    /// exactly; the four low parts are summed in double and joined to s2 by
+    /// TwoSum. With M = |p1| + |p2| + |t| and u = 2^-53, the low parts total
+    /// at most 3.01 u M, so each of the three rounded sums errs by at most
+    /// 3.02 u^2 M: below 9.1 u^2 M < 2^-102.8 M in all, and word_rounding M
+    /// (2^-100 M) leaves room for M's own rounding; underflow in the low sums
+    /// adds `underflow`. Dekker's products are exact for products in the kept
+    /// range (word_floor), whatever the magnitudes of their factors.
+    static double_word sum_of_products(double a, double b, double c, double d, double t) {
+        double p1, e1, p2, e2;
+        two_product(a, b, p1, e1);
+        two_product(c, d, p2, e2);
+        // (A product that underflows, or leaves the kept range, or a t that
+        // does, takes the operations one by one. An input so large that its
+        // split overflows makes a low part NaN, and the result unknown.)
+        if (!(p1 == 0 ? a == 0 || b == 0 : kept(p1)) || !(p2 == 0 ? c == 0 || d == 0 : kept(p2)) || !kept(t))
+            return double_word(a) * double_word(b) + double_word(c) * double_word(d) + double_word(t);
+        double s1, t1, s2, t2;
+        two_sum(p1, p2, s1, t1);
+        two_sum(s1, t, s2, t2);
+        const double low = ((e1 + e2) + t1) + t2;
+        double zh, zl;
+        two_sum(s2, low, zh, zl);
+        const double m = std::fabs(p1) + std::fabs(p2) + std::fabs(t);
+        const bool exact = e1 == 0 && e2 == 0 && t1 == 0 && t2 == 0;
+        return settled(zh, zl, 0, exact ? 0 : word_rounding * m + underflow);
     }
 
     /// \name Compound assignments
@@ -232,6 +263,10 @@ struct number_traits<double_word> {
     static constexpr const char* name = "double_word";                      ///< "double_word"
     /// x exactly, with bound 0.
     static double_word from_double(double x) { return double_word(x); }
+    /// a b + c d + t (double_word::sum_of_products).
+    static double_word sum_of_products(double a, double b, double c, double d, double t) {
+        return double_word::sum_of_products(a, b, c, d, t);
+    }
     /// The high word, within |lo| + error of the exact value.
     static double to_double(const double_word& x) { return x.hi(); }
     /// The exact sign; throws uncertain_sign when the bound cannot settle it.

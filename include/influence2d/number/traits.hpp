@@ -45,7 +45,11 @@ struct dependent_false : std::false_type {};
 /// = true` and provide `static bool try_sign(const NT&, int&)` (the sign when
 /// certain) and `static bool exact(const NT&)` (whether the value is an input
 /// double): orientation() then settles an uncertain sign on three input
-/// points exactly instead of throwing. The detectors and the one-shot
+/// points exactly instead of throwing. A type may provide `static NT
+/// sum_of_products(double a, double b, double c, double d, double t)`, the
+/// value a b + c d + t (exact in an exact type, within the type's bound in a
+/// filtered one), which posing a point (rotation_pose::apply) then takes in
+/// place of five conversions, two products and two sums. The detectors and the one-shot
 /// questions need +, -, * and the comparisons of NT only, never a division or
 /// a square root; the separation's closest points, the first contact's time
 /// and the exit distance also divide (a field NT: every type of the library
@@ -109,6 +113,14 @@ int compare_values(const NT& a, const NT& b) {
         return number_traits<NT>::sign(a - b);
     }
 }
+
+/// Whether number_traits<NT> provides sum_of_products.
+template <class NT, class = void>
+struct has_sum_of_products : std::false_type {};
+/// See has_sum_of_products.
+template <class NT>
+struct has_sum_of_products<NT, std::void_t<decltype(number_traits<NT>::sum_of_products(0.0, 0.0, 0.0, 0.0, 0.0))>>
+    : std::true_type {};
 
 /// Whether NT's answers are the exact ones: true unless its category is
 /// floating.

@@ -7,6 +7,8 @@
 /// midpoint between two doubles.
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 #include "influence2d/number/double_word.hpp"
 
@@ -35,7 +37,16 @@ inline bool certain_nearest(const double_word& x, double& nearest) {
         nearest = 0;
         return e == 0;
     }
-    const double up = std::nextafter(hi, HUGE_VAL) - hi, down = hi - std::nextafter(hi, -HUGE_VAL);
+    // The neighbours of hi: its bit pattern plus and minus one (the next
+    // magnitude away from 0 and toward it; hi is normal, far from 0 and
+    // infinity, so neither step leaves the normal doubles).
+    std::uint64_t bits;
+    std::memcpy(&bits, &hi, sizeof bits);
+    const std::uint64_t away_bits = bits + 1, toward_bits = bits - 1;
+    double away, toward;
+    std::memcpy(&away, &away_bits, sizeof away);
+    std::memcpy(&toward, &toward_bits, sizeof toward);
+    const double up = (hi > 0 ? away : toward) - hi, down = hi - (hi > 0 ? toward : away);
     const double above = (up / 2 - lo) * (1 - nearest_margin_rounding);
     const double below = (lo + down / 2) * (1 - nearest_margin_rounding);
     if (!(above > e && below > e)) return false;

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "influence2d/core/box.hpp"
@@ -44,6 +45,21 @@ struct segment_point {
     segment_part part = segment_part::start;  ///< where `at` lies on the segment
 };
 
+namespace distance_detail {
+
+/// The foot a + (t / L) ab of a point on the line of [a, b] and its squared
+/// distance (ab x ap)^2 / L, for ab = b - a, ap = p - a, t = ab.ap and
+/// L = |ab|^2 > 0.
+template <class NT>
+segment_point<NT> foot(const point<NT>& a, const NT& abx, const NT& aby, const NT& apx, const NT& apy, const NT& t,
+                       const NT& length2) {
+    const NT cross = abx * apy - aby * apx;
+    const NT f = t / length2;
+    return {NT(cross * cross / length2), point<NT>{NT(a.x + f * abx), NT(a.y + f * aby)}, segment_part::interior};
+}
+
+}  // namespace distance_detail
+
 /// The point of the closed segment [a, b] nearest to p, with t = (b - a).(p - a)
 /// and L = |b - a|^2: a when t <= 0 or L = 0 (a zero-length segment is the
 /// point a), b when t >= L, else a + (t / L)(b - a), at squared distance
@@ -62,9 +78,18 @@ segment_point<NT> closest_on_segment(const point<NT>& p, const point<NT>& a, con
         const NT bpx = p.x - b.x, bpy = p.y - b.y;
         return {NT(bpx * bpx + bpy * bpy), b, segment_part::end};
     }
-    const NT cross = abx * apy - aby * apx;
-    const NT f = t / length2;
-    return {NT(cross * cross / length2), point<NT>{NT(a.x + f * abx), NT(a.y + f * aby)}, segment_part::interior};
+    return distance_detail::foot(a, abx, aby, apx, apy, t, length2);
+}
+
+/// The point of [a, b] nearest to p when it lies strictly inside the segment
+/// (closest_on_segment's interior case, 0 < t < L, which the caller knows):
+/// a + (t / L)(b - a), at squared distance ((b - a) x (p - a))^2 / L; one
+/// division, no sign.
+template <class NT>
+segment_point<NT> foot_inside(const point<NT>& p, const point<NT>& a, const point<NT>& b) {
+    const NT abx = b.x - a.x, aby = b.y - a.y;
+    const NT apx = p.x - a.x, apy = p.y - a.y;
+    return distance_detail::foot(a, abx, aby, apx, apy, NT(abx * apx + aby * apy), NT(abx * abx + aby * aby));
 }
 
 /// Squared distance between two NT points.
@@ -159,14 +184,28 @@ segment_part end_part(const point<NT>& a, const point<NT>& b) {
     return same_point(b, a) ? segment_part::start : segment_part::end;
 }
 
+/// The end-to-segment candidate k of [a, b] and [u, v] (0: a to [u, v], 1:
+/// b to [u, v], 2: u to [a, b], 3: v to [a, b]): that end, the nearest point
+/// of the other segment (closest_on_segment), their squared distance and
+/// where both points lie.
+template <class NT>
+segment_pair_closest<NT> end_candidate(int k, const point<NT>& a, const point<NT>& b, const point<NT>& u,
+                                       const point<NT>& v) {
+    const point<NT>& p = k == 0 ? a : k == 1 ? b : k == 2 ? u : v;
+    segment_point<NT> c = k < 2 ? closest_on_segment(p, u, v) : closest_on_segment(p, a, b);
+    const segment_part first = k == 0 ? segment_part::start : k == 1 ? end_part(a, b) : c.part;
+    const segment_part second = k == 2 ? segment_part::start : k == 3 ? end_part(u, v) : c.part;
+    if (k < 2) return {std::move(c.squared), p, std::move(c.at), first, second};
+    return {std::move(c.squared), std::move(c.at), p, first, second};
+}
+
 /// For [a, b] and [u, v] that do not meet: the least of the end-to-segment
-/// candidates k (0: a to [u, v], 1: b to [u, v], 2: u to [a, b], 3: v to
-/// [a, b]) for which may_be_least(k), the first of them on a tie. A
-/// candidate left out must not be the least nor tie with it. Two candidates
-/// whose closest points are the same parts of both segments (a to u found
-/// from a and from u) join the same points: their distances are equal
-/// without comparing them, and the first is kept (a filtered NT could not
-/// tell two equal values apart).
+/// candidates k (end_candidate) for which may_be_least(k), the first of them
+/// on a tie. A candidate left out must not be the least nor tie with it. Two
+/// candidates whose closest points are the same parts of both segments (a to
+/// u found from a and from u) join the same points: their distances are
+/// equal without comparing them, and the first is kept (a filtered NT could
+/// not tell two equal values apart).
 template <class NT, class MayBeLeast>
 segment_pair_closest<NT> least_end_distance(const point<NT>& a, const point<NT>& b, const point<NT>& u,
                                             const point<NT>& v, MayBeLeast&& may_be_least) {
@@ -174,19 +213,13 @@ segment_pair_closest<NT> least_end_distance(const point<NT>& a, const point<NT>&
     bool found = false;
     for (int k = 0; k < 4; ++k) {
         if (!may_be_least(k)) continue;
-        const point<NT>& p = k == 0 ? a : k == 1 ? b : k == 2 ? u : v;
-        segment_point<NT> c = k < 2 ? closest_on_segment(p, u, v) : closest_on_segment(p, a, b);
-        const segment_part first = k == 0 ? segment_part::start : k == 1 ? end_part(a, b) : c.part;
-        const segment_part second = k == 2 ? segment_part::start : k == 3 ? end_part(u, v) : c.part;
-        if (found && ((first == best.first_part && second == best.second_part && first != segment_part::interior &&
-                       second != segment_part::interior) ||
+        segment_pair_closest<NT> c = end_candidate(k, a, b, u, v);
+        if (found && ((c.first_part == best.first_part && c.second_part == best.second_part &&
+                       c.first_part != segment_part::interior && c.second_part != segment_part::interior) ||
                       compare_squared(c.squared, best.squared) >= 0))
             continue;
         found = true;
-        if (k < 2)
-            best = {std::move(c.squared), p, std::move(c.at), first, second};
-        else
-            best = {std::move(c.squared), std::move(c.at), p, first, second};
+        best = std::move(c);
     }
     return best;
 }
@@ -477,6 +510,17 @@ inline bool segments_must_cross(const point<double>& a, const point<double>& b, 
     return sa != 0 && certain_side(u, ex, ey, b, slack(b)) == -sa;
 }
 
+/// closest_between_segments of [A, B] and [U, V] known to cross at one
+/// point strictly inside both (segments_must_cross held for their doubles):
+/// that point, distance_detail's crossing, at distance 0, with no sign
+/// evaluated in NT.
+template <class NT>
+segment_pair_closest<NT> crossing_closest(const point<NT>& A, const point<NT>& B, const point<NT>& U,
+                                          const point<NT>& V) {
+    const point<NT> x = distance_detail::crossing(A, B, U, V);
+    return {number_traits<NT>::from_double(0), x, x, segment_part::interior, segment_part::interior};
+}
+
 /// closest_between_segments of A, B (exact doubles a, b in NT) and U, V (in
 /// NT, within `delta` per coordinate of the doubles u, v: B's edge posed
 /// exactly and in double), with the same answer at less cost in an exact NT:
@@ -492,10 +536,7 @@ segment_pair_closest<NT> closest_between_segments(const point<double>& a, const 
                                                   const point<double>& u, const point<double>& v, double delta,
                                                   const point<NT>& A, const point<NT>& B, const point<NT>& U,
                                                   const point<NT>& V) {
-    if (segments_must_cross(a, b, u, v, delta)) {
-        const point<NT> x = distance_detail::crossing(A, B, U, V);
-        return {number_traits<NT>::from_double(0), x, x, segment_part::interior, segment_part::interior};
-    }
+    if (segments_must_cross(a, b, u, v, delta)) return crossing_closest(A, B, U, V);
     if (segments_may_meet(a, b, u, v, delta)) return closest_between_segments(A, B, U, V);
     const estimate ms[4] = {point_segment_estimate(a, u, v), point_segment_estimate(b, u, v),
                             point_segment_estimate(u, a, b), point_segment_estimate(v, a, b)};
@@ -507,6 +548,115 @@ segment_pair_closest<NT> closest_between_segments(const point<double>& a, const 
         // (NaN or an infinite error: evaluated.)
         return !(m.value * (1 - bound_rounding) - m.error * (1 + bound_rounding) - spread > cut);
     });
+}
+
+/// Where the point of the exact segment [A, B] nearest to the exact point P
+/// lies (closest_on_segment's part), when the doubles p, a, b, each within e
+/// of P, A, B on each coordinate, settle it: start when (B - A).(P - A) < 0,
+/// end when (B - A).(P - B) > 0, interior when both signs are certainly the
+/// other (certain_ahead_within); nothing when a sign is in doubt, as for a
+/// projection on an end. (A sign settled nonzero also settles B != A.)
+inline std::optional<segment_part> settled_part(const point<double>& p, const point<double>& a, const point<double>& b,
+                                                double e) {
+    const int from_start = certain_ahead_within(a, b, p, e);
+    if (from_start < 0) return segment_part::start;
+    if (from_start == 0) return std::nullopt;
+    const int from_end = -certain_ahead_within(b, a, p, e);  // the sign of (B - A).(P - B)
+    if (from_end > 0) return segment_part::end;
+    if (from_end == 0) return std::nullopt;
+    return segment_part::interior;
+}
+
+/// The closest points of two segments apart, settled in double: where the
+/// two points closest_between_segments picks lie, and bounds of the distance.
+struct settled_closest {
+    segment_part first_part = segment_part::start;   ///< where the point of the first segment lies
+    segment_part second_part = segment_part::start;  ///< where the point of the second segment lies
+    double lower = 0;                                ///< at most the distance
+    double upper = HUGE_VAL;                         ///< at least the distance
+};
+
+/// closest_between_segments of [a, b] (exact doubles) and the exact segment
+/// [U, V] (within `delta` per coordinate of the doubles u, v; U = V only when
+/// u = v, as for B's edge posed exactly and in double) decided in double,
+/// or nothing when the bounds cannot decide it. Settled when:
+///   - the segments are certainly apart (segments_may_meet false), so the
+///     distance is the least end-to-segment candidate's;
+///   - among the candidates that may be least (each one's bounds from its
+///     point_segment_estimate, as in the filtered closest_between_segments),
+///     the first has its parts settled (settled_part; the end part of [u, v]
+///     needs u != v), and every other one has the same parts, neither an
+///     interior: the same two points, at the same distance, which the first
+///     of them wins (least_end_distance).
+/// The bounds are the first candidate's.
+inline std::optional<settled_closest> settled_closest_between(const point<double>& a, const point<double>& b,
+                                                              const point<double>& u, const point<double>& v,
+                                                              double delta) {
+    if (segments_may_meet(a, b, u, v, delta)) return std::nullopt;
+    const estimate ms[4] = {point_segment_estimate(a, u, v), point_segment_estimate(b, u, v),
+                            point_segment_estimate(u, a, b), point_segment_estimate(v, a, b)};
+    const double spread = posing_spread * delta * (1 + bound_rounding);
+    double lower[4], upper[4], cut = HUGE_VAL;
+    for (int k = 0; k < 4; ++k) {
+        lower[k] = ms[k].value * (1 - bound_rounding) - ms[k].error * (1 + bound_rounding) - spread;
+        upper[k] = (ms[k].value + ms[k].error) * (1 + bound_rounding) + spread;
+        cut = std::min(cut, upper[k]);
+    }
+    const auto parts = [&](int k) -> std::optional<std::pair<segment_part, segment_part>> {
+        const std::optional<segment_part> p =
+            k < 2 ? settled_part(k == 0 ? a : b, u, v, delta) : settled_part(k == 2 ? u : v, a, b, delta);
+        if (!p) return std::nullopt;
+        if (k == 0) return std::make_pair(segment_part::start, *p);
+        if (k == 1) return std::make_pair(a == b ? segment_part::start : segment_part::end, *p);
+        if (k == 2) return std::make_pair(*p, segment_part::start);
+        if (u == v) return std::nullopt;
+        return std::make_pair(*p, segment_part::end);
+    };
+    std::optional<settled_closest> first;
+    for (int k = 0; k < 4; ++k) {
+        // (NaN bounds: in doubt.)
+        if (lower[k] > cut) continue;
+        const auto p = parts(k);
+        if (!p || !(upper[k] < HUGE_VAL)) return std::nullopt;
+        if (!first) {
+            first = settled_closest{p->first, p->second, std::max(lower[k], 0.0), upper[k]};
+            continue;
+        }
+        if (p->first != first->first_part || p->second != first->second_part || p->first == segment_part::interior ||
+            p->second == segment_part::interior)
+            return std::nullopt;
+    }
+    return first;
+}
+
+/// closest_between_segments of [a, b] and [u, v], apart, from the parts of
+/// their closest points (settled_closest_between's): a point at an end is
+/// that end; a point inside one segment is the foot (foot_inside) of the
+/// other point on it. end(i) gives the ends in NT (0: a, 1: b, 2: u, 3: v);
+/// only those the parts need are asked. Exact in an exact field NT.
+template <class NT, class End>
+segment_pair_closest<NT> closest_at_parts(segment_part first, segment_part second, End&& end) {
+    const auto first_end = [&] { return end(first == segment_part::start ? 0 : 1); };
+    const auto second_end = [&] { return end(second == segment_part::start ? 2 : 3); };
+    segment_pair_closest<NT> r;
+    r.first_part = first;
+    r.second_part = second;
+    if (first == segment_part::interior) {
+        r.on_second = second_end();
+        segment_point<NT> c = foot_inside(r.on_second, end(0), end(1));
+        r.squared = std::move(c.squared);
+        r.on_first = std::move(c.at);
+    } else if (second == segment_part::interior) {
+        r.on_first = first_end();
+        segment_point<NT> c = foot_inside(r.on_first, end(2), end(3));
+        r.squared = std::move(c.squared);
+        r.on_second = std::move(c.at);
+    } else {
+        r.on_first = first_end();
+        r.on_second = second_end();
+        r.squared = squared_distance(r.on_first, r.on_second);
+    }
+    return r;
 }
 
 /// The relative bound of node_gap_lower on g + r (u = 2^-53): the gap g~

@@ -200,6 +200,30 @@ inline int certain_side_within(const point<double>& p, const point<double>& q, c
     return certain_side(p, dx, dy, r, slack);
 }
 
+/// The sign of the dot product (dx, dy).(q - a) when its magnitude certainly
+/// exceeds `slack`: +1 (q lies ahead of a along the direction), -1 (behind);
+/// else 0. Evaluated as certain_side, a sum in place of the difference: the
+/// same roundings, so the same bound side_rounding (|l| + |r|), and 0
+/// whenever that bound cannot be trusted.
+inline int certain_ahead(const point<double>& a, double dx, double dy, const point<double>& q, double slack) {
+    const double l = dx * (q.x - a.x), r = dy * (q.y - a.y);
+    const double o = l + r, bound = slack + side_rounding * (std::fabs(l) + std::fabs(r));
+    if (!(bound >= side_bound_floor) || !(bound < HUGE_VAL) || !(std::fabs(o) > bound)) return 0;
+    return o > 0 ? 1 : -1;
+}
+
+/// The sign of (q - p).(r - p) when it is the same for every three points
+/// within e of p, q and r on each coordinate: +1 or -1; else 0. The slack is
+/// certain_side_within's: d.x w.x + d.y w.y moves by at most
+/// 2e (|d.x| + |d.y|) + 2e (|w.x| + |w.y|) + 8e^2 as the cross product does
+/// (the same terms, summed), widened by crossing_slack_widening.
+inline int certain_ahead_within(const point<double>& p, const point<double>& q, const point<double>& r, double e) {
+    const double dx = q.x - p.x, dy = q.y - p.y;
+    const double spread = std::fabs(r.x - p.x) + std::fabs(r.y - p.y);
+    const double slack = (2 * e * (std::fabs(dx) + std::fabs(dy) + spread) + 8 * e * e) * crossing_slack_widening;
+    return certain_ahead(p, dx, dy, r, slack);
+}
+
 /// Whether the segments [a, b] and [u, v] certainly cross, each point known
 /// only to within e on each coordinate: u and v certainly on opposite sides
 /// of the line through a and b, and a and b of the line through u and v,
