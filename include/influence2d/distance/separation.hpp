@@ -291,8 +291,8 @@ chosen_pair<NT> closest_candidate(const search_input& in, const search_space& sp
     return best;
 }
 
-/// A pair phase 2 chose in double, with the candidate that realises its
-/// distance.
+/// A pair phase 2 chose in double, with the parts of its closest points and
+/// bounds of its distance.
 struct settled_pair {
     settled_closest closest;
     std::uint32_t static_edge = 0, moving_edge = 0;
@@ -301,7 +301,7 @@ struct settled_pair {
 /// Phase 2 decided in double, for candidates and no pair certainly crossing:
 /// the pair closest_candidate chooses, when the bounds settle it, or nothing.
 /// Each candidate in the order evaluated_before is settled in double
-/// (settled_closest_between: its bounds, its candidate end, its features);
+/// (settled_closest_between: its bounds and the parts of its closest points);
 /// against the best so far it is certainly nearer (its upper bound below the
 /// best's lower bound), certainly farther, or at the same features (the same
 /// points: the same distance, the least (A's edge, B's edge) kept, as
