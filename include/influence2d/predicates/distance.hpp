@@ -521,6 +521,33 @@ segment_pair_closest<NT> crossing_closest(const point<NT>& A, const point<NT>& B
     return {number_traits<NT>::from_double(0), x, x, segment_part::interior, segment_part::interior};
 }
 
+/// Bounds of the four end-to-segment distances of [a, b] (exact doubles)
+/// and the exact segment within `delta` per coordinate of [u, v] (in
+/// end_candidate's order): each point_segment_estimate less or plus its error
+/// and posing_spread delta, widened by bound_rounding; and `cut`, the least
+/// upper bound. A candidate whose lower bound exceeds the cut is neither the
+/// least nor tied with it.
+struct end_bounds {
+    double lower[4];        ///< at most candidate k's distance
+    double upper[4];        ///< at least candidate k's distance
+    double cut = HUGE_VAL;  ///< the least upper bound
+
+    /// The bounds of [a, b] and [u, v].
+    end_bounds(const point<double>& a, const point<double>& b, const point<double>& u, const point<double>& v,
+               double delta) {
+        const estimate ms[4] = {point_segment_estimate(a, u, v), point_segment_estimate(b, u, v),
+                                point_segment_estimate(u, a, b), point_segment_estimate(v, a, b)};
+        const double spread = posing_spread * delta * (1 + bound_rounding);
+        for (int k = 0; k < 4; ++k) {
+            lower[k] = ms[k].value * (1 - bound_rounding) - ms[k].error * (1 + bound_rounding) - spread;
+            upper[k] = (ms[k].value + ms[k].error) * (1 + bound_rounding) + spread;
+            cut = std::min(cut, upper[k]);
+        }
+    }
+    /// Whether candidate k may be the least (also for NaN bounds).
+    bool may_be_least(int k) const { return !(lower[k] > cut); }
+};
+
 /// closest_between_segments of A, B (exact doubles a, b in NT) and U, V (in
 /// NT, within `delta` per coordinate of the doubles u, v: B's edge posed
 /// exactly and in double), with the same answer at less cost in an exact NT:
@@ -538,16 +565,8 @@ segment_pair_closest<NT> closest_between_segments(const point<double>& a, const 
                                                   const point<NT>& V) {
     if (segments_must_cross(a, b, u, v, delta)) return crossing_closest(A, B, U, V);
     if (segments_may_meet(a, b, u, v, delta)) return closest_between_segments(A, B, U, V);
-    const estimate ms[4] = {point_segment_estimate(a, u, v), point_segment_estimate(b, u, v),
-                            point_segment_estimate(u, a, b), point_segment_estimate(v, a, b)};
-    const double spread = posing_spread * delta * (1 + bound_rounding);
-    double cut = HUGE_VAL;
-    for (const estimate& m : ms) cut = std::min(cut, (m.value + m.error) * (1 + bound_rounding) + spread);
-    return distance_detail::least_end_distance(A, B, U, V, [&](int k) {
-        const estimate& m = ms[k];
-        // (NaN or an infinite error: evaluated.)
-        return !(m.value * (1 - bound_rounding) - m.error * (1 + bound_rounding) - spread > cut);
-    });
+    const end_bounds bounds(a, b, u, v, delta);
+    return distance_detail::least_end_distance(A, B, U, V, [&](int k) { return bounds.may_be_least(k); });
 }
 
 /// Where the point of the exact segment [A, B] nearest to the exact point P
@@ -593,15 +612,7 @@ inline std::optional<settled_closest> settled_closest_between(const point<double
                                                               const point<double>& u, const point<double>& v,
                                                               double delta) {
     if (segments_may_meet(a, b, u, v, delta)) return std::nullopt;
-    const estimate ms[4] = {point_segment_estimate(a, u, v), point_segment_estimate(b, u, v),
-                            point_segment_estimate(u, a, b), point_segment_estimate(v, a, b)};
-    const double spread = posing_spread * delta * (1 + bound_rounding);
-    double lower[4], upper[4], cut = HUGE_VAL;
-    for (int k = 0; k < 4; ++k) {
-        lower[k] = ms[k].value * (1 - bound_rounding) - ms[k].error * (1 + bound_rounding) - spread;
-        upper[k] = (ms[k].value + ms[k].error) * (1 + bound_rounding) + spread;
-        cut = std::min(cut, upper[k]);
-    }
+    const end_bounds bounds(a, b, u, v, delta);
     const auto parts = [&](int k) -> std::optional<std::pair<segment_part, segment_part>> {
         const std::optional<segment_part> p =
             k < 2 ? settled_part(k == 0 ? a : b, u, v, delta) : settled_part(k == 2 ? u : v, a, b, delta);
@@ -615,11 +626,11 @@ inline std::optional<settled_closest> settled_closest_between(const point<double
     std::optional<settled_closest> first;
     for (int k = 0; k < 4; ++k) {
         // (NaN bounds: in doubt.)
-        if (lower[k] > cut) continue;
+        if (!bounds.may_be_least(k)) continue;
         const auto p = parts(k);
-        if (!p || !(upper[k] < HUGE_VAL)) return std::nullopt;
+        if (!p || !(bounds.upper[k] < HUGE_VAL)) return std::nullopt;
         if (!first) {
-            first = settled_closest{p->first, p->second, std::max(lower[k], 0.0), upper[k]};
+            first = settled_closest{p->first, p->second, std::max(bounds.lower[k], 0.0), bounds.upper[k]};
             continue;
         }
         if (p->first != first->first_part || p->second != first->second_part || p->first == segment_part::interior ||

@@ -182,6 +182,14 @@ inline bool segments_may_meet(const point<double>& a, const point<double>& b, co
     return !one_side(a, b, u, v) && !one_side(u, v, a, b);
 }
 
+/// The slack of certain_side_within and certain_ahead_within, for
+/// d = (dx, dy) = q - p and w = r - p: 2e (|d.x| + |d.y|) + 2e (|w.x| + |w.y|)
+/// + 8e^2, widened by crossing_slack_widening (derived there).
+inline double slack_within(double dx, double dy, const point<double>& p, const point<double>& r, double e) {
+    const double spread = std::fabs(r.x - p.x) + std::fabs(r.y - p.y);
+    return (2 * e * (std::fabs(dx) + std::fabs(dy) + spread) + 8 * e * e) * crossing_slack_widening;
+}
+
 /// The side of r with respect to the directed line through p and q: +1
 /// (left) or -1 (right) when every point within e of r, on each coordinate,
 /// lies on that side of the line through every two points within e of p
@@ -195,33 +203,25 @@ inline bool segments_may_meet(const point<double>& a, const point<double>& b, co
 /// the value's.
 inline int certain_side_within(const point<double>& p, const point<double>& q, const point<double>& r, double e) {
     const double dx = q.x - p.x, dy = q.y - p.y;
-    const double spread = std::fabs(r.x - p.x) + std::fabs(r.y - p.y);
-    const double slack = (2 * e * (std::fabs(dx) + std::fabs(dy) + spread) + 8 * e * e) * crossing_slack_widening;
-    return certain_side(p, dx, dy, r, slack);
+    return certain_side(p, dx, dy, r, slack_within(dx, dy, p, r, e));
 }
 
 /// The sign of the dot product (dx, dy).(q - a) when its magnitude certainly
 /// exceeds `slack`: +1 (q lies ahead of a along the direction), -1 (behind);
-/// else 0. Evaluated as certain_side, a sum in place of the difference: the
-/// same roundings, so the same bound side_rounding (|l| + |r|), and 0
-/// whenever that bound cannot be trusted.
+/// else 0. It is certain_side for the direction turned a quarter, (dy, -dx):
+/// dy (q.y - a.y) - (-dx)(q.x - a.x) is the dot product, with the same
+/// roundings (a negation is exact), so the same bound.
 inline int certain_ahead(const point<double>& a, double dx, double dy, const point<double>& q, double slack) {
-    const double l = dx * (q.x - a.x), r = dy * (q.y - a.y);
-    const double o = l + r, bound = slack + side_rounding * (std::fabs(l) + std::fabs(r));
-    if (!(bound >= side_bound_floor) || !(bound < HUGE_VAL) || !(std::fabs(o) > bound)) return 0;
-    return o > 0 ? 1 : -1;
+    return certain_side(a, dy, -dx, q, slack);
 }
 
 /// The sign of (q - p).(r - p) when it is the same for every three points
 /// within e of p, q and r on each coordinate: +1 or -1; else 0. The slack is
-/// certain_side_within's: d.x w.x + d.y w.y moves by at most
-/// 2e (|d.x| + |d.y|) + 2e (|w.x| + |w.y|) + 8e^2 as the cross product does
-/// (the same terms, summed), widened by crossing_slack_widening.
+/// certain_side_within's (slack_within): d.x w.x + d.y w.y moves by at most
+/// what d.x w.y - d.y w.x does (the same terms, summed).
 inline int certain_ahead_within(const point<double>& p, const point<double>& q, const point<double>& r, double e) {
     const double dx = q.x - p.x, dy = q.y - p.y;
-    const double spread = std::fabs(r.x - p.x) + std::fabs(r.y - p.y);
-    const double slack = (2 * e * (std::fabs(dx) + std::fabs(dy) + spread) + 8 * e * e) * crossing_slack_widening;
-    return certain_ahead(p, dx, dy, r, slack);
+    return certain_ahead(p, dx, dy, r, slack_within(dx, dy, p, r, e));
 }
 
 /// Whether the segments [a, b] and [u, v] certainly cross, each point known
