@@ -34,6 +34,7 @@
 #include "influence2d/motion/trajectory.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/number/double_word.hpp"
+#include "influence2d/predicates/certain_nearest.hpp"
 #include "influence2d/predicates/contact_time.hpp"
 #include "influence2d/predicates/convexity.hpp"
 
@@ -868,6 +869,71 @@ TEST_CASE("contact times: the nearest double of a fraction", "[sweep][predicates
     CHECK(nearest_double(time_fraction<ER>{tiny, ER(std::ldexp(1.0, -900))}) == std::ldexp(1.0, -200));
     CHECK(nearest_double(time_fraction<ER>{tiny * tiny, tiny}) == 0);
     CHECK(nearest_double(time_fraction<double>{1, 3}) == 1.0 / 3);
+}
+
+TEST_CASE("sweep: a site's time rounded in double words is the exact time's nearest double, or none",
+          "[sweep][predicates]") {
+    // Every site (B's vertex against A's edge, A's against B's) of random
+    // translations of the families: where the reference (a segment
+    // intersection on CGAL's kernel) finds a contact time, certain_nearest of
+    // site_reaching_time gives MPFR's nearest double of the earliest, or
+    // nothing.
+    const auto rounded = [](const polygon& a, const polygon& b, const pose& from, const pose& to,
+                            const sweep::contact_site& site) -> std::optional<double> {
+        double x = 0;
+        if (!certain_nearest(
+                sweep::site_reaching_time(a, b, rotation_pose(from), sweep::displacement<double_word>(from, to), site),
+                x))
+            return std::nullopt;
+        return x;
+    };
+    std::size_t sites = 0, settled = 0;
+    family_motions({8, 64}, {8}, test_effort::scaled(24), 0x717eULL, 0,
+                   [&](const polygon& a, const polygon& b, const pose& from, const pose& to) {
+                       INFO(describe(a, b, from, to));
+                       const exact_scene s(a, b, from, to);
+                       for (const bool moving : {true, false})
+                           for (std::size_t v = 0; v < (moving ? b : a).size(); ++v)
+                               for (std::size_t e = 0; e < (moving ? a : b).size(); ++e) {
+                                   const std::vector<FT> ts = moving
+                                                                  ? test_exact::contact_times(s.b0.v[v], s.d, s.a, e)
+                                                                  : test_exact::contact_times(s.a.v[v], -s.d, s.b0, e);
+                                   if (ts.empty()) continue;
+                                   ++sites;
+                                   const sweep::contact_site site{moving, static_cast<std::uint32_t>(v),
+                                                                  static_cast<std::uint32_t>(e)};
+                                   const std::optional<double> x = rounded(a, b, from, to, site);
+                                   if (!x) continue;
+                                   ++settled;
+                                   INFO("site " << moving << " " << v << " " << e);
+                                   CHECK(*x == test_exact::nearest_double(*std::min_element(ts.begin(), ts.end())));
+                               }
+                   });
+    WARN("site_reaching_time: " << settled << " of " << sites << " sites with a contact time settled");
+    CHECK(settled > sites * 9 / 10);
+    // B's right side at x0 = k 2^-54 reaches the wall at 0.75 at t = 0.75 - x0:
+    // a double for even k, midway between two for odd k, which no bound
+    // settles (the exact field rounds it). A vertex sliding along the wall's
+    // edge has no one time (the denominator is 0): none either.
+    const polygon wall = square(0.75, -5, 1, 5);
+    for (int k = -3; k <= 3; ++k) {
+        const polygon b = square(-1, -1, std::ldexp(k, -54), 1);
+        // B's vertex 1 (x0, -1) against the wall's edge 3 (x = 0.75, from y = 5 down to -5).
+        const sweep::contact_site site{true, 1, 3};
+        INFO("k = " << k);
+        REQUIRE(b.vertex(1).x == std::ldexp(k, -54));
+        REQUIRE(wall.vertex(3).x == 0.75);
+        REQUIRE(wall.vertex(0).x == 0.75);
+        const std::optional<double> x = rounded(wall, b, {0, 0, 0}, {1, 0, 0}, site);
+        if (k % 2 != 0) {
+            CHECK_FALSE(x.has_value());
+        } else {
+            REQUIRE(x.has_value());
+            CHECK(*x == 0.75 - std::ldexp(k, -54));
+        }
+    }
+    const polygon slider = square(0.75, -7, 1, -6);  // vertex 0 at (0.75, -7)
+    CHECK_FALSE(rounded(wall, slider, {0, 0, 0}, {0, 3, 0}, sweep::contact_site{true, 0, 3}).has_value());
 }
 
 TEST_CASE("sweep: a certified time midway between two doubles is rounded exactly", "[sweep][exit]") {

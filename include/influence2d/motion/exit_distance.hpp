@@ -27,6 +27,7 @@
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/number/certified.hpp"
 #include "influence2d/number/fallback.hpp"
+#include "influence2d/predicates/certain_nearest.hpp"
 #include "influence2d/predicates/contact_time.hpp"
 #include "influence2d/predicates/orientation.hpp"
 #include "influence2d/predicates/segments.hpp"
@@ -421,7 +422,8 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
 ///                    exit_search<Exact>
 ///   no event:                      0
 ///   the event's time times 2^shift, rounded to the nearest double: in
-///   double words, or in Exact when their bound leaves it in doubt
+///   double words (site_reaching_time, else the site's contact_times), or in
+///   Exact when their bound leaves it in doubt
 template <class Exact>
 double filtered_exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, double dy,
                               bool* by_filter = nullptr) {
@@ -438,6 +440,9 @@ double filtered_exit_distance(const polygon& a, const polygon& b, const pose& q,
             const std::optional<timed_site<certified>> exit = exit_search<certified>(a, b, t, u.dx, u.dy, scale);
             if (by_filter != nullptr) *by_filter = true;
             if (!exit) return 0.0;
+            const point<double_word> d{double_word(u.dx), double_word(u.dy)};
+            double x = 0;
+            if (certain_nearest(site_reaching_time(a, b, t, d, exit->site) * u.factor<double_word>(), x)) return x;
             return nearest_site_time<Exact>([&](auto tag) {
                 using W = decltype(tag);
                 using wt = number_traits<W>;

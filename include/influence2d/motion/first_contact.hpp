@@ -28,6 +28,7 @@
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/number/certified.hpp"
 #include "influence2d/number/fallback.hpp"
+#include "influence2d/predicates/certain_nearest.hpp"
 #include "influence2d/predicates/contact_time.hpp"
 #include "influence2d/predicates/orientation.hpp"
 #include "influence2d/query/intersects.hpp"
@@ -167,11 +168,14 @@ contact_result<double> filtered_first_contact(const polygon& a, const polygon& b
     std::tie(r.static_feature, r.moving_feature) = site_features(a, b, best->site);
     // Rounding to the nearest double asks for the time's sign against the
     // midpoints between doubles, finer than certified's bound: in double
-    // words, exactly when their bound cannot tell.
+    // words (the quotient at which the vertex reaches the edge's line, else
+    // the site's contact_times), exactly when their bound cannot tell.
     if (best->exact) {
         r.time = best->rounded;
         return r;
     }
+    if (certain_nearest(site_reaching_time(a, b, m.start, displacement<double_word>(from, to), best->site), r.time))
+        return r;
     r.time = nearest_site_time<Exact>([&](auto tag) {
         using W = decltype(tag);
         std::optional<time_fraction<W>> t = site_time(a, b, m.start, displacement<W>(from, to), best->site);

@@ -372,6 +372,19 @@ point<NT> displacement(const pose& from, const pose& to) {
     return {tr::from_double(to.tx) - tr::from_double(from.tx), tr::from_double(to.ty) - tr::from_double(from.ty)};
 }
 
+/// The time at which a site's vertex reaches its edge's line, in double
+/// words (B posed by `start`; B's vertex displaced by d, A's by -d): the
+/// site's three vertices posed alone (posed_site) and line_reaching_time, the
+/// site's one contact time when the quotient's bound proves its denominator
+/// not 0 (unknown otherwise). With certain_nearest, the nearest double of an
+/// event's time in two cross products and a division: no side taken, no
+/// midpoint walked as contact_times and nearest_double would.
+inline double_word site_reaching_time(const polygon& a, const polygon& b, const rotation_pose& start,
+                                      const point<double_word>& d, const contact_site& s) {
+    const posed_site<double_word> q(a, b, start, d, s);
+    return line_reaching_time(q.p, q.d, q.e0, q.e1);
+}
+
 /// The earliest event of a translation in one NT: its site and time.
 template <class NT>
 struct earliest_event {
@@ -555,7 +568,10 @@ std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const p
         best = std::move(c);
     };
     // The window's sites, by their times in double, evaluated in that order.
-    std::vector<std::pair<double, contact_site>> pending;
+    // (Kept per thread: a query is one of many; left as a thrown sign left
+    // it, so emptied first.)
+    static thread_local std::vector<std::pair<double, contact_site>> pending;
+    pending.clear();
     const auto settle = [&] {
         std::sort(pending.begin(), pending.end(), [](const auto& l, const auto& r) { return l.first < r.first; });
         for (const auto& [when, s] : pending) evaluate(s);

@@ -125,6 +125,18 @@ int contact_times(const point<NT>& p, const point<NT>& d, const point<NT>& a, co
     return count;
 }
 
+/// The time at which p moving as p + t d reaches the line through a and b,
+/// ((b - a) x (a - p)) / ((b - a) x d), for (b - a) x d != 0. That
+/// denominator is contact_times' alpha - beta, which is 0 when the segment
+/// lies on p's line of motion: so when it is not 0, this quotient is
+/// contact_times' one time whenever that time exists (its sign
+/// normalisation divides out). A division: NT a field.
+template <class NT>
+NT line_reaching_time(const point<NT>& p, const point<NT>& d, const point<NT>& a, const point<NT>& b) {
+    const point<NT> e{b.x - a.x, b.y - a.y};
+    return cross_from(e, p, a) / (e.x * d.y - e.y * d.x);
+}
+
 /// The earliest time t in [0, 1] at which p moving as p + t d (d != 0)
 /// lies on the closed segment [a, b], if any: the least of contact_times.
 template <class NT>
