@@ -32,6 +32,7 @@
 #include "influence2d/number/exact_sum.hpp"
 #include "influence2d/number/fallback.hpp"
 #include "influence2d/number/traits.hpp"
+#include "influence2d/predicates/bernstein_signs.hpp"
 #include "influence2d/predicates/contact_time.hpp"
 #include "influence2d/predicates/distance.hpp"
 #include "influence2d/predicates/filters.hpp"
@@ -301,15 +302,29 @@ bool all_of_sign(const bernstein<Filter>& b, int sign) {
     }
 }
 
+/// certified's coefficients as one bounded_bernstein (their values, their
+/// largest bound; a NaN bound infinite): halved in double with one bound
+/// for the cubic.
+inline bounded_bernstein bounded_of(const bernstein<certified>& b) {
+    double e = 0;
+    for (const certified& x : b) e = std::isnan(x.error()) ? HUGE_VAL : std::max(e, x.error());
+    return bounded_bernstein({b[0].value(), b[1].value(), b[2].value(), b[3].value()}, e);
+}
+/// Whether every coefficient certainly has the strict sign `sign`.
+inline bool all_of_sign(const bounded_bernstein& b, int sign) { return b.of_sign(sign); }
+/// The coefficients on the two halves of the interval, with their bound.
+inline std::pair<bounded_bernstein, bounded_bernstein> halves(const bounded_bernstein& b) { return b.halves(); }
+
 /// Where in [from, to] the cubics (their Bernstein coefficients there) may
 /// show a contact, the interval cut in halves up to `depth` times: the
 /// start of the first part in which f may vanish while lo and hi may both
 /// be >= 0, the parts that end at or before `known` (free) left out; none
 /// when no part may (f of one strict sign there, or lo or hi negative
-/// throughout).
-template <class Filter>
-std::optional<double> first_possible(const bernstein<Filter>& f, const bernstein<Filter>& lo,
-                                     const bernstein<Filter>& hi, double from, double to, int depth, double known) {
+/// throughout). Cubic: bernstein<Filter>, or bounded_bernstein (for
+/// certified's coefficients).
+template <class Cubic>
+std::optional<double> first_possible(const Cubic& f, const Cubic& lo, const Cubic& hi, double from, double to,
+                                     int depth, double known) {
     if (to <= known) return std::nullopt;
     if (all_of_sign(f, 1) || all_of_sign(f, -1) || all_of_sign(lo, -1) || all_of_sign(hi, -1)) return std::nullopt;
     if (depth == 0) return from;
@@ -738,7 +753,15 @@ std::optional<std::pair<sweep::contact_site, double>> contact_within(const polyg
             return bernstein_of(whole ? k[i] : on_window(k[i], window_from, window_to));
         };
         const bernstein<Filter> f = on(0), lo = on(1), hi = on(2);
-        if (const std::optional<double> at = first_possible(f, lo, hi, window_from, window_to, depth, known)) {
+        // (certified's coefficients halved in double, with one bound each.)
+        const std::optional<double> at = [&] {
+            if constexpr (std::is_same_v<Filter, certified>)
+                return first_possible(bounded_of(f), bounded_of(lo), bounded_of(hi), window_from, window_to, depth,
+                                      known);
+            else
+                return first_possible(f, lo, hi, window_from, window_to, depth, known);
+        }();
+        if (at) {
             const double after = std::max({*at, from_box, known});
             // f's coefficients on the window are single_crossing's when the
             // search starts at the window's start.
@@ -813,7 +836,8 @@ std::optional<std::pair<sweep::contact_site, double>> contact_within(const polyg
 ///            between its ends, in Filter; kept with the start of the first
 ///            sixteenth of the piece not ending by `known` where f may
 ///            vanish while lo and hi may be >= 0 (their Bernstein
-///            coefficients, halved four times), of the first such quarter
+///            coefficients, halved four times; certified's halved in double
+///            with one bound per cubic, bounded_bernstein), of the first such quarter
 ///            whose box meets the edge, or `known`, the latest
 ///     for the kept pairs in order of that start, while it is not after
 ///     the best root found:
