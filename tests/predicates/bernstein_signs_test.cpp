@@ -88,6 +88,52 @@ TEST_CASE("bernstein signs: halving in double keeps every exact coefficient with
     CHECK(t.decided > t.nodes / 4);
 }
 
+TEST_CASE("bernstein signs: the change of basis from power coefficients keeps the bound, one sign change is one",
+          "[predicates]") {
+    // Power coefficients a_k within e of exact ones A_k; the Bernstein
+    // coefficients (times 3) of_power makes must lie within its bound of
+    // 3 A0, 3 A0 + A1, 3 A0 + 2 A1 + A2 and 3 (A0 + A1 + A2 + A3), and a
+    // single sign change it reports must be the exact coefficients' (every
+    // one's sign, zeros skipped, one change, both ends non-zero).
+    test_random::rng g(0xba515u);
+    std::size_t decided = 0;
+    const int cases = test_effort::scaled(20000);
+    for (int k = 0; k < cases; ++k) {
+        const int scale =
+            g.chance(0.1) ? -1074 + static_cast<int>(g.index(60)) : static_cast<int>(g.index(2000)) - 1000;
+        std::array<double, 4> a{};
+        for (double& c : a) c = std::ldexp(g.signed_unit(), scale - static_cast<int>(g.index(8)));
+        if (g.chance(0.3)) a[1] = -3 * a[0] + std::ldexp(g.signed_unit(), scale - 40);  // cancellation in 3 a0 + a1
+        const double e = g.chance(0.5) ? 0 : std::ldexp(g.unit(), scale - 45);
+        exact4 x;
+        for (std::size_t i = 0; i < 4; ++i)
+            x[i] = exact_rational(a[i]) +
+                   exact_rational(e * static_cast<double>(static_cast<int>(g.index(5)) - 2) / 2);  // -e .. e
+        const exact_rational three(3);
+        const exact4 b = {three * x[0], three * x[0] + x[1], three * x[0] + x[1] + x[1] + x[2],
+                          three * (x[0] + x[1] + x[2] + x[3])};
+        const bounded_bernstein bb = bounded_bernstein::of_power(a, e);
+        INFO("case " << k << ", scale 2^" << scale);
+        for (std::size_t i = 0; i < 4; ++i)
+            CHECK(CGAL::abs(b[i] - exact_rational(bb.values()[i])) <= exact_rational(bb.error()));
+        if (const int first = bb.single_sign_change()) {
+            ++decided;
+            int changes = 0, last = 0;
+            for (const exact_rational& c : b) {
+                const int sign = CGAL::sign(c);
+                if (sign == 0) continue;
+                changes += last != 0 && sign != last;
+                last = sign;
+            }
+            CHECK(changes == 1);
+            CHECK(CGAL::sign(b[0]) == first);
+            CHECK(CGAL::sign(b[3]) == -first);
+        }
+    }
+    WARN("of_power: " << decided << " single sign changes decided in " << cases << " cubics");
+    CHECK(decided > static_cast<std::size_t>(cases) / 20);
+}
+
 TEST_CASE("bernstein signs: a NaN or infinite coefficient or a NaN bound decides no sign", "[predicates]") {
     const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
     CHECK(bounded_bernstein({1, 2, 3, 4}, 0.5).of_sign(1));

@@ -41,6 +41,7 @@
 #include "influence2d/scene/edge_boxes.hpp"
 #include "influence2d/scene/placed_polygon.hpp"
 
+#include "influence2d/motion/contact_cubics.hpp"
 #include "influence2d/motion/motion.hpp"
 #include "influence2d/motion/swept_boxes.hpp"
 #include "influence2d/motion/translation_events.hpp"
@@ -108,77 +109,6 @@ namespace rational_turn_detail {
 template <class NT>
 NT num(double x) {
     return number_traits<NT>::from_double(x);
-}
-
-/// A point moving over a piece, scaled by h(tau) = 1 + w^2 tau^2 (> 0):
-/// x(tau) / h(tau), y(tau) / h(tau) its coordinates; x and y cubics.
-template <class NT>
-struct moving_point {
-    NT x[4];
-    NT y[4];
-};
-
-/// The cubics of a contact of a moving point P = (x, y) / (h l) with the
-/// fixed segment from p to q, l > 0 a constant: f = (q - p) x (P h l - p h
-/// l) (zero when P is on the segment's line), and the two conditions that P
-/// lies between the ends: lo = (q - p) . (P h l - p h l) >= 0, hi = |q -
-/// p|^2 h l - lo >= 0. (l is 1 for B's vertex in A's frame; for A's vertex
-/// in B's frame it is c^2 + s^2 of the piece's base rotation, which the
-/// doubles c and s leave a hair off 1: the frame is turned back by the
-/// adjugate R^T = (c^2 + s^2) R^-1, exactly.)
-template <class NT>
-struct contact_cubics {
-    polynomial<NT> f, lo, hi;
-};
-
-/// The coefficients of f, lo and hi (contact_cubics), lowest degree first,
-/// untrimmed.
-template <class NT>
-using cubic_coefficients = std::array<std::array<NT, 4>, 3>;
-
-/// The coefficients of the cubics of m on the segment from p to q
-/// (contact_cubics); lo's and hi's left 0 unless `ends`.
-template <class NT>
-cubic_coefficients<NT> coefficients_of(const moving_point<NT>& m, const NT& w2, const NT& l, const point<double>& p,
-                                       const point<double>& q, bool ends = true) {
-    const NT ex = num<NT>(q.x) - num<NT>(p.x), ey = num<NT>(q.y) - num<NT>(p.y);
-    const NT px = NT(num<NT>(p.x) * l), py = NT(num<NT>(p.y) * l);
-    cubic_coefficients<NT> out;
-    NT yx[4], yy[4];
-    for (int k = 0; k < 4; ++k) {
-        yx[k] = m.x[k];
-        yy[k] = m.y[k];
-    }
-    // P h l - p h l, h = 1 + w^2 tau^2.
-    yx[0] = NT(yx[0] - px);
-    yy[0] = NT(yy[0] - py);
-    yx[2] = NT(yx[2] - w2 * px);
-    yy[2] = NT(yy[2] - w2 * py);
-    for (std::size_t k = 0; k < 4; ++k) out[0][k] = NT(ex * yy[k] - ey * yx[k]);
-    if (!ends) return out;
-    const NT e2 = NT((ex * ex + ey * ey) * l);
-    for (std::size_t k = 0; k < 4; ++k) {
-        out[1][k] = NT(ex * yx[k] + ey * yy[k]);
-        out[2][k] = NT(-out[1][k]);
-    }
-    out[2][0] = NT(out[2][0] + e2);
-    out[2][2] = NT(out[2][2] + w2 * e2);
-    return out;
-}
-
-/// The cubics of m on the segment from p to q, trimmed; lo and hi left
-/// empty unless `ends` (when the sifting found both positive).
-template <class NT>
-contact_cubics<NT> cubics_of(const moving_point<NT>& m, const NT& w2, const NT& l, const point<double>& p,
-                             const point<double>& q, bool ends = true) {
-    const cubic_coefficients<NT> k = coefficients_of(m, w2, l, p, q, ends);
-    contact_cubics<NT> out;
-    for (auto [poly, c] : {std::pair{&out.f, &k[0]}, std::pair{&out.lo, &k[1]}, std::pair{&out.hi, &k[2]}}) {
-        if (poly != &out.f && !ends) break;
-        poly->c.assign(c->begin(), c->end());
-        poly->trimmed();
-    }
-    return out;
 }
 
 /// The piece's translation from + t (to - from) at t = t0 + tau (t1 - t0):
@@ -302,18 +232,22 @@ bool all_of_sign(const bernstein<Filter>& b, int sign) {
     }
 }
 
-/// certified's coefficients as one bounded_bernstein (their values, their
-/// largest bound; a NaN bound infinite): halved in double with one bound
-/// for the cubic.
-inline bounded_bernstein bounded_of(const bernstein<certified>& b) {
+/// The Bernstein coefficients on [0, 1] (times 3) of the cubic whose power
+/// coefficients certified holds, in double with one bound
+/// (bounded_bernstein::of_power, from their largest bound; a NaN bound
+/// infinite): made and halved in double, where certified bounds each
+/// operation.
+inline bounded_bernstein bounded_of(const std::array<certified, 4>& a) {
     double e = 0;
-    for (const certified& x : b) e = std::isnan(x.error()) ? HUGE_VAL : std::max(e, x.error());
-    return bounded_bernstein({b[0].value(), b[1].value(), b[2].value(), b[3].value()}, e);
+    for (const certified& x : a) e = std::isnan(x.error()) ? HUGE_VAL : std::max(e, x.error());
+    return bounded_bernstein::of_power({a[0].value(), a[1].value(), a[2].value(), a[3].value()}, e);
 }
 /// Whether every coefficient certainly has the strict sign `sign`.
 inline bool all_of_sign(const bounded_bernstein& b, int sign) { return b.of_sign(sign); }
 /// The coefficients on the two halves of the interval, with their bound.
 inline std::pair<bounded_bernstein, bounded_bernstein> halves(const bounded_bernstein& b) { return b.halves(); }
+/// single_sign_change of the coefficients.
+inline int single_sign_change(const bounded_bernstein& b) { return b.single_sign_change(); }
 
 /// Where in [from, to] the cubics (their Bernstein coefficients there) may
 /// show a contact, the interval cut in halves up to `depth` times: the
@@ -748,19 +682,28 @@ std::optional<std::pair<sweep::contact_site, double>> contact_within(const polyg
     std::vector<kept_pair> kept;
     const auto sift = [&](const sweep::contact_site& site, const moving_point<Filter>& m, const Filter& l,
                           const point<double>& p, const point<double>& q, double from_box) {
-        const cubic_coefficients<Filter> k = coefficients_of(m, w2f, l, p, q);
-        const auto on = [&](std::size_t i) {
-            return bernstein_of(whole ? k[i] : on_window(k[i], window_from, window_to));
-        };
-        const bernstein<Filter> f = on(0), lo = on(1), hi = on(2);
-        // (certified's coefficients halved in double, with one bound each.)
-        const std::optional<double> at = [&] {
+        // The Bernstein coefficients of cubic i on the window: certified's
+        // made in double with one bound per cubic (bounded_coefficients,
+        // bounded_bernstein; on a part of the piece through on_window in
+        // certified first), another Filter's in Filter.
+        const auto k = [&] {
             if constexpr (std::is_same_v<Filter, certified>)
-                return first_possible(bounded_of(f), bounded_of(lo), bounded_of(hi), window_from, window_to, depth,
-                                      known);
+                return bounded_coefficients(m, w2f, l, p, q);
             else
-                return first_possible(f, lo, hi, window_from, window_to, depth, known);
+                return coefficients_of(m, w2f, l, p, q);
         }();
+        const auto on = [&](std::size_t i) {
+            if constexpr (std::is_same_v<Filter, certified>) {
+                if (whole) return bounded_bernstein::of_power(k.c[i], k.e[i]);
+                std::array<certified, 4> c;
+                for (std::size_t j = 0; j < 4; ++j) c[j] = certified(k.c[i][j], k.e[i]);
+                return bounded_of(on_window(c, window_from, window_to));
+            } else {
+                return bernstein_of(whole ? k[i] : on_window(k[i], window_from, window_to));
+            }
+        };
+        const auto f = on(0), lo = on(1), hi = on(2);
+        const std::optional<double> at = first_possible(f, lo, hi, window_from, window_to, depth, known);
         if (at) {
             const double after = std::max({*at, from_box, known});
             // f's coefficients on the window are single_crossing's when the
@@ -836,8 +779,8 @@ std::optional<std::pair<sweep::contact_site, double>> contact_within(const polyg
 ///            between its ends, in Filter; kept with the start of the first
 ///            sixteenth of the piece not ending by `known` where f may
 ///            vanish while lo and hi may be >= 0 (their Bernstein
-///            coefficients, halved four times; certified's halved in double
-///            with one bound per cubic, bounded_bernstein), of the first such quarter
+///            coefficients, halved four times; certified's made and halved
+///            in double with one bound per cubic, bounded_bernstein), of the first such quarter
 ///            whose box meets the edge, or `known`, the latest
 ///     for the kept pairs in order of that start, while it is not after
 ///     the best root found:
