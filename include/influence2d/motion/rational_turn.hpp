@@ -348,15 +348,9 @@ struct piece_contact {
 template <class T>
 int single_sign_change(const bernstein<T>& b) {
     try {
-        int changes = 0, last = 0;
-        for (const T& x : b) {
-            const int sign = number_traits<T>::sign(x);
-            if (sign == 0) continue;
-            changes += last != 0 && sign != last;
-            last = sign;
-        }
-        const int first = number_traits<T>::sign(b[0]), final = number_traits<T>::sign(b[3]);
-        return changes == 1 && first != 0 && final != 0 ? first : 0;
+        std::array<int, 4> signs{};
+        for (std::size_t i = 0; i < 4; ++i) signs[i] = number_traits<T>::sign(b[i]);
+        return single_sign_change_of(signs);
     } catch (const uncertain_sign&) {
         return 0;
     }

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <utility>
 
 namespace influence2d {
@@ -53,6 +54,21 @@ inline constexpr double basis_weight = 12;
 /// products, each relative 2^-53), as certified's.
 inline constexpr double bound_widening = 1 + 0x1p-48;
 
+/// Descartes' rule on a cubic's Bernstein coefficients from their signs
+/// (-1, 0 or +1, each certain): when the signs change exactly once (zeros
+/// skipped) and both ends are non-zero, the cubic has one root inside the
+/// interval, a simple one (the roots there, with multiplicity, are at most
+/// the changes and of their parity); then the first sign, else 0.
+inline int single_sign_change_of(const std::array<int, 4>& signs) {
+    int changes = 0, last = 0;
+    for (const int sign : signs) {
+        if (sign == 0) continue;
+        changes += last != 0 && sign != last;
+        last = sign;
+    }
+    return changes == 1 && signs[0] != 0 && signs[3] != 0 ? signs[0] : 0;
+}
+
 /// Four Bernstein coefficients of a cubic on an interval (times a positive
 /// constant) in double, each within e of its exact value, all of magnitude
 /// at most m. A NaN or infinite value or bound leaves every sign uncertain.
@@ -95,27 +111,21 @@ public:
         return true;
     }
 
-    /// When every coefficient's sign is certain (beyond the bound, or 0 with
-    /// a bound of 0), both ends' non-zero and the signs change exactly once
-    /// (zeros skipped): the first coefficient's sign; the cubic then has one
-    /// root in the interval, of odd multiplicity. Otherwise 0.
+    /// single_sign_change_of the coefficients' signs when every one is
+    /// certain (beyond the bound, or 0 with a bound of 0); otherwise 0.
     int single_sign_change() const {
-        int changes = 0, last = 0;
-        for (const double x : v_) {
-            int sign = 0;
+        std::array<int, 4> signs{};
+        for (std::size_t i = 0; i < 4; ++i) {
+            const double x = v_[i];
             if (x > e_) {
-                sign = 1;
+                signs[i] = 1;
             } else if (x < -e_) {
-                sign = -1;
+                signs[i] = -1;
             } else if (!(x == 0 && e_ == 0)) {
                 return 0;
             }
-            if (sign == 0) continue;
-            changes += last != 0 && sign != last;
-            last = sign;
         }
-        const bool ends = v_[0] != 0 && v_[3] != 0;
-        return changes == 1 && ends ? (v_[0] > 0 ? 1 : -1) : 0;
+        return single_sign_change_of(signs);
     }
 
     /// The coefficients on the two halves of the interval (de Casteljau at
