@@ -31,7 +31,7 @@ struct sweep_cli_options {
 /// the features empty for a motion without contact; contact `limit` and t
 /// where the step limit stopped for a motion left undecided; t with 17
 /// significant digits (the double read back is the one written).
-std::string contacts_csv(const std::vector<contact_row>& rows) {
+std::string sweep_contacts_csv(const std::vector<contact_row>& rows) {
     std::string s = "motion,contact,t,static_feature,moving_feature\n";
     for (std::size_t k = 0; k < rows.size(); ++k) {
         const contact_row& r = rows[k];
@@ -54,7 +54,7 @@ void run_sweep(const sweep_cli_options& o) {
                                     ": a motion needs two (motion k goes from pose k to pose k + 1)");
     std::vector<contact_row> rows;
     const double seconds = seconds_taken([&] { rows = type.contacts(in.a, in.b, in.poses, o.motion); });
-    if (!o.out.empty()) write_output(o.out, contacts_csv(rows));
+    if (!o.out.empty()) write_output(o.out, sweep_contacts_csv(rows));
 
     std::size_t contacts = 0, first = 0;
     for (std::size_t k = 0; k < rows.size(); ++k)

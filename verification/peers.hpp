@@ -247,9 +247,9 @@ public:
 
     bool collide(const pose& p) {
         GEOSGeometry* b = g_.make(b_rings_, rotation_pose(p));
-        const char answer = GEOSPreparedIntersects_r(g_.ctx, prepared_, b);
+        const char verdict = GEOSPreparedIntersects_r(g_.ctx, prepared_, b);
         GEOSGeom_destroy_r(g_.ctx, b);
-        return g_.answer(answer, "GEOSPreparedIntersects_r");
+        return g_.answer(verdict, "GEOSPreparedIntersects_r");
     }
 
 private:
@@ -269,10 +269,10 @@ public:
     bool collide(const pose& p) {
         GEOSGeometry* a = g_.make(a_rings_, rotation_pose(pose{}));
         GEOSGeometry* b = g_.make(b_rings_, rotation_pose(p));
-        const char answer = GEOSIntersects_r(g_.ctx, a, b);
+        const char verdict = GEOSIntersects_r(g_.ctx, a, b);
         GEOSGeom_destroy_r(g_.ctx, b);
         GEOSGeom_destroy_r(g_.ctx, a);
-        return g_.answer(answer, "GEOSIntersects_r");
+        return g_.answer(verdict, "GEOSIntersects_r");
     }
 
 private:

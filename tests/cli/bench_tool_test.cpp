@@ -16,7 +16,7 @@ using namespace test_process;
 namespace {
 
 /// The options (--name) that `text` mentions, --help left out.
-std::set<std::string> options_in(const std::string& text) {
+std::set<std::string> bench_options_in(const std::string& text) {
     static const std::regex option(R"(--[a-z][a-z0-9-]*)");
     std::set<std::string> found;
     for (auto it = std::sregex_iterator(text.begin(), text.end(), option); it != std::sregex_iterator(); ++it)
@@ -73,7 +73,7 @@ TEST_CASE("cli bench: the README's synopsis of influence2d-bench names the optio
         const std::string name = line.substr(first, line.find_first_of(" ,", first) - first);
         if (name != "--help") listed.insert(name);
     }
-    CHECK(options_in(entry) == listed);
+    CHECK(bench_options_in(entry) == listed);
 }
 
 TEST_CASE("cli bench: influence2d bench names influence2d-bench and fails", "[cli]") {

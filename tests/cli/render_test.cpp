@@ -215,7 +215,7 @@ const char* const square2 = "POLYGON((0 0,2 0,2 2,0 2,0 0))\n";
 // edge only.
 const char* const five_poses = "tx,ty,theta\n10,10,0\n4,4,0\n1,4,0\n1,1,0\n4.25,1,0\n";
 
-std::string scene_args(const fs::path& a, const fs::path& b) {
+std::string render_args(const fs::path& a, const fs::path& b) {
     return "render --static " + quote(a.string()) + " --moving " + quote(b.string());
 }
 
@@ -228,8 +228,8 @@ struct squares {
 
     /// `render` on them, writing `out`, with `more` options.
     run_result render(const fs::path& out, const std::string& more) const {
-        return run_cli(
-            dir, scene_args(a, b) + " --poses " + quote(poses.string()) + " " + more + " --out " + quote(out.string()));
+        return run_cli(dir, render_args(a, b) + " --poses " + quote(poses.string()) + " " + more + " --out " +
+                                quote(out.string()));
     }
 };
 
@@ -331,7 +331,7 @@ TEST_CASE("render: one covering triangle per edge of A, classed by its sign", "[
         const auto poses = dir.file("poses.csv", "tx,ty,theta\n20,0,0\n");
         const auto svg = dir / "a.svg";
         const auto r =
-            run_cli(dir, scene_args(a, b) + " --poses " + quote(poses.string()) + " --out " + quote(svg.string()));
+            run_cli(dir, render_args(a, b) + " --poses " + quote(poses.string()) + " --out " + quote(svg.string()));
         INFO(r.err);
         REQUIRE(r.exit_code == 0);
         const auto all = parse_svg(svg);
@@ -372,7 +372,7 @@ TEST_CASE("render: default frames are spread over the trajectory and include the
     const auto b = dir.file("B.wkt", "POLYGON((0 0,2 0,1 2,0 0))");
     const auto svg = dir / "linear.svg";
     const auto r =
-        run_cli(dir, scene_args(a, b) + " --trajectory linear --trajectory-frames 40 --out " + quote(svg.string()));
+        run_cli(dir, render_args(a, b) + " --trajectory linear --trajectory-frames 40 --out " + quote(svg.string()));
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     const auto all = parse_svg(svg);
@@ -424,7 +424,7 @@ TEST_CASE("render: file names are escaped in the title", "[render]") {
     const auto poses = dir.file("poses.csv", five_poses);
     const auto svg = dir / "escaped.svg";
     const auto r =
-        run_cli(dir, scene_args(a, b) + " --poses " + quote(poses.string()) + " --out " + quote(svg.string()));
+        run_cli(dir, render_args(a, b) + " --poses " + quote(poses.string()) + " --out " + quote(svg.string()));
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     const auto all = parse_svg(svg);
@@ -443,12 +443,12 @@ TEST_CASE("render: bad input exits 2 and leaves no file", "[render]") {
     };
 
     auto r =
-        run_cli(dir, scene_args(broken, b) + " --poses " + quote(poses.string()) + " --out " + quote(svg.string()));
+        run_cli(dir, render_args(broken, b) + " --poses " + quote(poses.string()) + " --out " + quote(svg.string()));
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("broken.wkt") != std::string::npos);
     no_file();
 
-    r = run_cli(dir, scene_args(a, b) + " --poses " + quote(bad_poses.string()) + " --out " + quote(svg.string()));
+    r = run_cli(dir, render_args(a, b) + " --poses " + quote(bad_poses.string()) + " --out " + quote(svg.string()));
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("bad.csv: line 2") != std::string::npos);
     no_file();
@@ -470,8 +470,8 @@ TEST_CASE("render: bad input exits 2 and leaves no file", "[render]") {
         no_file();
     }
 
-    r = run_cli(
-        dir, scene_args(a, b) + " --trajectory linear --trajectory-frames 10 --frames 10 --out " + quote(svg.string()));
+    r = run_cli(dir, render_args(a, b) + " --trajectory linear --trajectory-frames 10 --frames 10 --out " +
+                         quote(svg.string()));
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("frame 10") != std::string::npos);
     CHECK(r.err.find("10 frames") != std::string::npos);
@@ -479,21 +479,21 @@ TEST_CASE("render: bad input exits 2 and leaves no file", "[render]") {
 
     // render writes SVG only: another file name is refused, nothing written.
     const auto png = dir / "picture.png";
-    r = run_cli(dir, scene_args(a, b) + " --poses " + quote(poses.string()) + " --out " + quote(png.string()));
+    r = run_cli(dir, render_args(a, b) + " --poses " + quote(poses.string()) + " --out " + quote(png.string()));
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("render writes SVG") != std::string::npos);
     CHECK(!fs::exists(png));
 
-    r = run_cli(dir, scene_args(a, b) + " --poses " + quote(poses.string()));  // no --out
+    r = run_cli(dir, render_args(a, b) + " --poses " + quote(poses.string()));  // no --out
     CHECK(r.exit_code == 2);
-    r = run_cli(dir, scene_args(a, b) + " --poses " + quote(poses.string()) + " --out " +
+    r = run_cli(dir, render_args(a, b) + " --poses " + quote(poses.string()) + " --out " +
                          quote((dir / "missing" / "x.svg").string()));
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("does not exist") != std::string::npos);
 
     // A file already there is left as it was.
     const auto kept = dir.file("kept.svg", "old");
-    r = run_cli(dir, scene_args(a, broken) + " --poses " + quote(poses.string()) + " --out " + quote(kept.string()));
+    r = run_cli(dir, render_args(a, broken) + " --poses " + quote(poses.string()) + " --out " + quote(kept.string()));
     CHECK(r.exit_code == 2);
     CHECK(slurp(kept) == "old");
 }

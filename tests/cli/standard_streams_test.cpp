@@ -20,9 +20,9 @@ using namespace test_process;
 
 namespace {
 
-const char* const unit_square = "POLYGON((0 0,1 0,1 1,0 1,0 0))\n";
+const char* const unit_square_wkt = "POLYGON((0 0,1 0,1 1,0 1,0 0))\n";
 // Overlapping, touching along x = 1, apart.
-const char* const three_poses = "tx,ty,theta\n0.5,0,0\n1,0,0\n2.5,0,0\n";
+const char* const poses_text = "tx,ty,theta\n0.5,0,0\n1,0,0\n2.5,0,0\n";
 const std::vector<std::string> three_frames{"frame,collides", "0,1", "1,1", "2,0"};
 
 /// `args` with standard input read from `file`.
@@ -34,8 +34,8 @@ std::string collide(const std::string& a, const std::string& b) { return "collid
 
 TEST_CASE("cli '-': collide reads either polygon or the poses from standard input", "[cli]") {
     const temp_dir dir;
-    const auto a = dir.file("A.wkt", unit_square);
-    const auto poses = dir.file("poses.csv", three_poses);
+    const auto a = dir.file("A.wkt", unit_square_wkt);
+    const auto poses = dir.file("poses.csv", poses_text);
     const std::string file_a = quote(a.string()), file_poses = " --poses " + quote(poses.string());
 
     for (const auto& [what, args, input] : std::vector<std::tuple<std::string, std::string, fs::path>>{
@@ -54,8 +54,8 @@ TEST_CASE("cli '-': collide reads either polygon or the poses from standard inpu
 
 TEST_CASE("cli '-': collide --out - writes the frames to standard output, the summary to standard error", "[cli]") {
     const temp_dir dir;
-    const auto a = dir.file("A.wkt", unit_square);
-    const auto poses = dir.file("poses.csv", three_poses);
+    const auto a = dir.file("A.wkt", unit_square_wkt);
+    const auto poses = dir.file("poses.csv", poses_text);
     const auto r =
         run_cli(dir, collide(quote(a.string()), quote(a.string())) + " --poses " + quote(poses.string()) + " --out -");
     INFO(r.err);
@@ -73,14 +73,14 @@ TEST_CASE("cli '-': collide --out - writes the frames to standard output, the su
 
 TEST_CASE("cli '-': bad input on standard input is named, exit code 2, nothing written", "[cli]") {
     const temp_dir dir;
-    const auto a = dir.file("A.wkt", unit_square);
+    const auto a = dir.file("A.wkt", unit_square_wkt);
     const auto unclosed = dir.file("unclosed.wkt", "POLYGON((0 0,1 0,1 1,0 1))");
     const auto bad_poses = dir.file("bad.csv", "tx,ty,theta\n1,2,3\n1,2,abc\n");
     const auto frames = dir / "frames.csv";
 
     auto r = run_cli(
         dir, from(unclosed, collide("-", quote(a.string())) + " --poses " +
-                                quote(dir.file("p.csv", three_poses).string()) + " --out " + quote(frames.string())));
+                                quote(dir.file("p.csv", poses_text).string()) + " --out " + quote(frames.string())));
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("influence2d: error: standard input: ring 0 is not closed") != std::string::npos);
     CHECK(r.out.empty());
@@ -99,7 +99,7 @@ TEST_CASE("cli '-': bad input on standard input is named, exit code 2, nothing w
 
 TEST_CASE("cli '-': two inputs from standard input are refused before anything is read", "[cli]") {
     const temp_dir dir;
-    const auto a = dir.file("A.wkt", unit_square);
+    const auto a = dir.file("A.wkt", unit_square_wkt);
     const auto frames = dir / "frames.csv";
     for (const auto& [args, named] : std::vector<std::pair<std::string, std::string>>{
              {collide("-", "-") + " --trajectory linear", "--static and --moving"},
@@ -149,7 +149,7 @@ TEST_CASE("cli '-': render reads from standard input and writes the picture to s
 
 TEST_CASE("cli '-': audit reads the polygon from standard input", "[cli]") {
     const temp_dir dir;
-    const auto square = dir.file("square.wkt", unit_square);
+    const auto square = dir.file("square.wkt", unit_square_wkt);
     auto r = run_cli(dir, from(square, "audit -"));
     INFO(r.err);
     CHECK(r.exit_code == 0);

@@ -19,9 +19,9 @@ using namespace test_process;
 
 namespace {
 
-const std::string data_dir = INFLUENCE2D_DATA_DIR;
+const std::string threads_data_dir = INFLUENCE2D_DATA_DIR;
 
-std::string poses_csv(const std::vector<pose>& poses) {
+std::string threads_poses_csv(const std::vector<pose>& poses) {
     std::ostringstream s;
     write_poses_csv(s, poses);
     return s.str();
@@ -31,9 +31,10 @@ std::string poses_csv(const std::vector<pose>& poses) {
 
 TEST_CASE("cli: collide --threads writes the frames of one thread", "[cli][threads]") {
     const temp_dir dir;
-    const std::string a = data_dir + "/families/hole_256.wkt", b = data_dir + "/families/irregular_32.wkt";
+    const std::string a = threads_data_dir + "/families/hole_256.wkt",
+                      b = threads_data_dir + "/families/irregular_32.wkt";
     const polygon pa = read_wkt_file(a), pb = read_wkt_file(b);
-    const auto poses = dir.file("poses.csv", poses_csv(random_poses(pa, pb, 400, 40, 110, 17)));
+    const auto poses = dir.file("poses.csv", threads_poses_csv(random_poses(pa, pb, 400, 40, 110, 17)));
     for (const char* type : {"double", "exact", "certified"})
         for (const std::string& scene :
              {"--poses " + quote(poses.string()), std::string("--trajectory linear --trajectory-frames 900")}) {

@@ -30,7 +30,7 @@ using namespace test_process;
 
 namespace {
 
-const std::string data_dir = INFLUENCE2D_DATA_DIR;
+const std::string world_data_dir = INFLUENCE2D_DATA_DIR;
 
 /// Shape 0 a unit square, shape 1 a 2 x 1 rectangle, after a blank line
 /// (skipped: shape ids count the geometries).
@@ -50,7 +50,7 @@ const char* hand_steps =
     "4,10,0,0,0,0\n"
     "4,20,0,1,1,0\n";
 
-std::string seventeen(double x) {
+std::string world_seventeen(double x) {
     std::ostringstream s;
     s.precision(17);
     s << x;
@@ -79,7 +79,8 @@ std::string steps_csv(const std::vector<step_row>& rows) {
     std::string s = "step,body,shape,tx,ty,theta\n";
     for (const step_row& r : rows)
         s += std::to_string(r.step) + "," + std::to_string(r.body) + "," + std::to_string(r.shape) + "," +
-             seventeen(r.where.tx) + "," + seventeen(r.where.ty) + "," + seventeen(r.where.theta) + "\n";
+             world_seventeen(r.where.tx) + "," + world_seventeen(r.where.ty) + "," + world_seventeen(r.where.theta) +
+             "\n";
     return s;
 }
 
@@ -201,7 +202,7 @@ TEST_CASE("cli: world's contacts are the exact intersects of every pair of bodie
     std::vector<polygon> shapes;
     std::string shapes_text;
     for (const char* name : {"hole_16", "irregular_16", "starred_16", "convex_8", "contour_16"}) {
-        const std::string line = to_wkt(read_wkt_file(data_dir + "/families/" + name + ".wkt"));
+        const std::string line = to_wkt(read_wkt_file(world_data_dir + "/families/" + name + ".wkt"));
         shapes_text += line + "\n";
         shapes.push_back(read_wkt(line));
     }
@@ -239,7 +240,7 @@ TEST_CASE("cli: world and pairs write the same with two threads as with one", "[
     const temp_dir dir;
     // 150 octagons in a square of side 600, moved three times: enough
     // candidate pairs per step for the threads to share them.
-    const std::string octagon = to_wkt(read_wkt_file(data_dir + "/families/convex_8.wkt"));
+    const std::string octagon = to_wkt(read_wkt_file(world_data_dir + "/families/convex_8.wkt"));
     const auto shapes = dir.file("shapes.wkt", octagon + "\n");
     test_random::rng rng(7);
     std::vector<step_row> rows;

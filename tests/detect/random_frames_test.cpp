@@ -63,7 +63,7 @@ struct shape {
 };
 
 /// Family f of all_families with family_sizes[s] vertices (data/families).
-shape family(std::size_t f, std::size_t s) {
+shape frame_family(std::size_t f, std::size_t s) {
     const std::size_t n = family_sizes[s];
     return {verification::family_name(all_families[f]) + "_" + std::to_string(n),
             &test_families::load(all_families[f], n)};
@@ -85,7 +85,7 @@ std::vector<family_pair> family_pairs() {
         for (std::size_t fb = 0; fb < std::size(all_families); ++fb, ++k)
             for (std::size_t r = 0; r < 2; ++r) {
                 const std::size_t combo = (2 * k + r) % 16;
-                out.push_back({family(fa, combo % 4), family(fb, (combo / 4 + fa) % 4),
+                out.push_back({frame_family(fa, combo % 4), frame_family(fb, (combo / 4 + fa) % 4),
                                0x1f2e3d4c5b6a7988ULL + 7919 * (2 * k + r)});
             }
     return out;
@@ -93,18 +93,18 @@ std::vector<family_pair> family_pairs() {
 
 enum class frame_kind { random, contact, hair_apart };
 
-struct frame {
+struct random_frame {
     pose p;
     frame_kind kind;
 };
 
 /// The frames of one family pair, the same for every distance.
 /// The first frames of a smaller count are those of a larger one.
-std::vector<frame> make_frames(const family_pair& fp, frame_counts counts) {
+std::vector<random_frame> make_frames(const family_pair& fp, frame_counts counts) {
     const polygon& A = *fp.a.poly;
     const polygon& B = *fp.b.poly;
     test_random::rng r(fp.seed);
-    std::vector<frame> frames;
+    std::vector<random_frame> frames;
     const double pi = std::acos(-1.0);
     const point<double> ca = A.centroid(), cb = B.centroid();
     const double reach = test_poses::reach(A, B, 4);
@@ -137,7 +137,7 @@ std::vector<frame> make_frames(const family_pair& fp, frame_counts counts) {
     return frames;
 }
 
-std::string describe(const family_pair& fp, std::size_t index, const frame& f, double d) {
+std::string describe_frame(const family_pair& fp, std::size_t index, const random_frame& f, double d) {
     std::ostringstream o;
     o << std::setprecision(17) << "A = " << fp.a.name << ", B = " << fp.b.name << ", d = " << d << ", frame " << index
       << " ("
@@ -156,7 +156,9 @@ std::string pairs_text(const frame_result& r) {
     return o.str();
 }
 
-bool same(const frame_result& x, const frame_result& y) { return x.collides == y.collides && x.pairs == y.pairs; }
+bool same_counts(const frame_result& x, const frame_result& y) {
+    return x.collides == y.collides && x.pairs == y.pairs;
+}
 
 struct tally {
     std::size_t frames = 0, contact = 0, touching = 0, collisions = 0, mismatches = 0;
@@ -168,7 +170,7 @@ struct tally {
 };
 
 /// Runs every frame of every family pair at distance d; counts and checks.
-tally run_all(double d, frame_counts counts) {
+tally run_all_frames(double d, frame_counts counts) {
     tally t;
     for (const family_pair& fp : family_pairs()) {
         const polygon& A = *fp.a.poly;
@@ -192,10 +194,10 @@ tally run_all(double d, frame_counts counts) {
         const cgal_reference ref(A, B, d, true);
         const cgal_reference ref_touch(A, B, 0, false);
 
-        const std::vector<frame> frames = make_frames(fp, counts);
+        const std::vector<random_frame> frames = make_frames(fp, counts);
         std::size_t reported = 0;
         for (std::size_t k = 0; k < frames.size(); ++k) {
-            const frame& f = frames[k];
+            const random_frame& f = frames[k];
             ++t.frames;
             const frame_result expected = ref.collide(f.p);
             const frame_result got = det_exact.collide(f.p);
@@ -215,12 +217,13 @@ tally run_all(double d, frame_counts counts) {
                 // Touching: collides here, apart once pushed a hair outwards.
                 if (d == 0 && expected.collides && !ref_touch.collide(frames[k + 1].p).collides) ++t.touching;
             }
-            const bool ok = same(got, expected) && same(steady, expected) && same(brute, expected) &&
-                            got_plain == expected.collides && same(got_double, brute_double);
+            const bool ok = same_counts(got, expected) && same_counts(steady, expected) &&
+                            same_counts(brute, expected) && got_plain == expected.collides &&
+                            same_counts(got_double, brute_double);
             if (ok) continue;
             ++t.mismatches;
             if (++reported > 3) continue;  // enough to reproduce; the count says the rest
-            INFO(describe(fp, k, f, d));
+            INFO(describe_frame(fp, k, f, d));
             INFO("reference:                     " << pairs_text(expected));
             INFO("detector<exact>:               " << pairs_text(got));
             INFO("detector<exact> led in steps:  " << pairs_text(steady));
@@ -240,7 +243,7 @@ tally run_all(double d, frame_counts counts) {
 }  // namespace
 
 TEST_CASE("random frames: detectors agree with the CGAL reference, d = 0", "[detect][reference][random]") {
-    const tally t = run_all(0, counts_touching);
+    const tally t = run_all_frames(0, counts_touching);
     CHECK(t.mismatches == 0);
     CHECK(t.frames >= static_cast<std::size_t>(4000 * test_effort::effort()));
     // The frames must exercise both answers, and the exact contacts must
@@ -258,7 +261,7 @@ TEST_CASE("random frames: detectors agree with the CGAL reference, d = 0", "[det
 }
 
 TEST_CASE("random frames: detectors agree with the CGAL reference, d = 0.5", "[detect][reference][random]") {
-    const tally t = run_all(0.5, counts_distance);
+    const tally t = run_all_frames(0.5, counts_distance);
     CHECK(t.mismatches == 0);
     CHECK(t.frames >= static_cast<std::size_t>(800 * test_effort::effort()));  // 1050 at full effort
     CHECK(t.collisions >= t.frames / 4);
@@ -266,7 +269,7 @@ TEST_CASE("random frames: detectors agree with the CGAL reference, d = 0.5", "[d
 }
 
 TEST_CASE("random frames: detectors agree with the CGAL reference, d = 3", "[detect][reference][random]") {
-    const tally t = run_all(3, counts_distance);
+    const tally t = run_all_frames(3, counts_distance);
     CHECK(t.mismatches == 0);
     CHECK(t.frames >= static_cast<std::size_t>(800 * test_effort::effort()));  // 1050 at full effort
     CHECK(t.collisions >= t.frames / 4);

@@ -25,7 +25,7 @@ namespace {
 
 /// A random walk of small steps about the shared position: translations
 /// within 0.3, turns about the origin within 0.002 rad.
-std::vector<pose> walk(std::size_t count, std::uint64_t seed) {
+std::vector<pose> walk_border(std::size_t count, std::uint64_t seed) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> step(-0.03, 0.03);
     const auto within = [](double x) { return std::clamp(x, -1.0, 1.0); };
@@ -48,7 +48,7 @@ TEST_CASE(
     "[detect][coherence]") {
     const std::vector<point<double>> b = test_shapes::wiggly_border(1000);
     const polygon below = test_shapes::border_side(b, -1), above = test_shapes::border_side(b, 1);
-    const std::vector<pose> poses = walk(120, 7);
+    const std::vector<pose> poses = walk_border(120, 7);
     for (const bool roles_swapped : {false, true}) {
         const polygon& a = roles_swapped ? above : below;
         const polygon& m = roles_swapped ? below : above;
@@ -92,7 +92,7 @@ TEST_CASE("shared border: the edge pair that met last answers the frames after i
     const std::vector<point<double>> near = test_shapes::wiggly_border(400);
     std::vector<point<double>> moved = near;
     for (point<double>& v : moved) v.x += 0x1p40;
-    std::vector<pose> poses = walk(150, 11);
+    std::vector<pose> poses = walk_border(150, 11);
     for (pose& p : poses) p.ty -= 0.25;
     // Two jumps among the steps: the pair kept from before a jump is not
     // asked after it (p moved more than the skin).

@@ -75,11 +75,11 @@ double coordinate_bound(const std::vector<point<double>>& v) {
 
 /// The gap's bounds against the exact hull distance, and whether it
 /// converged; both orders of the two sets.
-struct tally {
+struct gap_tally {
     std::size_t pairs = 0, apart = 0, converged = 0, near = 0;
 };
 
-void check_gap(const std::vector<point<double>>& a, const std::vector<point<double>>& b, tally& t) {
+void check_gap(const std::vector<point<double>>& a, const std::vector<point<double>>& b, gap_tally& t) {
     const Q d2 = hull_squared_distance(a, b);
     const double scale = coordinate_bound(a) + coordinate_bound(b);
     for (const bool swapped : {false, true}) {
@@ -151,7 +151,7 @@ std::pair<point<double>, point<double>> nearest_points(const std::vector<point<d
 
 TEST_CASE("convex gap: bounds of the hulls' distance against CGAL's exact one", "[distance][convex]") {
     test_random::rng r(0xc0a7ULL);
-    tally t;
+    gap_tally t;
     const int pairs = test_effort::scaled(400);
     for (int k = 0; k < pairs; ++k) {
         const double size = std::ldexp(1.0, static_cast<int>(r.uniform(-20, 20)));
@@ -190,7 +190,7 @@ TEST_CASE("convex gap: bounds of the hulls' distance against CGAL's exact one", 
 }
 
 TEST_CASE("convex gap: touching, a hair apart, parallel edges, far from the origin", "[distance][convex]") {
-    tally t;
+    gap_tally t;
     const std::vector<point<double>> square{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
     for (const double gap : {0.0, 1e-300, 1e-12, 3e-9, 0.25}) {
         // Edge on edge (parallel), corner on edge, corner on corner.

@@ -48,7 +48,7 @@ std::vector<exact_point> posed(const polygon& b, const pose& q) {
     return out;
 }
 
-bool same(const feature& f, const feature& g) { return f.kind == g.kind && f.index == g.index; }
+bool same_feature(const feature& f, const feature& g) { return f.kind == g.kind && f.index == g.index; }
 
 std::vector<exact_point> standing(const polygon& a) {
     std::vector<exact_point> out;
@@ -84,7 +84,7 @@ least least_distance(const std::vector<exact_point>& p, const std::vector<exact_
     return out;
 }
 
-struct tally {
+struct nearest_tally {
     std::size_t poses = 0, proven = 0, vertex_pairs = 0, declined_ties = 0, wrong_hints = 0, wrong_declined = 0;
 };
 
@@ -100,7 +100,7 @@ convex_gap_result hint_of(std::size_t i0, std::size_t j0, std::size_t i1, std::s
 /// Any candidate (a hint that is not convex_gap's): when the proof takes it,
 /// it is the nearest pair CGAL finds, reached by that pair alone.
 void check_candidate(const polygon& a, const polygon& b, const pose& q, const convex_gap_result& hint, const least& l,
-                     tally& t) {
+                     nearest_tally& t) {
     ++t.wrong_hints;
     const std::optional<convex_nearest> e = nearest_convex_pair<exact_rational>(a, b, q, hint);
     if (!e) {
@@ -111,7 +111,7 @@ void check_candidate(const polygon& a, const polygon& b, const pose& q, const co
     CHECK((l.pairs == 1 || l.pairs == 4));
 }
 
-void check(const polygon& a, const polygon& b, const pose& q, tally& t) {
+void check(const polygon& a, const polygon& b, const pose& q, nearest_tally& t) {
     INFO("pose (" << q.tx << ", " << q.ty << ", " << q.theta << ")");
     ++t.poses;
     const rotation_pose placed(q);
@@ -125,8 +125,8 @@ void check(const polygon& a, const polygon& b, const pose& q, tally& t) {
         const std::optional<convex_nearest> c = nearest_convex_pair<certified>(a, b, q, hint);
         REQUIRE(c.has_value() == e.has_value());
         if (c) {
-            CHECK(same(c->static_feature, e->static_feature));
-            CHECK(same(c->moving_feature, e->moving_feature));
+            CHECK(same_feature(c->static_feature, e->static_feature));
+            CHECK(same_feature(c->moving_feature, e->moving_feature));
         }
     } catch (const uncertain_sign&) {}
     const least l = least_distance(standing(a), posed(b, q));
@@ -158,8 +158,8 @@ void check(const polygon& a, const polygon& b, const pose& q, tally& t) {
     }
     const separation_result<exact_rational> s = separation<exact_rational>(a, b, q);
     CHECK(s.squared_distance == squared);
-    CHECK(same(s.static_feature, e->static_feature));
-    CHECK(same(s.moving_feature, e->moving_feature));
+    CHECK(same_feature(s.static_feature, e->static_feature));
+    CHECK(same_feature(s.moving_feature, e->moving_feature));
     // In double words: the same value, rounded as the exact one.
     double rounded;
     if (certain_nearest(nearest_pair_squared<double_word>(a, b, q, *e), rounded))
@@ -179,7 +179,7 @@ polygon convex_ring(test_random::rng& g, double size) {
 TEST_CASE("convex nearest pair: random convex pairs and poses against CGAL and the exact separation",
           "[convex_nearest]") {
     test_random::rng g(0x5eaULL);
-    tally t;
+    nearest_tally t;
     for (int scene = 0; scene < test_effort::scaled(60); ++scene) {
         const polygon a = convex_ring(g, g.uniform(1, 4)), b = convex_ring(g, g.uniform(0.5, 3));
         for (int k = 0; k < 20; ++k) {
@@ -196,7 +196,7 @@ TEST_CASE("convex nearest pair: random convex pairs and poses against CGAL and t
 }
 
 TEST_CASE("convex nearest pair: ties are declined, touching and meeting too", "[convex_nearest]") {
-    tally t;
+    nearest_tally t;
     const polygon square = test_shapes::square(-1, -1, 2);
     // Parallel edges one above the other: every point of a stretch is
     // nearest; shifted sideways, still a stretch; turned by a hair, one
@@ -240,8 +240,8 @@ TEST_CASE("certified convex probe: the exact distance, or a bound of it where th
                 const std::optional<sweep::probe_result> r =
                     sweep::certified_convex_probe<exact_rational>(a, b, q, 64, stops);
                 if (!r) continue;
-                CHECK(same(r->static_feature, s.static_feature));
-                CHECK(same(r->moving_feature, s.moving_feature));
+                CHECK(same_feature(r->static_feature, s.static_feature));
+                CHECK(same_feature(r->moving_feature, s.moving_feature));
                 if (r->distance == d) {
                     ++exact;
                     continue;

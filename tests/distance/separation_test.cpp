@@ -169,7 +169,7 @@ double scene_scale(const polygon& a, const polygon& b, const pose& q) {
 }
 
 /// The frame, its pose in hexadecimal (exact, to replay it).
-std::string describe(const polygon& a, const polygon& b, const pose& p) {
+std::string describe_separation(const polygon& a, const polygon& b, const pose& p) {
     std::ostringstream s;
     s << "A of " << a.size() << " edges, B of " << b.size() << " posed by " << std::hexfloat << p.tx << " " << p.ty
       << " " << p.theta;
@@ -178,7 +178,7 @@ std::string describe(const polygon& a, const polygon& b, const pose& p) {
 
 /// How many frames met, how many certified_separation answered in double
 /// words (no pair evaluated exactly), how many pairs it evaluated exactly.
-struct tally {
+struct separation_tally {
     std::size_t frames = 0, meet = 0, interior = 0, in_words = 0, exact_pairs = 0, most_exact_pairs = 0;
     void count(const reference_answer& ref, const separation_result<ER>& e, std::size_t pairs) {
         ++frames;
@@ -217,7 +217,7 @@ void check_certified(const certified_separation_result& c, const separation_resu
 }
 
 /// Two certified answers are the same, field by field.
-void check_same(const certified_separation_result& c, const certified_separation_result& d) {
+void check_same_separation(const certified_separation_result& c, const certified_separation_result& d) {
     CHECK(c.meet == d.meet);
     CHECK(c.static_feature.kind == d.static_feature.kind);
     CHECK(c.static_feature.index == d.static_feature.index);
@@ -234,8 +234,9 @@ enum class floating { none, double_only, all };
 
 /// Every mode on one frame: exact_rational, certified_separation, and the
 /// floating types asked.
-void check_frame(const polygon& a, const polygon& b, const pose& q, tally& t, floating types = floating::double_only) {
-    INFO(describe(a, b, q));
+void check_separation_frame(const polygon& a, const polygon& b, const pose& q, separation_tally& t,
+                            floating types = floating::double_only) {
+    INFO(describe_separation(a, b, q));
     const reference_answer ref = reference(a, b, q);
     const separation_result<ER> e = separation<ER>(a, b, q);
     check_exact(e, ref);
@@ -498,10 +499,11 @@ TEST_CASE("separation: exact ties between feature pairs go to the least edge pai
 }
 
 TEST_CASE("separation: the catalogue against the exact reference", "[separation][reference]") {
-    tally t;
+    separation_tally t;
     for (const test_catalogue::test_case& c : test_catalogue::cases()) {
         INFO(c.name);
-        for (const test_catalogue::frame& f : c.frames) check_frame(c.fixed, c.moving, f.where, t, floating::all);
+        for (const test_catalogue::frame& f : c.frames)
+            check_separation_frame(c.fixed, c.moving, f.where, t, floating::all);
     }
     CHECK(t.meet > 0);
     CHECK(t.meet < t.frames);
@@ -512,7 +514,7 @@ TEST_CASE("separation: the catalogue against the exact reference", "[separation]
 
 TEST_CASE("separation: the families under random, touching, grazing, sliding and far poses",
           "[separation][reference]") {
-    tally t;
+    separation_tally t;
     test_random::rng g(0x5e9a);
     for (const cell& k : family_cells) {
         const polygon& a = test_families::load(k.fa, k.n);
@@ -520,13 +522,13 @@ TEST_CASE("separation: the families under random, touching, grazing, sliding and
         const std::size_t frames = static_cast<std::size_t>(test_effort::scaled(30));
         for (double inner : {0.4, 0.9})
             for (const pose& q : test_poses::near_contact(a, b, frames, inner, 0, k.n * 7 + k.m))
-                check_frame(a, b, q, t);
+                check_separation_frame(a, b, q, t);
         // Touching (exact on the families' grid) and one ulp away: grazes.
         for (const pose& q : test_poses::touching(a, b, g, static_cast<std::size_t>(test_effort::scaled(6))))
-            check_frame(a, b, q, t);
+            check_separation_frame(a, b, q, t);
         // Far: beyond both bounding circles.
         for (const pose& q : random_poses(a, b, 2, 2.5 * test_poses::reach(a, b), 4 * test_poses::reach(a, b), k.m))
-            check_frame(a, b, q, t);
+            check_separation_frame(a, b, q, t);
         // A slide: B's extreme vertex along an edge of A, 2^-30 off it.
         const std::size_t i = g.index(a.size());
         const point<double> v0 = a.vertex(i), v1 = a.vertex(a.next(i));
@@ -541,7 +543,7 @@ TEST_CASE("separation: the families under random, touching, grazing, sliding and
             const double along = len * s / 4, gap = 0x1p-30;
             const pose q{v0.x + dir.x * along + out.x * gap - b.vertex(lead).x,
                          v0.y + dir.y * along + out.y * gap - b.vertex(lead).y, 0};
-            check_frame(a, b, q, t);
+            check_separation_frame(a, b, q, t);
         }
     }
     CHECK(t.meet > t.frames / 5);
@@ -557,7 +559,7 @@ TEST_CASE("separation: the families under random, touching, grazing, sliding and
 TEST_CASE("separation: random multipolygons with parts inside the other, and rings nothing keeps apart",
           "[separation][reference]") {
     using test_scenes::rng;
-    tally t;
+    separation_tally t;
     const int scenes = test_effort::scaled(30);
     for (int k = 0; k < scenes; ++k) {
         rng g(0x5e9b + static_cast<std::uint64_t>(k));
@@ -578,12 +580,13 @@ TEST_CASE("separation: random multipolygons with parts inside the other, and rin
             const double off = f % 3 == 0 ? 0.3 * pa.radius * g.unit() : (pa.radius + pb.radius) * g.uniform(0.9, 1.3);
             const point<double> near{pa.center.x + off * std::cos(spin), pa.center.y + off * std::sin(spin)};
             const pose q = f % 3 == 1 ? test_scenes::aimed(vb, va, theta) : test_scenes::aimed(pb.center, near, theta);
-            check_frame(a, b, q, t);
+            check_separation_frame(a, b, q, t);
             const point<double> wa = messy_a.vertex(g.index(messy_a.size())),
                                 wb = messy_b.vertex(g.index(messy_b.size()));
             const double far = g.uniform(0, 16);
-            check_frame(messy_a, messy_b,
-                        test_scenes::aimed(wb, {wa.x + far * std::cos(spin), wa.y + far * std::sin(spin)}, theta), t);
+            check_separation_frame(
+                messy_a, messy_b,
+                test_scenes::aimed(wb, {wa.x + far * std::cos(spin), wa.y + far * std::sin(spin)}, theta), t);
         }
     }
     CHECK(t.meet > t.frames / 5);
@@ -592,7 +595,7 @@ TEST_CASE("separation: random multipolygons with parts inside the other, and rin
 }
 
 TEST_CASE("separation: far from 1 in scale, the exact modes stay exact", "[separation][reference]") {
-    tally t;
+    separation_tally t;
     const polygon& a0 = test_families::load(verification::family::contour, 32);
     const polygon& b0 = test_families::load(verification::family::starred, 16);
     for (int e : {-600, -40, 40, 600}) {
@@ -606,7 +609,7 @@ TEST_CASE("separation: far from 1 in scale, the exact modes stay exact", "[separ
             q.ty = std::ldexp(q.ty, e);
             // In double the squares of distances near 2^600 overflow and near
             // 2^-600 underflow: the exact modes only there.
-            check_frame(a, b, q, t, std::abs(e) < 500 ? floating::double_only : floating::none);
+            check_separation_frame(a, b, q, t, std::abs(e) < 500 ? floating::double_only : floating::none);
         }
     }
     CHECK(t.meet > 0);
@@ -627,7 +630,7 @@ TEST_CASE("separation: prepared polygons and separation_query answer as the one-
         poses.push_back(q);
     std::size_t meet = 0;
     for (const pose& q : poses) {
-        INFO(describe(a, b, q));
+        INFO(describe_separation(a, b, q));
         const separation_result<ER> once = separation<ER>(a, b, q), prepared = separation<ER>(*A, *B, q),
                                     seeded = query(q);
         for (const separation_result<ER>* r : {&prepared, &seeded}) {
@@ -657,7 +660,7 @@ TEST_CASE("separation: swapped roles and translated scenes give the same exact d
         for (int f = 0; f < 6; ++f) {
             // Translations on the scenes' grid: every posed coordinate exact.
             const double tx = test_scenes::snap(g.uniform(-20, 20)), ty = test_scenes::snap(g.uniform(-20, 20));
-            INFO(describe(a, b, pose{tx, ty, 0}));
+            INFO(describe_separation(a, b, pose{tx, ty, 0}));
             const separation_result<ER> ab = separation<ER>(a, b, pose{tx, ty, 0});
             const separation_result<ER> ba = separation<ER>(b, a, pose{-tx, -ty, 0});
             CHECK(ab.squared_distance == ba.squared_distance);
@@ -683,9 +686,9 @@ TEST_CASE("separation: certified_separation_query answers as certified_separatio
     const auto run = [](const polygon& a, const polygon& b, const std::vector<pose>& poses, std::size_t& in_words) {
         certified_separation_query query(a, b);
         for (const pose& q : poses) {
-            INFO(describe(a, b, q));
+            INFO(describe_separation(a, b, q));
             const certified_separation_result c = query(q);
-            check_same(c, certified_separation(a, b, q));
+            check_same_separation(c, certified_separation(a, b, q));
             in_words += c.exact_pairs == 0;
         }
     };
@@ -707,8 +710,8 @@ TEST_CASE("separation: certified_separation_query answers as certified_separatio
         run(b, a, poses, in_words);
         frames += 2 * poses.size();
         // The exact reference on a few of them.
-        tally t;
-        for (std::size_t i = 0; i < poses.size(); i += 7) check_frame(a, b, poses[i], t, floating::none);
+        separation_tally t;
+        for (std::size_t i = 0; i < poses.size(); i += 7) check_separation_frame(a, b, poses[i], t, floating::none);
     }
     INFO(in_words << " of " << frames << " frames in double words");
     CHECK(in_words * 10 > frames * 6);

@@ -40,40 +40,40 @@ namespace {
 
 using namespace influence2d;
 
-constexpr std::array<std::size_t, 4> family_sizes = {8, 16, 32, 64};
+constexpr std::array<std::size_t, 4> certified_family_sizes = {8, 16, 32, 64};
 
-struct shape {
+struct certified_shape {
     std::string name;
     const polygon* poly;
 };
 
-shape family(std::size_t f, std::size_t s) {
+certified_shape certified_family(std::size_t f, std::size_t s) {
     const verification::family which = verification::all_families[f];
-    return {verification::family_name(which) + "_" + std::to_string(family_sizes[s]),
-            &test_families::load(which, family_sizes[s])};
+    return {verification::family_name(which) + "_" + std::to_string(certified_family_sizes[s]),
+            &test_families::load(which, certified_family_sizes[s])};
 }
 
-struct family_pair {
-    shape a;
-    shape b;
+struct certified_family_pair {
+    certified_shape a;
+    certified_shape b;
     std::uint64_t seed;
 };
 
-std::vector<family_pair> family_pairs() {
-    std::vector<family_pair> out;
+std::vector<certified_family_pair> certified_family_pairs() {
+    std::vector<certified_family_pair> out;
     constexpr std::size_t families = std::size(verification::all_families);
     std::uint64_t k = 0;
     for (std::size_t fa = 0; fa < families; ++fa)
         for (std::size_t fb = 0; fb < families; ++fb, ++k)
             for (std::size_t r = 0; r < 2; ++r) {
                 const std::size_t combo = (2 * k + r + 5) % 16;
-                out.push_back(
-                    {family(fa, combo % 4), family(fb, (combo / 4 + fb) % 4), 0xce271f1edULL + 104729 * (2 * k + r)});
+                out.push_back({certified_family(fa, combo % 4), certified_family(fb, (combo / 4 + fb) % 4),
+                               0xce271f1edULL + 104729 * (2 * k + r)});
             }
     return out;
 }
 
-std::string pairs_text(const frame_result& r) {
+std::string certified_pairs_text(const frame_result& r) {
     std::ostringstream o;
     o << (r.collides ? "collides" : "apart") << " {";
     for (const auto& e : r.pairs) o << " (" << e.static_edge << "," << e.moving_edge << ")";
@@ -81,9 +81,9 @@ std::string pairs_text(const frame_result& r) {
     return o.str();
 }
 
-bool same(const frame_result& x, const frame_result& y) { return x.collides == y.collides && x.pairs == y.pairs; }
+bool same_frame(const frame_result& x, const frame_result& y) { return x.collides == y.collides && x.pairs == y.pairs; }
 
-struct tally {
+struct certified_tally {
     std::size_t frames = 0, collisions = 0, mismatches = 0;
     std::size_t generic_frames = 0, generic_fallbacks = 0;
     std::size_t touching_frames = 0, touching_fallbacks = 0, brute_touching_fallbacks = 0;
@@ -91,9 +91,10 @@ struct tally {
 
 /// Checks one set of frames against the exact detector; the certified
 /// detectors are the caller's, so that their fallbacks can be counted per kind.
-void check_frames(const family_pair& fp, const std::vector<pose>& frames, double d, detector<exact_rational>& exact,
-                  certified_detector<detector>& cert, certified_detector<brute_force_detector>& cert_brute,
-                  certified_detector<detector>& cert_plain, tally& t) {
+void check_certified_frames(const certified_family_pair& fp, const std::vector<pose>& frames, double d,
+                            detector<exact_rational>& exact, certified_detector<detector>& cert,
+                            certified_detector<brute_force_detector>& cert_brute,
+                            certified_detector<detector>& cert_plain, certified_tally& t) {
     std::size_t reported = 0;
     for (std::size_t k = 0; k < frames.size(); ++k) {
         const pose& p = frames[k];
@@ -103,7 +104,7 @@ void check_frames(const family_pair& fp, const std::vector<pose>& frames, double
         const frame_result brute = cert_brute.collide(p);
         const bool plain = cert_plain.collide(p).collides;
         t.collisions += want.collides;
-        if (same(got, want) && same(brute, want) && plain == want.collides) continue;
+        if (same_frame(got, want) && same_frame(brute, want) && plain == want.collides) continue;
         ++t.mismatches;
         if (++reported > 3) continue;
         std::ostringstream o;
@@ -111,17 +112,17 @@ void check_frames(const family_pair& fp, const std::vector<pose>& frames, double
         o << "A = " << fp.a.name << ", B = " << fp.b.name << ", d = " << d << ", frame " << k << ", pose tx = " << p.tx
           << ", ty = " << p.ty << ", theta = " << p.theta;
         INFO(o.str());
-        INFO("detector<exact>:                " << pairs_text(want));
-        INFO("certified<detector>:            " << pairs_text(got));
-        INFO("certified<brute_force>:         " << pairs_text(brute));
+        INFO("detector<exact>:                " << certified_pairs_text(want));
+        INFO("certified<detector>:            " << certified_pairs_text(got));
+        INFO("certified<brute_force>:         " << certified_pairs_text(brute));
         INFO("certified<detector>, no witness: " << (plain ? "collides" : "apart"));
         FAIL_CHECK("certified detectors disagree with the exact detector");
     }
 }
 
-tally run_all(double d, std::size_t generic_count, std::size_t touching_count) {
-    tally t;
-    for (const family_pair& fp : family_pairs()) {
+certified_tally run_all(double d, std::size_t generic_count, std::size_t touching_count) {
+    certified_tally t;
+    for (const certified_family_pair& fp : certified_family_pairs()) {
         const polygon& A = *fp.a.poly;
         const polygon& B = *fp.b.poly;
         detector_options wit;
@@ -136,7 +137,7 @@ tally run_all(double d, std::size_t generic_count, std::size_t touching_count) {
             certified_detector<detector> cert(A, B, wit), cert_plain(A, B, plain);
             certified_detector<brute_force_detector> cert_brute(A, B, wit);
             const std::vector<pose> frames = test_poses::near_contact(A, B, generic_count, 0.6, 4, r.gen());
-            check_frames(fp, frames, d, exact, cert, cert_brute, cert_plain, t);
+            check_certified_frames(fp, frames, d, exact, cert, cert_brute, cert_plain, t);
             t.generic_frames += frames.size();
             t.generic_fallbacks += cert.exact_frames() + cert_brute.exact_frames() + cert_plain.exact_frames();
         }
@@ -144,7 +145,7 @@ tally run_all(double d, std::size_t generic_count, std::size_t touching_count) {
             certified_detector<detector> cert(A, B, wit), cert_plain(A, B, plain);
             certified_detector<brute_force_detector> cert_brute(A, B, wit);
             const std::vector<pose> frames = test_poses::touching(A, B, r, touching_count);
-            check_frames(fp, frames, d, exact, cert, cert_brute, cert_plain, t);
+            check_certified_frames(fp, frames, d, exact, cert, cert_brute, cert_plain, t);
             t.touching_frames += frames.size();
             t.touching_fallbacks += cert.exact_frames();
             t.brute_touching_fallbacks += cert_brute.exact_frames();
@@ -153,7 +154,7 @@ tally run_all(double d, std::size_t generic_count, std::size_t touching_count) {
     return t;
 }
 
-void report(const tally& t) {
+void report(const certified_tally& t) {
     INFO("frames " << t.frames << " (collisions " << t.collisions << "), generic " << t.generic_frames
                    << " with fallbacks " << t.generic_fallbacks << ", touching and one-ulp " << t.touching_frames
                    << " with fallbacks " << t.touching_fallbacks << " (detector), " << t.brute_touching_fallbacks
@@ -173,13 +174,13 @@ void report(const tally& t) {
 }  // namespace
 
 TEST_CASE("certified detectors equal the exact detector, d = 0", "[detect][certified]") {
-    const tally t = run_all(0, 30, 10);
+    const certified_tally t = run_all(0, 30, 10);
     CHECK(t.frames >= 3000);
     report(t);
 }
 
 TEST_CASE("certified detectors equal the exact detector, d = 0.5", "[detect][certified]") {
-    const tally t = run_all(0.5, 12, 4);
+    const certified_tally t = run_all(0.5, 12, 4);
     CHECK(t.frames >= 1000);
     report(t);
 }

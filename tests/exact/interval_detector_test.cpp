@@ -25,30 +25,32 @@
 namespace {
 
 using namespace influence2d;
-using tr = number_traits<interval>;
+using interval_traits = number_traits<interval>;
 
-bool same(const frame_result& x, const frame_result& y) { return x.collides == y.collides && x.pairs == y.pairs; }
+bool same_answer(const frame_result& x, const frame_result& y) {
+    return x.collides == y.collides && x.pairs == y.pairs;
+}
 
 }  // namespace
 
 TEST_CASE("interval traits: certain signs, and uncertain_sign otherwise", "[interval]") {
-    CHECK(std::string(tr::name) == "interval");
-    CHECK(tr::category == number_category::filtered);
-    CHECK(tr::sign(tr::from_double(2.5)) == 1);
-    CHECK(tr::sign(tr::from_double(-0x1p-1074)) == -1);
-    CHECK(tr::sign(tr::from_double(0)) == 0);
-    CHECK(tr::to_double(tr::from_double(0.1)) == 0.1);
-    CHECK(tr::sign(interval(1.0) - interval(1.0)) == 0);  // a point minus itself: exactly {0}
+    CHECK(std::string(interval_traits::name) == "interval");
+    CHECK(interval_traits::category == number_category::filtered);
+    CHECK(interval_traits::sign(interval_traits::from_double(2.5)) == 1);
+    CHECK(interval_traits::sign(interval_traits::from_double(-0x1p-1074)) == -1);
+    CHECK(interval_traits::sign(interval_traits::from_double(0)) == 0);
+    CHECK(interval_traits::to_double(interval_traits::from_double(0.1)) == 0.1);
+    CHECK(interval_traits::sign(interval(1.0) - interval(1.0)) == 0);  // a point minus itself: exactly {0}
 
     // 0.1 * 10 - 1 (exactly 2^-54 on the input doubles): the interval
     // [0, 2^-52] holds 0 and more.
     const interval p = interval(0.1) * interval(10.0) - interval(1.0);
     CHECK(p.inf() == 0);
     CHECK(p.sup() > 0);
-    CHECK_THROWS_AS(tr::sign(p), uncertain_sign);
-    CHECK_THROWS_AS(tr::sign(interval(std::numeric_limits<double>::quiet_NaN())), uncertain_sign);
+    CHECK_THROWS_AS(interval_traits::sign(p), uncertain_sign);
+    CHECK_THROWS_AS(interval_traits::sign(interval(std::numeric_limits<double>::quiet_NaN())), uncertain_sign);
     // Overflow keeps a certain sign: [DBL_MAX, inf] is positive.
-    CHECK(tr::sign(interval(1e200) * interval(1e200)) == 1);
+    CHECK(interval_traits::sign(interval(1e200) * interval(1e200)) == 1);
 
     // Comparisons are CGAL's: an undecided one throws its own exception.
     const interval one_ish = interval(0.1) * interval(10.0);
@@ -101,8 +103,8 @@ TEST_CASE("interval_detector equals the exact detector", "[detect][interval]") {
                 }
                 const frame_result want = exact.collide(poses[k]);
                 INFO(s.a << " x " << s.b << ", d = " << d << ", frame " << k);
-                CHECK(same(fast.collide(poses[k]), want));
-                CHECK(same(brute.collide(poses[k]), want));
+                CHECK(same_answer(fast.collide(poses[k]), want));
+                CHECK(same_answer(brute.collide(poses[k]), want));
                 ++frames;
                 collisions += want.collides;
                 if (k >= generic_count) ++touching;

@@ -31,7 +31,7 @@ namespace {
 
 /// B's vertex j at pose p in A's frame, posed in double as the queries
 /// pose it.
-point<double> posed(const polygon& b, std::size_t j, const pose& p) {
+point<double> posed_apart(const polygon& b, std::size_t j, const pose& p) {
     return rotation_pose(p).apply<double>(b.vertex(j));
 }
 
@@ -43,13 +43,13 @@ bool farther(const polygon& a, const polygon& b, const sweep::contact_site& s, c
              double fuzz) {
     point<double> v, e0, e1;
     if (s.moving_vertex) {
-        v = posed(b, s.vertex, p);
+        v = posed_apart(b, s.vertex, p);
         e0 = a.vertex(s.edge);
         e1 = a.vertex(a.next(s.edge));
     } else {
         v = a.vertex(s.vertex);
-        e0 = posed(b, s.edge, p);
-        e1 = posed(b, b.next(s.edge), p);
+        e0 = posed_apart(b, s.edge, p);
+        e1 = posed_apart(b, b.next(s.edge), p);
     }
     const double limit = std::max(0.0, margin - fuzz);
     // Double's distance, far from the limit, decides.

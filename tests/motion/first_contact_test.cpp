@@ -59,11 +59,13 @@ polygon renumbered(const polygon& p) {
     return polygon(rings);
 }
 
-polygon ring(std::vector<point<double>> v) { return polygon({ring_input{std::move(v), ring_role::outer}}); }
+polygon outer_polygon(std::vector<point<double>> v) { return polygon({ring_input{std::move(v), ring_role::outer}}); }
 
-polygon square(double x0, double y0, double x1, double y1) { return ring({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}); }
+polygon square(double x0, double y0, double x1, double y1) {
+    return outer_polygon({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}});
+}
 
-std::string describe(const polygon& a, const polygon& b, const pose& from, const pose& to) {
+std::string describe_motion(const polygon& a, const polygon& b, const pose& from, const pose& to) {
     std::ostringstream s;
     s.precision(17);
     s << "static " << a.size() << " vertices, moving " << b.size() << ", from " << from.tx << ',' << from.ty << ','
@@ -101,7 +103,7 @@ bool features_touch(const exact_scene& s, const FT& t, const feature& fa, const 
 }
 
 /// Counts, so that a run is seen not to be vacuous.
-struct tally {
+struct contact_tally {
     std::size_t motions = 0, at_start = 0, later = 0, none = 0;
     double worst_double = 0;  ///< the largest |time in double - exact time| seen
 };
@@ -119,8 +121,8 @@ constexpr double double_time_error = 1e-9;
 /// times before; the features touch then), certified the nearest double of
 /// the exact time and the same features, double the same contact within
 /// double_time_error (near-misses in double excepted: counted).
-void check_translation(const polygon& a, const polygon& b, const pose& from, const pose& to, tally& t) {
-    INFO(describe(a, b, from, to));
+void check_translation(const polygon& a, const polygon& b, const pose& from, const pose& to, contact_tally& t) {
+    INFO(describe_motion(a, b, from, to));
     const exact_scene s(a, b, from, to);
     const std::optional<FT> expected = test_exact::first_contact(s.a, s.b0, s.d);
     const contact_result<exact_rational> ex = first_contact<exact_rational>(a, b, from, to);
@@ -213,7 +215,7 @@ TEST_CASE("sweep: the tunneling square is caught", "[sweep]") {
     const pose from{-10, 0, 0}, to{10, 0, 0};
     CHECK_FALSE(certified_intersects(wall, box, from));
     CHECK_FALSE(certified_intersects(wall, box, to));
-    tally t;
+    contact_tally t;
     check_translation(wall, box, from, to, t);
     const contact_result<exact_rational> r = first_contact<exact_rational>(wall, box, from, to);
     CHECK(r.time == exact_rational(9) / exact_rational(20));
@@ -225,9 +227,9 @@ TEST_CASE("sweep: the tunneling square is caught", "[sweep]") {
 }
 
 TEST_CASE("sweep: touching at the start, sliding, grazing and parallel edges", "[sweep]") {
-    tally t;
+    contact_tally t;
     const polygon a = square(0, 0, 4, 4);
-    const polygon tri = ring({{0, 0}, {1, 2}, {-1, 2}});  // its vertex 0 at the bottom
+    const polygon tri = outer_polygon({{0, 0}, {1, 2}, {-1, 2}});  // its vertex 0 at the bottom
     SECTION("touching at the start") {
         const pose from{4, 1, -1.5707963267948966}, to{8, 1, -1.5707963267948966};  // vertex 0 on A's right edge
         check_translation(a, tri, from, to, t);
@@ -260,7 +262,7 @@ TEST_CASE("sweep: touching at the start, sliding, grazing and parallel edges", "
         // corner (1, 0); B's body stays below the line. They touch at t = 1/2
         // only.
         const polygon unit = square(0, 0, 1, 1);
-        const polygon spike = ring({{0, 0}, {-2.125, -2.375}, {-1.875, -2.125}});
+        const polygon spike = outer_polygon({{0, 0}, {-2.125, -2.375}, {-1.875, -2.125}});
         const pose from{-1, -2, 0}, to{3, 2, 0};
         check_translation(unit, spike, from, to, t);
         const contact_result<exact_rational> r = first_contact<exact_rational>(unit, spike, from, to);
@@ -269,7 +271,7 @@ TEST_CASE("sweep: touching at the start, sliding, grazing and parallel edges", "
         CHECK_FALSE(test_exact::regions_meet(s.a, s.b_at(FT(1) / FT(2) + FT(std::ldexp(1.0, -30)))));
         CHECK_FALSE(test_exact::regions_meet(s.a, s.b_at(FT(1))));
         // The same along the edge's line, touching over an interval.
-        const polygon blade = ring({{0, 0}, {-2, -2}, {-1.875, -2.125}});
+        const polygon blade = outer_polygon({{0, 0}, {-2, -2}, {-1.875, -2.125}});
         check_translation(unit, blade, from, to, t);
     }
     SECTION("parallel edges meeting") {
@@ -288,7 +290,7 @@ TEST_CASE("sweep: touching at the start, sliding, grazing and parallel edges", "
 }
 
 TEST_CASE("sweep: holes let B through, multipolygons are found part by part", "[sweep]") {
-    tally t;
+    contact_tally t;
     const polygon holed({ring_input{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, ring_role::outer},
                          ring_input{{{2, 2}, {8, 2}, {8, 8}, {2, 8}}, ring_role::hole}});
     const polygon small = square(0, 0, 1, 1);
@@ -311,9 +313,9 @@ TEST_CASE("sweep: holes let B through, multipolygons are found part by part", "[
 
 TEST_CASE("sweep: input numbering of features on rings stored reversed", "[sweep]") {
     // A given clockwise: input edge 2 runs (4, 4) -> (4, 0), its right side.
-    const polygon a = ring({{0, 0}, {0, 4}, {4, 4}, {4, 0}});
+    const polygon a = outer_polygon({{0, 0}, {0, 4}, {4, 4}, {4, 0}});
     // B clockwise too: its input vertex 2 is (-1, 0), the one that leads.
-    const polygon b = ring({{0, 1}, {0, -1}, {-1, 0}});
+    const polygon b = outer_polygon({{0, 1}, {0, -1}, {-1, 0}});
     const contact_result<exact_rational> r = first_contact<exact_rational>(a, b, {9, 2, 0}, {1, 2, 0});
     REQUIRE(r.contact);
     CHECK(r.time == exact_rational(4) / exact_rational(8));
@@ -333,7 +335,7 @@ TEST_CASE("sweep: input numbering of features on rings stored reversed", "[sweep
 }
 
 TEST_CASE("sweep: random translations of the families against the reference", "[sweep][reference]") {
-    tally t;
+    contact_tally t;
     family_motions({8, 64, 256}, {8, 64}, test_effort::scaled(16), 0x5eedULL, 0,
                    [&](const polygon& a, const polygon& b, const pose& from, const pose& to) {
                        check_translation(a, b, from, to, t);
@@ -360,7 +362,7 @@ TEST_CASE("sweep: random translations far from the origin against the reference"
             const double reach = test_poses::reach(a, b);
             for (int k = 0; k < test_effort::scaled(6); ++k) {
                 const auto [from, to] = random_translation(a, b, g, reach);
-                INFO(describe(a, b, from, to));
+                INFO(describe_motion(a, b, from, to));
                 const exact_scene sc(a, b, from, to);
                 const std::optional<FT> expected = test_exact::first_contact(sc.a, sc.b0, sc.d);
                 const contact_result<exact_rational> ex = first_contact<exact_rational>(a, b, from, to);
@@ -400,7 +402,7 @@ TEST_CASE("sweep: a contact at the motion's very end far from the origin", "[swe
 }
 
 TEST_CASE("sweep: random multipolygons and swallowing polygons, both roles", "[sweep][reference]") {
-    tally t;
+    contact_tally t;
     const int scenes = test_effort::scaled(16);
     for (int k = 0; k < scenes; ++k) {
         test_scenes::rng g(0x5e1ULL + static_cast<std::uint64_t>(k));
@@ -442,7 +444,7 @@ TEST_CASE("sweep: the roles swapped give the same first contact", "[sweep][refer
                 for (point<double>& v : r.vertices) v = {v.x + from.tx, v.y + from.ty};
             const polygon b_placed = renumbered(polygon(placed));
             const pose back{from.tx - to.tx, from.ty - to.ty, 0};
-            INFO(describe(a, b, from, to));
+            INFO(describe_motion(a, b, from, to));
             const contact_result<exact_rational> r = first_contact<exact_rational>(a, b, from, to);
             const contact_result<exact_rational> s = first_contact<exact_rational>(b_placed, a, {0, 0, 0}, back);
             REQUIRE(r.contact == s.contact);
@@ -538,7 +540,7 @@ void check_exit(const polygon& a, const polygon& b, const pose& q, double dx, do
 
 TEST_CASE("exit distance: through, out of the solid into a hole, touching, apart", "[sweep][exit]") {
     const polygon a = square(0, 0, 4, 4);
-    const polygon tri = ring({{0, 0}, {1, 0}, {0, 1}});
+    const polygon tri = outer_polygon({{0, 0}, {1, 0}, {0, 1}});
     CHECK(exit_distance<exact_rational>(a, tri, {3.5, 1, 0}, 1, 0) == exact_rational(1) / exact_rational(2));
     CHECK(exit_distance<exact_rational>(a, tri, {3.5, 1, 0}, -1, 0) == exact_rational(9) / exact_rational(2));
     CHECK(exit_distance<exact_rational>(a, tri, {3.5, 1, 0}, -2, 0) == exact_rational(9) / exact_rational(4));
@@ -677,7 +679,7 @@ struct turning_tally {
 /// raised to it; docs/sweep.md.)
 void check_turning(const polygon& a, const polygon& b, const pose& from, const pose& to, turning_tally& t,
                    const sweep_options& options = {}, double slack = 1e-12) {
-    INFO(describe(a, b, from, to) << ", tolerance " << options.tolerance);
+    INFO(describe_motion(a, b, from, to) << ", tolerance " << options.tolerance);
     const contact_result<exact_rational> ex = first_contact<exact_rational>(a, b, from, to, options);
     const contact_result<double> ce = certified_first_contact(a, b, from, to, options);
     const contact_result<double> db = first_contact<double>(a, b, from, to, options);
@@ -770,10 +772,11 @@ TEST_CASE("sweep: convex pairs turning on their own probe, against dense samplin
     for (int k = 0; k < scenes; ++k) {
         const double size = std::ldexp(1.0, static_cast<int>(g.uniform(-8, 8)));
         const point<double> offset = g.chance(0.3) ? point<double>{1e5 * size, -3e5 * size} : point<double>{0, 0};
-        const polygon a = ring(test_shapes::ellipse_points(g, 3 + static_cast<std::size_t>(g.uniform(0, 14)), offset,
-                                                           size, size * g.uniform(0.1, 1)));
-        const polygon b = ring(test_shapes::ellipse_points(g, 3 + static_cast<std::size_t>(g.uniform(0, 14)), {0, 0},
-                                                           size * g.uniform(0.2, 1.5), size * g.uniform(0.05, 1)));
+        const polygon a = outer_polygon(test_shapes::ellipse_points(g, 3 + static_cast<std::size_t>(g.uniform(0, 14)),
+                                                                    offset, size, size * g.uniform(0.1, 1)));
+        const polygon b =
+            outer_polygon(test_shapes::ellipse_points(g, 3 + static_cast<std::size_t>(g.uniform(0, 14)), {0, 0},
+                                                      size * g.uniform(0.2, 1.5), size * g.uniform(0.05, 1)));
         if (!is_convex_polygon(a) || !is_convex_polygon(b)) continue;
         const double reach = test_poses::reach(a, b);
         for (int f = 0; f < 3; ++f) {
@@ -890,7 +893,7 @@ TEST_CASE("sweep: a site's time rounded in double words is the exact time's near
     std::size_t sites = 0, settled = 0;
     family_motions({8, 64}, {8}, test_effort::scaled(24), 0x717eULL, 0,
                    [&](const polygon& a, const polygon& b, const pose& from, const pose& to) {
-                       INFO(describe(a, b, from, to));
+                       INFO(describe_motion(a, b, from, to));
                        const exact_scene s(a, b, from, to);
                        for (const bool moving : {true, false})
                            for (std::size_t v = 0; v < (moving ? b : a).size(); ++v)
@@ -958,7 +961,7 @@ TEST_CASE("sweep: a certified time midway between two doubles is rounded exactly
     // B, its one leftmost vertex at x = 2^-54, moving along (1, 1/2), leaves
     // the block ending at 0.75 after s = 0.75 - 2^-54; the search in
     // certified settles every sign, the rounding falls to the exact field.
-    const polygon block = square(-1, -5, 0.75, 5), c({ring({{tiny, -1}, {1, -1}, {1, 1}, {0.5, 1}})});
+    const polygon block = square(-1, -5, 0.75, 5), c({outer_polygon({{tiny, -1}, {1, -1}, {1, 1}, {0.5, 1}})});
     CHECK(exit_distance<exact_rational>(block, c, {0, 0, 0}, 1, 0.5) == tie);
     bool by_filter = false;
     CHECK(certified_exit_distance(block, c, {0, 0, 0}, 1, 0.5, &by_filter) == 0.75);
@@ -1037,14 +1040,14 @@ TEST_CASE("sweep: certified first contact far from 1 in scale answers as at scal
     // never meet. Scaled into range, that apex would round to the line and
     // touch it, so the query runs as given, still exact.
     const double far = std::ldexp(1.0, 100);
-    const polygon peak = ring({{-far, -far}, {far, -far}, {0, -std::ldexp(1.0, -1060)}});
+    const polygon peak = outer_polygon({{-far, -far}, {far, -far}, {0, -std::ldexp(1.0, -1060)}});
     const polygon block = square(-far / 1024, 0, far / 1024, far / 512);
     const pose from{-2 * far, 0, 0}, to{2 * far, 0, 0};
     const contact_result<exact_rational> x = first_contact<exact_rational>(peak, block, from, to);
     CHECK_FALSE(x.contact);
     CHECK_FALSE(certified_first_contact(peak, block, from, to).contact);
     // With the apex on that line they touch.
-    const polygon touching = ring({{-far, -far}, {far, -far}, {0, 0}});
+    const polygon touching = outer_polygon({{-far, -far}, {far, -far}, {0, 0}});
     CHECK(certified_first_contact(touching, block, from, to).contact);
 }
 
@@ -1082,7 +1085,7 @@ TEST_CASE("sweep: a motion grazing for long stops at the step limit, undecided",
     // x = 0) the distance stays near the gap.
     // A is notched below, far from the motion, so that it is not convex
     // (two convex polygons step by their own bound: below).
-    const polygon a = ring({{0, 0}, {1.5, 0}, {1.5, 1}, {2.5, 1}, {2.5, 0}, {4, 0}, {4, 4}, {0, 4}}),
+    const polygon a = outer_polygon({{0, 0}, {1.5, 0}, {1.5, 1}, {2.5, 1}, {2.5, 0}, {4, 0}, {4, 4}, {0, 4}}),
                   b = square(-0.5, -0.5, 0.5, 0.5);
     sweep_options o;
     o.max_steps = 1000;

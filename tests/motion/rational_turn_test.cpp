@@ -92,14 +92,15 @@ FT feature_gap(const polygon& a, const polygon& b, const pose& from, const pose&
 }
 
 /// The counts of a check, for the non-vacuity checks.
-struct tally {
+struct turn_tally {
     std::size_t motions = 0, contacts = 0, at_start = 0, grazing = 0, free = 0, double_differs = 0,
                 double_time_differs = 0;
 };
 
 /// Checks one motion against the exact reference; `samples` times before
 /// the contact (or over the whole motion) must be apart.
-void check_motion(const polygon& a, const polygon& b, const pose& from, const pose& to, int samples, tally& n) {
+void check_turn_motion(const polygon& a, const polygon& b, const pose& from, const pose& to, int samples,
+                       turn_tally& n) {
     INFO("from (" << from.tx << ", " << from.ty << ", " << from.theta << ") to (" << to.tx << ", " << to.ty << ", "
                   << to.theta << ")");
     const contact_result<exact_rational> e = first_contact<exact_rational>(a, b, from, to, rational);
@@ -151,7 +152,7 @@ void check_motion(const polygon& a, const polygon& b, const pose& from, const po
 
 TEST_CASE("rational turning: random multipolygons and stars against the exact reference", "[rational_turn]") {
     const int scenes = test_effort::scaled(24);
-    tally n;
+    turn_tally n;
     for (int scene = 0; scene < scenes; ++scene) {
         test_random::rng g(static_cast<std::uint64_t>(3100 + scene));
         const polygon a = test_scenes::random_multi(g, 8, 6).to_polygon();
@@ -163,8 +164,8 @@ TEST_CASE("rational turning: random multipolygons and stars against the exact re
             const double turn = k == 0 ? g.uniform(-0.3, 0.3) : g.uniform(-5, 5), go = g.uniform(0, 2);
             const pose to{from.tx * (1 - go) + g.uniform(-2, 2), from.ty * (1 - go) + g.uniform(-2, 2),
                           from.theta + turn};
-            check_motion(a, b, from, to, 200, n);
-            check_motion(b, a, from, to, 50, n);  // the roles swapped: the multipolygon turns
+            check_turn_motion(a, b, from, to, 200, n);
+            check_turn_motion(b, a, from, to, 50, n);  // the roles swapped: the multipolygon turns
         }
     }
     INFO("motions " << n.motions << ", contacts " << n.contacts << " (at the start " << n.at_start << ", grazing "
@@ -241,7 +242,7 @@ TEST_CASE("rational turning: convex pairs proven apart by advancement", "[ration
     // exact placements at 200 times are apart; every motion is checked as
     // above too (the queries answer with rational_apart first).
     test_random::rng g(0x4a9a7ULL);
-    tally n;
+    turn_tally n;
     window_tally w;
     std::size_t apart = 0, tried = 0;
     for (int scene = 0; scene < test_effort::scaled(24); ++scene) {
@@ -263,7 +264,7 @@ TEST_CASE("rational turning: convex pairs proven apart by advancement", "[ration
                 CHECK_FALSE(rational_first_contact<exact_rational>(a, b, from, to).contact);
                 for (int i = 0; i <= 200; ++i) CHECK_FALSE(meet_at(a, b, from, to, double(i) / 200));
             }
-            check_motion(a, b, from, to, 50, n);
+            check_turn_motion(a, b, from, to, 50, n);
             check_against_whole_search(a, b, from, to, w);
         }
         // A thin bar turning in place beside A, long enough to sweep through
@@ -281,7 +282,7 @@ TEST_CASE("rational turning: convex pairs proven apart by advancement", "[ration
                 CHECK_FALSE(rational_first_contact<exact_rational>(a, bar, from, to).contact);
                 for (int i = 0; i <= 200; ++i) CHECK_FALSE(meet_at(a, bar, from, to, double(i) / 200));
             }
-            check_motion(a, bar, from, to, 50, n);
+            check_turn_motion(a, bar, from, to, 50, n);
             check_against_whole_search(a, bar, from, to, w);
         }
     }
@@ -372,7 +373,7 @@ TEST_CASE("rational turning: advancement's vertex step keeps B beyond A's suppor
 }
 
 TEST_CASE("rational turning: a vertex grazing an edge, sliding along one, touching at the start", "[rational_turn]") {
-    tally n;
+    turn_tally n;
     // B's vertex (3, 4) turned about the origin reaches y = 5 exactly at
     // u = 1/3 (the tangent of half of pi/2 minus its angle's half) and
     // falls back: a contact of one instant, a double root of its cubic.
@@ -384,7 +385,7 @@ TEST_CASE("rational turning: a vertex grazing an edge, sliding along one, touchi
         const pose end{0, 0, turn};
         const contact_result<exact_rational> e = first_contact<exact_rational>(lid, tri, start, end, rational);
         CHECK(e.contact == (turn > 0.65));  // u = tan(turn / 2) (one piece) reaches 1/3 when turn > 2 atan(1/3)
-        check_motion(lid, tri, start, end, 200, n);
+        check_turn_motion(lid, tri, start, end, 200, n);
     }
     CHECK(n.grazing > 0);
 
@@ -412,7 +413,7 @@ TEST_CASE("rational turning: a vertex grazing an edge, sliding along one, touchi
         CHECK(c.contact);
         CHECK(c.time == when);
         CHECK(first_contact<double>(floor, wheel, from, to, rational).contact);
-        check_motion(floor, wheel, from, to, 200, n);
+        check_turn_motion(floor, wheel, from, to, 200, n);
     }
 
     // A contact at a subnormal time, a quarter of its step above a double
@@ -440,7 +441,7 @@ TEST_CASE("rational turning: a vertex grazing an edge, sliding along one, touchi
         first_contact<exact_rational>(block, spike, {-20, 0, -0.1}, {0, 0, 0.1}, rational);
     CHECK(slide.contact);
     CHECK(slide.time == exact_rational(0.5));
-    check_motion(block, spike, {-20, 0, -0.1}, {0, 0, 0.1}, 200, n);
+    check_turn_motion(block, spike, {-20, 0, -0.1}, {0, 0, 0.1}, 200, n);
     // Touching at the start.
     const contact_result<exact_rational> touching =
         first_contact<exact_rational>(block, spike, {5, 0, 0}, {5, 3, 1}, rational);

@@ -48,7 +48,7 @@ std::string show(const tracked& t) {
 }
 
 /// What the checks saw, and the first violation.
-struct tally {
+struct bound_tally {
     std::size_t values = 0, certain = 0, uncertain = 0, non_finite = 0, violations = 0;
     std::string first;
 
@@ -106,7 +106,7 @@ tracked determinant(const point<tracked>& a, const point<tracked>& b, const poin
 }
 
 template <class NT>
-point<NT> pt(double x, double y) {
+point<NT> point_at(double x, double y) {
     return {NT(x), NT(y)};
 }
 
@@ -114,8 +114,8 @@ point<NT> pt(double x, double y) {
 
 TEST_CASE("certified: the bound contains the exact value on random chains of depth <= 6", "[certified]") {
     rng r(0xce47f1edULL);
-    tally t;
-    test_chains::chain_builder<tracked, tally> chains(r, t, leaf);
+    bound_tally t;
+    test_chains::chain_builder<tracked, bound_tally> chains(r, t, leaf);
     for (int k = 0; k < 6000; ++k) chains.run(1 + k % 6);
     INFO(t.first);
     CHECK(t.violations == 0);
@@ -130,7 +130,7 @@ TEST_CASE("certified: the bound contains the exact value on random chains of dep
 
 TEST_CASE("certified: the pose formula and the orientation determinant of posed points", "[certified]") {
     rng r(0x9053d0c7ULL);
-    tally generic, near;
+    bound_tally generic, near;
     for (int k = 0; k < 4000; ++k) {
         const int scale = scales[r.index(std::size(scales))];
         const double mag = std::ldexp(1.0, scale);
@@ -223,7 +223,8 @@ TEST_CASE("certified: uncertain signs throw", "[certified]") {
 TEST_CASE("certified: an exactly zero determinant of input doubles is 0", "[certified]") {
     // The raw determinant carries rounding bounds and cannot be 0 for sure;
     // the orientation predicate settles input doubles exactly.
-    const point<certified> a = pt<certified>(0.5, 0.25), b = pt<certified>(1.5, 0.75), c = pt<certified>(3.5, 1.75);
+    const point<certified> a = point_at<certified>(0.5, 0.25), b = point_at<certified>(1.5, 0.75),
+                           c = point_at<certified>(3.5, 1.75);
     const certified det = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
     CHECK(det.value() == 0);
     CHECK_THROWS_AS(det.sign(), uncertain_sign);
@@ -242,14 +243,16 @@ TEST_CASE("certified: an exactly zero determinant of input doubles is 0", "[cert
                      dy = g * static_cast<double>(r.index(1u << 12)) - 0.001953125;
         const double m = static_cast<double>(2 + r.index(14));
         const point<double> A{ax, ay}, B{ax + dx, ay + dy}, C{ax + m * dx, ay + m * dy};
-        const int got = orientation(pt<certified>(A.x, A.y), pt<certified>(B.x, B.y), pt<certified>(C.x, C.y));
-        REQUIRE(got ==
-                orientation(pt<exact_rational>(A.x, A.y), pt<exact_rational>(B.x, B.y), pt<exact_rational>(C.x, C.y)));
+        const int got =
+            orientation(point_at<certified>(A.x, A.y), point_at<certified>(B.x, B.y), point_at<certified>(C.x, C.y));
+        REQUIRE(got == orientation(point_at<exact_rational>(A.x, A.y), point_at<exact_rational>(B.x, B.y),
+                                   point_at<exact_rational>(C.x, C.y)));
         REQUIRE(got == 0);
         const double cy = std::nextafter(C.y, 1e9);
-        const int moved = orientation(pt<certified>(A.x, A.y), pt<certified>(B.x, B.y), pt<certified>(C.x, cy));
-        REQUIRE(moved ==
-                orientation(pt<exact_rational>(A.x, A.y), pt<exact_rational>(B.x, B.y), pt<exact_rational>(C.x, cy)));
+        const int moved =
+            orientation(point_at<certified>(A.x, A.y), point_at<certified>(B.x, B.y), point_at<certified>(C.x, cy));
+        REQUIRE(moved == orientation(point_at<exact_rational>(A.x, A.y), point_at<exact_rational>(B.x, B.y),
+                                     point_at<exact_rational>(C.x, cy)));
     }
 }
 
@@ -289,11 +292,12 @@ TEST_CASE("certified: orientation of input doubles at the ends of double's range
         {1e200, 1e-200, 1e-200, 1e200, 0, 0},
     };
     for (const triple& c : cases) {
-        const int want =
-            orientation(pt<exact_rational>(c.ax, c.ay), pt<exact_rational>(c.bx, c.by), pt<exact_rational>(c.cx, c.cy));
+        const int want = orientation(point_at<exact_rational>(c.ax, c.ay), point_at<exact_rational>(c.bx, c.by),
+                                     point_at<exact_rational>(c.cx, c.cy));
         int got = 2;  // uncertain: acceptable, the exact fallback answers it
         try {
-            got = orientation(pt<certified>(c.ax, c.ay), pt<certified>(c.bx, c.by), pt<certified>(c.cx, c.cy));
+            got = orientation(point_at<certified>(c.ax, c.ay), point_at<certified>(c.bx, c.by),
+                              point_at<certified>(c.cx, c.cy));
         } catch (const uncertain_sign&) {}
         INFO("points (" << c.ax << ", " << c.ay << "), (" << c.bx << ", " << c.by << "), (" << c.cx << ", " << c.cy
                         << "): exact " << want << ", certified " << got);

@@ -33,22 +33,28 @@ using namespace influence2d;
 
 /// A value in double_word and the exact rational of the same operations
 /// (none when a divisor was exactly 0).
-struct tracked {
+struct word_tracked {
     double_word w;
     exact_rational x;
     bool defined = true;
 };
 
-tracked leaf(double v) { return {double_word(v), exact_rational(v)}; }
-tracked operator+(const tracked& a, const tracked& b) { return {a.w + b.w, a.x + b.x, a.defined && b.defined}; }
-tracked operator-(const tracked& a, const tracked& b) { return {a.w - b.w, a.x - b.x, a.defined && b.defined}; }
-tracked operator*(const tracked& a, const tracked& b) { return {a.w * b.w, a.x * b.x, a.defined && b.defined}; }
-tracked operator/(const tracked& a, const tracked& b) {
+word_tracked word_leaf(double v) { return {double_word(v), exact_rational(v)}; }
+word_tracked operator+(const word_tracked& a, const word_tracked& b) {
+    return {a.w + b.w, a.x + b.x, a.defined && b.defined};
+}
+word_tracked operator-(const word_tracked& a, const word_tracked& b) {
+    return {a.w - b.w, a.x - b.x, a.defined && b.defined};
+}
+word_tracked operator*(const word_tracked& a, const word_tracked& b) {
+    return {a.w * b.w, a.x * b.x, a.defined && b.defined};
+}
+word_tracked operator/(const word_tracked& a, const word_tracked& b) {
     if (!b.defined || CGAL::is_zero(b.x)) return {a.w / b.w, exact_rational(0), false};
     return {a.w / b.w, a.x / b.x, a.defined};
 }
 
-std::string show(const tracked& t) {
+std::string show_word(const word_tracked& t) {
     std::ostringstream o;
     o.precision(17);
     o << "hi " << t.w.hi() << ", lo " << t.w.lo() << ", bound " << t.w.error() << ", exact ~"
@@ -57,19 +63,19 @@ std::string show(const tracked& t) {
 }
 
 /// What the checks saw, and the first violation.
-struct tally {
+struct word_tally {
     std::size_t values = 0, known = 0, certain = 0, rounded = 0, unknown = 0, violations = 0;
     std::string first;
 
-    void fail(const std::string& what, const tracked& t) {
-        if (violations++ == 0) first = what + ": " + show(t);
+    void fail(const std::string& what, const word_tracked& t) {
+        if (violations++ == 0) first = what + ": " + show_word(t);
     }
 
     /// For a known value: the bound holds (decided in exact rationals), the
     /// words are normalised, a certain sign is the exact sign (sign() agrees
     /// with try_sign), and a certain rounding is the nearest double. An
     /// unknown value has no certain sign and no rounding.
-    void check(const tracked& t) {
+    void check(const word_tracked& t) {
         ++values;
         int s = 0;
         const bool is_certain = t.w.try_sign(s);
@@ -110,7 +116,7 @@ struct tally {
 
 using test_random::rng;
 
-point<tracked> pose_point(const rotation_pose& t, const point<double>& q) {
+point<word_tracked> word_pose_point(const rotation_pose& t, const point<double>& q) {
     const point<double_word> w = t.apply<double_word>(q);
     const point<exact_rational> x = t.apply<exact_rational>(q);
     return {{w.x, x.x}, {w.y, x.y}};
@@ -120,8 +126,8 @@ point<tracked> pose_point(const rotation_pose& t, const point<double>& q) {
 
 TEST_CASE("double_word: the bound contains the exact value on random chains of +, -, * and /", "[double_word]") {
     rng r(0xd0b1e3c7ULL);
-    tally t;
-    test_chains::chain_builder<tracked, tally, true> chains(r, t, leaf);
+    word_tally t;
+    test_chains::chain_builder<word_tracked, word_tally, true> chains(r, t, word_leaf);
     for (int k = 0; k < 6000; ++k) chains.run(1 + k % 6);
     INFO(t.first);
     CHECK(t.violations == 0);
@@ -136,29 +142,29 @@ TEST_CASE("double_word: the bound contains the exact value on random chains of +
 
 TEST_CASE("double_word: distances, projections and crossings of posed points, near degeneracy", "[double_word]") {
     rng r(0x5e9a7d11ULL);
-    tally t;
+    word_tally t;
     for (int k = 0; k < 3000; ++k) {
         const int scale = std::vector<int>{-150, -20, 0, 20, 150}[r.index(5)];
         const double mag = std::ldexp(1.0, scale);
         const rotation_pose q(pose{mag * r.signed_unit(), mag * r.signed_unit(), 7 * r.signed_unit()});
         const point<double> b0{mag * r.signed_unit(), mag * r.signed_unit()};
         const point<double> b1{mag * r.signed_unit(), mag * r.signed_unit()};
-        const point<tracked> u = pose_point(q, b0), v = pose_point(q, b1);
+        const point<word_tracked> u = word_pose_point(q, b0), v = word_pose_point(q, b1);
         // A's edge passing near the posed point u, down to 2^-60 of the
         // coordinates: the cancellation the bound must follow.
         const double gap = std::ldexp(1.0, -static_cast<int>(r.index(60)));
         const point<double> a0{CGAL::to_double(u.x.x) + gap * mag, CGAL::to_double(u.y.x) - mag * r.unit()};
         const point<double> a1{a0.x + mag * r.signed_unit(), a0.y + mag * (1 + r.unit())};
-        const point<tracked> a{leaf(a0.x), leaf(a0.y)}, b{leaf(a1.x), leaf(a1.y)};
-        const tracked abx = b.x - a.x, aby = b.y - a.y, apx = u.x - a.x, apy = u.y - a.y;
-        const tracked dot = abx * apx + aby * apy, length2 = abx * abx + aby * aby, cross = abx * apy - aby * apx;
-        const tracked f = dot / length2;
-        for (const tracked& x : {abx, apx, apy, dot, length2, cross, cross * cross / length2, f, a.x + f * abx,
-                                 a.y + f * aby, apx * apx + apy * apy})
+        const point<word_tracked> a{word_leaf(a0.x), word_leaf(a0.y)}, b{word_leaf(a1.x), word_leaf(a1.y)};
+        const word_tracked abx = b.x - a.x, aby = b.y - a.y, apx = u.x - a.x, apy = u.y - a.y;
+        const word_tracked dot = abx * apx + aby * apy, length2 = abx * abx + aby * aby, cross = abx * apy - aby * apx;
+        const word_tracked f = dot / length2;
+        for (const word_tracked& x : {abx, apx, apy, dot, length2, cross, cross * cross / length2, f, a.x + f * abx,
+                                      a.y + f * aby, apx * apx + apy * apy})
             t.check(x);
         // The crossing of [a, b] and [u, v]: u + (c_u / (c_u - c_v))(v - u).
-        const tracked cu = abx * (u.y - a.y) - aby * (u.x - a.x), cv = abx * (v.y - a.y) - aby * (v.x - a.x);
-        const tracked g = cu / (cu - cv);
+        const word_tracked cu = abx * (u.y - a.y) - aby * (u.x - a.x), cv = abx * (v.y - a.y) - aby * (v.x - a.x);
+        const word_tracked g = cu / (cu - cv);
         t.check(u.x + g * (v.x - u.x));
         t.check(u.y + g * (v.y - u.y));
     }
@@ -210,7 +216,7 @@ TEST_CASE("double_word: exact operations, the kept range, and rounding at a midp
 TEST_CASE("double_word: sum_of_products bounds a b + c d + t, with cancellation and at the kept range's ends",
           "[double_word]") {
     rng r(0x50f1d3a9ULL);
-    tally t;
+    word_tally t;
     std::size_t fell_back = 0;
     for (int k = 0; k < 20000; ++k) {
         const auto at = [&](int e) { return std::ldexp(r.signed_unit(), e); };

@@ -32,13 +32,13 @@ std::pair<exact4, exact4> exact_halves(const exact4& x) {
     return {{x[0], b01, b012, mid}, {mid, b123, b23, x[3]}};
 }
 
-struct tally {
+struct halving_tally {
     std::size_t nodes = 0, decided = 0;
 };
 
 /// Checks b against the exact coefficients x, then their halves, `depth`
 /// levels down.
-void check_node(const bounded_bernstein& b, const exact4& x, int depth, tally& t) {
+void check_node(const bounded_bernstein& b, const exact4& x, int depth, halving_tally& t) {
     ++t.nodes;
     const exact_rational e(b.error());
     for (std::size_t i = 0; i < 4; ++i) {
@@ -61,7 +61,7 @@ void check_node(const bounded_bernstein& b, const exact4& x, int depth, tally& t
 
 TEST_CASE("bernstein signs: halving in double keeps every exact coefficient within the bound", "[predicates]") {
     test_random::rng g(0xb3u);
-    tally t;
+    halving_tally t;
     const int cases = test_effort::scaled(3000);
     for (int k = 0; k < cases; ++k) {
         // A scale from the subnormals (2^-1074 is the least double) to 2^1000.

@@ -35,11 +35,11 @@ using test_exact::Q;
 
 namespace {
 
-const double inf = std::numeric_limits<double>::infinity();
+const double infinity = std::numeric_limits<double>::infinity();
 const double nan_value = std::numeric_limits<double>::quiet_NaN();
 
 /// A double of magnitude about 2^e, either sign.
-double at_scale(test_random::rng& r, int e) { return std::ldexp(r.signed_unit(), e); }
+double filter_scale(test_random::rng& r, int e) { return std::ldexp(r.signed_unit(), e); }
 
 /// The exact side value (b - a) x (q - a).
 Q exact_side(const point<double>& a, const point<double>& b, const point<double>& q) {
@@ -52,8 +52,10 @@ int sign_of(const Q& x) { return static_cast<int>(CGAL::sign(x)); }
 point<double> near_line(test_random::rng& r, const point<double>& a, const point<double>& b) {
     const double f = r.uniform(-0.5, 1.5);
     point<double> q{a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)};
-    for (int k = static_cast<int>(r.index(4)); k > 0; --k) q.y = std::nextafter(q.y, r.chance(0.5) ? inf : -inf);
-    for (int k = static_cast<int>(r.index(3)); k > 0; --k) q.x = std::nextafter(q.x, r.chance(0.5) ? inf : -inf);
+    for (int k = static_cast<int>(r.index(4)); k > 0; --k)
+        q.y = std::nextafter(q.y, r.chance(0.5) ? infinity : -infinity);
+    for (int k = static_cast<int>(r.index(3)); k > 0; --k)
+        q.x = std::nextafter(q.x, r.chance(0.5) ? infinity : -infinity);
     return q;
 }
 
@@ -70,10 +72,10 @@ double atan2_error(double y, double x, double t) {
     return e;
 }
 
-int count(int n) { return test_effort::scaled(n); }
+int filter_count(int n) { return test_effort::scaled(n); }
 
 /// A count of cases that must be reached, scaled like the samples drawn.
-std::size_t at_least(int n) { return static_cast<std::size_t>(count(n)); }
+std::size_t filter_at_least(int n) { return static_cast<std::size_t>(filter_count(n)); }
 
 }  // namespace
 
@@ -90,9 +92,10 @@ TEST_CASE("filters: square_safe_low and square_safe_high keep squares and their 
     // magnitude, inside the safe range (squares) and outside it (hypot).
     test_random::rng r(1);
     std::size_t inside = 0, outside = 0;
-    for (int k = 0; k < count(20000); ++k) {
+    for (int k = 0; k < filter_count(20000); ++k) {
         const int e = static_cast<int>(r.index(2090)) - 1070;
-        const double x = at_scale(r, e), y = r.chance(0.2) ? 0.0 : at_scale(r, e - static_cast<int>(r.index(60)));
+        const double x = filter_scale(r, e),
+                     y = r.chance(0.2) ? 0.0 : filter_scale(r, e - static_cast<int>(r.index(60)));
         const double f = filter_length(x, y);
         const double big = std::max(std::fabs(x), std::fabs(y));
         (big > square_safe_low && big < square_safe_high ? inside : outside) += 1;
@@ -103,8 +106,8 @@ TEST_CASE("filters: square_safe_low and square_safe_high keep squares and their 
         CHECK(at_most_root(Q(f) * (1 - Q(0x1p-51)) - tiny, l2));
         CHECK(at_least_root(Q(f) * (1 + Q(0x1p-51)) + tiny, l2));
     }
-    CHECK(inside > at_least(1000));
-    CHECK(outside > at_least(1000));
+    CHECK(inside > filter_at_least(1000));
+    CHECK(outside > filter_at_least(1000));
     // Exact lengths at the ends of the range.
     CHECK(filter_length(3 * 0x1p-1074, 4 * 0x1p-1074) == 5 * 0x1p-1074);
     CHECK(filter_length(0x1.8p1000, 0x1p1001) == 0x1.4p1001);  // 3, 4, 5 times 2^999
@@ -112,7 +115,7 @@ TEST_CASE("filters: square_safe_low and square_safe_high keep squares and their 
 
 TEST_CASE("filters: upper_sqrt is strictly above the root, by sqrt_widening and an ulp at most", "[filters]") {
     test_random::rng r(2);
-    for (int k = 0; k < count(20000); ++k) {
+    for (int k = 0; k < filter_count(20000); ++k) {
         // x = (hi + lo) 2^e with 64 significant bits, e within +-2000 (a
         // long double beyond double's range, whose root is in it).
         const double hi = r.uniform(1, 2), lo = r.chance(0.5) ? std::ldexp(r.signed_unit(), -60) : 0.0;
@@ -129,8 +132,8 @@ TEST_CASE("filters: upper_sqrt is strictly above the root, by sqrt_widening and 
     // Named cases: a perfect square, zero, and what is not a root.
     CHECK(upper_sqrt(4.0L) > 2);
     CHECK(upper_sqrt(0.0L) > 0);
-    CHECK(upper_sqrt(std::numeric_limits<long double>::infinity()) == inf);
-    CHECK(upper_sqrt(0x1p5000L) == inf);  // root 2^2500: beyond double
+    CHECK(upper_sqrt(std::numeric_limits<long double>::infinity()) == infinity);
+    CHECK(upper_sqrt(0x1p5000L) == infinity);  // root 2^2500: beyond double
     CHECK(std::isnan(upper_sqrt(-1.0L)));
     CHECK(std::isnan(upper_sqrt(std::numeric_limits<long double>::quiet_NaN())));
     // The constant is far above the rounding it covers: a long double root
@@ -151,25 +154,25 @@ TEST_CASE("filters: pose_scale_widening covers sqrt(c^2 + s^2) of the rounded co
         CHECK(n < above);
         off_one += n != 1 ? 1 : 0;
     };
-    for (int k = 0; k < count(20000); ++k) check(at_scale(r, static_cast<int>(r.index(40)) - 20));
+    for (int k = 0; k < filter_count(20000); ++k) check(filter_scale(r, static_cast<int>(r.index(40)) - 20));
     // Near the multiples of pi/4, where one of c, s is tiny or both equal;
     // huge angles, whose reduction is the library's.
     for (int k = -64; k <= 64; ++k) {
         const double t = k * 0.78539816339744830962;
         check(t);
-        check(std::nextafter(t, inf));
-        check(std::nextafter(t, -inf));
+        check(std::nextafter(t, infinity));
+        check(std::nextafter(t, -infinity));
     }
     for (double t : {1e300, -1e300, 1e22, 0x1p1023, 3.0e-300, 0.0}) check(t);
-    CHECK(off_one > at_least(100));  // c^2 + s^2 is not 1 in general: the widening is needed
+    CHECK(off_one > filter_at_least(100));  // c^2 + s^2 is not 1 in general: the widening is needed
 }
 
 TEST_CASE("filters: atan2_widening covers std::atan2's error on doubles", "[filters]") {
     test_random::rng r(4);
     double worst = 0;
-    for (int k = 0; k < count(20000); ++k) {
+    for (int k = 0; k < filter_count(20000); ++k) {
         const int e = static_cast<int>(r.index(200)) - 100;
-        double x = at_scale(r, e), y = at_scale(r, e + static_cast<int>(r.index(80)) - 40);
+        double x = filter_scale(r, e), y = filter_scale(r, e + static_cast<int>(r.index(80)) - 40);
         if (r.chance(0.1)) x = 0;
         if (r.chance(0.1)) y = std::ldexp(x, -60);  // near an axis
         if (x == 0 && y == 0) continue;
@@ -193,7 +196,7 @@ TEST_CASE("filters: direction_trust_factor keeps a trusted offset's direction wi
     test_random::rng r(5);
     const double limit = std::asin(2 / direction_trust_factor);
     CHECK(limit < 2.1e-3);
-    for (int k = 0; k < count(5000); ++k) {
+    for (int k = 0; k < filter_count(5000); ++k) {
         const double scale = std::ldexp(1.0, static_cast<int>(r.index(100)) - 50);
         const double bound = slack * scale;
         // At the threshold, in a random direction.
@@ -214,11 +217,12 @@ TEST_CASE("filters: direction_trust_factor keeps a trusted offset's direction wi
 
 TEST_CASE("filters: segment_distance is the distance within its rounding, at any scale", "[filters]") {
     test_random::rng r(6);
-    for (int k = 0; k < count(20000); ++k) {
+    for (int k = 0; k < filter_count(20000); ++k) {
         const int e = static_cast<int>(r.index(2000)) - 1000;
-        const point<double> a{at_scale(r, e), at_scale(r, e)};
-        const point<double> b = r.chance(0.1) ? a : point<double>{at_scale(r, e), at_scale(r, e)};
-        const point<double> p = r.chance(0.3) ? near_line(r, a, b) : point<double>{at_scale(r, e), at_scale(r, e)};
+        const point<double> a{filter_scale(r, e), filter_scale(r, e)};
+        const point<double> b = r.chance(0.1) ? a : point<double>{filter_scale(r, e), filter_scale(r, e)};
+        const point<double> p =
+            r.chance(0.3) ? near_line(r, a, b) : point<double>{filter_scale(r, e), filter_scale(r, e)};
         const double d = segment_distance(p, a, b);
         INFO("scale 2^" << e);
         REQUIRE(std::isfinite(d));
@@ -237,7 +241,7 @@ TEST_CASE("filters: segment_distance is the distance within its rounding, at any
     //   a-----p-----b  p on the segment
     CHECK(segment_distance({1, 1}, {0, 0}, {2, 2}) == 0);
     //   a <- 2^1024 -> b: the difference overflows
-    CHECK(segment_distance({0, 0}, {-DBL_MAX, 0}, {DBL_MAX, 0}) == inf);
+    CHECK(segment_distance({0, 0}, {-DBL_MAX, 0}, {DBL_MAX, 0}) == infinity);
 }
 
 TEST_CASE("filters: may_be_within never drops a point within reach", "[filters]") {
@@ -247,15 +251,16 @@ TEST_CASE("filters: may_be_within never drops a point within reach", "[filters]"
     // double to D, moved a few ulps either way.
     test_random::rng r(7);
     std::size_t kept = 0, dropped = 0;
-    for (int k = 0; k < count(20000); ++k) {
+    for (int k = 0; k < filter_count(20000); ++k) {
         const int e = static_cast<int>(r.index(2000)) - 1000;
-        const point<double> a{at_scale(r, e), at_scale(r, e)};
-        const point<double> b = r.chance(0.1) ? a : point<double>{at_scale(r, e), at_scale(r, e)};
-        const point<double> p = r.chance(0.3) ? near_line(r, a, b) : point<double>{at_scale(r, e), at_scale(r, e)};
+        const point<double> a{filter_scale(r, e), filter_scale(r, e)};
+        const point<double> b = r.chance(0.1) ? a : point<double>{filter_scale(r, e), filter_scale(r, e)};
+        const point<double> p =
+            r.chance(0.3) ? near_line(r, a, b) : point<double>{filter_scale(r, e), filter_scale(r, e)};
         const Q d2 = test_exact::squared_distance(p, a, b);
         double reach = std::sqrt(CGAL::to_double(d2 * pow2(-2 * e))) * std::ldexp(1.0, e);
         for (int s = static_cast<int>(r.index(7)) - 3; s != 0; s += s > 0 ? -1 : 1)
-            reach = std::nextafter(reach, s > 0 ? inf : 0.0);
+            reach = std::nextafter(reach, s > 0 ? infinity : 0.0);
         if (r.chance(0.2)) reach *= r.uniform(0, 2);
         const double margin =
             0x1p-45 * (std::fabs(b.x - a.x) + std::fabs(b.y - a.y) + std::fabs(p.x - a.x) + std::fabs(p.y - a.y)) +
@@ -268,8 +273,8 @@ TEST_CASE("filters: may_be_within never drops a point within reach", "[filters]"
         }
         (answer ? kept : dropped) += 1;
     }
-    CHECK(kept > at_least(1000));
-    CHECK(dropped > at_least(1000));
+    CHECK(kept > filter_at_least(1000));
+    CHECK(dropped > filter_at_least(1000));
     // Named cases.
     //   a-----p-----b  p on the segment: within reach 0
     CHECK(may_be_within({1, 1}, {0, 0}, {2, 2}, 0));
@@ -289,10 +294,11 @@ TEST_CASE("filters: certain_side answers only sides that exact arithmetic confir
     // many scales, half of them within a few ulps of the line.
     test_random::rng r(8);
     std::size_t answered = 0, refused = 0;
-    for (int k = 0; k < count(40000); ++k) {
+    for (int k = 0; k < filter_count(40000); ++k) {
         const int e = static_cast<int>(r.index(1600)) - 800;
-        const point<double> a{at_scale(r, e), at_scale(r, e)}, b{at_scale(r, e), at_scale(r, e)};
-        const point<double> q = r.chance(0.5) ? near_line(r, a, b) : point<double>{at_scale(r, e), at_scale(r, e)};
+        const point<double> a{filter_scale(r, e), filter_scale(r, e)}, b{filter_scale(r, e), filter_scale(r, e)};
+        const point<double> q =
+            r.chance(0.5) ? near_line(r, a, b) : point<double>{filter_scale(r, e), filter_scale(r, e)};
         const double dx = b.x - a.x, dy = b.y - a.y;
         double slack = 0;
         if (r.chance(0.5)) slack = std::ldexp(r.unit(), 2 * e - static_cast<int>(r.index(40)));
@@ -310,8 +316,8 @@ TEST_CASE("filters: certain_side answers only sides that exact arithmetic confir
         const Q given = Q(dx) * (Q(q.y) - a.y) - Q(dy) * (Q(q.x) - a.x);
         CHECK(sign_of(given) == side);
     }
-    CHECK(answered > at_least(10000));
-    CHECK(refused > at_least(1000));
+    CHECK(answered > filter_at_least(10000));
+    CHECK(refused > filter_at_least(1000));
 
     // Named cases.
     //   a-----q-----b   q on the line: no side
@@ -339,10 +345,10 @@ TEST_CASE("filters: segments_may_meet never drops segments that meet, with or wi
     std::size_t meeting = 0, apart = 0;
 
     // e = 0: the doubles are the segments; CGAL's exact do_intersect decides.
-    for (int k = 0; k < count(20000); ++k) {
+    for (int k = 0; k < filter_count(20000); ++k) {
         const int e = static_cast<int>(r.index(1200)) - 600;
-        const point<double> a{at_scale(r, e), at_scale(r, e)}, b{at_scale(r, e), at_scale(r, e)};
-        point<double> u{at_scale(r, e), at_scale(r, e)}, v{at_scale(r, e), at_scale(r, e)};
+        const point<double> a{filter_scale(r, e), filter_scale(r, e)}, b{filter_scale(r, e), filter_scale(r, e)};
+        point<double> u{filter_scale(r, e), filter_scale(r, e)}, v{filter_scale(r, e), filter_scale(r, e)};
         if (r.chance(0.5)) u = near_line(r, a, b);     // u at the line of [a, b], often on it
         if (r.chance(0.2)) v = near_line(r, a, b);     // both: nearly collinear
         if (r.chance(0.1)) u = r.chance(0.5) ? a : b;  // a shared end
@@ -355,23 +361,23 @@ TEST_CASE("filters: segments_may_meet never drops segments that meet, with or wi
         }
         apart += answer ? 0 : 1;
     }
-    CHECK(meeting > at_least(1000));
-    CHECK(apart > at_least(1000));
+    CHECK(meeting > filter_at_least(1000));
+    CHECK(apart > filter_at_least(1000));
 
     // e > 0: exact segments whose ends lie within e of the doubles on each
     // coordinate, pushed towards each other by up to e: whenever those meet,
     // the filter must answer true.
     meeting = apart = 0;
-    for (int k = 0; k < count(20000); ++k) {
+    for (int k = 0; k < filter_count(20000); ++k) {
         const int s = static_cast<int>(r.index(1200)) - 600;
         const double scale = std::ldexp(1.0, s);
         const double e = scale * std::ldexp(1.0, -static_cast<int>(r.index(30)) - 2);
-        const point<double> a{at_scale(r, s), at_scale(r, s)}, b{at_scale(r, s), at_scale(r, s)};
+        const point<double> a{filter_scale(r, s), filter_scale(r, s)}, b{filter_scale(r, s), filter_scale(r, s)};
         // v near the line of [a, b], a few e off it; u away from it.
         const point<double> on = near_line(r, a, b);
         const double gap = r.uniform(0, 4) * e;
         const point<double> v{on.x + (r.chance(0.5) ? gap : -gap), on.y + (r.chance(0.5) ? gap : -gap)};
-        const point<double> u{v.x + at_scale(r, s), v.y + at_scale(r, s)};
+        const point<double> u{v.x + filter_scale(r, s), v.y + filter_scale(r, s)};
         // Each end moved within e on each coordinate (k/8 of e, exactly).
         const auto moved = [&](const point<double>& p) {
             return test_exact::exact_point(Q(p.x) + Q(e) * Q(static_cast<int>(r.index(17)) - 8) / 8,
@@ -386,8 +392,8 @@ TEST_CASE("filters: segments_may_meet never drops segments that meet, with or wi
         }
         apart += answer ? 0 : 1;
     }
-    CHECK(meeting > at_least(500));
-    CHECK(apart > at_least(1000));
+    CHECK(meeting > filter_at_least(500));
+    CHECK(apart > filter_at_least(1000));
 
     // Named cases, e = 0.
     //   a-----b=u
@@ -422,15 +428,15 @@ TEST_CASE("filters: segments_certainly_cross answers only segments whose every e
     test_random::rng r(19);
     using test_exact::exact_segment;
     std::size_t crossing = 0, unsure = 0;
-    for (int k = 0; k < count(20000); ++k) {
+    for (int k = 0; k < filter_count(20000); ++k) {
         const int s = static_cast<int>(r.index(1200)) - 600;
         const double scale = std::ldexp(1.0, s);
         const double e = r.chance(0.2) ? 0 : scale * std::ldexp(1.0, -static_cast<int>(r.index(40)) - 2);
-        const point<double> a{at_scale(r, s), at_scale(r, s)}, b{at_scale(r, s), at_scale(r, s)};
+        const point<double> a{filter_scale(r, s), filter_scale(r, s)}, b{filter_scale(r, s), filter_scale(r, s)};
         // u and v about the line of [a, b], a few e off it or far from it;
         // sometimes an end of [u, v] on [a, b] itself.
         const point<double> on = near_line(r, a, b);
-        const double gap = r.chance(0.5) ? r.uniform(0, 8) * e : at_scale(r, s);
+        const double gap = r.chance(0.5) ? r.uniform(0, 8) * e : filter_scale(r, s);
         const point<double> u{on.x + gap, on.y + (r.chance(0.5) ? gap : -gap)};
         const point<double> v = r.chance(0.1) ? on : point<double>{2 * on.x - u.x, 2 * on.y - u.y};
         const bool answer = segments_certainly_cross(a, b, u, v, e);
@@ -451,8 +457,8 @@ TEST_CASE("filters: segments_certainly_cross answers only segments whose every e
             CHECK(CGAL::do_intersect(exact_segment(moved(a), moved(b)), exact_segment(moved(u), moved(v))));
         }
     }
-    CHECK(crossing > at_least(1000));
-    CHECK(unsure > at_least(1000));
+    CHECK(crossing > filter_at_least(1000));
+    CHECK(unsure > filter_at_least(1000));
     // Named cases: a clear cross; a T (an end on the other segment) is not
     // certain; parallel; a cross closer than the slack for e = 0.3.
     CHECK(segments_certainly_cross({0, 0}, {2, 0}, {1, -1}, {1, 1}, 0));
@@ -479,12 +485,12 @@ TEST_CASE("filters: certainly_farther answers only points whose every exact vers
         const Q gx = gap(p.x, q.x), gy = gap(p.y, q.y);
         return gx * gx + gy * gy;
     };
-    for (int k = 0; k < count(20000); ++k) {
+    for (int k = 0; k < filter_count(20000); ++k) {
         // Scales from subnormal to near the top of the range.
         const int s = static_cast<int>(r.index(2000)) - 1070;
         // q sometimes at a smaller scale: p - q then rounds.
         const int t = r.chance(0.5) ? s : s - static_cast<int>(r.index(30));
-        const point<double> p{at_scale(r, s), at_scale(r, s)}, q{at_scale(r, t), at_scale(r, t)};
+        const point<double> p{filter_scale(r, s), filter_scale(r, s)}, q{filter_scale(r, t), filter_scale(r, t)};
         const double d = std::hypot(p.x - q.x, p.y - q.y);
         const double e = r.chance(0.3) ? 0 : std::ldexp(d, -static_cast<int>(r.index(60)) - 2);
         // r at the edge (d - 3e), near it (less up to 2^-40 of it), each then
@@ -494,7 +500,7 @@ TEST_CASE("filters: certainly_farther answers only points whose every exact vers
                        : where == 1 ? (d - 3 * e) * (1 - std::ldexp(r.unit(), -40))
                                     : d * r.unit();
         for (int n = static_cast<int>(r.index(9)) - 4; n != 0; n += n > 0 ? -1 : 1)
-            reach = std::nextafter(reach, n > 0 ? inf : -inf);
+            reach = std::nextafter(reach, n > 0 ? infinity : -infinity);
         if (!(reach >= 0) || !std::isfinite(d)) continue;
         const bool answer = certainly_farther(p, q, reach, e);
         if (!answer) {
@@ -506,9 +512,9 @@ TEST_CASE("filters: certainly_farther answers only points whose every exact vers
         INFO("scale 2^" << s << ", e " << e << ", r " << reach);
         CHECK(least2(p, q, e) > Q(reach) * Q(reach));
     }
-    CHECK(farther > at_least(1000));
-    CHECK(unsure > at_least(1000));
-    CHECK(close_calls > at_least(100));  // answers within 2^-39 of the edge were checked
+    CHECK(farther > filter_at_least(1000));
+    CHECK(unsure > filter_at_least(1000));
+    CHECK(close_calls > filter_at_least(100));  // answers within 2^-39 of the edge were checked
     // Named cases: points 3 apart, r = 2 clear, r = 3 not; e = 0.2 leaves
     // 2.6 > 2, e = 0.4 leaves 3.2 (r + 3e) over 3; NaN and overflow answer
     // false.
@@ -524,16 +530,16 @@ TEST_CASE("filters: certainly_farther answers only points whose every exact vers
 TEST_CASE("filters: box_may_be_near_line never drops a box within g of the line", "[filters]") {
     test_random::rng r(10);
     std::size_t near = 0, far = 0;
-    for (int k = 0; k < count(20000); ++k) {
+    for (int k = 0; k < filter_count(20000); ++k) {
         const int s = static_cast<int>(r.index(1200)) - 600;
-        const double x0 = at_scale(r, s), y0 = at_scale(r, s);
+        const double x0 = filter_scale(r, s), y0 = filter_scale(r, s);
         const box bx{x0, y0, x0 + std::ldexp(r.unit(), s - static_cast<int>(r.index(10))),
                      y0 + std::ldexp(r.unit(), s - static_cast<int>(r.index(10)))};
-        point<double> u{at_scale(r, s), at_scale(r, s)}, v{at_scale(r, s), at_scale(r, s)};
+        point<double> u{filter_scale(r, s), filter_scale(r, s)}, v{filter_scale(r, s), filter_scale(r, s)};
         if (r.chance(0.3)) {
             // The line just past a corner.
             const point<double> c{r.chance(0.5) ? bx.min_x : bx.max_x, r.chance(0.5) ? bx.min_y : bx.max_y};
-            u = {c.x + at_scale(r, s), c.y + at_scale(r, s)};
+            u = {c.x + filter_scale(r, s), c.y + filter_scale(r, s)};
             v = near_line(r, u, c);
         }
         const double g = r.chance(0.2) ? 0.0 : std::ldexp(r.unit(), s - static_cast<int>(r.index(20)));
@@ -561,8 +567,8 @@ TEST_CASE("filters: box_may_be_near_line never drops a box within g of the line"
         }
         far += answer ? 0 : 1;
     }
-    CHECK(near > at_least(1000));
-    CHECK(far > at_least(1000));
+    CHECK(near > filter_at_least(1000));
+    CHECK(far > filter_at_least(1000));
     // Named cases.
     //   +--+  |          the box [0,1]^2 and the line x = 2: 1 apart
     //   |  |  |
@@ -593,12 +599,12 @@ Q to_exact(const exact_rational& x) { return x; }
 template <class NT>
 void check_posing_margin(int lowest, int highest, std::uint64_t seed) {
     test_random::rng r(seed);
-    for (int k = 0; k < count(5000); ++k) {
+    for (int k = 0; k < filter_count(5000); ++k) {
         const int e = lowest + static_cast<int>(r.index(static_cast<std::size_t>(highest - lowest + 1)));
         const int t =
             r.chance(0.5) ? e : lowest + static_cast<int>(r.index(static_cast<std::size_t>(highest - lowest + 1)));
-        const point<double> q{at_scale(r, e), at_scale(r, e)};
-        const pose p{at_scale(r, t), at_scale(r, t), r.uniform(-10, 10)};
+        const point<double> q{filter_scale(r, e), filter_scale(r, e)};
+        const pose p{filter_scale(r, t), filter_scale(r, t), r.uniform(-10, 10)};
         const rotation_pose rp(p);
         const point<double> in_double = rp.apply<double>(q);
         const point<NT> in_nt = rp.apply<NT>(q);

@@ -17,7 +17,7 @@ using namespace influence2d;
 using test_shapes::pt;
 
 namespace {
-using exact_kernel = CGAL::Cartesian<exact_rational>;
+using rational_kernel = CGAL::Cartesian<exact_rational>;
 }  // namespace
 
 TEMPLATE_TEST_CASE("orientation: left, right, collinear", "[orientation]", INFLUENCE2D_NUMBER_TYPES) {
@@ -32,7 +32,7 @@ TEST_CASE("orientation: the precision cliff, exact type against double", "[orien
     // The exact sign comes from CGAL's own kernel on exact rationals, not from
     // the library's determinant.
     const auto exact_sign = [](double ax, double ay, double bx, double by, double cx, double cy) {
-        using P = exact_kernel::Point_2;
+        using P = rational_kernel::Point_2;
         return static_cast<int>(CGAL::orientation(P(ax, ay), P(bx, by), P(cx, cy)));
     };
     const auto both = [](auto ax, auto ay, auto bx, auto by, auto cx, auto cy, auto type) {
@@ -101,7 +101,7 @@ TEST_CASE("orientation<double> agrees with the exact sign wherever the determina
     // Random points at many scales, half of them nearly collinear (c on the
     // line a-b, then moved a few ulps), so that both sides of the bound occur.
     test_random::rng r(20260402);
-    using P = exact_kernel::Point_2;
+    using P = rational_kernel::Point_2;
     const exact_rational eight_u(0x1p-50);
     std::size_t far = 0, near = 0;
     for (int k = 0; k < 20000; ++k) {
@@ -152,7 +152,7 @@ TEST_CASE("orientation_of_doubles: the exact sign on nearly collinear and tiny i
     // sum; both ways the answer is exact. Some calls must be settled by each
     // way for the test to show both.
     test_random::rng g(77);
-    const exact_kernel::Orientation_2 exact_orientation;
+    const rational_kernel::Orientation_2 exact_orientation;
     std::size_t by_filter = 0, by_sum = 0;
     for (int k = 0; k < 20000; ++k) {
         const int e = -1074 + static_cast<int>(g.index(1600));
@@ -167,7 +167,7 @@ TEST_CASE("orientation_of_doubles: the exact sign on nearly collinear and tiny i
         if (!std::isfinite(bx) || !std::isfinite(by) || !std::isfinite(cx) || !std::isfinite(cy)) continue;
         const int got = orientation_of_doubles(ax, ay, bx, by, cx, cy);
         const int want = static_cast<int>(exact_orientation(
-            exact_kernel::Point_2(ax, ay), exact_kernel::Point_2(bx, by), exact_kernel::Point_2(cx, cy)));
+            rational_kernel::Point_2(ax, ay), rational_kernel::Point_2(bx, by), rational_kernel::Point_2(cx, cy)));
         REQUIRE(got == want);
         const double left = (bx - ax) * (cy - ay), right = (by - ay) * (cx - ax);
         const double bound = orientation_relative_bound * (std::fabs(left) + std::fabs(right)) + orientation_underflow;

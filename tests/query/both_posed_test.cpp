@@ -26,7 +26,7 @@ namespace {
 
 using namespace influence2d;
 
-std::string describe(const pose& pa, const pose& pb) {
+std::string describe_both_posed(const pose& pa, const pose& pb) {
     std::ostringstream s;
     s.precision(17);
     s << "A posed " << pa.tx << ',' << pa.ty << ',' << pa.theta << ", B posed " << pb.tx << ',' << pb.ty << ','
@@ -35,7 +35,7 @@ std::string describe(const pose& pa, const pose& pb) {
 }
 
 /// A random pose near `at` (within `spread`), turned at random or not.
-pose random_pose(test_scenes::rng& g, point<double> at, double spread, bool turn) {
+pose random_both_pose(test_scenes::rng& g, point<double> at, double spread, bool turn) {
     return test_scenes::aimed({0, 0}, {at.x + g.uniform(-spread, spread), at.y + g.uniform(-spread, spread)},
                               turn ? g.uniform(-3.2, 3.2) : 0);
 }
@@ -64,9 +64,9 @@ TEST_CASE("both moving: pure translations equal the relative one-pose scene", "[
         const polygon a = ma.to_polygon(), b = mb.to_polygon();
         const verification::cgal_reference reference(a, b);
         for (int f = 0; f < 10; ++f) {
-            const pose pa = random_pose(g, {0, 0}, 30, false), pb = random_pose(g, {pa.tx, pa.ty}, 40, false);
+            const pose pa = random_both_pose(g, {0, 0}, 30, false), pb = random_both_pose(g, {pa.tx, pa.ty}, 40, false);
             const pose relative{pb.tx - pa.tx, pb.ty - pa.ty, 0};
-            INFO(describe(pa, pb));
+            INFO(describe_both_posed(pa, pb));
             const bool expected = reference.collide(relative).collides;
             CHECK(intersects<exact_rational>(a, pa, b, pb) == expected);
             CHECK(certified_intersects(a, pa, b, pb) == expected);
@@ -86,7 +86,7 @@ TEST_CASE("both moving: random poses against both polygons placed exactly", "[po
     std::size_t meet = 0, frames = 0, double_agrees = 0;
     test_scenes::rng g(0x2b0ULL);
     const auto check = [&](const polygon& a, const polygon& b, const pose& pa, const pose& pb) {
-        INFO(describe(pa, pb));
+        INFO(describe_both_posed(pa, pb));
         const bool expected = test_exact::regions_meet(test_exact::place(a, pa), test_exact::place(b, pb));
         CHECK(intersects<exact_rational>(a, pa, b, pb) == expected);
         CHECK(certified_intersects(a, pa, b, pb) == expected);
@@ -102,18 +102,19 @@ TEST_CASE("both moving: random poses against both polygons placed exactly", "[po
             const polygon& b = test_families::load(f, 8);
             const double reach = 50 + 50;  // every family vertex lies within 50 of the origin
             for (int k = 0; k < poses; ++k) {
-                const pose pa = random_pose(g, {g.uniform(-100, 100), g.uniform(-100, 100)}, 0, true);
+                const pose pa = random_both_pose(g, {g.uniform(-100, 100), g.uniform(-100, 100)}, 0, true);
                 const double phi = g.uniform(0, 6.283185307179586), rho = reach * g.uniform(0.3, 1.1);
-                check(a, b, pa, random_pose(g, {pa.tx + rho * std::cos(phi), pa.ty + rho * std::sin(phi)}, 0, true));
+                check(a, b, pa,
+                      random_both_pose(g, {pa.tx + rho * std::cos(phi), pa.ty + rho * std::sin(phi)}, 0, true));
             }
         }
     for (int k = 0; k < test_effort::scaled(30); ++k) {
         const test_scenes::multi ma = test_scenes::random_multi(g, 20, 8), mb = test_scenes::random_swallower(g);
         const polygon a = ma.to_polygon(), b = mb.to_polygon();
         for (int f = 0; f < 6; ++f) {
-            const pose pa = random_pose(g, {0, 0}, 50, true);
-            check(a, b, pa, random_pose(g, {pa.tx, pa.ty}, 30, true));
-            check(b, a, pa, random_pose(g, {pa.tx, pa.ty}, 30, true));
+            const pose pa = random_both_pose(g, {0, 0}, 50, true);
+            check(a, b, pa, random_both_pose(g, {pa.tx, pa.ty}, 30, true));
+            check(b, a, pa, random_both_pose(g, {pa.tx, pa.ty}, 30, true));
         }
     }
     CHECK(meet > frames / 5);

@@ -29,7 +29,7 @@ namespace {
 using namespace influence2d;
 using verification::cgal_reference;
 
-std::string describe(const polygon& a, const polygon& b, const pose& p) {
+std::string describe_pose(const polygon& a, const polygon& b, const pose& p) {
     std::ostringstream s;
     s.precision(17);
     s << "static " << a.size() << " vertices, moving " << b.size() << ", pose " << p.tx << ',' << p.ty << ','
@@ -38,16 +38,16 @@ std::string describe(const polygon& a, const polygon& b, const pose& p) {
 }
 
 /// Counts of the reference's answers, so that a run is seen not to be vacuous.
-struct tally {
+struct intersects_tally {
     std::size_t frames = 0, collide = 0;
 };
 
 /// Every one-shot mode on (a, b, p) against the reference; float and double
 /// are checked only where their answers must be exact (never here): they run
 /// for crashes and refusals.
-void check_frame(const polygon& a, const polygon& b, const pose& p, tally& t) {
+void check_intersects_frame(const polygon& a, const polygon& b, const pose& p, intersects_tally& t) {
     const bool expected = cgal_reference(a, b).collide(p).collides;
-    INFO(describe(a, b, p));
+    INFO(describe_pose(a, b, p));
     CHECK(intersects<exact_rational>(a, b, p) == expected);
     CHECK(certified_intersects(a, b, p) == expected);
     (void)intersects<double>(a, b, p);
@@ -59,7 +59,7 @@ void check_frame(const polygon& a, const polygon& b, const pose& p, tally& t) {
 
 TEST_CASE("one-shot: the families under random poses near contact", "[one_shot][reference]") {
     using namespace verification;
-    tally t;
+    intersects_tally t;
     const int frames = test_effort::scaled(40);
     for (family f : all_families)
         for (std::size_t n : {8u, 64u, 256u})
@@ -67,7 +67,7 @@ TEST_CASE("one-shot: the families under random poses near contact", "[one_shot][
                 const polygon a = make_family_polygon(f, n, default_family_seed);
                 const polygon b = make_family_polygon(f, m, default_family_seed + 1);
                 for (const pose& p : random_poses(a, b, static_cast<std::size_t>(frames), 40, 110, n * 131 + m))
-                    check_frame(a, b, p, t);
+                    check_intersects_frame(a, b, p, t);
             }
     CHECK(t.collide > t.frames / 4);
     CHECK(t.collide < t.frames * 3 / 4 + t.frames / 5);
@@ -75,7 +75,7 @@ TEST_CASE("one-shot: the families under random poses near contact", "[one_shot][
 
 TEST_CASE("one-shot: random multipolygons, both roles, and rings nothing keeps apart", "[one_shot][reference]") {
     using test_scenes::rng;
-    tally t;
+    intersects_tally t;
     const int scenes = test_effort::scaled(36);
     for (int k = 0; k < scenes; ++k) {
         rng g(0x0517ULL + static_cast<std::uint64_t>(k));
@@ -90,8 +90,9 @@ TEST_CASE("one-shot: random multipolygons, both roles, and rings nothing keeps a
             const double angle = g.uniform(0, 6.283185307179586);
             const point<double> target{pa.center.x + reach * std::cos(angle), pa.center.y + reach * std::sin(angle)};
             const double theta = g.chance(0.5) ? 0 : g.uniform(-3.2, 3.2);
-            check_frame(a, b, test_scenes::aimed(pb.center, target, theta), t);
-            check_frame(messy_a, messy_b, test_scenes::aimed({0, 0}, {g.uniform(-8, 8), g.uniform(-8, 8)}, theta), t);
+            check_intersects_frame(a, b, test_scenes::aimed(pb.center, target, theta), t);
+            check_intersects_frame(messy_a, messy_b,
+                                   test_scenes::aimed({0, 0}, {g.uniform(-8, 8), g.uniform(-8, 8)}, theta), t);
         }
     }
     CHECK(t.collide > t.frames / 5);
@@ -100,7 +101,7 @@ TEST_CASE("one-shot: random multipolygons, both roles, and rings nothing keeps a
 
 TEST_CASE("one-shot: far from 1 in scale, exact modes stay exact", "[one_shot][reference]") {
     using namespace verification;
-    tally t;
+    intersects_tally t;
     const polygon a0 = make_family_polygon(family::contour, 64, default_family_seed);
     const polygon b0 = make_family_polygon(family::starred, 16, default_family_seed);
     for (int e : {-600, -40, 40, 600}) {
@@ -119,7 +120,7 @@ TEST_CASE("one-shot: far from 1 in scale, exact modes stay exact", "[one_shot][r
         for (pose p : random_poses(a0, b0, static_cast<std::size_t>(test_effort::scaled(30)), 40, 110, 99)) {
             p.tx = std::ldexp(p.tx, e);
             p.ty = std::ldexp(p.ty, e);
-            check_frame(a, b, p, t);
+            check_intersects_frame(a, b, p, t);
         }
     }
     CHECK(t.collide > 0);

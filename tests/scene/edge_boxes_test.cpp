@@ -23,7 +23,7 @@ namespace {
 
 using namespace influence2d;
 using test_scenes::rng;
-using edge_pair = std::pair<std::uint32_t, std::uint32_t>;
+using index_pair = std::pair<std::uint32_t, std::uint32_t>;
 
 /// The box of edge e of the polygon whose vertices are v, grown by `grow`.
 box grown_edge(const polygon& p, const std::vector<point<double>>& v, std::size_t e, double grow) {
@@ -59,7 +59,7 @@ TEST_CASE("edge boxes: the pairs offered are those of a double loop, once each",
         for (const point<double>& v : bv) b_bounds.add(v);
         // As the one-shot tests ask: A's edges near B's box, B's near A's.
         const box a_window = b_bounds.inflated(grow), b_window = a_bounds.inflated(grow);
-        std::set<edge_pair> want;
+        std::set<index_pair> want;
         for (std::size_t i = 0; i < a.size(); ++i)
             for (std::size_t j = 0; j < b.size(); ++j) {
                 const box bi = grown_edge(a, av, i, grow), bj = grown_edge(b, bv, j, grow);
@@ -73,37 +73,37 @@ TEST_CASE("edge boxes: the pairs offered are those of a double loop, once each",
         edge_run_boxes(a, av, a_runs);
         edge_run_boxes(b, bv, b_runs);
         runs_seen += a_runs.size() + b_runs.size();
-        std::multiset<edge_pair> by_runs;
+        std::multiset<index_pair> by_runs;
         CHECK_FALSE(overlapping_run_pairs({a, av, a_runs, a_window}, {b, bv, b_runs, b_window}, grow,
                                           [&](std::uint32_t i, std::uint32_t j) {
                                               by_runs.insert({i, j});
                                               return false;
                                           }));
-        CHECK(std::set<edge_pair>(by_runs.begin(), by_runs.end()) == want);
+        CHECK(std::set<index_pair>(by_runs.begin(), by_runs.end()) == want);
         CHECK(by_runs.size() == want.size());
 
         std::vector<edge_box> a_edges, b_edges;
         edges_meeting(a, av, a_window, grow, a_edges);
         edges_meeting(b, bv, b_window, grow, b_edges);
-        std::multiset<edge_pair> by_lists;
+        std::multiset<index_pair> by_lists;
         CHECK_FALSE(overlapping_pairs(a_edges, b_edges, [&](std::uint32_t i, std::uint32_t j) {
             by_lists.insert({i, j});
             return false;
         }));
-        CHECK(std::set<edge_pair>(by_lists.begin(), by_lists.end()) == want);
+        CHECK(std::set<index_pair>(by_lists.begin(), by_lists.end()) == want);
         CHECK(by_lists.size() == want.size());
 
         // Stopping: the pair accepted ends the search, and is reported.
         if (!want.empty()) {
-            const edge_pair target = *std::next(want.begin(), static_cast<std::ptrdiff_t>(g.index(want.size())));
+            const index_pair target = *std::next(want.begin(), static_cast<std::ptrdiff_t>(g.index(want.size())));
             std::size_t calls = 0;
             bool seen_after = false, found = false;
             const bool stopped = overlapping_run_pairs({a, av, a_runs, a_window}, {b, bv, b_runs, b_window}, grow,
                                                        [&](std::uint32_t i, std::uint32_t j) {
                                                            seen_after = seen_after || found;
                                                            ++calls;
-                                                           found = found || edge_pair{i, j} == target;
-                                                           return edge_pair{i, j} == target;
+                                                           found = found || index_pair{i, j} == target;
+                                                           return index_pair{i, j} == target;
                                                        });
             CHECK(stopped);
             CHECK(found);

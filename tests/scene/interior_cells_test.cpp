@@ -29,7 +29,7 @@ using test_scenes::rng;
 using Q = exact_rational;
 
 /// What one polygon's check found.
-struct tally {
+struct cells_tally {
     std::size_t asked = 0, inside = 0, held = 0;  ///< the random points of the box
 };
 
@@ -51,11 +51,11 @@ bool disc_in_region(const test_exact::placed_shape& p, const point<double>& q, d
 /// just off each edge (on either side, at fractions of a cell's side), each
 /// with the largest margin holds() takes; every point held must pass
 /// disc_in_region.
-tally check_cells(const polygon& p, rng& g, std::size_t count) {
+cells_tally check_cells(const polygon& p, rng& g, std::size_t count) {
     const interior_cells cells(p);
     const test_exact::placed_shape exact = test_exact::place(p, pose{});
     const double m = cells.cell_side() / 2;
-    tally t;
+    cells_tally t;
     const auto ask = [&](const point<double>& q) {
         if (!cells.holds(q, m)) return false;
         INFO("point (" << q.x << ", " << q.y << "), margin " << m << ", " << p.size() << " vertices");
@@ -92,7 +92,7 @@ tally check_cells(const polygon& p, rng& g, std::size_t count) {
 
 TEST_CASE("interior_cells: every point held lies in the region with its margin, against exact regions", "[scene]") {
     rng g(2611);
-    tally all;
+    cells_tally all;
     const int rounds = test_effort::scaled(120);
     for (int round = 0; round < rounds; ++round) {
         const int k = std::array<int, 5>{0, -600, -40, 7, 500}[static_cast<std::size_t>(round % 5)];
@@ -108,7 +108,7 @@ TEST_CASE("interior_cells: every point held lies in the region with its margin, 
         // the coordinates' rounding.
         if (round % 7 == 6) p = test_shapes::translated(base, 0x1p20, -0x1p19);
         INFO("round " << round << " at 2^" << k);
-        const tally t = check_cells(p, g, 200);
+        const cells_tally t = check_cells(p, g, 200);
         all.asked += t.asked;
         all.inside += t.inside;
         all.held += t.held;

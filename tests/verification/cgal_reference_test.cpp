@@ -30,12 +30,12 @@ using influence2d::verification::cgal_reference;
 
 using pts = std::vector<point<double>>;
 
-ring_input ring(pts vs, ring_role role = ring_role::outer) { return ring_input{std::move(vs), role}; }
+ring_input role_ring(pts vs, ring_role role = ring_role::outer) { return ring_input{std::move(vs), role}; }
 
 /// Axis-parallel rectangle, input counter-clockwise from (x0, y0).
 pts rect(double x0, double y0, double x1, double y1) { return pts{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
 
-polygon unit_square() { return polygon({ring(rect(0, 0, 1, 1))}); }
+polygon unit_square() { return polygon({role_ring(rect(0, 0, 1, 1))}); }
 
 frame_result run(const polygon& A, const polygon& B, pose p, double d = 0) {
     return cgal_reference(A, B, d, true).collide(p);
@@ -97,7 +97,7 @@ TEST_CASE("reference: containment both ways collides without pairs", "[reference
     //  |     |B|  |
     //  |     +-+  |
     //  +----------+
-    const polygon big({ring(rect(0, 0, 10, 10))});
+    const polygon big({role_ring(rect(0, 0, 10, 10))});
     const auto inside = run(big, unit_square(), pose{4, 4, 0});
     CHECK(inside.collides);
     CHECK(inside.pairs.empty());
@@ -121,7 +121,7 @@ TEST_CASE("reference: B inside a hole of A does not collide", "[reference]") {
     //  |   | +-+ | |
     //  |   +-----+ |
     //  +-----------+
-    const polygon holed({ring(rect(0, 0, 10, 10)), ring(rect(3, 3, 7, 7), ring_role::hole)});
+    const polygon holed({role_ring(rect(0, 0, 10, 10)), role_ring(rect(3, 3, 7, 7), ring_role::hole)});
     const auto r = run(holed, unit_square(), pose{4.5, 4.5, 0});
     CHECK_FALSE(r.collides);
     CHECK(r.pairs.empty());
@@ -131,7 +131,7 @@ TEST_CASE("reference: B inside a hole of A does not collide", "[reference]") {
     // The hole written clockwise (as stored) changes nothing.
     pts cw = rect(3, 3, 7, 7);
     std::reverse(cw.begin(), cw.end());
-    const polygon holed_cw({ring(rect(0, 0, 10, 10)), ring(cw, ring_role::hole)});
+    const polygon holed_cw({role_ring(rect(0, 0, 10, 10)), role_ring(cw, ring_role::hole)});
     CHECK_FALSE(run(holed_cw, unit_square(), pose{4.5, 4.5, 0}).collides);
     // B inside the ring part (between outer ring and hole): collides, no pair.
     const auto in_band = run(holed, unit_square(), pose{1, 1, 0});
@@ -148,7 +148,7 @@ TEST_CASE("reference: B touching the hole boundary collides", "[reference]") {
     //  |   |+-+  | |
     //  |   +-----+ |
     //  +-----------+
-    const polygon holed({ring(rect(0, 0, 10, 10)), ring(rect(3, 3, 7, 7), ring_role::hole)});
+    const polygon holed({role_ring(rect(0, 0, 10, 10)), role_ring(rect(3, 3, 7, 7), ring_role::hole)});
     const auto r = run(holed, unit_square(), pose{3, 4.5, 0});
     CHECK(r.collides);
     // The hole's left side is the polygon's input edge 7 ((3,7) to (3,3), the
@@ -199,7 +199,7 @@ TEST_CASE("reference: a rotated pose is evaluated exactly", "[reference]") {
     //     +--*--+
     //     |  A  |
     const double quarter_pi = std::acos(-1.0) / 4;
-    const polygon wide({ring(rect(0, 0, 2, 1))});
+    const polygon wide({role_ring(rect(0, 0, 2, 1))});
     const auto diamond = run(wide, unit_square(), pose{1, 1, quarter_pi});
     CHECK(diamond.collides);
     CHECK(diamond.pairs == pairs({{2, 0}, {2, 3}}));
@@ -214,13 +214,13 @@ TEST_CASE("reference: input numbering of a clockwise ring and a repeated vertex"
     //     +--*--+
     //        |B |
     //        +--+
-    const polygon cw({ring(pts{{0, 0}, {0, 1}, {1, 1}, {1, 0}})});
+    const polygon cw({role_ring(pts{{0, 0}, {0, 1}, {1, 1}, {1, 0}})});
     const auto r = run(cw, unit_square(), pose{1, -1, 0});
     CHECK(r.collides);
     CHECK(r.pairs == pairs({{2, 2}, {2, 3}, {3, 2}, {3, 3}}));
     // A with the corner (1,1) repeated: input edge 2 has zero length and is
     // tested as a point; B's corner (0,0) touches it.
-    const polygon rep({ring(pts{{0, 0}, {1, 0}, {1, 1}, {1, 1}, {0, 1}})});
+    const polygon rep({role_ring(pts{{0, 0}, {1, 0}, {1, 1}, {1, 1}, {0, 1}})});
     const auto t = run(rep, unit_square(), pose{1, 1, 0});
     CHECK(t.collides);
     CHECK(t.pairs == pairs({{1, 0}, {1, 3}, {2, 0}, {2, 3}, {3, 0}, {3, 3}}));
@@ -237,8 +237,8 @@ TEST_CASE("reference: every part of a multipolygon is located in the other polyg
     //  +-----+
     // B swallows one part of A without touching any edge: A's box does not
     // fit in B's, but that part does.
-    const polygon A({ring(rect(0, 0, 1, 1)), ring(rect(10, 0, 11, 1))});
-    const polygon B({ring(rect(-1, -1, 2, 2))});
+    const polygon A({role_ring(rect(0, 0, 1, 1)), role_ring(rect(10, 0, 11, 1))});
+    const polygon B({role_ring(rect(-1, -1, 2, 2))});
     CHECK(run(A, B, pose{0, 0, 0}).collides);
     CHECK(run(A, B, pose{9.5, 0, 0}).collides);
     CHECK_FALSE(run(A, B, pose{5, 0, 0}).collides);
@@ -254,21 +254,22 @@ TEST_CASE("reference: regions by winding number, a hole outside its shell and ne
     //   +--+
     //   |  |   [4,5]^2 given as a hole     outer [0,1]^2
     //   +--+
-    const polygon stray({ring(rect(0, 0, 1, 1)), ring(rect(4, 4, 5, 5), ring_role::hole)});
-    const polygon dot({ring(rect(0, 0, 0.25, 0.25))});
+    const polygon stray({role_ring(rect(0, 0, 1, 1)), role_ring(rect(4, 4, 5, 5), ring_role::hole)});
+    const polygon dot({role_ring(rect(0, 0, 0.25, 0.25))});
     CHECK(run(stray, dot, pose{4.5, 4.5, 0}).collides);  // inside the stray hole
     CHECK_FALSE(run(stray, dot, pose{2.5, 2.5, 0}).collides);
     CHECK(run(dot, stray, pose{-4.5, -4.5, 0}).collides);  // roles swapped: the stray hole holds A
     // Nested outer rings: winding 2 inside the inner one, 1 between: all region.
-    const polygon nested({ring(rect(0, 0, 10, 10)), ring(rect(3, 3, 7, 7))});
+    const polygon nested({role_ring(rect(0, 0, 10, 10)), role_ring(rect(3, 3, 7, 7))});
     CHECK(run(nested, dot, pose{1, 1, 0}).collides);
     CHECK(run(nested, dot, pose{5, 5, 0}).collides);
     // A hole inside an inner shell: winding 2 - 1 = 1, still region.
     const polygon shell_hole(
-        {ring(rect(0, 0, 10, 10)), ring(rect(3, 3, 7, 7)), ring(rect(4, 4, 6, 6), ring_role::hole)});
+        {role_ring(rect(0, 0, 10, 10)), role_ring(rect(3, 3, 7, 7)), role_ring(rect(4, 4, 6, 6), ring_role::hole)});
     CHECK(run(shell_hole, dot, pose{4.9, 4.9, 0}).collides);
     // An island inside a hole: region again; the hole around it is not.
-    const polygon island({ring(rect(0, 0, 10, 10)), ring(rect(2, 2, 8, 8), ring_role::hole), ring(rect(4, 4, 6, 6))});
+    const polygon island(
+        {role_ring(rect(0, 0, 10, 10)), role_ring(rect(2, 2, 8, 8), ring_role::hole), role_ring(rect(4, 4, 6, 6))});
     CHECK(run(island, dot, pose{4.9, 4.9, 0}).collides);
     CHECK_FALSE(run(island, dot, pose{2.5, 2.5, 0}).collides);
 }
@@ -278,8 +279,8 @@ TEST_CASE("reference: a figure eight bounds both lobes", "[reference][region]") 
     //     \  /               (1,1): winding +1 in one lobe, -1 in the other;
     //      \/                both are region.
     //      /\.
-    const polygon bowtie({ring(pts{{0, 0}, {2, 2}, {2, 0}, {0, 2}})});
-    const polygon dot({ring(rect(0, 0, 0.1, 0.1))});
+    const polygon bowtie({role_ring(pts{{0, 0}, {2, 2}, {2, 0}, {0, 2}})});
+    const polygon dot({role_ring(rect(0, 0, 0.1, 0.1))});
     CHECK(run(bowtie, dot, pose{0.15, 0.95, 0}).collides);        // left lobe
     CHECK(run(bowtie, dot, pose{1.75, 0.95, 0}).collides);        // right lobe
     CHECK_FALSE(run(bowtie, dot, pose{0.95, 0.15, 0}).collides);  // below the crossing

@@ -21,18 +21,18 @@ using interval_evaluator = evaluator<interval, exact_rational>;
 
 polygon make(std::vector<point<double>> v) { return polygon({ring_input{std::move(v), ring_role::outer}}); }
 
-const double m = 1e8;                                // magnitude of the cliff cases
-const double below_half_ulp = std::ldexp(1.0, -28);  // lost when added to m in double (ulp 2^-26)
+const double cliff = 1e8;                            // magnitude of the cliff cases
+const double below_half_ulp = std::ldexp(1.0, -28);  // lost when added to cliff in double (ulp 2^-26)
 
-/// A: the rectangle [m - 2, m] x [-1, 1]; its right edge (edge 1) lies on x = m.
-polygon cliff_static() { return make({{m - 2, -1}, {m, -1}, {m, 1}, {m - 2, 1}}); }
+/// A: the rectangle [cliff - 2, cliff] x [-1, 1]; its right edge (edge 1) lies on x = cliff.
+polygon cliff_static() { return make({{cliff - 2, -1}, {cliff, -1}, {cliff, 1}, {cliff - 2, 1}}); }
 
 /// B: a triangle pointing left, its tip 2^-28 right of its origin. Posed at
-/// (m, 0), the tip is 2^-28 right of A's edge: apart. In double m + 2^-28
-/// rounds to m: the tip lies on the edge, and every decision sees contact.
+/// (cliff, 0), the tip is 2^-28 right of A's edge: apart. In double cliff + 2^-28
+/// rounds to cliff: the tip lies on the edge, and every decision sees contact.
 polygon cliff_moving() { return make({{below_half_ulp, 0}, {1, -0.5}, {1, 0.5}}); }
 
-const pose cliff_pose{m, 0, 0};
+const pose cliff_pose{cliff, 0, 0};
 
 }  // namespace
 
@@ -127,7 +127,7 @@ TEST_CASE("decisions: a query point at the precision cliff of a cone boundary", 
     evaluator<long double> in_long_double(a, b, 0);
     certified_evaluator in_certified(a, b, 0);
     interval_evaluator in_interval(a, b, 0);
-    const query q{{3 * m + std::ldexp(1.0, -24), m + std::ldexp(1.0, -26)}, {}};
+    const query q{{3 * cliff + std::ldexp(1.0, -24), cliff + std::ldexp(1.0, -26)}, {}};
     for (decision_kind k : {decision_kind::cone_membership, decision_kind::mask}) {
         INFO(decision_name(k));
         CHECK(ref.decide(k, q) == answer{3});  // the cone of edge 3, (1,-3) -> (3,1), alone
@@ -152,8 +152,8 @@ TEST_CASE("decisions: extended-area candidates at the precision cliff", "[verifi
         if (b.centroid() != point<double>{d, 0}) continue;
         const double n = moving_reach(bounding_radius(b, b.centroid()), 0);
         const double grid = std::ldexp(1.0, -26);
-        const double tx = m + std::floor(n / grid) * grid;  // tx - m <= n < tx - m + 2^-28
-        if (!(n - (tx - m) < d)) continue;
+        const double tx = cliff + std::floor(n / grid) * grid;  // tx - cliff <= n < tx - cliff + 2^-28
+        if (!(n - (tx - cliff) < d)) continue;
         reference_decisions ref(a, b, 0);
         evaluator<double> in_double(a, b, 0);
         certified_evaluator in_certified(a, b, 0);

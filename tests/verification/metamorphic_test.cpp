@@ -138,7 +138,7 @@ std::vector<edge_pair> renamed(const frame_result& r, const std::vector<std::siz
     return out;
 }
 
-std::string describe(const std::vector<edge_pair>& pairs) {
+std::string describe_pairs(const std::vector<edge_pair>& pairs) {
     std::ostringstream s;
     for (const edge_pair& p : pairs) s << '[' << p.static_edge << ',' << p.moving_edge << ']';
     return s.str();
@@ -180,7 +180,7 @@ std::size_t check_metamorphic(const std::string& label, const polygon& A, const 
             INFO(label << ", " << what << ", frame " << f);
             const frame_result got = d.collide(frames[f]);
             CHECK(got.collides == expected[f].collides);
-            CHECK(describe(renamed(got, al, bl)) == describe(expected[f].pairs));
+            CHECK(describe_pairs(renamed(got, al, bl)) == describe_pairs(expected[f].pairs));
             ++comparisons;
         }
     };
@@ -199,7 +199,7 @@ std::size_t check_metamorphic(const std::string& label, const polygon& A, const 
             INFO(label << ", WKT round trip, frame " << f);
             const frame_result got = d.collide(frames[f]);
             CHECK(got.collides == expected[f].collides);
-            CHECK(describe(renamed(got, al, bl)) == describe(expected[f].pairs));
+            CHECK(describe_pairs(renamed(got, al, bl)) == describe_pairs(expected[f].pairs));
             ++comparisons;
         }
     }
@@ -218,7 +218,7 @@ std::size_t check_metamorphic(const std::string& label, const polygon& A, const 
                 INFO(label << ", both translated by (" << o.x << ", " << o.y << "), frame " << f);
                 const frame_result got = d.collide(pose{p.tx + o.x, p.ty + o.y, p.theta});
                 CHECK(got.collides == expected[f].collides);
-                CHECK(describe(renamed(got, al, bl)) == describe(expected[f].pairs));
+                CHECK(describe_pairs(renamed(got, al, bl)) == describe_pairs(expected[f].pairs));
                 ++comparisons;
             }
         }
@@ -233,7 +233,7 @@ std::size_t check_metamorphic(const std::string& label, const polygon& A, const 
             INFO(label << ", roles swapped, frame " << f);
             const frame_result got = d.collide(pose{-p.tx, -p.ty, 0});
             CHECK(got.collides == expected[f].collides);
-            CHECK(describe(renamed(got, al, bl, true)) == describe(expected[f].pairs));
+            CHECK(describe_pairs(renamed(got, al, bl, true)) == describe_pairs(expected[f].pairs));
             ++comparisons;
         }
     }
@@ -253,7 +253,7 @@ std::size_t check_metamorphic(const std::string& label, const polygon& A, const 
             }
             std::sort(pairs.begin(), pairs.end());
             CHECK(any == expected[f].collides);
-            CHECK(describe(pairs) == describe(expected[f].pairs));
+            CHECK(describe_pairs(pairs) == describe_pairs(expected[f].pairs));
             ++comparisons;
         }
     }

@@ -47,7 +47,7 @@ using verification::cgal_reference;
 struct scene {
     multi a, b;
     std::vector<pose> frames;
-    std::string describe(std::size_t k) const {
+    std::string describe_multipolygon(std::size_t k) const {
         const pose& p = frames[k];
         std::ostringstream s;
         s.precision(17);
@@ -88,7 +88,7 @@ scene make_scene(std::uint64_t seed, std::size_t frames, bool translations_only)
     return s;
 }
 
-std::string describe(const std::vector<edge_pair>& pairs) {
+std::string describe_multipolygon(const std::vector<edge_pair>& pairs) {
     std::ostringstream s;
     for (const edge_pair& p : pairs) s << '[' << p.static_edge << ',' << p.moving_edge << ']';
     return s.str();
@@ -108,7 +108,7 @@ struct frame_tally {
 /// The witness detector's answer and pairs against the reference's.
 void check_witnessed(const frame_result& got, const frame_result& expected) {
     CHECK(got.collides == expected.collides);
-    CHECK(describe(got.pairs) == describe(expected.pairs));
+    CHECK(describe_multipolygon(got.pairs) == describe_multipolygon(expected.pairs));
 }
 
 }  // namespace
@@ -139,7 +139,7 @@ TEST_CASE("random multipolygons: every exact mode agrees with the exact referenc
         for (std::size_t f = 0; f < s.frames.size(); ++f) {
             const pose& p = s.frames[f];
             const frame_result expected = reference.collide(p);
-            INFO("scene " << k << ", frame " << f << "\n" << s.describe(f));
+            INFO("scene " << k << ", frame " << f << "\n" << s.describe_multipolygon(f));
             tally.add(expected);
             check_witnessed(exact.collide(p), expected);
             CHECK(exact_plain.collide(p).collides == expected.collides);
@@ -218,7 +218,7 @@ TEST_CASE("random multipolygons: the exact answer equals GEOS's on valid transla
                 ++invalid;
                 continue;
             }
-            INFO("scene " << k << ", frame " << f << "\n" << s.describe(f));
+            INFO("scene " << k << ", frame " << f << "\n" << s.describe_multipolygon(f));
             ++checked;
             collide += expected;
             CHECK(exact.collide(p).collides == (expected == 1));

@@ -60,7 +60,7 @@ int ring_area_sign(const polygon& p, std::size_t r) {
 /// Exact simplicity of all rings together: edges that are not neighbours
 /// share no point (found through a sweep over x-sorted boxes), neighbours
 /// do not fold back along one line.
-bool simple(const polygon& p, std::string& why) {
+bool simple_stiff(const polygon& p, std::string& why) {
     for (std::size_t i = 0; i < p.size(); ++i) {
         const std::size_t j = p.next(i), k = p.next(j);
         const epoint a = exact(p.vertex(i)), b = exact(p.vertex(j)), c = exact(p.vertex(k));
@@ -302,7 +302,7 @@ TEST_CASE("stiff scenes: valid, simple, counter-clockwise polygons and finite po
             for (std::size_t r = 0; r < p->ring_count(); ++r)
                 CHECK(ring_area_sign(*p, r) == (p->role(r) == ring_role::outer ? 1 : -1));
             std::string why;
-            const bool is_simple = simple(*p, why);
+            const bool is_simple = simple_stiff(*p, why);
             INFO(why);
             CHECK(is_simple);
         }

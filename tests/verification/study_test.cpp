@@ -37,7 +37,9 @@ std::vector<std::string> fields(const std::string& line) {
     return out;
 }
 
-polygon make(std::vector<point<double>> v) { return polygon({ring_input{std::move(v), ring_role::outer}}); }
+polygon make_study_polygon(std::vector<point<double>> v) {
+    return polygon({ring_input{std::move(v), ring_role::outer}});
+}
 
 }  // namespace
 
@@ -197,8 +199,8 @@ TEST_CASE("study: a query's reproducible case reads back and is answered again",
     //   +-------+ +-+     A: the square [0,4]^2; B: a unit square moving
     //   |   A   | |B| <-  toward A's right side, which it reaches at t = 1/2
     //   +-------+ +-+
-    const polygon a = make({{0, 0}, {4, 0}, {4, 4}, {0, 4}});
-    const polygon b = make({{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}});
+    const polygon a = make_study_polygon({{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+    const polygon b = make_study_polygon({{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}});
     const translation motion{{5.5, 2, 0}, {3.5, 2, 0}};
     const std::string expected = exact_answer_text(a, b, query_kind::first_contact, motion);
     CHECK(expected == "contact at 1/2, e1:v0");
@@ -261,8 +263,8 @@ TEST_CASE("study: a reproducible case reads back and is answered again", "[verif
     //   |   A  +|-+        across A's right side (pairs with edge 1)
     //   |      +|-+
     //   +-------+
-    const polygon a = make({{0, 0}, {4, 0}, {4, 4}, {0, 4}});
-    const polygon b = make({{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}});
+    const polygon a = make_study_polygon({{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+    const polygon b = make_study_polygon({{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}});
     const query q{{}, {4.25, 2, 0.1}};
     const answer expected = reference_decisions(a, b, 0).decide(decision_kind::pairs, q);
     REQUIRE(!expected.empty());

@@ -28,15 +28,15 @@ using namespace influence2d;
 
 namespace {
 
-pose scaled(const pose& q, int e) { return {std::ldexp(q.tx, e), std::ldexp(q.ty, e), q.theta}; }
+pose scaled_pose(const pose& q, int e) { return {std::ldexp(q.tx, e), std::ldexp(q.ty, e), q.theta}; }
 
-std::string show(const std::vector<body_pair>& v) {
+std::string show_far(const std::vector<body_pair>& v) {
     std::ostringstream s;
     for (const body_pair& p : v) s << '(' << p.first << ',' << p.second << ')';
     return s.str();
 }
 
-std::string show(const std::vector<contact_witness>& v) {
+std::string show_far(const std::vector<contact_witness>& v) {
     std::ostringstream s;
     for (const contact_witness& w : v)
         s << '(' << static_cast<int>(w.first.kind) << ':' << w.first.index << ',' << static_cast<int>(w.second.kind)
@@ -44,7 +44,7 @@ std::string show(const std::vector<contact_witness>& v) {
     return s.str();
 }
 
-std::string show(const std::vector<contact_event>& v) {
+std::string show_far(const std::vector<contact_event>& v) {
     std::ostringstream s;
     for (const contact_event& e : v) s << (e.begins ? '+' : '-') << e.bodies.first << ',' << e.bodies.second << ' ';
     return s.str();
@@ -53,15 +53,15 @@ std::string show(const std::vector<contact_event>& v) {
 /// A random scene: shapes, and for each step every body's pose (snapped
 /// and unturned half of the time: exact touching; small moves between
 /// steps).
-struct scene {
+struct far_scene {
     std::vector<polygon> shapes;
     std::vector<std::uint32_t> shape_of;
     std::vector<std::vector<pose>> steps;
 };
 
-scene random_scene(std::uint64_t seed, std::size_t bodies, int steps) {
+far_scene random_scene(std::uint64_t seed, std::size_t bodies, int steps) {
     test_scenes::rng g(seed);
-    scene s;
+    far_scene s;
     for (int k = 0; k < 4; ++k) s.shapes.push_back(test_scenes::random_multi(g, 6, 5).to_polygon());
     std::vector<pose> at;
     for (std::size_t i = 0; i < bodies; ++i) {
@@ -84,7 +84,7 @@ scene random_scene(std::uint64_t seed, std::size_t bodies, int steps) {
 /// Each step's contacts, witnesses and events of a world over the scene
 /// scaled by 2^e.
 template <class World>
-std::vector<std::string> run(const scene& s, int e, double within) {
+std::vector<std::string> run_far(const far_scene& s, int e, double within) {
     world_options o;
     o.witness = true;
     o.within = std::ldexp(within, e);
@@ -93,7 +93,7 @@ std::vector<std::string> run(const scene& s, int e, double within) {
     std::vector<std::string> out;
     for (std::size_t k = 0; k < s.steps.size(); ++k) {
         for (std::size_t i = 0; i < s.steps[k].size(); ++i) {
-            const pose q = scaled(s.steps[k][i], e);
+            const pose q = scaled_pose(s.steps[k][i], e);
             if (k == 0)
                 w.add_body(s.shape_of[i], q, i % 5 == 0);
             else if (!(s.steps[k][i].tx == s.steps[k - 1][i].tx && s.steps[k][i].ty == s.steps[k - 1][i].ty &&
@@ -101,7 +101,7 @@ std::vector<std::string> run(const scene& s, int e, double within) {
                 w.move(static_cast<std::uint32_t>(i), q);
         }
         w.step();
-        out.push_back(show(w.contacts()) + " | " + show(w.witnesses()) + " | " + show(w.events()));
+        out.push_back(show_far(w.contacts()) + " | " + show_far(w.witnesses()) + " | " + show_far(w.events()));
     }
     return out;
 }
@@ -113,9 +113,9 @@ TEST_CASE("world in double far from 1 in scale: the contacts, witnesses and even
     std::size_t steps_with_contacts = 0, differ_from_certified = 0, steps = 0;
     for (int k = 0; k < scenes; ++k)
         for (const double within : {0.0, 0.25}) {
-            const scene s = random_scene(static_cast<std::uint64_t>(40 + k), 30, 4);
-            const std::vector<std::string> at1 = run<world<double>>(s, 0, within);
-            const std::vector<std::string> exact = run<certified_world>(s, 0, within);
+            const far_scene s = random_scene(static_cast<std::uint64_t>(40 + k), 30, 4);
+            const std::vector<std::string> at1 = run_far<world<double>>(s, 0, within);
+            const std::vector<std::string> exact = run_far<certified_world>(s, 0, within);
             for (std::size_t step = 0; step < at1.size(); ++step) {
                 ++steps;
                 differ_from_certified +=
@@ -124,7 +124,7 @@ TEST_CASE("world in double far from 1 in scale: the contacts, witnesses and even
             }
             for (const int e : {-1000, -600, -300, 300, 600, 1000}) {
                 INFO("scene " << k << ", within " << within << ", scale 2^" << e);
-                const std::vector<std::string> at_e = run<world<double>>(s, e, within);
+                const std::vector<std::string> at_e = run_far<world<double>>(s, e, within);
                 for (std::size_t step = 0; step < at1.size(); ++step) {
                     INFO("step " << step);
                     CHECK(at_e[step] == at1[step]);
@@ -141,7 +141,7 @@ TEST_CASE("layer_pairs and the two-pose queries in double far from 1 in scale: t
     const int scenes = test_effort::scaled(8);
     std::size_t pairs = 0, met = 0, differ_from_certified = 0;
     for (int k = 0; k < scenes; ++k) {
-        const scene s = random_scene(static_cast<std::uint64_t>(60 + k), 30, 1);
+        const far_scene s = random_scene(static_cast<std::uint64_t>(60 + k), 30, 1);
         std::vector<polygon> layer;
         for (std::size_t i = 0; i < s.shape_of.size(); ++i)
             if (s.steps[0][i].theta == 0)
@@ -154,13 +154,13 @@ TEST_CASE("layer_pairs and the two-pose queries in double far from 1 in scale: t
             return out;
         };
         const std::vector<body_pair> one = layer_pairs<double>(layer), two = layer_pairs<double>(first, second, 0.5);
-        CHECK(show(one) == show(certified_layer_pairs(layer)));
+        CHECK(show_far(one) == show_far(certified_layer_pairs(layer)));
         met += one.size();
         for (const int e : {-1000, -600, -300, 300, 600, 1000}) {
             INFO("scene " << k << ", scale 2^" << e);
-            CHECK(show(layer_pairs<double>(scaled_layer(layer, e))) == show(one));
-            CHECK(show(layer_pairs<double>(scaled_layer(first, e), scaled_layer(second, e), std::ldexp(0.5, e))) ==
-                  show(two));
+            CHECK(show_far(layer_pairs<double>(scaled_layer(layer, e))) == show_far(one));
+            CHECK(show_far(layer_pairs<double>(scaled_layer(first, e), scaled_layer(second, e), std::ldexp(0.5, e))) ==
+                  show_far(two));
         }
         // Every pair of bodies, each at its own pose; and regions_meet on
         // the vertices posed in double.
@@ -178,7 +178,7 @@ TEST_CASE("layer_pairs and the two-pose queries in double far from 1 in scale: t
                 for (const int e : {-1000, -600, 600, 1000}) {
                     INFO("scene " << k << ", bodies " << i << ", " << j << ", scale 2^" << e);
                     const polygon as = a.scaled_by_power_of_two(e), bs = b.scaled_by_power_of_two(e);
-                    CHECK(intersects<double>(as, scaled(qa, e), bs, scaled(qb, e)) == at1);
+                    CHECK(intersects<double>(as, scaled_pose(qa, e), bs, scaled_pose(qb, e)) == at1);
                     std::vector<point<double>> sa = va, sb = vb;
                     for (std::vector<point<double>>* vs : {&sa, &sb})
                         for (point<double>& v : *vs) v = {std::ldexp(v.x, e), std::ldexp(v.y, e)};

@@ -91,7 +91,7 @@ box placed_box(const polygon& p, const pose& q) {
     return b;
 }
 
-std::string show(const std::vector<body_pair>& v) {
+std::string show_pairs(const std::vector<body_pair>& v) {
     std::ostringstream s;
     for (const body_pair& p : v) s << '(' << p.first << ',' << p.second << ')';
     return s.str();
@@ -122,8 +122,8 @@ pose random_pose(rng& g, point<double> origin, double extent) {
 /// jump to a random pose with chance `jumps`. Returns the
 /// world's statistics.
 template <class World>
-world_statistics check_scene(std::uint64_t seed, point<double> origin, double within, int steps, world_options options,
-                             double stride = 1, double jumps = 0.2) {
+world_statistics check_world_scene(std::uint64_t seed, point<double> origin, double within, int steps,
+                                   world_options options, double stride = 1, double jumps = 0.2) {
     rng g(seed);
     const std::vector<polygon> shapes = random_shapes(g, 6);
     options.within = within;
@@ -158,15 +158,15 @@ world_statistics check_scene(std::uint64_t seed, point<double> origin, double wi
         const std::vector<body_pair> got = w.step();
         const std::vector<body_pair> want = reference_contacts(shapes, bodies, within);
         INFO("seed " << seed << " step " << step << " origin " << origin.x << " within " << within);
-        REQUIRE(show(got) == show(want));
+        REQUIRE(show_pairs(got) == show_pairs(want));
         // Events: the difference of the contacts.
         std::vector<body_pair> begun, ended;
         std::set_difference(want.begin(), want.end(), last.begin(), last.end(), std::back_inserter(begun));
         std::set_difference(last.begin(), last.end(), want.begin(), want.end(), std::back_inserter(ended));
         std::vector<body_pair> got_begun, got_ended;
         for (const contact_event& e : w.events()) (e.begins ? got_begun : got_ended).push_back(e.bodies);
-        CHECK(show(got_begun) == show(begun));
-        CHECK(show(got_ended) == show(ended));
+        CHECK(show_pairs(got_begun) == show_pairs(begun));
+        CHECK(show_pairs(got_ended) == show_pairs(ended));
         if (options.witness) CHECK(w.witnesses().size() == got.size());
         last = want;
         contacts += want.size();
@@ -185,16 +185,16 @@ TEST_CASE("world: certified contacts are the exact reference's on random scenes"
     for (int s = 0; s < scenes; ++s) {
         o.coherence = s % 2 == 0;
         o.witness = s % 3 == 0;
-        check_scene<certified_world>(100 + s, {0, 0}, 0, 12, o);
+        check_world_scene<certified_world>(100 + s, {0, 0}, 0, 12, o);
     }
     CHECK(scenes > 0);
 }
 
 TEST_CASE("world: far from the origin and within a distance", "[world]") {
     world_options o;
-    check_scene<certified_world>(200, {1e9, -3e8}, 0, 8, o);
-    check_scene<certified_world>(201, {0, 0}, 0.75, 8, o);
-    check_scene<certified_world>(202, {-5e6, 5e6}, 2.5, 6, o);
+    check_world_scene<certified_world>(200, {1e9, -3e8}, 0, 8, o);
+    check_world_scene<certified_world>(201, {0, 0}, 0.75, 8, o);
+    check_world_scene<certified_world>(202, {-5e6, 5e6}, 2.5, 6, o);
 }
 
 TEST_CASE("world: small moves stay in the enlarged boxes and the contacts stay the reference's", "[world]") {
@@ -204,7 +204,7 @@ TEST_CASE("world: small moves stay in the enlarged boxes and the contacts stay t
     for (const bool coherence : {true, false}) {
         world_options o;
         o.coherence = coherence;
-        const world_statistics st = check_scene<certified_world>(500 + coherence, {0, 0}, 0, 20, o, 0.05, 0.02);
+        const world_statistics st = check_world_scene<certified_world>(500 + coherence, {0, 0}, 0, 20, o, 0.05, 0.02);
         INFO("escaped " << st.escaped << " of " << st.moved << " moved");
         CHECK(st.escaped * 2 < st.moved);  // most moved bodies stayed in their enlarged boxes
         INFO("witness hits " << st.witness_hits << ", contacts " << st.contacts << ", separated " << st.separated
@@ -219,14 +219,14 @@ TEST_CASE("world: small moves stay in the enlarged boxes and the contacts stay t
         if (!coherence) CHECK(st.separated + st.found_apart + st.nearby_edges == 0);
     }
     world_options o;
-    const world_statistics st = check_scene<certified_world>(502, {4e6, -2e6}, 0.25, 12, o, 0.05, 0.02);
+    const world_statistics st = check_world_scene<certified_world>(502, {4e6, -2e6}, 0.25, 12, o, 0.05, 0.02);
     CHECK(st.escaped * 2 < st.moved);
 }
 
 TEST_CASE("world: the exact type alone gives the same contacts", "[world]") {
     world_options o;
-    check_scene<world<exact_rational>>(300, {0, 0}, 0, 5, o);
-    check_scene<world<exact_rational>>(301, {3e7, 1e7}, 0.5, 4, o);
+    check_world_scene<world<exact_rational>>(300, {0, 0}, 0, 5, o);
+    check_world_scene<world<exact_rational>>(301, {3e7, 1e7}, 0.5, 4, o);
 }
 
 TEST_CASE("world: threads and coherence change nothing", "[world]") {
@@ -254,8 +254,8 @@ TEST_CASE("world: threads and coherence change nothing", "[world]") {
     std::size_t contacts = 0;
     for (int step = 0; step < 10; ++step) {
         const std::vector<body_pair> ra = a.step(), rb = b.step(), rc = c.step();
-        REQUIRE(show(ra) == show(rb));
-        REQUIRE(show(ra) == show(rc));
+        REQUIRE(show_pairs(ra) == show_pairs(rb));
+        REQUIRE(show_pairs(ra) == show_pairs(rc));
         contacts += ra.size();
         for (std::size_t i = 0; i < n; ++i) {
             if (i % 7 == 0 || g.chance(0.3)) continue;
@@ -298,7 +298,7 @@ TEST_CASE("world: thousands of bodies on two threads, the joins and candidates s
     for (int step = 0; step < steps; ++step) {
         INFO("step " << step);
         const std::vector<body_pair> ra = a.step(), rb = b.step();
-        REQUIRE(show(ra) == show(rb));
+        REQUIRE(show_pairs(ra) == show_pairs(rb));
         REQUIRE(a.witnesses().size() == b.witnesses().size());
         std::size_t same_witness = 0;
         for (std::size_t k = 0; k < ra.size(); ++k)
@@ -342,11 +342,11 @@ TEST_CASE("world: squares sharing edges and corners touch exactly", "[world]") {
             if (near && !(i % 4 == 0 && j % 4 == 0))
                 want.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
         }
-    CHECK(show(w.step()) == show(want));
+    CHECK(show_pairs(w.step()) == show_pairs(want));
     // Every body: the same poses again change nothing.
     for (int i = 0; i < n * n; ++i)
         w.move(static_cast<std::uint32_t>(i), {static_cast<double>(i % n), static_cast<double>(i / n), 0});
-    CHECK(show(w.step()) == show(want));
+    CHECK(show_pairs(w.step()) == show_pairs(want));
     CHECK(w.events().empty());
 }
 
@@ -395,7 +395,7 @@ TEST_CASE("world: pairs kept apart by a hull edge, until they touch exactly", "[
                 }
             const std::vector<body_pair> got = w.step(), want = reference_contacts(shapes, bodies, 0);
             INFO("theta " << theta << " step " << step);
-            REQUIRE(show(got) == show(want));
+            REQUIRE(show_pairs(got) == show_pairs(want));
             for (const contact_event& e : w.events()) begun += e.begins ? 1 : 0;
         }
         const world_statistics& st = w.statistics();
@@ -431,7 +431,7 @@ TEST_CASE("world: a separating edge fails when the bodies touch exactly", "[worl
         w.move(3, bodies[3].where);
         const std::vector<body_pair> got = w.step(), want = reference_contacts(shapes, bodies, 0);
         INFO("step " << step << " t " << t);
-        REQUIRE(show(got) == show(want));
+        REQUIRE(show_pairs(got) == show_pairs(want));
         if (t == 0) {
             CHECK(want.size() == 2);  // both pairs touch
             ++touching;
@@ -550,8 +550,8 @@ TEST_CASE("world: turned bodies touching at the edge of their bounding discs", "
         exact.add_body(static_cast<std::uint32_t>(b.shape), b.where, b.fixed);
     }
     const std::vector<body_pair> want = reference_contacts(shapes, bodies, 0);
-    CHECK(show(certified.step()) == show(want));
-    CHECK(show(exact.step()) == show(want));
+    CHECK(show_pairs(certified.step()) == show_pairs(want));
+    CHECK(show_pairs(exact.step()) == show_pairs(want));
     std::size_t touching = 0;
     for (const body_pair& p : want) touching += p.second == p.first + 1 && p.first % 3 == 0 ? 1 : 0;
     CHECK(touching == static_cast<std::size_t>(pairs));  // every A and its B touch
@@ -577,11 +577,11 @@ TEST_CASE("world: the pairs answered again in exact rationals are counted", "[wo
         rounded.add_body(s, p);
         exact.add_body(s, p);
     }
-    const std::string want = show({{0, 1}});
+    const std::string want = show_pairs({{0, 1}});
     for (int step = 1; step <= 3; ++step) {
         INFO(step);
-        CHECK(show(certified.step()) == want);
-        CHECK(show(exact.step()) == want);
+        CHECK(show_pairs(certified.step()) == want);
+        CHECK(show_pairs(exact.step()) == want);
         rounded.step();
         CHECK(certified.statistics().exact_pairs == static_cast<std::size_t>(step));
         CHECK(rounded.statistics().exact_pairs == 0);
@@ -637,8 +637,8 @@ TEST_CASE("layer_pairs: one layer and two layers against the exact reference", "
         std::vector<polygon> first_shapes(shapes.begin(), shapes.end());
         const std::vector<body_pair> want = reference_contacts(first_shapes, all_first, within);
         INFO("round " << round);
-        CHECK(show(certified_layer_pairs(first, within)) == show(want));
-        CHECK(show(layer_pairs<exact_rational>(first, within, 2)) == show(want));
+        CHECK(show_pairs(certified_layer_pairs(first, within)) == show_pairs(want));
+        CHECK(show_pairs(layer_pairs<exact_rational>(first, within, 2)) == show_pairs(want));
         // Two layers: every (first, second) pair.
         std::vector<body_pair> want2;
         for (std::size_t i = 0; i < as.size(); ++i)
@@ -646,7 +646,7 @@ TEST_CASE("layer_pairs: one layer and two layers against the exact reference", "
                 if (exact_within(test_exact::place(shapes[as[i].shape], as[i].where),
                                  test_exact::place(shapes[bs[j].shape], bs[j].where), within))
                     want2.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
-        CHECK(show(certified_layer_pairs(first, second, within, 2)) == show(want2));
+        CHECK(show_pairs(certified_layer_pairs(first, second, within, 2)) == show_pairs(want2));
     }
     CHECK_THROWS_AS(layer_pairs<double>(std::vector<polygon>{polygon{}}), invalid_input);
     CHECK_THROWS_AS(layer_pairs<double>(std::vector<polygon>{}, -2.0), invalid_input);
@@ -745,9 +745,9 @@ TEST_CASE("layer_pairs: cells along long shared borders against the exact refere
                     want.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
         meeting_pairs += want.size();
         INFO("round " << round << ", " << layer.size() << " polygons");
-        CHECK(show(certified_layer_pairs(layer, within)) == show(want));
-        CHECK(show(layer_pairs<exact_rational>(layer, within)) == show(want));
-        CHECK(show(layer_pairs<double>(layer, within, 2)) == show(layer_pairs<double>(layer, within, 1)));
+        CHECK(show_pairs(certified_layer_pairs(layer, within)) == show_pairs(want));
+        CHECK(show_pairs(layer_pairs<exact_rational>(layer, within)) == show_pairs(want));
+        CHECK(show_pairs(layer_pairs<double>(layer, within, 2)) == show_pairs(layer_pairs<double>(layer, within, 1)));
         // Two layers: alternate polygons.
         std::vector<polygon> first, second;
         std::vector<std::size_t> first_index, second_index;
@@ -760,12 +760,12 @@ TEST_CASE("layer_pairs: cells along long shared borders against the exact refere
             for (std::size_t j = 0; j < second.size(); ++j)
                 if (exact_within(placed[first_index[i]], placed[second_index[j]], within))
                     want2.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
-        CHECK(show(certified_layer_pairs(first, second, within)) == show(want2));
+        CHECK(show_pairs(certified_layer_pairs(first, second, within)) == show_pairs(want2));
         // Roles swapped: the same pairs, each turned round.
         std::vector<body_pair> swapped;
         for (const body_pair& q : want2) swapped.push_back({q.second, q.first});
         std::sort(swapped.begin(), swapped.end());
-        CHECK(show(layer_pairs<exact_rational>(second, first, within)) == show(swapped));
+        CHECK(show_pairs(layer_pairs<exact_rational>(second, first, within)) == show_pairs(swapped));
     }
     // Not vacuous: most neighbours touch (some 40 pairs a round).
     CHECK(meeting_pairs >= 20 * static_cast<std::size_t>(rounds));
@@ -791,13 +791,13 @@ TEST_CASE("layer_pairs: the candidates and those answered again in exact rationa
         return n;
     };
     REQUIRE(boxes_meeting(0.5) == 4);
-    const std::string want = show({{0, 1}, {1, 2}, {2, 3}, {3, 4}});
+    const std::string want = show_pairs({{0, 1}, {1, 2}, {2, 3}, {3, 4}});
     for (unsigned threads : {1u, 2u}) {
         INFO(threads << " threads");
         layer_statistics certified_work, double_work, exact_work;
-        CHECK(show(certified_layer_pairs(layer, 0.5, threads, &certified_work)) == want);
-        CHECK(show(layer_pairs<double>(layer, 0.5, threads, &double_work)) == want);
-        CHECK(show(layer_pairs<exact_rational>(layer, 0.5, threads, &exact_work)) == want);
+        CHECK(show_pairs(certified_layer_pairs(layer, 0.5, threads, &certified_work)) == want);
+        CHECK(show_pairs(layer_pairs<double>(layer, 0.5, threads, &double_work)) == want);
+        CHECK(show_pairs(layer_pairs<exact_rational>(layer, 0.5, threads, &exact_work)) == want);
         CHECK(certified_work.candidates == 4);
         CHECK(double_work.candidates == 4);
         CHECK(exact_work.candidates == 4);
@@ -812,7 +812,8 @@ TEST_CASE("layer_pairs: the candidates and those answered again in exact rationa
         // Two layers: the even squares against the odd ones (and the far one).
         const std::vector<polygon> even = {layer[0], layer[2], layer[4]}, odd = {layer[1], layer[3], layer[5]};
         layer_statistics two;
-        CHECK(show(certified_layer_pairs(even, odd, 0.5, threads, &two)) == show({{0, 0}, {1, 0}, {1, 1}, {2, 1}}));
+        CHECK(show_pairs(certified_layer_pairs(even, odd, 0.5, threads, &two)) ==
+              show_pairs({{0, 0}, {1, 0}, {1, 1}, {2, 1}}));
         CHECK(two.candidates == 4);
         CHECK(two.exact_pairs == 4);
     }
@@ -835,7 +836,7 @@ TEST_CASE("layer_pairs: a crowded layer answered by two threads, exact vertices 
     }
     const std::vector<body_pair> want = reference_contacts(shapes, bodies, 0);
     REQUIRE(want.size() >= 128);
-    CHECK(show(layer_pairs<exact_rational>(layer, 0, 2)) == show(want));
-    CHECK(show(certified_layer_pairs(layer, 0, 2)) == show(want));
-    CHECK(show(layer_pairs<double>(layer, 0, 2)) == show(layer_pairs<double>(layer, 0, 1)));
+    CHECK(show_pairs(layer_pairs<exact_rational>(layer, 0, 2)) == show_pairs(want));
+    CHECK(show_pairs(certified_layer_pairs(layer, 0, 2)) == show_pairs(want));
+    CHECK(show_pairs(layer_pairs<double>(layer, 0, 2)) == show_pairs(layer_pairs<double>(layer, 0, 1)));
 }
