@@ -330,6 +330,64 @@ TEST_CASE("distance bounds: segments_must_cross only when the exact segments cro
     CHECK_FALSE(segments_must_cross({0, 0}, {2, 0}, {1, -0.1}, {1, 0.1}, 0.1));
 }
 
+TEST_CASE("distance bounds: segments_apart_beyond only when every segment near [u, v] lies farther than upper",
+          "[distance][bounds]") {
+    test_random::rng r(23);
+    std::size_t apart = 0, within_delta = 0;
+    for (int k = 0; k < count(20000); ++k) {
+        const int e = static_cast<int>(r.index(1201)) - 600;
+        // [a, b] along x, [u, v] above it, its end u nearest (over the
+        // segment's interior, where the line test is tight) or beyond an end;
+        // then the scene turned and shifted in double (the doubles are what
+        // the predicate and the reference both take).
+        const double h = std::ldexp(r.uniform(0.001, 1), e), x0 = r.uniform(-1.3, 1.3), x1 = r.uniform(-1.3, 1.3);
+        const double rise = r.chance(0.3) ? 0 : std::ldexp(r.uniform(0, 1), e);
+        // (Mostly a quarter turn, tilted a little: the line test's slack,
+        // on |d|_1, is then near |d|; any angle otherwise.)
+        const double turn = r.chance(0.8)
+                                ? 1.5707963267948966 * static_cast<double>(r.index(4)) + r.uniform(-1e-6, 1e-6)
+                                : r.uniform(0, 6.3);
+        const double c = std::cos(turn), sn = std::sin(turn), n = std::hypot(c, sn);
+        const double shift_x = at_scale(r, e), shift_y = at_scale(r, e);
+        const auto place = [&](double x, double y) {
+            return point<double>{(c * x - sn * y) / n + shift_x, (sn * x + c * y) / n + shift_y};
+        };
+        const point<double> a = place(-std::ldexp(1.0, e), 0), b = place(std::ldexp(1.0, e), 0);
+        const point<double> u = place(std::ldexp(x0, e), h), v = place(std::ldexp(x1, e), h + rise);
+        const double delta = std::ldexp(1.0, e - 8 - static_cast<int>(r.index(40)));
+        // upper near the distance in double: often within delta below it,
+        // where a margin without the posing's spread would call the pair apart.
+        const double d =
+            std::sqrt(CGAL::to_double(test_exact::squared_distance(exact(a), exact(b), exact(u), exact(v))));
+        const double upper = std::max(0.0, d - delta * r.uniform(-0.5, 3));
+        if (!segments_apart_beyond(a, b, u, v, upper, delta)) continue;
+        ++apart;
+        const Q dq(delta), upper2 = Q(upper) * Q(upper);
+        bool near_bound = false;
+        for (int corner = 0; corner < 16; ++corner) {
+            const auto moved = [&](const point<double>& p, int bits) {
+                return exact_point(Q(p.x) + ((bits & 1) ? dq : -dq), Q(p.y) + ((bits & 2) ? dq : -dq));
+            };
+            const Q d2 = test_exact::squared_distance(exact(a), exact(b), moved(u, corner & 3), moved(v, corner >> 2));
+            INFO("scale 2^" << e << ", corner " << corner << ", upper " << upper << ", delta " << delta);
+            CHECK(d2 > upper2);
+            near_bound = near_bound || d2 < (Q(upper) + 2 * dq) * (Q(upper) + 2 * dq);
+        }
+        if (near_bound) ++within_delta;
+    }
+    // Pairs called apart whose moved segments come within 2 delta of upper:
+    // the margin is tested where it matters.
+    CHECK(apart > at_least(1000));
+    CHECK(within_delta > at_least(200));
+    // A crossing pair is never apart, whatever upper.
+    for (int k = 0; k < count(2000); ++k) {
+        const int e = static_cast<int>(r.index(1201)) - 600;
+        const point<double> a{-std::ldexp(1.0, e), at_scale(r, e)}, b{std::ldexp(1.0, e), at_scale(r, e)};
+        const point<double> u{at_scale(r, e - 1), -std::ldexp(3.0, e)}, v{at_scale(r, e - 1), std::ldexp(3.0, e)};
+        CHECK_FALSE(segments_apart_beyond(a, b, u, v, std::ldexp(r.uniform(0, 8), e), 0));
+    }
+}
+
 TEST_CASE("distance bounds: the filtered closest_between_segments is the exact closest pair", "[distance][bounds]") {
     test_random::rng r(15);
     for (int k = 0; k < count(10000); ++k) {

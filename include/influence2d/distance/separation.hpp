@@ -127,7 +127,7 @@ double pair_upper(const search_input& in, Approx& approx, std::optional<std::pai
 ///   while stack: (s, m, L) <- pop
 ///       L > U: prune (U may have dropped since the push)
 ///       both leaves: for each edge pair whose boxes are within U and
-///       that no line separates with 2 U to spare (segments_may_meet):
+///       that no line proves farther than U (segments_apart_beyond):
 ///           certainly crossing: that pair; stop
 ///           [lo, hi] <- segment_distance_range; U <- min(U, hi)
 ///           lo <= U: candidate
@@ -163,8 +163,8 @@ double search_pairs(const search_input& in, Approx& approx, double upper, search
                     if (box_gap_lower(ta.edge_box_at(i), fb) - spread > upper) continue;
                     const std::uint32_t e = ta.edge_at(i);
                     const point<double>&a0 = in.a.vertex(e), &a1 = in.a.vertex(in.a.next(e));
-                    // Separated by a line with more than 2 U to spare: farther than U.
-                    if (!segments_may_meet(a0, a1, u, v, upper)) continue;
+                    // Separated by a line: farther than U.
+                    if (segments_apart_beyond(a0, a1, u, v, upper, in.delta)) continue;
                     if (segments_must_cross(a0, a1, u, v, in.delta)) {
                         space.crossing = std::make_pair(e, f);
                         return 0;

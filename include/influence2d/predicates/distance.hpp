@@ -481,6 +481,27 @@ inline distance_range segment_distance_range(const point<double>& a, const point
     return r;
 }
 
+/// Whether [a, b] (exact doubles) and every segment whose ends lie within
+/// `delta` per coordinate of the doubles u and v (B's edge, posed) are
+/// certainly farther apart than `upper`, by a line that separates them:
+/// segments_may_meet with the margin e = (upper + s) / 2 (1 + bound_rounding),
+/// s = posing_spread delta (1 + bound_rounding). segments_may_meet is false
+/// when both ends of one segment lie on one side of the other's line by an
+/// exact cross product above its slack 2e |d|_1 as computed (certain_side
+/// bounds the product's own rounding, the direction d's included), which is
+/// at least 2e |d| (1 - u)^3 since |d|_1 >= |d|: both ends then lie farther
+/// than 2e (1 - u)^3 >= (upper + s)(1 + 8u)(1 - u)^4 >= upper + s from that
+/// line (the sum and the halving round once more). So [a, b] and [u, v] lie
+/// farther apart than upper + s, and a segment whose ends lie within
+/// delta sqrt 2 < s of u and v farther than upper. False when the bounds
+/// cannot tell, and for a pair whose ends lie on both sides of each line
+/// (a crossing), whatever upper.
+inline bool segments_apart_beyond(const point<double>& a, const point<double>& b, const point<double>& u,
+                                  const point<double>& v, double upper, double delta) {
+    const double spread = posing_spread * delta * (1 + bound_rounding);
+    return !segments_may_meet(a, b, u, v, 0.5 * (upper + spread) * (1 + bound_rounding));
+}
+
 /// Whether [a, b] (exact doubles) and the exact segment [U, V], whose ends
 /// lie within `delta` per coordinate of the doubles u and v, certainly cross
 /// at one point strictly inside both:
