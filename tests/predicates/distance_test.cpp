@@ -363,12 +363,13 @@ TEST_CASE("distance bounds: segments_apart_beyond only when every segment near [
         if (!segments_apart_beyond(a, b, u, v, upper, delta)) continue;
         ++apart;
         const Q dq(delta), upper2 = Q(upper) * Q(upper);
+        const exact_point A = exact(a), B = exact(b);
+        const auto moved = [&](const point<double>& p, int bits) {
+            return exact_point(Q(p.x) + ((bits & 1) ? dq : -dq), Q(p.y) + ((bits & 2) ? dq : -dq));
+        };
         bool near_bound = false;
         for (int corner = 0; corner < 16; ++corner) {
-            const auto moved = [&](const point<double>& p, int bits) {
-                return exact_point(Q(p.x) + ((bits & 1) ? dq : -dq), Q(p.y) + ((bits & 2) ? dq : -dq));
-            };
-            const Q d2 = test_exact::squared_distance(exact(a), exact(b), moved(u, corner & 3), moved(v, corner >> 2));
+            const Q d2 = test_exact::squared_distance(A, B, moved(u, corner & 3), moved(v, corner >> 2));
             INFO("scale 2^" << e << ", corner " << corner << ", upper " << upper << ", delta " << delta);
             CHECK(d2 > upper2);
             near_bound = near_bound || d2 < (Q(upper) + 2 * dq) * (Q(upper) + 2 * dq);
