@@ -583,6 +583,50 @@ TEST_CASE("filters: box_may_be_near_line never drops a box within g of the line"
     CHECK(box_may_be_near_line({0, 0, 1, 1}, {5, 5}, {5, 5}, 0));
 }
 
+TEST_CASE("filters: box_may_be_near_line drops a box only where certain_side puts all four corners on one side",
+          "[filters]") {
+    // The one-pass test against its definition: certain_side at each corner.
+    test_random::rng r(11);
+    std::size_t dropped = 0, dropped_by_corners = 0;
+    for (int k = 0; k < filter_count(100000); ++k) {
+        const int s = static_cast<int>(r.index(1200)) - 600;
+        const double x0 = filter_scale(r, s), y0 = filter_scale(r, s);
+        const box bx{x0, y0, x0 + std::ldexp(r.unit(), s - static_cast<int>(r.index(30))),
+                     y0 + std::ldexp(r.unit(), s - static_cast<int>(r.index(30)))};
+        const point<double> u{filter_scale(r, s), filter_scale(r, s)};
+        const point<double> v =
+            r.chance(0.2) ? near_line(r, u, {x0, y0}) : point<double>{filter_scale(r, s), filter_scale(r, s)};
+        const double g = r.chance(0.2) ? 0.0 : std::ldexp(r.unit(), s - static_cast<int>(r.index(40)));
+        const double dx = v.x - u.x, dy = v.y - u.y, slack = g * (std::fabs(dx) + std::fabs(dy));
+        int side = 0;
+        bool apart = true;
+        for (double x : {bx.min_x, bx.max_x})
+            for (double y : {bx.min_y, bx.max_y}) {
+                const int c = certain_side(u, dx, dy, {x, y}, slack);
+                apart = apart && c != 0 && (side == 0 || c == side);
+                side = c;
+            }
+        const bool kept = box_may_be_near_line(bx, u, v, g);
+        INFO("scale 2^" << s << ", g " << g);
+        if (!kept) CHECK(apart);
+        dropped += kept ? 0 : 1;
+        dropped_by_corners += apart ? 1 : 0;
+    }
+    // Its one bound is at least each corner's, and differs by 2^-48 of the
+    // terms at most: it keeps almost nothing that the corners would drop.
+    CHECK(dropped > filter_at_least(10000));
+    CHECK(dropped_by_corners - dropped <= dropped_by_corners / 1000);
+    // Coordinates that are not finite: kept.
+    const double nan_value = std::numeric_limits<double>::quiet_NaN();
+    CHECK(box_may_be_near_line({0, 0, 1, 1}, {2, nan_value}, {2, 5}, 0.5));
+    CHECK(box_may_be_near_line({0, 0, 1, 1}, {2, -1}, {2, 5}, nan_value));
+    CHECK(box_may_be_near_line({0, 0, HUGE_VAL, 1}, {2, -1}, {2, 5}, 0.5));
+    // A vertical line (dx = 0) and an infinite height: 0 times infinity at
+    // two corners, NaN, whatever min and max would make of it.
+    CHECK(box_may_be_near_line({0, 0, 1, HUGE_VAL}, {2, -1}, {2, 5}, 0.5));
+    CHECK(box_may_be_near_line({0, 0, 1, 1}, {DBL_MAX, -DBL_MAX}, {-DBL_MAX, DBL_MAX}, 0.5));
+}
+
 namespace {
 
 /// An NT value exactly as a rational (a long double as the sum of two doubles).

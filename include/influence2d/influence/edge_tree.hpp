@@ -178,14 +178,14 @@ private:
     bool query_below(std::uint32_t start, const point<double>& u, const point<double>& v, double grow, double line_grow,
                      Visit&& visit) const {
         if (nodes_.empty()) return false;
-        box q;
-        q.add(u);
-        q.add(v);
-        q = q.inflated(grow);
-        // (A NaN coordinate leaves the box unchanged: test the ends too.)
-        const bool prune = std::isfinite(u.x) && std::isfinite(u.y) && std::isfinite(v.x) && std::isfinite(v.y) &&
-                           std::isfinite(q.min_x) && std::isfinite(q.min_y) && std::isfinite(q.max_x) &&
-                           std::isfinite(q.max_y);
+        const box q{std::min(u.x, v.x) - grow, std::min(u.y, v.y) - grow, std::max(u.x, v.x) + grow,
+                    std::max(u.y, v.y) + grow};
+        // x - x is 0 for a finite x and NaN otherwise: the sum is 0 only
+        // when the ends and the grown box are finite (min and max may drop
+        // a NaN end: the ends are summed too).
+        const bool prune = (u.x - u.x) + (u.y - u.y) + (v.x - v.x) + (v.y - v.y) + (q.min_x - q.min_x) +
+                               (q.min_y - q.min_y) + (q.max_x - q.max_x) + (q.max_y - q.max_y) ==
+                           0;
         const bool lines = u.x != v.x || u.y != v.y;
         std::uint32_t stack[max_depth + 2];
         std::size_t top = 0;

@@ -276,22 +276,37 @@ inline bool certainly_nearer(const point<double>& p, const point<double>& q, dou
 }
 
 /// Whether some point of box b may lie within g of the line through u and v:
-/// false only when every corner lies certainly on one side, beyond g (then
-/// no point within g of the segment [u, v] lies in b). True for u == v and
-/// whenever the arithmetic cannot be trusted.
+/// false only when every corner lies certainly on one side, beyond g, as
+/// certain_side would find each (then no point within g of the segment
+/// [u, v] lies in b). True for u == v and whenever the arithmetic cannot be
+/// trusted.
+///
+/// The four corners in one pass: certain_side's value at corner (x, y) is
+/// l - r with l = dx (y - u.y) and r = dy (x - u.x), so the corners' values
+/// are l_i - r_j for the box's two heights i and two abscissas j, and the
+/// least of them is min l - max r. Rounding is monotone, so fl(l_i - r_j) >=
+/// fl(min l - max r) for every corner; and each corner's bound, slack +
+/// side_rounding (|l_i| + |r_j|) rounded, lies between the same sum taken
+/// with the smaller and with the larger magnitudes. So min l - max r beyond
+/// the larger bound puts every corner certainly left, as certain_side
+/// would (max l - min r below its negative, right), and the smaller bound
+/// at least side_bound_floor keeps every corner's bound trusted. Each
+/// corner's value is then the one certain_side computes, and the one bound
+/// is at least each corner's: this test drops a box only where the four
+/// certain_side calls would.
 inline bool box_may_be_near_line(const box& b, const point<double>& u, const point<double>& v, double g) {
     const double dx = v.x - u.x, dy = v.y - u.y;
     // g |d|_1 >= g |d|_2: the distance beyond g, with room for the rounding.
     const double slack = g * (std::fabs(dx) + std::fabs(dy));
-    int side = 0;
-    const double xs[2] = {b.min_x, b.max_x}, ys[2] = {b.min_y, b.max_y};
-    for (double x : xs)
-        for (double y : ys) {
-            const int s = certain_side(u, dx, dy, {x, y}, slack);
-            if (s == 0 || (side != 0 && s != side)) return true;
-            side = s;
-        }
-    return false;
+    const double l0 = dx * (b.min_y - u.y), l1 = dx * (b.max_y - u.y);
+    const double r0 = dy * (b.min_x - u.x), r1 = dy * (b.max_x - u.x);
+    const double al0 = std::fabs(l0), al1 = std::fabs(l1), ar0 = std::fabs(r0), ar1 = std::fabs(r1);
+    // (A NaN or infinite term: not trusted, as in certain_side.)
+    if (!(al0 + al1 + ar0 + ar1 < HUGE_VAL)) return true;
+    const double larger = slack + side_rounding * (std::max(al0, al1) + std::max(ar0, ar1));
+    const double smaller = slack + side_rounding * (std::min(al0, al1) + std::min(ar0, ar1));
+    if (!(smaller >= side_bound_floor) || !(larger < HUGE_VAL)) return true;
+    return !(std::min(l0, l1) - std::max(r0, r1) > larger) && !(std::max(l0, l1) - std::min(r0, r1) < -larger);
 }
 
 /// certain_crossing's answer when the doubles do not settle an edge.

@@ -25,6 +25,7 @@
 #include "influence2d/influence/influence_areas.hpp"
 #include "influence2d/predicates/convexity.hpp"
 #include "influence2d/scene/interior_cells.hpp"
+#include "influence2d/scene/reaching_vertices.hpp"
 
 namespace influence2d {
 
@@ -118,6 +119,11 @@ struct static_scene {
     }
     /// The deep cells if some caller built them, else nullptr (never builds).
     const interior_cells* interior_if_built() const { return interior_.if_built(); }
+    /// A's vertices reaching farthest from its centroid in each of eight
+    /// directions (built on first use, linear time; thread-safe).
+    const reaching_vertices& reaching() const {
+        return reaching_.get([this] { return reaching_vertices(shape, shape.centroid()); });
+    }
     /// Bytes of the heap blocks held by the parts built so far (for an exact
     /// NT, the numbers' own limbs are not counted).
     std::size_t heap_bytes() const {
@@ -132,6 +138,7 @@ private:
     built_once<influence_areas<NT>> areas_;
     built_once<edge_tree> tree_;
     built_once<interior_cells> interior_;
+    built_once<reaching_vertices> reaching_;
 };
 
 /// The moving polygon B prepared in its own frame: its centroid and bounding
@@ -168,6 +175,12 @@ struct moving_scene {
     }
     /// The deep cells if some caller built them, else nullptr (never builds).
     const interior_cells* interior_if_built() const { return interior_.if_built(); }
+    /// B's vertices reaching farthest from its centroid in each of eight
+    /// directions, in B's own frame (built on first use, linear time;
+    /// thread-safe).
+    const reaching_vertices& reaching() const {
+        return reaching_.get([this] { return reaching_vertices(shape, centroid); });
+    }
     /// Bytes of the heap blocks held by the parts built so far.
     std::size_t heap_bytes() const {
         const edge_tree* t = tree_.if_built();
@@ -178,6 +191,7 @@ struct moving_scene {
 private:
     built_once<edge_tree> tree_;
     built_once<interior_cells> interior_;
+    built_once<reaching_vertices> reaching_;
 };
 
 /// A prepared for detectors in NT, to be shared by many (detector's
