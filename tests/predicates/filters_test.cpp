@@ -583,6 +583,61 @@ TEST_CASE("filters: box_may_be_near_line never drops a box within g of the line"
     CHECK(box_may_be_near_line({0, 0, 1, 1}, {5, 5}, {5, 5}, 0));
 }
 
+TEST_CASE("filters: disc_reaches_left only when a point of the disc lies left of every line the points may make",
+          "[filters]") {
+    // Exact reference: the disc of radius rho about c* has a point strictly
+    // left of the line p* q* when (q* - p*) x (c* - p*) > -rho |q* - p*|,
+    // checked at random corners of the points' error boxes in rationals.
+    test_random::rng r(12);
+    std::size_t reached = 0, beyond_centre = 0;
+    for (int k = 0; k < filter_count(20000); ++k) {
+        const int s = static_cast<int>(r.index(1000)) - 500;
+        const point<double> p{filter_scale(r, s), filter_scale(r, s)};
+        // Directions near a diagonal half of the time: there |d|_1 = sqrt 2 |d|_2 and
+        // the reach is tightest.
+        const double angle =
+            r.chance(0.5) ? r.uniform(-3.2, 3.2) : 0.785398 * (2 * r.index(4) + 1) + r.uniform(-1e-3, 1e-3);
+        const double length = std::ldexp(r.uniform(0.5, 1), s);
+        const point<double> q{p.x + length * std::cos(angle), p.y + length * std::sin(angle)};
+        const double rho = r.chance(0.1) ? 0.0 : length * r.uniform(0.01, 2);
+        // c right of the line at about rho (within 3%), along the edge.
+        const double t = r.uniform(-1, 2), gap = rho * r.uniform(0.97, 1.03) + length * r.uniform(-1e-3, 1e-3);
+        const point<double> c{p.x + t * (q.x - p.x) + gap * std::sin(angle),
+                              p.y + t * (q.y - p.y) - gap * std::cos(angle)};
+        // Errors from none to a sixteenth of the edge's length.
+        const int e_low = r.chance(0.5) ? 4 : 20;
+        const double ep = r.chance(0.3) ? 0.0 : std::ldexp(r.unit(), s - e_low - static_cast<int>(r.index(30)));
+        const double er = r.chance(0.3) ? 0.0 : std::ldexp(r.unit(), s - e_low - static_cast<int>(r.index(30)));
+        const double spread =
+            1.5 * (std::fabs(c.x - p.x) + std::fabs(c.y - p.y) + std::fabs(q.x - p.x) + std::fabs(q.y - p.y));
+        const double dx = q.x - p.x, dy = q.y - p.y;
+        const bool answer = disc_reaches_left(p, dx, dy, c, rho, ep, side_slack(ep, er, spread).of(dx, dy));
+        if (!answer) continue;
+        ++reached;
+        beyond_centre += exact_side(p, q, c) < 0 ? 1 : 0;
+        for (int corner = 0; corner < 16; ++corner) {
+            const auto moved = [&](const point<double>& x, double e) {
+                return point<Q>{Q(x.x) + (r.chance(0.5) ? Q(e) : Q(-e)), Q(x.y) + (r.chance(0.5) ? Q(e) : Q(-e))};
+            };
+            const point<Q> ps = moved(p, ep), qs = moved(q, ep), cs = moved(c, er);
+            const Q ddx = qs.x - ps.x, ddy = qs.y - ps.y;
+            const Q o = ddx * (cs.y - ps.y) - ddy * (cs.x - ps.x);
+            const bool left = o > 0 || (rho > 0 && o * o < Q(rho) * Q(rho) * (ddx * ddx + ddy * ddy));
+            INFO("scale 2^" << s << ", rho " << rho << ", ep " << ep << ", er " << er);
+            CHECK(left);
+        }
+    }
+    // Not vacuous: many answers, most of them with c itself right of the line.
+    CHECK(reached > filter_at_least(2000));
+    CHECK(beyond_centre > filter_at_least(1000));
+    // NaN: no answer.
+    CHECK_FALSE(disc_reaches_left({0, 0}, 1, 0, {0, nan_value}, 1, 0, 0));
+    CHECK_FALSE(disc_reaches_left({0, 0}, 1, 0, {0, -0.5}, nan_value, 0, 0));
+    // The unit disc about (0, -0.5) crosses the x axis; about (0, -2) it does not.
+    CHECK(disc_reaches_left({0, 0}, 1, 0, {0, -0.5}, 1, 0, 0));
+    CHECK_FALSE(disc_reaches_left({0, 0}, 1, 0, {0, -2}, 1, 0, 0));
+}
+
 TEST_CASE("filters: box_may_be_near_line drops a box only where certain_side puts all four corners on one side",
           "[filters]") {
     // The one-pass test against its definition: certain_side at each corner.

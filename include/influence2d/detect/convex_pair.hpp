@@ -23,22 +23,33 @@ struct convex_view {
     const point<double>* approximate;  ///< vertex i within error of its double approximate[i]
     Exact exact;                       ///< i -> point<NT>, vertex i
     double error;                      ///< bounds |approximate[i] - vertex i| on each coordinate
+    /// A disc in the region: every point within inner_radius of the point
+    /// whose double (within error) is inner_centre lies in it; none when
+    /// inner_radius is 0.
+    point<double> inner_centre;
+    double inner_radius = 0;  ///< see inner_centre
 };
 
-/// A convex_view from its parts.
+/// A convex_view from its parts, without an inner disc or with one.
 template <class Exact>
-convex_view<Exact> make_convex_view(std::size_t size, const point<double>* approximate, Exact exact, double error) {
-    return {size, approximate, exact, error};
+convex_view<Exact> make_convex_view(std::size_t size, const point<double>* approximate, Exact exact, double error,
+                                    point<double> inner_centre = {}, double inner_radius = 0) {
+    return {size, approximate, exact, error, inner_centre, inner_radius};
 }
 
 /// The first edge of `poly` in [first, last) but `skip` whose line has
 /// every vertex of `other` strictly on its right, that is, outside poly
-/// (edge i runs from vertex i to vertex i + 1); `last` when none has. Each vertex is
-/// placed by certain_side_for in double (the edge's side_slack for points
-/// within `spread` of its start, in the L1 norm), and by orientation in NT
-/// when the doubles cannot settle it. An edge's scan stops at the first
-/// vertex on or left of its line, where the next edge's scan starts (a
-/// vertex inside one edge's half-plane is likely inside the next one's).
+/// (edge i runs from vertex i to vertex i + 1); `last` when none has. An
+/// edge that other's inner disc certainly reaches across (some point of
+/// other strictly left, disc_reaches_left; a convex region's least value
+/// of a linear function is at a vertex, so some vertex is strictly left
+/// too) separates nothing, at the cost of one side test. Otherwise each
+/// vertex is placed by certain_side_for in double (the edge's side_slack
+/// for points within `spread` of its start, in the L1 norm), and by
+/// orientation in NT when the doubles cannot settle it. An edge's scan
+/// stops at the first vertex on or left of its line, where the next edge's
+/// scan starts (a vertex inside one edge's half-plane is likely inside the
+/// next one's).
 template <class NT, class Poly, class Other>
 std::size_t separating_edge_of(const Poly& poly, const Other& other, double spread, std::size_t first, std::size_t last,
                                std::size_t skip) {
@@ -52,6 +63,9 @@ std::size_t separating_edge_of(const Poly& poly, const Other& other, double spre
         const std::size_t i1 = i + 1 == n ? 0 : i + 1;
         const double dx = v[i1].x - v[i].x, dy = v[i1].y - v[i].y;
         const double slack = slacks.of(dx, dy);
+        if (other.inner_radius > 0 &&
+            disc_reaches_left(v[i], dx, dy, other.inner_centre, other.inner_radius, poly.error, slack))
+            continue;
         bool separates = true;
         std::size_t j = start;
         for (std::size_t k = 0; k < m; ++k) {

@@ -164,6 +164,36 @@ inline int certain_side_for(const point<double>& p, double dx, double dy, const 
     return o > slack ? 1 : (o < -slack ? -1 : 0);
 }
 
+/// The share of a disc's radius times an edge's |dx| + |dy| that
+/// disc_reaches_left counts as the disc's reach across the edge's line:
+/// below 1 / sqrt 2 = 0.7071 (|d|_2 >= |d|_1 / sqrt 2) by 1%, which covers
+/// the rounding of the reach's few operations (2^-52 each), of the
+/// direction's differences, and the scale factor of a posed disc
+/// (pose_scale_widening).
+inline constexpr double disc_reach_share = 0.7;
+
+/// Whether some point of the closed disc of radius `radius` about c lies
+/// certainly strictly left of the line through p of direction (dx, dy), the
+/// points' doubles within ep (p, and the direction's ends) and er (c) of
+/// them, given the edge's side_slack as certain_side_for takes it: the
+/// value o of c is above slack minus the disc's reach. Why: slack bounds
+/// o's distance from the exact value o* (side_slack), and the point c +
+/// t n (n the unit normal to the left, 0 < t < radius) has value o* +
+/// t |d*|_2 for the exact direction d*; so o* > -radius |d*|_2 puts some
+/// point of the disc strictly left. |d*|_2 >= |d*|_1 / sqrt 2, and |d*|_1
+/// >= |dx| + |dy| - 4 ep less the differences' rounding: the reach
+/// disc_reach_share radius (|dx| + |dy| - 4 ep) is below radius |d*|_2.
+/// The slack is widened by 2^-50 for the final subtraction's rounding
+/// relative to it (the reach's share is in disc_reach_share). False for a
+/// NaN, and for a radius of 0 the test is certain_side_for's (c itself
+/// strictly left).
+inline bool disc_reaches_left(const point<double>& p, double dx, double dy, const point<double>& c, double radius,
+                              double ep, double slack) {
+    const double o = dx * (c.y - p.y) - dy * (c.x - p.x);
+    const double reach = disc_reach_share * radius * std::max(std::fabs(dx) + std::fabs(dy) - 4 * ep, 0.0);
+    return o > slack * (1 + 0x1p-50) - reach;
+}
+
 /// Whether the segments [a, b] and [u, v] may meet, each point known only to
 /// within e on each coordinate (the paper's detailed test, both ways, as a
 /// filter): false when u and v lie certainly on one side of the line through
