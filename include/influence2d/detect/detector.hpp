@@ -505,7 +505,7 @@ private:
             a_inner_.centre, a_inner_.radius);
         const auto b = make_convex_view(
             b_.size(), &b_.approximate(0), [&](std::size_t j) -> const point<NT>& { return b_.vertex(j); }, f.margin,
-            f.t.template apply<double>(b_inner_.centre), b_inner_.radius);
+            f.t.template apply<double>(b_inner_.centre), std::max(b_inner_.radius - 1.5 * f.margin, 0.0));
         const point<double>& o = a_->shape.centroid();
         const double spread = 1.5 * (a_->radius + b_.radius() + filter_length(f.p.x - o.x, f.p.y - o.y) + 4 * f.margin);
         if constexpr (with_coherence) return convex_regions_meet<NT>(a, b, spread, coherence_state::value.separating);
@@ -1088,7 +1088,11 @@ private:
     };
     /// With the convex route: A's and B's inner discs, which settle the
     /// separating-edge test's edges that the other polygon reaches across
-    /// with one side test each (separating_edge_of).
+    /// with one side test each (separating_edge_of). B's posed in NT is
+    /// the rigid image only in an exact NT: in a floating NT each posed
+    /// vertex lies within the frame margin of it on each coordinate, so each
+    /// edge's line within margin sqrt 2 < 1.5 margin, and the posed convex
+    /// region holds the disc shrunk by that much (convex_meet shrinks it).
     inner_disc a_inner_, b_inner_;
     /// candidates_pay's bound on candidates times B's chunks. Measured on the
     /// paper's trajectories over the families (8 to 1,024 edges each, double):
