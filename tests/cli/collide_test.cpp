@@ -159,16 +159,21 @@ TEST_CASE("cli collide: certified counts its exact fallbacks, and the paper's al
         CHECK(std::stoi(m[1].str()) == 0);
         CHECK(lines_of(slurp(frames)) == std::vector<std::string>{"frame,collides", "0,1", "1,1", "2,0"});
 
-        // Turned by a quarter and by a half turn, touching at a corner: the
-        // posed coordinates are rounded, their exact zeros are in doubt, and
-        // each frame is answered again exactly.
-        const auto turned = dir.file("turned.csv", "tx,ty,theta\n1,0,1.5707963267948966\n1,1,3.141592653589793\n");
+        // Turned by a quarter (cos is 6e-17 in double, sin 1): moved by (2, 0)
+        // the corner (0, 1) lands on (1, 6e-17), on A's side x = 1; moved by
+        // (2, 1) the side from (1, 1 + 6e-17) to (2, 1) passes above A's
+        // corner (1, 1) by 6e-17. The posed coordinates are rounded, their
+        // exact zeros are in doubt, and each frame is answered again
+        // exactly. (Squares turned onto A itself, overlapping, are settled
+        // in double: the separating-edge test sees the other square's inner
+        // disc reach across every edge.)
+        const auto turned = dir.file("turned.csv", "tx,ty,theta\n2,0,1.5707963267948966\n2,1,1.5707963267948966\n");
         r = run_cli(dir, scene_args(a, a) + " --poses " + quote(turned.string()) +
                              " --number-type certified --algorithm " + algorithm + " --out " + quote(frames.string()));
         REQUIRE(r.exit_code == 0);
         REQUIRE(std::regex_search(r.out, m, fallbacks));
         CHECK(std::stoi(m[1].str()) == 2);
-        CHECK(lines_of(slurp(frames)) == std::vector<std::string>{"frame,collides", "0,1", "1,1"});
+        CHECK(lines_of(slurp(frames)) == std::vector<std::string>{"frame,collides", "0,1", "1,0"});
 
         // Frames apart and turned decide nothing in doubt: no fallback.
         const auto apart = dir.file("apart.csv", "tx,ty,theta\n5,0.3,0.25\n0.2,-7,1\n");
