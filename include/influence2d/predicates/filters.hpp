@@ -77,7 +77,7 @@ inline constexpr double direction_trust_factor = 1e3;
 /// the squares can neither overflow nor underflow (square_safe_low and
 /// square_safe_high), std::hypot (slower, and safe at any magnitude)
 /// elsewhere. Within about an ulp of the true length either way.
-inline double filter_length(double x, double y) {
+[[gnu::always_inline]] inline double filter_length(double x, double y) {
     const double big = std::max(std::fabs(x), std::fabs(y));
     if (big > square_safe_low && big < square_safe_high) return std::sqrt(x * x + y * y);
     return std::hypot(x, y);
