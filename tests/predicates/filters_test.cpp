@@ -595,8 +595,9 @@ TEST_CASE("filters: disc_reaches_left only when a point of the disc lies left of
         const point<double> p{filter_scale(r, s), filter_scale(r, s)};
         // Directions near a diagonal half of the time: there |d|_1 = sqrt 2 |d|_2 and
         // the reach is tightest.
-        const double angle =
-            r.chance(0.5) ? r.uniform(-3.2, 3.2) : 0.785398 * (2 * r.index(4) + 1) + r.uniform(-1e-3, 1e-3);
+        const double angle = r.chance(0.5)
+                                 ? r.uniform(-3.2, 3.2)
+                                 : 0.785398 * static_cast<double>(2 * r.index(4) + 1) + r.uniform(-1e-3, 1e-3);
         const double length = std::ldexp(r.uniform(0.5, 1), s);
         const point<double> q{p.x + length * std::cos(angle), p.y + length * std::sin(angle)};
         const double rho = r.chance(0.1) ? 0.0 : length * r.uniform(0.01, 2);
@@ -672,7 +673,6 @@ TEST_CASE("filters: box_may_be_near_line drops a box only where certain_side put
     CHECK(dropped > filter_at_least(10000));
     CHECK(dropped_by_corners - dropped <= dropped_by_corners / 1000);
     // Coordinates that are not finite: kept.
-    const double nan_value = std::numeric_limits<double>::quiet_NaN();
     CHECK(box_may_be_near_line({0, 0, 1, 1}, {2, nan_value}, {2, 5}, 0.5));
     CHECK(box_may_be_near_line({0, 0, 1, 1}, {2, -1}, {2, 5}, nan_value));
     CHECK(box_may_be_near_line({0, 0, HUGE_VAL, 1}, {2, -1}, {2, 5}, 0.5));
