@@ -10,6 +10,7 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/predicates/orientation.hpp"
+#include "influence2d/scene/bounding_disc.hpp"
 
 namespace influence2d {
 
@@ -23,18 +24,17 @@ struct convex_view {
     const point<double>* approximate;  ///< vertex i within error of its double approximate[i]
     Exact exact;                       ///< i -> point<NT>, vertex i
     double error;                      ///< bounds |approximate[i] - vertex i| on each coordinate
-    /// A disc in the region: every point within inner_radius of the point
-    /// whose double (within error) is inner_centre lies in it; none when
-    /// inner_radius is 0.
-    point<double> inner_centre;
-    double inner_radius = 0;  ///< see inner_centre
+    /// A disc in the region: every point within inner.radius of the point
+    /// whose double (within error) is inner.centre lies in it; none when
+    /// inner.radius is 0.
+    disc inner;
 };
 
 /// A convex_view from its parts, without an inner disc or with one.
 template <class Exact>
 convex_view<Exact> make_convex_view(std::size_t size, const point<double>* approximate, Exact exact, double error,
-                                    point<double> inner_centre = {}, double inner_radius = 0) {
-    return {size, approximate, exact, error, inner_centre, inner_radius};
+                                    disc inner = {}) {
+    return {size, approximate, exact, error, inner};
 }
 
 /// The first edge of `poly` in [first, last) but `skip` whose line has
@@ -63,8 +63,8 @@ std::size_t separating_edge_of(const Poly& poly, const Other& other, double spre
         const std::size_t i1 = i + 1 == n ? 0 : i + 1;
         const double dx = v[i1].x - v[i].x, dy = v[i1].y - v[i].y;
         const double slack = slacks.of(dx, dy);
-        if (other.inner_radius > 0 &&
-            disc_reaches_left(v[i], dx, dy, other.inner_centre, other.inner_radius, poly.error, slack))
+        if (other.inner.radius > 0 &&
+            disc_reaches_left(v[i], dx, dy, other.inner.centre, other.inner.radius, poly.error, slack))
             continue;
         bool separates = true;
         std::size_t j = start;

@@ -25,6 +25,7 @@
 #include "influence2d/predicates/extended_area.hpp"
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/predicates/segments.hpp"
+#include "influence2d/scene/bounding_disc.hpp"
 #include "influence2d/scene/inner_disc.hpp"
 #include "influence2d/scene/posed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
@@ -502,10 +503,10 @@ private:
         const auto& cov = a_->covering;
         const auto a = make_convex_view(
             as.size(), as.vertices().data(), [&](std::size_t i) -> const point<NT>& { return cov.start(i); }, 0.0,
-            a_inner_.centre, a_inner_.radius);
+            a_inner_);
         const auto b = make_convex_view(
             b_.size(), &b_.approximate(0), [&](std::size_t j) -> const point<NT>& { return b_.vertex(j); }, f.margin,
-            f.t.template apply<double>(b_inner_.centre), std::max(b_inner_.radius - 1.5 * f.margin, 0.0));
+            disc{f.t.template apply<double>(b_inner_.centre), std::max(b_inner_.radius - 1.5 * f.margin, 0.0)});
         const point<double>& o = a_->shape.centroid();
         const double spread = 1.5 * (a_->radius + b_.radius() + filter_length(f.p.x - o.x, f.p.y - o.y) + 4 * f.margin);
         if constexpr (with_coherence) return convex_regions_meet<NT>(a, b, spread, coherence_state::value.separating);
@@ -1080,20 +1081,15 @@ private:
     /// ones 20% more.
     static constexpr std::size_t convex_pair_limit = 256;
     bool convex_route_ = false;  ///< A and B convex and small, d == 0
-    /// A disc in a polygon's region, in its own frame (scene/inner_disc.hpp;
-    /// radius 0: none).
-    struct inner_disc {
-        point<double> centre;
-        double radius = 0;
-    };
-    /// With the convex route: A's and B's inner discs, which settle the
+    /// With the convex route: A's and B's inner discs, each in its own frame
+    /// (scene/inner_disc.hpp; radius 0: none), which settle the
     /// separating-edge test's edges that the other polygon reaches across
     /// with one side test each (separating_edge_of). B's posed in NT is
     /// the rigid image only in an exact NT: in a floating NT each posed
     /// vertex lies within the frame margin of it on each coordinate, so each
     /// edge's line within margin sqrt 2 < 1.5 margin, and the posed convex
     /// region holds the disc shrunk by that much (convex_meet shrinks it).
-    inner_disc a_inner_, b_inner_;
+    disc a_inner_, b_inner_;
     /// candidates_pay's bound on candidates times B's chunks. Measured on the
     /// paper's trajectories over the families (8 to 1,024 edges each, double):
     /// at 256 no cell got more than 5% slower than through the candidates
