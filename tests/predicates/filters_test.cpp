@@ -111,6 +111,11 @@ TEST_CASE("filters: square_safe_low and square_safe_high keep squares and their 
     // Exact lengths at the ends of the range.
     CHECK(filter_length(3 * 0x1p-1074, 4 * 0x1p-1074) == 5 * 0x1p-1074);
     CHECK(filter_length(0x1.8p1000, 0x1p1001) == 0x1.4p1001);  // 3, 4, 5 times 2^999
+    // Zero (a point inside a box) by the squares, and both signs of it.
+    CHECK(filter_length(0.0, 0.0) == 0);
+    CHECK(filter_length(-0.0, 0.0) == 0);
+    CHECK(std::isnan(filter_length(std::nan(""), 0.0)));
+    CHECK(std::isnan(filter_length(0.0, std::nan(""))));
 }
 
 TEST_CASE("filters: upper_sqrt is strictly above the root, by sqrt_widening and an ulp at most", "[filters]") {

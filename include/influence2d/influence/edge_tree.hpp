@@ -178,14 +178,14 @@ private:
     bool query_below(std::uint32_t start, const point<double>& u, const point<double>& v, double grow, double line_grow,
                      Visit&& visit) const {
         if (nodes_.empty()) return false;
+        // Pruning only when the ends and the grow are finite: their sum is
+        // finite only then (finite terms whose sum overflows only turn the
+        // pruning off). The ends are summed, not the grown box's sides, as
+        // min and max may drop a NaN end; a side that overflows to infinity
+        // only widens the box.
+        const bool prune = std::isfinite(u.x + u.y + v.x + v.y + grow);
         const box q{std::min(u.x, v.x) - grow, std::min(u.y, v.y) - grow, std::max(u.x, v.x) + grow,
                     std::max(u.y, v.y) + grow};
-        // x - x is 0 for a finite x and NaN otherwise: the sum is 0 only
-        // when the ends and the grown box are finite (min and max may drop
-        // a NaN end: the ends are summed too).
-        const bool prune = (u.x - u.x) + (u.y - u.y) + (v.x - v.x) + (v.y - v.y) + (q.min_x - q.min_x) +
-                               (q.min_y - q.min_y) + (q.max_x - q.max_x) + (q.max_y - q.max_y) ==
-                           0;
         const bool lines = u.x != v.x || u.y != v.y;
         std::uint32_t stack[max_depth + 2];
         std::size_t top = 0;

@@ -75,11 +75,12 @@ inline constexpr double direction_trust_factor = 1e3;
 
 /// The length of (x, y) in double, for filters only: sqrt(x^2 + y^2) where
 /// the squares can neither overflow nor underflow (square_safe_low and
-/// square_safe_high), std::hypot (slower, and safe at any magnitude)
-/// elsewhere. Within about an ulp of the true length either way.
+/// square_safe_high) or both are 0 (the length is then exactly 0, as a
+/// point inside a box has it), std::hypot (slower, and safe at any
+/// magnitude) elsewhere. Within about an ulp of the true length either way.
 [[gnu::always_inline]] inline double filter_length(double x, double y) {
     const double big = std::max(std::fabs(x), std::fabs(y));
-    if (big > square_safe_low && big < square_safe_high) return std::sqrt(x * x + y * y);
+    if (big < square_safe_high && (big > square_safe_low || big == 0)) return std::sqrt(x * x + y * y);
     return std::hypot(x, y);
 }
 
