@@ -78,7 +78,7 @@ struct coherence_state {
 
     /// Whether p lies within the skin of `from` (a filter in double; a
     /// distance that is not a number counts as within).
-    bool within_skin(const point<double>& from, const point<double>& p) const {
+    [[gnu::always_inline]] bool within_skin(const point<double>& from, const point<double>& p) const {
         return !(filter_length(p.x - from.x, p.y - from.y) > skin);
     }
 };
