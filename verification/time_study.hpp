@@ -45,8 +45,12 @@
 //               of `budget` (k = 1 when all poses fit);
 //             - the other methods (exact mode, all-pairs test, the peers),
 //               which are slow on large cells, run every k-th pose, k chosen
-//               from a probe of 8 evenly spaced poses so that the run takes
-//               about `budget` seconds (k = 1 when all poses fit);
+//               from a probe of 8 evenly spaced poses so that a pass takes
+//               about a third of `budget` (k = 1 when all poses fit), in 3
+//               passes on fresh objects taking turns with the repeated
+//               methods' first three, and the median pass counts: a peer's
+//               time is taken in the same spells of the machine as the
+//               library's, never in one pass of its own;
 //           answers compared with the reference on those poses.
 //
 // A row gives poses run, seconds, ns per pose, collisions, disagreements and
@@ -162,7 +166,7 @@ struct method_info {
     bool own;           ///< influence2d's (else a peer)
     bool available;     ///< its library was found when this was built
     const char* needs;  ///< the macro telling whether it was ("" for none)
-    bool repeated;      ///< timed in repeated passes taking turns (else strided, one pass)
+    bool repeated;      ///< timed over every pose, passes repeated to repeat_seconds (else strided, 3 passes)
     bool (*applies)(const polygon&, const polygon&);  ///< whether it can take the cell's pair
     const char* frames;                               ///< its frame form, for help and reports ("" if none)
     const char* one_shot;                             ///< its one-shot form ("" if none)
@@ -513,32 +517,46 @@ struct timed_passes {
     double median = 0;  ///< seconds of the median pass
 };
 
-/// Times the repeated methods among `methods` on a cell: passes on fresh
-/// objects, the methods taking turns, until each has at least 3 passes (an
-/// odd number) and `repeat_seconds` of them, or 101. A frame form's pass is
-/// every pose in order; a one-shot form's every k-th, k from a probe so that
-/// a pass takes about budget / 3.
-inline std::map<std::string, timed_passes> time_repeated(const time_study_options& o, const std::string& trajectory,
-                                                         const std::vector<std::string>& methods, const polygon& a,
-                                                         const polygon& b, const std::vector<pose>& poses) {
-    std::vector<std::string> modes;
-    for (const std::string& m : methods)
-        if (method_of(m).repeated) modes.push_back(m);
+/// Times `methods` on a cell: passes on fresh objects, the methods taking
+/// turns pass by pass. Every method takes the first 3 rounds; a repeated
+/// method goes on, two rounds at a time, until its passes sum to
+/// `repeat_seconds` (or 101 rounds), so that each ends with an odd number of
+/// passes. A repeated method's frame-form pass is every pose in order; a
+/// one-shot pass, and every pass of the others, every k-th pose, k from a
+/// probe (on an object of its own: a detector with temporal coherence
+/// starts its timed passes fresh) so that a pass takes about budget / 3.
+inline std::map<std::string, timed_passes> time_passes(const time_study_options& o, const std::string& trajectory,
+                                                       const std::vector<std::string>& methods, const polygon& a,
+                                                       const polygon& b, const std::vector<pose>& poses) {
     std::map<std::string, timed_passes> out;
     std::map<std::string, std::vector<double>> seconds;
-    for (const std::string& m : modes) {
+    std::map<std::string, bool> taking_turns;
+    for (const std::string& m : methods) {
         seconds[m];
-        if (is_one_shot(trajectory))
+        taking_turns[m] = true;
+        if (is_one_shot(trajectory) || !method_of(m).repeated)
             with_method(m, trajectory, a, b,
                         [&](auto& probe) { out[m].stride = stride_for(probe, poses, o.budget / 3); });
     }
     std::vector<char> repeated;
-    for (std::size_t round = 0; !modes.empty() && more_rounds(round, seconds, o.repeat_seconds); ++round)
-        for (const std::string& m : modes)
+    for (std::size_t round = 0; round < 101; ++round) {
+        if (round >= 3 && round % 2 == 1)
+            for (const std::string& m : methods) {
+                double total = 0;
+                for (double t : seconds[m]) total += t;
+                taking_turns[m] = taking_turns[m] && method_of(m).repeated && total < o.repeat_seconds;
+            }
+        bool any = false;
+        for (const std::string& m : methods) {
+            if (!taking_turns[m]) continue;
+            any = true;
             with_method(m, trajectory, a, b, [&](auto& fresh) {
                 seconds[m].push_back(run_frames(fresh, poses, out[m].stride, round == 0 ? out[m].answers : repeated));
             });
-    for (const std::string& m : modes) {
+        }
+        if (!any) break;
+    }
+    for (const std::string& m : methods) {
         out[m].passes = seconds[m].size();
         out[m].median = median_of(seconds[m]);
     }
@@ -603,7 +621,7 @@ inline time_study_result run_time_study(const time_study_options& o) {
             r.work.push_back({c, poses.size(), d.statistics()});
         }
         const auto preparation = time_preparation(o, c.trajectory, methods, a, b);
-        const std::map<std::string, timed_passes> repeated = time_repeated(o, c.trajectory, methods, a, b, poses);
+        const std::map<std::string, timed_passes> timed = time_passes(o, c.trajectory, methods, a, b, poses);
         for (const std::string& m : methods) {
             time_row row;
             row.cell = c;
@@ -612,20 +630,11 @@ inline time_study_result run_time_study(const time_study_options& o) {
             row.reference = m == reference_method && !is_one_shot(c.trajectory);
             row.preparation_seconds = preparation.at(m).first;
             row.preparation_builds = preparation.at(m).second;
-            if (const auto t = repeated.find(m); t != repeated.end()) {
-                answers = t->second.answers;
-                row.stride = t->second.stride;
-                row.passes = t->second.passes;
-                row.seconds = t->second.median;
-            } else {
-                with_method(m, c.trajectory, a, b, [&](auto& d) {
-                    // The probe runs on an object of its own: a detector with
-                    // temporal coherence must start the timed run fresh.
-                    with_method(m, c.trajectory, a, b,
-                                [&](auto& probe) { row.stride = stride_for(probe, poses, o.budget); });
-                    row.seconds = run_frames(d, poses, row.stride, answers);
-                });
-            }
+            const timed_passes& t = timed.at(m);
+            answers = t.answers;
+            row.stride = t.stride;
+            row.passes = t.passes;
+            row.seconds = t.median;
             row.frames = answers.size();
             for (std::size_t k = 0; k < answers.size(); ++k) {
                 row.collisions += answers[k] ? 1 : 0;

@@ -189,9 +189,10 @@ inline std::string time_study_markdown(const time_study_result& r, const time_st
          "detector's pass is every pose in order, a one-shot pass every k-th pose (a pass about " +
          general(o.budget / 3) +
          " s). The exact mode, the all-pairs test and the peers run every k-th pose, k "
-         "chosen so that a run takes about " +
-         general(o.budget) +
-         " s (bench.csv: stride). Preparation: building "
+         "chosen so that a pass takes about " +
+         general(o.budget / 3) +
+         " s (bench.csv: stride), in 3 passes taking turns with the others' first three, the median pass "
+         "counting. Preparation: building "
          "the method for the pair (the detector's constructor, GEOS's prepared geometry, Boost's and CGAL's "
          "polygons, ...; a one-shot form keeps only its input), the methods taking turns, the median of at least 3 "
          "builds (bench.csv: preparation_seconds, preparation_builds). Every answer is compared with the "
