@@ -158,6 +158,15 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e,
     const auto outside = [](const point<double>& v, const box& w) {
         return v.x < w.min_x || v.x > w.max_x || v.y < w.min_y || v.y > w.max_y;  // NaN: may be inside
     };
+    // A vertex off the box of every ring of a host with ring boxes (widened
+    // as the window) is outside it: a closed ring adds no crossing, and no
+    // winding, about a point off its box.
+    const auto off_every_ring = [&](const point<double>& v, const placed_polygon<NT>& host) {
+        if (host.ring_bounds().empty() || !host.finite()) return false;
+        for (const box& r : host.ring_bounds())
+            if (!outside(v, r.inflated(e))) return false;
+        return true;
+    };
     const polygon &as = a.shape(), &bs = b.shape();
     // (Sizes by half perimeters, whose comparison is the same at every
     // scale: areas would underflow.)
@@ -174,7 +183,7 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e,
         const polygon& gs = guest.shape();
         for (std::size_t r = first; r < std::min(last, gs.ring_count()); ++r) {
             const std::size_t k = near ? ring_vertex_near(gs, guest.approx(), r, host_centre) : gs.ring_begin(r);
-            if (outside(guest.approx()[k], host_window)) continue;
+            if (outside(guest.approx()[k], host_window) || off_every_ring(guest.approx()[k], host)) continue;
             // (A vertex certainly in the host's inner disc lies in its
             // interior: no locate.)
             const location l = host.in_inner(guest.approx()[k], e)

@@ -84,6 +84,7 @@ public:
             bounds_.add(approx_own_[j]);
         }
         runs_.clear();
+        rings_.clear();
         inner_ = disc{};
         if constexpr (!std::is_same_v<NT, double>) {
             all_.clear();
@@ -117,6 +118,23 @@ public:
     /// two runs overlap, overlapping_run_pairs, and a locate passes over
     /// each run off its ray whole).
     void make_run_bounds() { edge_run_boxes(shape_, *approx_, runs_); }
+    /// The box of each ring in double (box::add: a NaN coordinate left out),
+    /// once make_ring_bounds() made them at the present placing, for a
+    /// polygon of several rings; else empty.
+    const std::vector<box>& ring_bounds() const { return rings_; }
+    /// Makes ring_bounds(): a pass over the vertices, which pays when the
+    /// placing serves many pairs of a polygon of many rings (layer_pairs):
+    /// a vertex off every ring's box is outside the region without a
+    /// locate (placed_meet).
+    void make_ring_bounds() {
+        rings_.assign(shape_.ring_count() > 1 ? shape_.ring_count() : 0, box{});
+        const std::vector<point<double>>& v = *approx_;
+        for (std::size_t r = 0; r < rings_.size(); ++r) {
+            box b;  // (a local box: the compiler keeps it in registers)
+            for (std::size_t k = shape_.ring_begin(r); k < shape_.ring_end(r); ++k) b.add(v[k]);
+            rings_[r] = b;
+        }
+    }
     /// A disc in the placed polygon's closed region, its centre posed in
     /// double as a vertex is (within the filters' margin of the exact one),
     /// radius 0 when none is known (placed anew: none).
@@ -196,8 +214,9 @@ private:
     const std::vector<point<double>>* approx_ = nullptr;
     std::vector<point<double>> approx_own_;
     box bounds_;
-    std::vector<box> runs_;  // run_bounds(), once made
-    disc inner_;             // inner(), radius 0: none
+    std::vector<box> runs_;   // run_bounds(), once made
+    std::vector<box> rings_;  // ring_bounds(), once made
+    disc inner_;              // inner(), radius 0: none
     bool finite_ = true;
     std::vector<std::optional<point<NT>>> made_;  // the vertices made so far, until all()
     std::vector<point<NT>> all_;                  // every vertex, once all() asked

@@ -79,6 +79,7 @@ std::vector<std::unique_ptr<placed_polygon<NT>>> placed_layer(const std::vector<
         for (std::size_t k = lo; k < hi; ++k) {
             auto p = std::make_unique<placed_polygon<NT>>(layer[which[k]]);
             p->make_run_bounds();
+            p->make_ring_bounds();
             if constexpr (!placed_polygon<NT>::by_value)
                 if (threads != 1) p->all();
             placed[which[k]] = std::move(p);
@@ -173,7 +174,8 @@ inline std::vector<polygon> scaled_layer(const std::vector<polygon>& layer, int 
 ///   candidates <- the pairs whose boxes meet (the tree joined with itself,
 ///                 box_tree::self_join), sorted
 ///   each polygon some candidate names placed where it stands, once for
-///   all its pairs, with its run boxes (placed_layer)
+///   all its pairs, with its run boxes and, for several rings, its ring
+///   boxes (placed_layer)
 ///   each candidate, on `threads` threads (0: every hardware thread) taking
 ///   join_grain candidates at a time: bodies_within on the two placings
 ///
