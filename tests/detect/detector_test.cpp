@@ -343,3 +343,40 @@ TEST_CASE("detector: an empty polygon and a non-finite pose are refused with inv
     check_refuses_bad_input<influence2d::paper_detector<double>>(false);
     check_refuses_bad_input<influence2d::certified_detector<influence2d::detector>>();
 }
+
+TEST_CASE("detector: a ring of B inside A by less than its posing's rounding is located exactly", "[detector]") {
+    // B (a small triangle far from its own origin, so that its posing in
+    // double errs by about 1e-13) lies inside A, its first vertex exactly
+    // posed at 1 - t with t > 0 tiny, where A's long right edge is x = 1,
+    // and posed in double beyond 1: the boundaries do not meet, so
+    // only the containment test answers, and a crossing settled in double
+    // without B's posing margin would put the vertex right of A's edge,
+    // outside A. A is not convex (a notch on its left), so that no
+    // separating-edge route takes the frame; each pose gets a fresh detector
+    // (no deep cells built).
+    const auto one_ring_of = [](std::vector<point<double>> v) { return polygon({test_shapes::ring(std::move(v))}); };
+    const polygon a = one_ring_of({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0.6}, {0.3, 0.5}, {0, 0.4}});
+    test_random::rng r(20261202);
+    using Q = exact_rational;
+    int found = 0;
+    for (int k = 0; k < 400000 && found < 20; ++k) {
+        // B's first vertex q, posed by (tx, theta) to about x = 1.
+        // (tx one ulp above 1 - (c qx - s qy) in double: the posed double is
+        // then 1 plus that ulp, and the exact place is below 1 when the
+        // products' roundings took c qx - s qy up by more than the ulp.)
+        const double theta = r.uniform(-1, 1), qx = r.uniform(1000, 4000), qy = r.uniform(-4000, 4000);
+        const rotation_pose t(pose{0, 0, theta});
+        const double tx = std::nextafter(1 - (t.c * qx - t.s * qy), 2e4),
+                     ty = r.uniform(0.2, 0.3) - (t.s * qx + t.c * qy);
+        const Q x = Q(t.c) * Q(qx) - Q(t.s) * Q(qy) + Q(tx);
+        const pose p{tx, ty, theta};
+        if (!(x < Q(1) && rotation_pose(p).apply<double>({qx, qy}).x > 1)) continue;
+        ++found;
+        const polygon b = one_ring_of({{qx, qy}, {qx - 0.1, qy + 0.05}, {qx - 0.1, qy - 0.05}});
+        const bool expected = verification::cgal_reference(a, b).collide(p).collides;
+        CHECK(expected);  // inside A
+        CHECK(detector<Q>(a, b).collide(p).collides == expected);
+        CHECK(certified_detector<detector>(a, b).collide(p).collides == expected);
+    }
+    CHECK(found >= 20);
+}
