@@ -63,6 +63,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -467,11 +468,8 @@ std::size_t stride_for(D& d, const std::vector<pose>& poses, double budget) {
 inline bool more_rounds(std::size_t round, const std::map<std::string, std::vector<double>>& samples, double seconds) {
     if (round < 3 || round % 2 == 0) return true;
     if (round >= 101) return false;
-    for (const auto& [m, s] : samples) {
-        double total = 0;
-        for (double t : s) total += t;
-        if (total < seconds) return true;
-    }
+    for (const auto& [m, s] : samples)
+        if (std::accumulate(s.begin(), s.end(), 0.0) < seconds) return true;
     return false;
 }
 
@@ -541,11 +539,9 @@ inline std::map<std::string, timed_passes> time_passes(const time_study_options&
     std::vector<char> repeated;
     for (std::size_t round = 0; round < 101; ++round) {
         if (round >= 3 && round % 2 == 1)
-            for (const std::string& m : methods) {
-                double total = 0;
-                for (double t : seconds[m]) total += t;
-                taking_turns[m] = taking_turns[m] && method_of(m).repeated && total < o.repeat_seconds;
-            }
+            for (const std::string& m : methods)
+                taking_turns[m] = taking_turns[m] && method_of(m).repeated &&
+                                  std::accumulate(seconds[m].begin(), seconds[m].end(), 0.0) < o.repeat_seconds;
         bool any = false;
         for (const std::string& m : methods) {
             if (!taking_turns[m]) continue;

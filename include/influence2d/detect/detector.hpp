@@ -26,6 +26,7 @@
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/predicates/segments.hpp"
 #include "influence2d/scene/bounding_disc.hpp"
+#include "influence2d/scene/edge_boxes.hpp"
 #include "influence2d/scene/inner_disc.hpp"
 #include "influence2d/scene/posed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
@@ -210,9 +211,7 @@ public:
         if constexpr (with_coherence) coherence_state::value.skin = options_.temporal_coherence ? 0.25 * reach_ : 0.0;
         margin_ = placing_margin<NT>(a_->scale + a_->radius + reach_ + skin() + b_.scene().scale);
         const polygon& as = a_->shape;
-        a_ring_boxes_.resize(with_holes ? as.ring_count() : 1);
-        for (std::size_t r = 0; r < a_ring_boxes_.size(); ++r)
-            for (std::size_t i = as.ring_begin(r); i < as.ring_end(r); ++i) a_ring_boxes_[r].add(as.vertex(i));
+        ring_boxes(as, as.vertices(), with_holes ? as.ring_count() : 1, a_ring_boxes_);
         make_chunks();
         convex_route_ = distance() == 0 && a_->convex && b_.scene().convex && convex_pair_pays(as.size(), b_.size());
         if (convex_route_) {

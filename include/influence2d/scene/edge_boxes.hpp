@@ -57,6 +57,18 @@ inline void edge_run_boxes(const polygon& shape, const std::vector<point<double>
         out[(shape.ring_end(k) - 1) / edge_run_length].add(v[shape.ring_begin(k)]);
 }
 
+/// The box of each of the first `rings` rings of a polygon whose vertices
+/// in double are `v` (a NaN coordinate is left out: box::add).
+inline void ring_boxes(const polygon& shape, const std::vector<point<double>>& v, std::size_t rings,
+                       std::vector<box>& out) {
+    out.assign(rings, box{});
+    for (std::size_t r = 0; r < rings; ++r) {
+        box b;  // (a local box: the compiler keeps it in registers)
+        for (std::size_t k = shape.ring_begin(r); k < shape.ring_end(r); ++k) b.add(v[k]);
+        out[r] = b;
+    }
+}
+
 /// Whether the entry's box meets the box `w` (an edge_box or a box; closed
 /// boxes). A NaN bound fails every comparison: such an entry meets it.
 template <class W>

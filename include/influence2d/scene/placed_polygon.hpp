@@ -126,15 +126,7 @@ public:
     /// placing serves many pairs of a polygon of many rings (layer_pairs):
     /// a vertex off every ring's box is outside the region without a
     /// locate (placed_meet).
-    void make_ring_bounds() {
-        rings_.assign(shape_.ring_count() > 1 ? shape_.ring_count() : 0, box{});
-        const std::vector<point<double>>& v = *approx_;
-        for (std::size_t r = 0; r < rings_.size(); ++r) {
-            box b;  // (a local box: the compiler keeps it in registers)
-            for (std::size_t k = shape_.ring_begin(r); k < shape_.ring_end(r); ++k) b.add(v[k]);
-            rings_[r] = b;
-        }
-    }
+    void make_ring_bounds() { ring_boxes(shape_, *approx_, shape_.ring_count() > 1 ? shape_.ring_count() : 0, rings_); }
     /// A disc in the placed polygon's closed region, its centre posed in
     /// double as a vertex is (within the filters' margin of the exact one),
     /// radius 0 when none is known (placed anew: none).
