@@ -21,6 +21,10 @@
 //   box2d           b2TestOverlap of two b2PolygonShape (GJK in float) with the
 //                   polygon skin set to zero; only convex polygons of at most
 //                   b2_maxPolygonVertices (8) vertices, one ring each.
+//   box2d-manifold  b2CollidePolygons of the same shapes: the contact manifold
+//                   Box2D's narrow phase makes (separating axes, then the
+//                   incident edge clipped to the reference face, in float);
+//                   the pair meets when the manifold has a point.
 // The one-shot form (`*_one_shot`) is what a user writes for a single query,
 // nothing kept from one pose to the next but the input itself, and no
 // validation of it:
@@ -32,6 +36,7 @@
 //                   holes, B posed fresh, do_intersect): cgal_peer serves both.
 //   box2d           both b2PolygonShape built (Set: the hull and the normals),
 //                   b2TestOverlap.
+//   box2d-manifold  both built, b2CollidePolygons.
 // A library that was not found when this was built is a missing_peer: listed by
 // the time study, never run.
 // Every peer but cgal poses B in double: x' = c x - s y + tx, y' = s x + c y + ty
@@ -396,9 +401,54 @@ public:
 private:
     std::vector<b2Vec2> a_, b_;
 };
+
+/// Box2D's contact manifold of two convex polygons (b2CollidePolygons), frame
+/// form: both shapes built once; the pair meets when the manifold has a point
+/// (no skin: a point at separation <= 0).
+class box2d_manifold_peer {
+public:
+    static bool applies(const polygon& A, const polygon& B) { return box2d_peer::applies(A, B); }
+
+    box2d_manifold_peer(const polygon& A, const polygon& B)
+        : a_(box2d_peer::shape(box2d_peer::vertices(A))), b_(box2d_peer::shape(box2d_peer::vertices(B))) {}
+
+    bool collide(const pose& p) const { return touching(a_, b_, p); }
+
+    /// Whether the manifold of a (unmoved) and b posed by p has a point.
+    static bool touching(const b2PolygonShape& a, const b2PolygonShape& b, const pose& p) {
+        b2Transform a_at, b_at;
+        a_at.SetIdentity();
+        b_at.Set(b2Vec2(static_cast<float>(p.tx), static_cast<float>(p.ty)), static_cast<float>(p.theta));
+        b2Manifold m;
+        b2CollidePolygons(&m, &a, a_at, &b, b_at);
+        return m.pointCount > 0;
+    }
+
+private:
+    b2PolygonShape a_, b_;
+};
+
+/// Box2D's contact manifold, one-shot form: both shapes built for the query,
+/// b2CollidePolygons.
+class box2d_manifold_one_shot {
+public:
+    static bool applies(const polygon& A, const polygon& B) { return box2d_peer::applies(A, B); }
+
+    box2d_manifold_one_shot(const polygon& A, const polygon& B)
+        : a_(box2d_peer::vertices(A)), b_(box2d_peer::vertices(B)) {}
+
+    bool collide(const pose& p) const {
+        return box2d_manifold_peer::touching(box2d_peer::shape(a_), box2d_peer::shape(b_), p);
+    }
+
+private:
+    std::vector<b2Vec2> a_, b_;
+};
 #else
 using box2d_peer = missing_peer;
 using box2d_one_shot = missing_peer;
+using box2d_manifold_peer = missing_peer;
+using box2d_manifold_one_shot = missing_peer;
 #endif  // INFLUENCE2D_HAVE_BOX2D
 
 }  // namespace influence2d::verification

@@ -123,7 +123,22 @@ struct no_form {};
 template <class D>
 class fully_built : public D {
 public:
-    fully_built(const polygon& a, const polygon& b) : D(a, b) { D::build_structures(); }
+    fully_built(const polygon& a, const polygon& b, detector_options o = {}) : D(a, b, o) { D::build_structures(); }
+};
+
+/// A detector<double> asked for the witnesses of each frame (every edge pair
+/// that meets), fully built: what contact features cost, beside a peer's
+/// contact manifold.
+class witness_detector : public fully_built<detector<double>> {
+public:
+    witness_detector(const polygon& a, const polygon& b) : fully_built<detector<double>>(a, b, with_witness()) {}
+
+private:
+    static detector_options with_witness() {
+        detector_options o;
+        o.witness = true;
+        return o;
+    }
 };
 
 /// influence2d's one-shot query in NT: intersects<NT>(A, B, pose).
@@ -196,6 +211,8 @@ inline const auto& method_table() {
              "certified_intersects"}},
         method_entry<fully_built<detector<exact_rational>>, one_shot_query<exact_rational>>{
             {"exact", true, true, "", false, any_pair, "detector<exact_rational>", "intersects<exact_rational>"}},
+        method_entry<witness_detector, no_form>{{"double-witness", true, true, "", true, any_pair,
+                                                 "detector<double> with witnesses (every meeting edge pair)", ""}},
         method_entry<no_form, detector_per_query>{
             {"double-detector", true, true, "", true, any_pair, "", "detector<double> built, then one collide"}},
         method_entry<paper_detector<double>, no_form>{
@@ -215,6 +232,10 @@ inline const auto& method_table() {
         method_entry<box2d_peer, box2d_one_shot>{
             {"box2d", false, have_box2d, "INFLUENCE2D_HAVE_BOX2D", false, box2d_peer::applies,
              "Box2D b2TestOverlap (convex, at most 8 vertices)", "Box2D, both shapes built, b2TestOverlap"}},
+        method_entry<box2d_manifold_peer, box2d_manifold_one_shot>{
+            {"box2d-manifold", false, have_box2d, "INFLUENCE2D_HAVE_BOX2D", false, box2d_manifold_peer::applies,
+             "Box2D b2CollidePolygons, a point in the manifold (convex, at most 8 vertices)",
+             "Box2D, both shapes built, b2CollidePolygons"}},
         method_entry<raster_peer<64>, no_form>{{"raster-64", false, true, "", false, any_pair,
                                                 "image space: both rasterised, 64 pixels along A's box", "", true}},
         method_entry<raster_peer<256>, no_form>{{"raster-256", false, true, "", false, any_pair,

@@ -58,6 +58,10 @@ std::size_t methods_on(const std::string& trajectory) {
     return n;
 }
 
+/// Box2D's methods (its overlap test and its contact manifold), which take
+/// only the convex 8-gons: 0 when Box2D was not found.
+std::size_t box2d_methods() { return method_available("box2d") ? 2 : 0; }
+
 }  // namespace
 
 TEST_CASE("time study: the registry names, parses and builds every method", "[verification][bench][time_study]") {
@@ -260,8 +264,9 @@ TEST_CASE("time study: every method on the same frames, answers against the refe
         // Box2D takes only the convex 8-gons; every other method every cell.
         const bool box2d =
             method_available("box2d") && cell.rfind("convex/", 0) == 0 && cell.find("/8x8") != std::string::npos;
-        CHECK(methods.size() == methods_on("circular") - (box2d || !method_available("box2d") ? 0 : 1));
+        CHECK(methods.size() == methods_on("circular") - (box2d ? 0 : box2d_methods()));
         CHECK(methods.count("box2d") == (box2d ? 1u : 0u));
+        CHECK(methods.count("box2d-manifold") == (box2d ? 1u : 0u));
     }
     // The paper-literal variant's false answers show as disagreements.
     std::size_t paper_wrong = 0;
@@ -270,12 +275,12 @@ TEST_CASE("time study: every method on the same frames, answers against the refe
     CHECK(paper_wrong > 0);
 
     // The largest cell: convex circular 32x32, no Box2D.
-    REQUIRE(r.memory.size() == methods_on("circular") - (method_available("box2d") ? 1 : 0));
+    REQUIRE(r.memory.size() == methods_on("circular") - box2d_methods());
     for (const memory_row& m : r.memory) {
         INFO(m.method);
         CHECK(m.cell.static_size == 32);
         CHECK(m.frames > 0);
-        if (m.method != "box2d") CHECK(m.peak_bytes > 0);
+        if (m.method.rfind("box2d", 0) != 0) CHECK(m.peak_bytes > 0);
     }
 }
 
@@ -321,7 +326,8 @@ TEST_CASE("time study: random and one-shot rows, no disagreement, the preparatio
         const std::string workload = cell.find("/one-shot/") != std::string::npos ? "one-shot" : "random";
         const bool box2d =
             method_available("box2d") && cell.rfind("convex/", 0) == 0 && cell.find("/8x8") != std::string::npos;
-        CHECK(methods.size() == methods_on(workload) - (box2d || !method_available("box2d") ? 0 : 1));
+        CHECK(methods.size() == methods_on(workload) - (box2d ? 0 : box2d_methods()));
+        CHECK(methods.count("double-witness") == (workload == "random" ? 1u : 0u));
         CHECK(methods.count("double") == 1);
         CHECK(methods.count("certified") == 1);
         CHECK(methods.count("double-detector") == (workload == "one-shot" ? 1u : 0u));
@@ -347,7 +353,7 @@ TEST_CASE("time study: the command writes the table, the summary and the heat ma
           "collisions,disagreements,preparation_seconds,preparation_builds");
     // 4 cells per workload, every method with a form for it but Box2D in
     // each, Box2D in 8x8.
-    const std::size_t box2d = method_available("box2d") ? 1 : 0;
+    const std::size_t box2d = box2d_methods();
     CHECK(csv.size() == 1 + 4 * (methods_on("linear") - box2d) + box2d + 4 * (methods_on("one-shot") - box2d) + box2d);
     for (std::size_t k = 1; k < csv.size(); ++k) {
         INFO(csv[k]);
@@ -359,7 +365,8 @@ TEST_CASE("time study: the command writes the table, the summary and the heat ma
     // and contour 64x64, the library's four routes and a sampling per
     // resolution.
     const std::size_t geos = method_available("geos") ? turning_study_options{}.samples.size() : 0;
-    CHECK(lines_of(slurp(dir / "out" / "turning.csv")).size() == 1 + 2 * (4 + geos) + box2d);
+    CHECK(lines_of(slurp(dir / "out" / "turning.csv")).size() ==
+          1 + 2 * (4 + geos) + (method_available("box2d") ? 1 : 0));
     CHECK(md.find("## Turning motions") != std::string::npos);
     CHECK(r.out.find("turning motions (32 per cell") != std::string::npos);
     CHECK(md.find("## Speed-up of the double mode over the fastest peer") != std::string::npos);

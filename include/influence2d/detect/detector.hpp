@@ -113,8 +113,9 @@ struct distance_state {
 ///   (last_pair_meets):                                          they meet
 ///   p jumped (a random pose, a first frame far from the last, or no
 ///   features::coherence: coherent_step):
-///       few edge pairs (every_pair_pays): B posed in double, every pair
-///           whose boxes meet gets the pair tests;               then containment
+///       few edge pairs (every_pair_pays): B posed in double; B's edges
+///           whose boxes meet A's box, against A's edges whose boxes meet
+///           B's: every pair whose boxes meet gets the pair tests; then containment
 ///       else A's and B's edge trees traversed together, B's circles posed:
 ///           below a leaf of B each of its edges, posed in double, finds the
 ///           static edges near it; each pair gets the pair tests; then containment
@@ -625,7 +626,10 @@ private:
     /// The pair search for a jump of two small polygons: B posed in double,
     /// every pair whose boxes (grown by d and the margin) meet gets the pair
     /// tests, stopping at the first meeting pair without witnesses; then
-    /// containment.
+    /// containment. An edge of B whose box misses A's, or an edge of A whose
+    /// box misses B's, meets no edge of the other: the pairs' boxes are
+    /// tested only between the edges left (at most every_pair_limit pairs,
+    /// so B has at most that many edges).
     frame_result every_pair(const frame& f) {
         tally(&detector_statistics::jump_frames);
         place_approximate(f.t);
@@ -633,17 +637,29 @@ private:
             if (options_.witness) witness_state::value.clear();
         const polygon& as = a_->shape;
         const double grow = distance() + f.margin;
-        for (std::uint32_t e = 0; e < as.size(); ++e) {
+        const box a_box = as.bounds().inflated(grow);
+        std::array<edge_box, every_pair_limit> near_a;  // B's edges whose boxes meet A's grown box
+        std::size_t near = 0;
+        box bb;  // the box of B's edges' boxes
+        for (std::size_t j = 0; j < b_.size(); ++j) {
+            const point<double>&u = b_.approximate(j), &v = b_.approximate(next_b(j));
+            const edge_box ej{std::min(u.x, v.x), std::max(u.x, v.x), std::min(u.y, v.y), std::max(u.y, v.y),
+                              static_cast<std::uint32_t>(j)};
+            bb = {std::min(bb.min_x, ej.min_x), std::min(bb.min_y, ej.min_y), std::max(bb.max_x, ej.max_x),
+                  std::max(bb.max_y, ej.max_y)};
+            if (meets_box(ej, a_box)) near_a[near++] = ej;
+        }
+        for (std::uint32_t e = 0; near > 0 && e < as.size(); ++e) {
             const point<double>&a = as.vertex(e), &b = as.vertex(as.next(e));
-            const double min_x = std::min(a.x, b.x) - grow, max_x = std::max(a.x, b.x) + grow;
-            const double min_y = std::min(a.y, b.y) - grow, max_y = std::max(a.y, b.y) + grow;
-            for (std::size_t j = 0; j < b_.size(); ++j) {
-                const point<double>&u = b_.approximate(j), &v = b_.approximate(next_b(j));
-                if (std::max(u.x, v.x) < min_x || std::min(u.x, v.x) > max_x || std::max(u.y, v.y) < min_y ||
-                    std::min(u.y, v.y) > max_y)
-                    continue;
+            const box ea{std::min(a.x, b.x) - grow, std::min(a.y, b.y) - grow, std::max(a.x, b.x) + grow,
+                         std::max(a.y, b.y) + grow};
+            if (ea.max_x < bb.min_x || ea.min_x > bb.max_x || ea.max_y < bb.min_y || ea.min_y > bb.max_y) continue;
+            for (std::size_t k = 0; k < near; ++k) {
+                if (!meets_box(near_a[k], ea)) continue;
                 tally(&detector_statistics::candidate_edges);
-                if (test_pair(e, j, u, v, f.margin) && !witnessing()) return {true, {}};
+                const std::size_t j = near_a[k].edge;
+                if (test_pair(e, j, b_.approximate(j), b_.approximate(next_b(j)), f.margin) && !witnessing())
+                    return {true, {}};
             }
         }
         return finish(f.n, f.margin);
