@@ -104,10 +104,12 @@ struct distance_state {
 ///
 ///   p <- B's centroid posed in double; margin <- the rounding of the frame
 ///   |p - O_A| > R_A + n (the bounding circles apart):          disjoint
-///   A and B small and convex (convex_pair_pays), d == 0: an edge of one
-///   with every vertex of the other strictly outside its line, the last
-///   frame's first (convex_regions_meet):                       disjoint
-///       else they meet; done unless witnesses are asked for
+///   A and B small and convex (convex_pair_pays), d == 0, no witnesses
+///   asked: an edge of one with every vertex of the other strictly outside
+///   its line, the last frame's first (convex_regions_meet):    disjoint
+///       else                                                    they meet
+///   (with witnesses the pairs are sought as for any polygons: the edge
+///   pairs are the answer, and their search shows the meeting too)
 ///   no witnesses asked, p within the skin of the last frame's, and the edge
 ///   pair that met last (features::coherence) meets again by the pair tests
 ///   (last_pair_meets):                                          they meet
@@ -322,10 +324,9 @@ private:
             tally(&detector_statistics::circle_rejections);
             return {};
         }
-        if (convex_route_) {
+        if (convex_route_ && !witnessing()) {
             tally(&detector_statistics::convex_frames);
-            if (!convex_meet(f)) return {};
-            if (!witnessing()) return {true, {}};
+            return {convex_meet(f), {}};
         }
         if (last_pair_meets(f)) {
             tally(&detector_statistics::last_pair_frames);
