@@ -517,10 +517,10 @@ private:
 
     /// For a jump, testing the boxes of every edge pair costs less than
     /// descending both trees when there are few pairs (every_pair_limit,
-    /// every_pair_limit_b_smaller).
+    /// every_pair_limit_b_near).
     bool every_pair_pays() const {
         const std::size_t pairs = a_->shape.size() * b_.size();
-        return pairs <= every_pair_limit || (pairs <= every_pair_limit_b_smaller && b_.size() <= a_->shape.size());
+        return pairs <= every_pair_limit || (pairs <= every_pair_limit_b_near && b_.size() <= 2 * a_->shape.size());
     }
 
     /// The strategies' size heuristics. The circle test of B's edges against
@@ -643,6 +643,7 @@ private:
         const polygon& as = a_->shape;
         const double grow = distance() + f.margin;
         const box a_box = as.bounds().inflated(grow);
+        INFLUENCE2D_ASSERT(b_.size() <= every_pair_limit, "every_pair: more edges of B than its array holds");
         std::array<edge_box, every_pair_limit> near_a;  // B's edges whose boxes meet A's grown box
         std::size_t near = 0;
         box bb;  // the box of B's edges' boxes
@@ -1044,12 +1045,18 @@ private:
     /// posed circle and a box distance per node pair plus a segment query
     /// per moving edge.
     static constexpr std::size_t every_pair_limit = 64;
-    /// The same limit when B has no more edges than A: measured on the time
-    /// study's random poses (callgrind, 20,000 frames), 16 x 8 cost 6% to 25%
-    /// fewer instructions by every pair than through the trees (starred,
-    /// irregular, contour, hole), 8 x 16 from 17% fewer to 13% more, and
-    /// 256 pairs up to 62% more.
-    static constexpr std::size_t every_pair_limit_b_smaller = 128;
+    /// The same limit when B has at most twice A's edges. Measured on the
+    /// time study's random poses (the detector alone on a cell's 20,000
+    /// poses, 9 passes; each cell's two builds run in turn five to seven
+    /// times; the least pass of each, which this machine's slow spells do
+    /// not reach: a cell on the same route in both builds came out at 0.99
+    /// to 1.02): every pair took 0.66 to 0.93 times the trees' time at
+    /// 8 x 16, 16 x 16 and 32 x 8 (starred, irregular, contour, hole), 0.94
+    /// to 1.18 at 8 x 32, and 0.76 to 1.29 at 512 and 1,024 pairs.
+    /// (Instructions count otherwise: callgrind gives every pair up to 62%
+    /// more at 256 pairs; the trees' descent costs more in branches and
+    /// memory than in instructions.)
+    static constexpr std::size_t every_pair_limit_b_near = 256;
     /// A detector searches the trees (n_A + n_B) / interior_build_edges times
     /// before it builds the deep cells (interiors_pay): building them costs
     /// 0.2 to 1.5 us per edge on the time study's 1,024-gons and a search of
