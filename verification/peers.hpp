@@ -368,12 +368,23 @@ public:
         return s;
     }
 
+    /// Box2D's transform of pose p, in float.
+    static b2Transform transform(const pose& p) {
+        b2Transform t;
+        t.Set(b2Vec2(static_cast<float>(p.tx), static_cast<float>(p.ty)), static_cast<float>(p.theta));
+        return t;
+    }
+
+    /// The identity transform (A unmoved), without a sine and cosine.
+    static b2Transform identity() {
+        b2Transform t;
+        t.SetIdentity();
+        return t;
+    }
+
     /// Whether a (unmoved) and b posed by p overlap.
     static bool overlap(const b2PolygonShape& a, const b2PolygonShape& b, const pose& p) {
-        b2Transform a_at, b_at;
-        a_at.SetIdentity();
-        b_at.Set(b2Vec2(static_cast<float>(p.tx), static_cast<float>(p.ty)), static_cast<float>(p.theta));
-        return b2TestOverlap(&a, 0, &b, 0, a_at, b_at);
+        return b2TestOverlap(&a, 0, &b, 0, identity(), transform(p));
     }
 
 private:
@@ -416,11 +427,8 @@ public:
 
     /// Whether the manifold of a (unmoved) and b posed by p has a point.
     static bool touching(const b2PolygonShape& a, const b2PolygonShape& b, const pose& p) {
-        b2Transform a_at, b_at;
-        a_at.SetIdentity();
-        b_at.Set(b2Vec2(static_cast<float>(p.tx), static_cast<float>(p.ty)), static_cast<float>(p.theta));
         b2Manifold m;
-        b2CollidePolygons(&m, &a, a_at, &b, b_at);
+        b2CollidePolygons(&m, &a, box2d_peer::identity(), &b, box2d_peer::transform(p));
         return m.pointCount > 0;
     }
 

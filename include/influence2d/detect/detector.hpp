@@ -646,20 +646,19 @@ private:
         INFLUENCE2D_ASSERT(b_.size() <= every_pair_limit, "every_pair: more edges of B than its array holds");
         std::array<edge_box, every_pair_limit> near_a;  // B's edges whose boxes meet A's grown box
         std::size_t near = 0;
-        box bb;  // the box of B's edges' boxes
+        box bb;  // B's box (each vertex starts an edge)
         for (std::size_t j = 0; j < b_.size(); ++j) {
             const point<double>&u = b_.approximate(j), &v = b_.approximate(next_b(j));
             const edge_box ej{std::min(u.x, v.x), std::max(u.x, v.x), std::min(u.y, v.y), std::max(u.y, v.y),
                               static_cast<std::uint32_t>(j)};
-            bb = {std::min(bb.min_x, ej.min_x), std::min(bb.min_y, ej.min_y), std::max(bb.max_x, ej.max_x),
-                  std::max(bb.max_y, ej.max_y)};
+            bb.add(u);
             if (meets_box(ej, a_box)) near_a[near++] = ej;
         }
         for (std::uint32_t e = 0; near > 0 && e < as.size(); ++e) {
             const point<double>&a = as.vertex(e), &b = as.vertex(as.next(e));
-            const box ea{std::min(a.x, b.x) - grow, std::min(a.y, b.y) - grow, std::max(a.x, b.x) + grow,
-                         std::max(a.y, b.y) + grow};
-            if (ea.max_x < bb.min_x || ea.min_x > bb.max_x || ea.max_y < bb.min_y || ea.min_y > bb.max_y) continue;
+            const edge_box ea{std::min(a.x, b.x) - grow, std::max(a.x, b.x) + grow, std::min(a.y, b.y) - grow,
+                              std::max(a.y, b.y) + grow, e};
+            if (!meets_box(ea, bb)) continue;
             for (std::size_t k = 0; k < near; ++k) {
                 if (!meets_box(near_a[k], ea)) continue;
                 tally(&detector_statistics::candidate_edges);
