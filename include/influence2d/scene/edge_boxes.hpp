@@ -49,9 +49,10 @@ inline void edge_run_boxes(const polygon& shape, const std::vector<point<double>
     // same run.
     for (std::size_t r = 0; r < out.size(); ++r) {
         const std::size_t end = std::min(n, (r + 1) * edge_run_length);
-        box& b = out[r];
-        for (std::size_t e = r * edge_run_length; e < end; ++e) b.add(v[e]);
+        box b;  // (a local box: kept in registers, where out[r] could alias v)
+        b.add(v.data() + r * edge_run_length, v.data() + end);
         b.add(v[shape.next(end - 1)]);
+        out[r] = b;
     }
     for (std::size_t k = 0; k < shape.ring_count(); ++k)
         out[(shape.ring_end(k) - 1) / edge_run_length].add(v[shape.ring_begin(k)]);
@@ -64,7 +65,7 @@ inline void ring_boxes(const polygon& shape, const std::vector<point<double>>& v
     out.assign(rings, box{});
     for (std::size_t r = 0; r < rings; ++r) {
         box b;  // (a local box: the compiler keeps it in registers)
-        for (std::size_t k = shape.ring_begin(r); k < shape.ring_end(r); ++k) b.add(v[k]);
+        b.add(v.data() + shape.ring_begin(r), v.data() + shape.ring_end(r));
         out[r] = b;
     }
 }
