@@ -272,9 +272,29 @@ TEST_CASE("certified: overflow and underflow leave the sign uncertain", "[certif
     CHECK_THROWS_AS((certified(0x1p-1074) * certified(0.5)).sign(), uncertain_sign);
     // ...and a sum of them is no better.
     CHECK_THROWS_AS((tiny + tiny).sign(), uncertain_sign);
-    // Every product carries the underflow allowance, even by an exact zero.
+    // Every product carries the underflow allowance, even by an exact zero,
+    // and its bound is a normal double (no arithmetic on subnormals after
+    // it): on products of values of every magnitude, zeros and subnormals
+    // among them.
     CHECK((certified(0.0) * certified(1e300)).value() == 0);
     CHECK((certified(0.0) * certified(1e300)).error() > 0);
+    rng r(0x5b40a1ULL);
+    std::size_t products = 0, subnormal_bounds = 0, by_zero = 0;
+    for (int k = 0; k < 20000; ++k) {
+        const double a = random_double(r, scales[r.index(7)]), b = random_double(r, scales[r.index(7)]);
+        // Exact inputs, and values that already carry a bound.
+        for (const certified& x : {certified(a), certified(a) + certified(b)})
+            for (const certified& y : {certified(b), certified(b) * certified(a), certified(0.0)}) {
+                const certified p = x * y;
+                if (!std::isfinite(p.error())) continue;
+                ++products;
+                by_zero += p.value() == 0 ? 1 : 0;
+                subnormal_bounds += p.error() < std::numeric_limits<double>::min() ? 1 : 0;
+            }
+    }
+    CHECK(products > 100000);
+    CHECK(by_zero > 20000);
+    CHECK(subnormal_bounds == 0);
 }
 
 // The orientation predicate's exact settling of input doubles

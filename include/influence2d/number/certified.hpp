@@ -25,7 +25,7 @@ public:
 /// A value v with a bound e such that |exact - v| <= e, where `exact` is the
 /// result of the same ring operations on the exact inputs. Inputs converted
 /// from double are exact (e = 0). Each operation adds the rounding error of
-/// its result (at most u |v| for u = 2^-53, plus 2^-1072 for underflow)
+/// its result (at most u |v| for u = 2^-53, plus 2^-1022 for underflow)
 /// and the propagated errors; the bound is computed in rounded arithmetic and
 /// then widened by (1 + 2^-48), more than the rounding of its few operations.
 /// A NaN or infinite value or bound leaves every sign uncertain. Signs that
@@ -120,8 +120,17 @@ public:
 
 private:
     static constexpr double u = 0x1p-53;
-    // Underflow: the product and the three error terms can each lose 2^-1075.
-    static constexpr double eta = 0x1p-1072;
+    // Underflow: the product and the three error terms can each lose
+    // 2^-1075, 2^-1073 in all. The allowance is the least normal double,
+    // 2^-1022, which holds that and keeps the bound of every product normal
+    // (a sum of exact values keeps u |v|, subnormal only for |v| below
+    // 2^-969). With 2^-1072, a product by an exact zero (a difference of
+    // equal coordinates, as axis-parallel edges and shared vertices give)
+    // carried a subnormal bound, and the operations on it took an
+    // orientation from 6 to 46 ns (x86, where arithmetic on subnormals is
+    // microcoded). Only values within 2^-1022 of zero lose a sign that
+    // 2^-1073 would have left certain.
+    static constexpr double eta = 0x1p-1022;
     // Only the bound's own rounding (relative 2^-53 per operation on it, at
     // most five of them along a term) needs covering; 2^-48 leaves room, and
     // the widening's own rounding cannot take it below e (it rounds e (1 +
