@@ -12,6 +12,8 @@
 #include "support/shapes.hpp"
 
 #include <cmath>
+#include <limits>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -177,4 +179,59 @@ TEST_CASE("one-shot: the located vertex nearest the other's box, the same at eve
         CHECK(small.vertex(m.b_index).x == 2);
         CHECK(small.vertex(m.b_index).y == 2);
     }
+}
+
+TEST_CASE("one-shot: the nearest vertex of a long ring found by its run boxes is a whole scan's", "[one_shot]") {
+    // ring_vertex_near with run boxes prunes runs by p's distance to their
+    // boxes; it must name the vertex a scan of the whole ring names (the
+    // first of the nearest), here written out as that scan. Rings on a
+    // coarse grid give many ties; several rings, so that runs straddle
+    // ring ends; points inside, outside and far off.
+    std::mt19937_64 rng(1201);
+    std::uniform_int_distribution<int> grid(-6, 6);
+    std::uniform_real_distribution<double> off(-30, 30);
+    std::size_t checked = 0, ties = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        std::vector<ring_input> rings;
+        const int count = 1 + trial % 3;
+        for (int k = 0; k < count; ++k) {
+            // A star-like ring of 20 to 120 vertices about (12 k, 0), its
+            // radii on a grid of halves (ties in L1 distance).
+            ring_input ring;
+            const int n = 20 + (trial * 7 + k * 31) % 101;
+            for (int j = 0; j < n; ++j) {
+                const double angle = 2 * M_PI * j / n, radius = 3 + 0.5 * (grid(rng) + 6) / 6.0;
+                ring.vertices.push_back({12.0 * k + std::round(2 * radius * std::cos(angle)) / 2,
+                                         std::round(2 * radius * std::sin(angle)) / 2});
+            }
+            rings.push_back(ring);
+        }
+        const polygon q(rings);
+        std::vector<box> runs;
+        edge_run_boxes(q, q.vertices(), runs);
+        for (int k = 0; k < 8; ++k) {
+            const point<double> p = k % 2 ? point<double>{off(rng), off(rng)}
+                                          : point<double>{grid(rng) * 0.5 + 12.0 * (k % count), grid(rng) * 0.5};
+            for (std::size_t r = 0; r < q.ring_count(); ++r) {
+                std::size_t whole = q.ring_begin(r), equal = 0;
+                double best = std::numeric_limits<double>::infinity();
+                for (std::size_t j = q.ring_begin(r); j < q.ring_end(r); ++j) {
+                    const double d = std::fabs(q.vertex(j).x - p.x) + std::fabs(q.vertex(j).y - p.y);
+                    if (d < best) {
+                        best = d;
+                        whole = j;
+                        equal = 0;
+                    } else if (d == best) {
+                        ++equal;
+                    }
+                }
+                ties += equal > 0 ? 1 : 0;
+                ++checked;
+                INFO("trial " << trial << " ring " << r << " point (" << p.x << ", " << p.y << ")");
+                CHECK(ring_vertex_near(q, q.vertices(), r, p, runs) == whole);
+            }
+        }
+    }
+    CHECK(checked == 300 * 8 * 2);  // 1, 2 and 3 rings in turn: 2 on average
+    CHECK(ties > 100);              // the grid gave ties to break
 }

@@ -4,6 +4,7 @@
 /// Whether two placed polygons meet, and what shows it: the steps of the
 /// one-shot questions after their posing.
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -81,32 +82,58 @@ bool edge_pairs_near(const placed_polygon<NT>& a, const placed_polygon<NT>& b, c
 }
 
 /// The rings at most this long are searched whole for the vertex nearest a
-/// point (ring_vertex_near); a longer ring gives its first vertex. A scan
-/// of 32 vertices costs about as much as a third of a locate in a polygon
-/// of that size, and the rings of the world's compact bodies are shorter.
+/// point (ring_vertex_near) when the placing has no run boxes; a longer ring
+/// gives its first vertex. A scan of 32 vertices costs about as much as a
+/// third of a locate in a polygon of that size, and the rings of the
+/// world's compact bodies are shorter.
 inline constexpr std::size_t near_scan_limit = 32;
 
 /// The vertex of ring r of `shape` (its vertices in double: v) nearest to
-/// p in the L1 norm, for a ring of at most near_scan_limit vertices; the
-/// ring's first vertex otherwise (and when a distance is NaN); the first of
-/// those at the least distance. Only a choice: any vertex of the ring
+/// p in the L1 norm, the first of those at the least distance; the ring's
+/// first vertex when a distance is NaN, and for a ring longer than
+/// near_scan_limit unless `runs` holds the run boxes of v (edge_run_boxes),
+/// which prune the search (below). Only a choice: any vertex of the ring
 /// serves a locate. Sums of differences, no squares: the same choice for
 /// the polygons and p scaled by any power of two that keeps their
 /// coordinates and differences normal (squares would underflow at
 /// 2^-600), so that a query brought into double's range names the same
 /// vertex as the query as given.
+///
+///   best <- none, at distance infinity
+///   each run that holds vertices of the ring, in order: when p's L1
+///   distance to the run's box (a bound below that of each of its
+///   vertices) is below best's, each of its vertices in the ring, in
+///   order: nearer than best, it is best
+///
+/// A run passed over holds no vertex nearer than best, and none as near
+/// before it: the vertex a scan of the whole ring would give, at the cost
+/// of a pass over the runs and the vertices of the few near p.
 inline std::size_t ring_vertex_near(const polygon& shape, const std::vector<point<double>>& v, std::size_t r,
-                                    const point<double>& p) {
+                                    const point<double>& p, const std::vector<box>& runs = {}) {
     const std::size_t first = shape.ring_begin(r), end = shape.ring_end(r);
-    if (end - first > near_scan_limit) return first;
+    const bool pruned = !runs.empty() && end - first > near_scan_limit;
+    if (end - first > near_scan_limit && !pruned) return first;
     std::size_t best = first;
     double best_d = std::numeric_limits<double>::infinity();
-    for (std::size_t k = first; k < end; ++k) {
-        const double d = std::fabs(v[k].x - p.x) + std::fabs(v[k].y - p.y);
-        if (d < best_d) {
-            best_d = d;
-            best = k;
+    const auto scan = [&](std::size_t from, std::size_t to) {
+        for (std::size_t k = from; k < to; ++k) {
+            const double d = std::fabs(v[k].x - p.x) + std::fabs(v[k].y - p.y);
+            if (d < best_d) {
+                best_d = d;
+                best = k;
+            }
         }
+    };
+    if (!pruned) {
+        scan(first, end);
+        return best;
+    }
+    for (std::size_t run = first / edge_run_length; run * edge_run_length < end; ++run) {
+        const box& b = runs[run];
+        const double below =
+            std::max({b.min_x - p.x, p.x - b.max_x, 0.0}) + std::max({b.min_y - p.y, p.y - b.max_y, 0.0});
+        if (!(below < best_d)) continue;
+        scan(std::max(first, run * edge_run_length), std::min(end, (run + 1) * edge_run_length));
     }
     return best;
 }
@@ -181,8 +208,12 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e,
                               const point<double>& host_centre, bool guest_is_b, std::size_t first, std::size_t last,
                               bool near) -> meeting {
         const polygon& gs = guest.shape();
+        // (Run boxes leave NaN out: they serve where every coordinate is finite.)
+        static const std::vector<box> no_runs;
+        const std::vector<box>& guest_runs = guest.finite() ? guest.run_bounds() : no_runs;
         for (std::size_t r = first; r < std::min(last, gs.ring_count()); ++r) {
-            const std::size_t k = near ? ring_vertex_near(gs, guest.approx(), r, host_centre) : gs.ring_begin(r);
+            const std::size_t k =
+                near ? ring_vertex_near(gs, guest.approx(), r, host_centre, guest_runs) : gs.ring_begin(r);
             if (outside(guest.approx()[k], host_window) || off_every_ring(guest.approx()[k], host)) continue;
             // (A vertex certainly in the host's inner disc lies in its
             // interior: no locate.)

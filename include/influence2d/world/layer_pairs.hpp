@@ -172,7 +172,7 @@ inline std::vector<polygon> scaled_layer(const std::vector<polygon>& layer, int 
 ///   boxes <- each polygon's box, grown by within / 2 (and the filters'
 ///            margin); a box tree over them (box_tree)
 ///   candidates <- the pairs whose boxes meet (the tree joined with itself,
-///                 box_tree::self_join), sorted
+///                 box_tree::self_join), sorted (sort_body_pairs)
 ///   each polygon some candidate names placed where it stands, once for
 ///   all its pairs, with its run boxes and, for several rings, its ring
 ///   boxes (placed_layer)
@@ -197,7 +197,7 @@ std::vector<body_pair> layer_pairs(const std::vector<polygon>& layer, double wit
     tree.rebuild(boxes, ids);
     std::vector<body_pair> candidates;
     tree.self_join([&](std::uint32_t i, std::uint32_t j) { candidates.push_back({std::min(i, j), std::max(i, j)}); });
-    std::sort(candidates.begin(), candidates.end());
+    sort_body_pairs(candidates, layer.size());
     return layer_pairs_detail::within_of<NT, Exact>(layer, layer, true, candidates, within, threads, statistics);
 }
 
@@ -221,7 +221,7 @@ std::vector<body_pair> layer_pairs(const std::vector<polygon>& first, const std:
     b_tree.rebuild(b_boxes, b_ids);
     std::vector<body_pair> candidates;
     a_tree.join(b_tree, [&](std::uint32_t i, std::uint32_t j) { candidates.push_back({i, j}); });
-    std::sort(candidates.begin(), candidates.end());
+    sort_body_pairs(candidates, std::max(first.size(), second.size()));
     return layer_pairs_detail::within_of<NT, Exact>(first, second, false, candidates, within, threads, statistics);
 }
 

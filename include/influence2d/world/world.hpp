@@ -52,6 +52,26 @@ struct body_pair {
     }
 };
 
+/// Sorts pairs of ids below n in O(n + pairs): a stable counting sort by
+/// second id, then by first (a radix sort of two digits); std::sort when
+/// the pairs are few (fewer than n / 8: the counts would cost more).
+inline void sort_body_pairs(std::vector<body_pair>& pairs, std::size_t n) {
+    if (pairs.size() * 8 < n) {
+        std::sort(pairs.begin(), pairs.end());
+        return;
+    }
+    std::vector<body_pair> by_second(pairs.size());
+    std::vector<std::uint32_t> start(n + 1);
+    const auto by = [&](const std::vector<body_pair>& in, std::vector<body_pair>& out, auto key) {
+        std::fill(start.begin(), start.end(), 0);
+        for (const body_pair& p : in) ++start[key(p) + 1];
+        for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+        for (const body_pair& p : in) out[start[key(p)]++] = p;
+    };
+    by(pairs, by_second, [](const body_pair& p) { return p.second; });
+    by(by_second, pairs, [](const body_pair& p) { return p.first; });
+}
+
 /// A pair whose contact began or ended at a step.
 struct contact_event {
     body_pair bodies;     ///< the pair
@@ -472,26 +492,6 @@ private:
         }
     }
 
-    // Sorts pairs of ids below n in O(n + pairs): a stable counting sort by
-    // second id, then by first (a radix sort of two digits); std::sort when
-    // the pairs are few.
-    static void sort_pairs(std::vector<body_pair>& pairs, std::size_t n) {
-        if (pairs.size() * 8 < n) {  // few pairs: the counts would cost more
-            std::sort(pairs.begin(), pairs.end());
-            return;
-        }
-        std::vector<body_pair> by_second(pairs.size());
-        std::vector<std::uint32_t> start(n + 1);
-        const auto by = [&](const std::vector<body_pair>& in, std::vector<body_pair>& out, auto key) {
-            std::fill(start.begin(), start.end(), 0);
-            for (const body_pair& p : in) ++start[key(p) + 1];
-            for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
-            for (const body_pair& p : in) out[start[key(p)]++] = p;
-        };
-        by(pairs, by_second, [](const body_pair& p) { return p.second; });
-        by(by_second, pairs, [](const body_pair& p) { return p.first; });
-    }
-
     // The parts' items appended to `to`, part after part (the parallel
     // passes' results in the serial pass's order).
     template <class T>
@@ -542,7 +542,7 @@ private:
                 if (!b.fixed) fixed_tree_.query(b.enlarged, [&](std::uint32_t j) { add(i, j); });
             }
         }
-        sort_pairs(found, bodies_.size());
+        sort_body_pairs(found, bodies_.size());
         found.erase(std::unique(found.begin(), found.end()), found.end());
         if (!most) {
             std::vector<body_pair> kept;
