@@ -208,10 +208,15 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e,
                               const point<double>& host_centre, bool guest_is_b, std::size_t first, std::size_t last,
                               bool near) -> meeting {
         const polygon& gs = guest.shape();
-        // (Run boxes leave NaN out: they serve where every coordinate is finite.)
-        static const std::vector<box> no_runs;
-        const std::vector<box>& guest_runs = guest.finite() ? guest.run_bounds() : no_runs;
+        // (Run and ring boxes leave NaN out: they serve where every
+        // coordinate is finite.)
+        static const std::vector<box> no_boxes;
+        const std::vector<box>& guest_runs = guest.finite() ? guest.run_bounds() : no_boxes;
+        const std::vector<box>& guest_rings = guest.finite() ? guest.ring_bounds() : no_boxes;
         for (std::size_t r = first; r < std::min(last, gs.ring_count()); ++r) {
+            // A ring whose box misses host_window has every vertex outside
+            // it: whichever is taken would be passed over below.
+            if (r < guest_rings.size() && !boxes_overlap(guest_rings[r], host_window)) continue;
             const std::size_t k =
                 near ? ring_vertex_near(gs, guest.approx(), r, host_centre, guest_runs) : gs.ring_begin(r);
             if (outside(guest.approx()[k], host_window) || off_every_ring(guest.approx()[k], host)) continue;
