@@ -56,11 +56,8 @@ struct body_view {
 };
 
 /// d * d in NT, what the distance tests take for d > 0; 0 for d = 0, which
-/// no test reads, without the product: in a type that bounds its error
-/// (certified), the product of two exact zeros carries the underflow
-/// allowance, a subnormal bound, and on x86 an operation on a subnormal
-/// takes about a hundred cycles (a layer's pairs at d = 0 spent a fifth of
-/// their time there).
+/// no test reads, without the product (in a type that bounds its error, a
+/// product and its bound for every pair tested).
 template <class NT>
 NT squared_distance(double d) {
     if (!(d > 0)) return NT(0);
