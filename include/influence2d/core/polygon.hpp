@@ -68,7 +68,7 @@ public:
         for (std::size_t r = 0; r < rings.size(); ++r) add_ring(r, std::move(rings[r]));
         ring_begin_.push_back(vertices_.size());
         centroid_ = compute_centroid();
-        for (const auto& v : vertices_) bounds_.add(v);
+        bounds_.add(vertices_.data(), vertices_.data() + vertices_.size());
     }
 
     /// The number of vertices of all rings, which is also the number of edges.

@@ -111,8 +111,8 @@ inline constexpr std::size_t near_scan_limit = 32;
 inline std::size_t ring_vertex_near(const polygon& shape, const std::vector<point<double>>& v, std::size_t r,
                                     const point<double>& p, const std::vector<box>& runs = {}) {
     const std::size_t first = shape.ring_begin(r), end = shape.ring_end(r);
-    const bool pruned = !runs.empty() && end - first > near_scan_limit;
-    if (end - first > near_scan_limit && !pruned) return first;
+    const bool long_ring = end - first > near_scan_limit;
+    if (long_ring && runs.empty()) return first;
     std::size_t best = first;
     double best_d = std::numeric_limits<double>::infinity();
     const auto scan = [&](std::size_t from, std::size_t to) {
@@ -124,7 +124,7 @@ inline std::size_t ring_vertex_near(const polygon& shape, const std::vector<poin
             }
         }
     };
-    if (!pruned) {
+    if (!long_ring) {
         scan(first, end);
         return best;
     }
