@@ -642,6 +642,15 @@ TEST_CASE("filters: disc_reaches_left only when a point of the disc lies left of
     // The unit disc about (0, -0.5) crosses the x axis; about (0, -2) it does not.
     CHECK(disc_reaches_left({0, 0}, 1, 0, {0, -0.5}, 1, 0, 0));
     CHECK_FALSE(disc_reaches_left({0, 0}, 1, 0, {0, -2}, 1, 0, 0));
+    // An edge from (0, 0) to (1, 1) whose ends are known within 1: both may
+    // be (0.5, 0.5), a line of no direction, left of which nothing lies. A
+    // disc of radius 100 about a centre just below the slack lies across
+    // the line of the doubles themselves, not across every line the points
+    // may make: no.
+    const double slack = side_slack(1, 0, 4).of(1, 1);
+    const point<double> centre{0, std::nextafter(slack, 0.0)};
+    REQUIRE(centre.y > 0);
+    CHECK_FALSE(disc_reaches_left({0, 0}, 1, 1, centre, 100, 1, slack));
 }
 
 TEST_CASE("filters: box_may_be_near_line drops a box only where certain_side puts all four corners on one side",
