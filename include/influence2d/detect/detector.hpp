@@ -652,17 +652,26 @@ private:
             const edge_box ej{std::min(u.x, v.x), std::max(u.x, v.x), std::min(u.y, v.y), std::max(u.y, v.y),
                               static_cast<std::uint32_t>(j)};
             bb.add(u);
-            if (meets_box(ej, a_box)) near_a[near++] = ej;
+            near_a[near] = ej;
+            near += boxes_meet(ej, a_box) ? 1 : 0;
         }
         for (std::uint32_t e = 0; near > 0 && e < as.size(); ++e) {
             const point<double>&a = as.vertex(e), &b = as.vertex(as.next(e));
             const edge_box ea{std::min(a.x, b.x) - grow, std::max(a.x, b.x) + grow, std::min(a.y, b.y) - grow,
                               std::max(a.y, b.y) + grow, e};
             if (!meets_box(ea, bb)) continue;
+            // (The boxes met listed first, without a branch per box: at
+            // random poses each would be mispredicted about as often as
+            // not.)
+            std::array<std::uint32_t, every_pair_limit> met;
+            std::size_t hits = 0;
             for (std::size_t k = 0; k < near; ++k) {
-                if (!meets_box(near_a[k], ea)) continue;
+                met[hits] = near_a[k].edge;
+                hits += boxes_meet(near_a[k], ea) ? 1 : 0;
+            }
+            for (std::size_t h = 0; h < hits; ++h) {
                 tally(&detector_statistics::candidate_edges);
-                const std::size_t j = near_a[k].edge;
+                const std::size_t j = met[h];
                 if (test_pair(e, j, b_.approximate(j), b_.approximate(next_b(j)), f.margin) && !witnessing())
                     return {true, {}};
             }
@@ -963,11 +972,11 @@ private:
     }
 
     /// The exact decision for static edge e and moving edge j (recorded when
-    /// they meet, with witnesses). For d == 0 two filters in double come
-    /// first, each the paper's detailed test with the roles of the edges
-    /// swapped: both ends of one edge strictly on the same side of the other's
-    /// line (alpha of the same non-zero sign), so the edges cannot meet; in a
-    /// type other than double, then, edges that certainly cross in double
+    /// they meet, with witnesses). For d == 0, in a type other than double,
+    /// two filters in double come first, each the paper's detailed test with
+    /// the roles of the edges swapped: both ends of one edge strictly on the
+    /// same side of the other's line (alpha of the same non-zero sign), so
+    /// the edges cannot meet; then edges that certainly cross in double
     /// (segments_certainly_cross) meet, at any d. Only then are the vertices
     /// posed in NT: the signs of alpha (orientation against the static edge's
     /// line, alpha up to the constant sigma_e) and the segment test (d == 0),
@@ -979,7 +988,11 @@ private:
         INFLUENCE2D_ASSERT(e < as.size() && j < b_.size(), "an edge pair beyond the polygons' edges");
         const std::size_t k = next_b(j);
         const point<double>&p = as.vertex(e), &q = as.vertex(as.next(e));
-        if (distance() == 0 && !segments_may_meet(p, q, u, v, frame_margin)) return false;
+        // (In double the filter's values are the decision's own, A's ends as
+        // given and B's posed alike: it could only repeat the decision's
+        // signs.)
+        if constexpr (!std::is_same_v<NT, double>)
+            if (distance() == 0 && !segments_may_meet(p, q, u, v, frame_margin)) return false;
         tally(&detector_statistics::segment_tests);
         const auto& cov = a_->covering;
         const point<NT>& a = cov.start(e);
