@@ -997,6 +997,16 @@ private:
         const auto& cov = a_->covering;
         const point<NT>& a = cov.start(e);
         const point<NT>& b = cov.end(e);
+        // B's ends in NT: in double, u and v themselves (posed alike).
+        const auto moving = [&](std::size_t i, const point<double>& posed) -> const point<NT>& {
+            if constexpr (std::is_same_v<NT, double>) {
+                (void)i;
+                return posed;
+            } else {
+                (void)posed;
+                return b_.vertex(i);
+            }
+        };
         const auto decide = [&] {
             // (Two edges that cross clearly, A's ends exact and B's posed in
             // double within the frame margin, cross in NT too, and so come
@@ -1004,11 +1014,10 @@ private:
             // the decision's own: no second filter.)
             if constexpr (!std::is_same_v<NT, double>)
                 if (segments_certainly_cross(p, q, u, v, frame_margin)) return true;
+            const point<NT>&c = moving(j, u), &d = moving(k, v);
             if constexpr (with_distance)
-                if (options_.distance > 0)
-                    return segments_within(a, b, b_.vertex(j), b_.vertex(k), distance_state::value.distance2);
-            return segments_intersect(orientation(a, b, b_.vertex(j)), orientation(a, b, b_.vertex(k)), a, b,
-                                      b_.vertex(j), b_.vertex(k));
+                if (options_.distance > 0) return segments_within(a, b, c, d, distance_state::value.distance2);
+            return segments_intersect(orientation(a, b, c), orientation(a, b, d), a, b, c, d);
         };
         const bool meet = decide();
         if constexpr (with_witness)
