@@ -117,8 +117,8 @@ inline std::string frame_work_section(const time_study_result& r, const cell_tab
         "(untimed; bench_work.csv has them all). Per workload, the cells where double is below " +
         fixed(peer_target, 0) +
         "x the fastest peer, and what a frame did there on average: edge pairs handed to the pair tests by the trees "
-        "or the box test, exact segment-pair tests (after "
-        "the double filter), containment "
+        "or the box test, segment-pair decisions (every candidate pair in double, where a filter in double "
+        "would only repeat the decision's signs), containment "
         "tests (a vertex of each ring located in the other polygon), frames answered by the bounding circles "
         "alone, frames with no coherence to use (both edge trees traversed).\n\n"
         "| workload | cells below " +

@@ -41,7 +41,7 @@ struct detector_statistics {
     std::size_t candidate_rebuilds = 0;  ///< frames that gathered candidates anew
     std::size_t candidate_edges = 0;     ///< static edges inside their extended area
     std::size_t disc_rejections = 0;     ///< frames whose moving edges all keep off A's circle
-    std::size_t segment_tests = 0;       ///< exact segment-pair tests
+    std::size_t segment_tests = 0;       ///< segment-pair decisions (in NT; after the double filters but in double)
     std::size_t containment_tests = 0;   ///< frames that ran the inclusion tests
     std::size_t tree_frames = 0;         ///< frames whose pairs came from A's edge tree
     std::size_t jump_frames = 0;         ///< frames with no coherence to use (both edge trees, or every pair)
