@@ -492,14 +492,19 @@ private:
         }
     }
 
-    // The parts' items appended to `to`, part after part (the parallel
-    // passes' results in the serial pass's order).
+    // The parts' items, part after part, made the whole of `to` (the
+    // parallel passes' results in the serial pass's order), the parts
+    // copied by `threads` threads at once, each to its own place; `to` is
+    // only resized, so that the items it already holds are not made again.
     template <class T>
-    static void append_in_order(const std::vector<std::vector<T>>& parts, std::vector<T>& to) {
-        std::size_t total = to.size();
-        for (const std::vector<T>& v : parts) total += v.size();
-        to.reserve(total);
-        for (const std::vector<T>& v : parts) to.insert(to.end(), v.begin(), v.end());
+    static void gather_in_order(const std::vector<std::vector<T>>& parts, std::vector<T>& to, unsigned threads) {
+        std::vector<std::size_t> at(parts.size() + 1, 0);
+        for (std::size_t k = 0; k < parts.size(); ++k) at[k + 1] = at[k] + parts[k].size();
+        to.resize(at.back());
+        run_in_chunks(parts.size(), threads, 1, [&](std::size_t first, std::size_t last) {
+            for (std::size_t k = first; k < last; ++k)
+                std::copy(parts[k].begin(), parts[k].end(), to.begin() + static_cast<std::ptrdiff_t>(at[k]));
+        });
     }
 
     // Step 2a: the near pairs (enlarged boxes meet), sorted: those of the
@@ -528,7 +533,7 @@ private:
                 for (std::size_t k = first; k < last; ++k)
                     free_tree_.join_part_pairs(parts[k], k < own ? free_tree_ : fixed_tree_, adding_to(part_pairs[k]));
             });
-            append_in_order(part_pairs, found);
+            gather_in_order(part_pairs, found, threads);
         } else if (most) {
             free_tree_.self_join(add);
             free_tree_.join(fixed_tree_, add);
@@ -565,25 +570,30 @@ private:
     // last step is a near pair: its boxes met, so did its enlarged boxes.)
     // Many near pairs are sought in parallel blocks.
     void candidates() {
-        tested_.clear();
-        kept_.clear();
         const unsigned threads = near_.size() < parallel_near_pairs ? 1u : batch_threads(options_.threads);
         bool shifted = false;
         if (threads == 1) {
+            tested_.clear();
+            kept_.clear();
             shifted = candidates_in(0, near_.size(), tested_, kept_);
         } else {
-            // Blocks of the near pairs, each block's candidates apart, then
-            // in block order: the serial pass's.
+            // Blocks of the near pairs, each block's candidates apart (in
+            // buffers kept from step to step), then in block order: the
+            // serial pass's.
             const std::size_t blocks = 4 * std::size_t{threads};
-            std::vector<std::vector<record>> tested(blocks), kept(blocks);
+            block_tested_.resize(blocks);
+            block_kept_.resize(blocks);
             std::vector<char> shifted_in(blocks, 0);
             run_in_chunks(blocks, threads, 1, [&](std::size_t first, std::size_t last) {
-                for (std::size_t k = first; k < last; ++k)
-                    shifted_in[k] =
-                        candidates_in(near_.size() * k / blocks, near_.size() * (k + 1) / blocks, tested[k], kept[k]);
+                for (std::size_t k = first; k < last; ++k) {
+                    block_tested_[k].clear();
+                    block_kept_[k].clear();
+                    shifted_in[k] = candidates_in(near_.size() * k / blocks, near_.size() * (k + 1) / blocks,
+                                                  block_tested_[k], block_kept_[k]);
+                }
             });
-            append_in_order(tested, tested_);
-            append_in_order(kept, kept_);
+            gather_in_order(block_tested_, tested_, threads);
+            gather_in_order(block_kept_, kept_, threads);
             shifted = std::find(shifted_in.begin(), shifted_in.end(), 1) != shifted_in.end();
         }
         if (shifted)
@@ -977,6 +987,9 @@ private:
     std::vector<record> last_;    // the last step's pairs within the distance, or apart with a separating edge; sorted
     std::vector<record> kept_;    // this step's carried pairs
     std::vector<record> tested_;  // this step's candidates (kept for their capacity)
+    // The candidates and carried contacts of each block of near pairs when
+    // sought in parallel (candidates(); kept for their capacity).
+    std::vector<std::vector<record>> block_tested_, block_kept_;
     std::vector<body_pair> contacts_;
     std::vector<body_pair> spare_contacts_;  // the contacts of the step before last, for their capacity
     std::vector<contact_witness> witnesses_;
