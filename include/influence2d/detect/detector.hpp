@@ -922,7 +922,7 @@ private:
                 k.first = first;
                 k.last = std::min(first + chunk_edges, bs.ring_end(r));
                 box around;
-                for (std::size_t j = k.first; j < k.last; ++j) around.add(bs.vertex(j));
+                around.add(bs.vertices().data() + k.first, bs.vertices().data() + k.last);
                 around.add(bs.vertex(bs.next(k.last - 1)));
                 k.center = {around.min_x / 2 + around.max_x / 2, around.min_y / 2 + around.max_y / 2};
                 long double r2 = 0;

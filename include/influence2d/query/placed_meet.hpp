@@ -48,10 +48,8 @@ struct meeting {
 /// are the decisions' own, with no margin). Exact when NT is.
 template <class NT>
 location locate_placed(placed_polygon<NT>& a, const point<double>& p_approx, const point<NT>& p, double e) {
-    // (Run boxes leave NaN out: they serve where every coordinate is finite.
-    // In double the doubles are the decisions' own: no margin.)
-    static const std::vector<box> no_runs;
-    const std::vector<box>& runs = a.finite() ? a.run_bounds() : no_runs;
+    // (In double the doubles are the decisions' own: no margin.)
+    const std::vector<box>& runs = a.finite_run_bounds();
     if constexpr (std::is_same_v<NT, double>) {
         if (runs.empty()) return locate_by_crossings(a.shape(), a.all(), p);
         const std::vector<point<double>>& v = a.approx();
@@ -208,11 +206,8 @@ meeting placed_meet(placed_polygon<NT>& a, placed_polygon<NT>& b, double e,
                               const point<double>& host_centre, bool guest_is_b, std::size_t first, std::size_t last,
                               bool near) -> meeting {
         const polygon& gs = guest.shape();
-        // (Run and ring boxes leave NaN out: they serve where every
-        // coordinate is finite.)
-        static const std::vector<box> no_boxes;
-        const std::vector<box>& guest_runs = guest.finite() ? guest.run_bounds() : no_boxes;
-        const std::vector<box>& guest_rings = guest.finite() ? guest.ring_bounds() : no_boxes;
+        const std::vector<box>& guest_runs = guest.finite_run_bounds();
+        const std::vector<box>& guest_rings = guest.finite_ring_bounds();
         for (std::size_t r = first; r < std::min(last, gs.ring_count()); ++r) {
             // A ring whose box misses host_window has every vertex outside
             // it: whichever is taken would be passed over below.

@@ -118,6 +118,9 @@ public:
     /// two runs overlap, overlapping_run_pairs, and a locate passes over
     /// each run off its ray whole).
     void make_run_bounds() { edge_run_boxes(shape_, *approx_, runs_); }
+    /// run_bounds() when every coordinate is finite, else none: a run box
+    /// leaves NaN out, and serves only where there is none.
+    const std::vector<box>& finite_run_bounds() const { return finite_ ? runs_ : no_boxes(); }
     /// The box of each ring in double (box::add: a NaN coordinate left out),
     /// once make_ring_bounds() made them at the present placing, for a
     /// polygon of several rings; else empty.
@@ -127,6 +130,9 @@ public:
     /// a vertex off every ring's box is outside the region without a
     /// locate (placed_meet).
     void make_ring_bounds() { ring_boxes(shape_, *approx_, shape_.ring_count() > 1 ? shape_.ring_count() : 0, rings_); }
+    /// ring_bounds() when every coordinate is finite, else none (as
+    /// finite_run_bounds()).
+    const std::vector<box>& finite_ring_bounds() const { return finite_ ? rings_ : no_boxes(); }
     /// A disc in the placed polygon's closed region, its centre posed in
     /// double as a vertex is (within the filters' margin of the exact one),
     /// radius 0 when none is known (placed anew: none).
@@ -186,6 +192,11 @@ public:
     }
 
 private:
+    // The empty list finite_run_bounds() and finite_ring_bounds() give.
+    static const std::vector<box>& no_boxes() {
+        static const std::vector<box> none;
+        return none;
+    }
     enum class how : std::uint8_t { own, posed, given };
 
     // (A vertex in NT is made on first use: an exact NT allocates for each
