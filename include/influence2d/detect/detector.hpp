@@ -215,6 +215,12 @@ public:
         margin_ = placing_margin<NT>(a_->scale + a_->radius + reach_ + skin() + b_.scene().scale);
         const polygon& as = a_->shape;
         ring_boxes(as, as.vertices(), with_holes ? as.ring_count() : 1, a_ring_boxes_);
+        if (every_pair_pays())
+            for (std::uint32_t e = 0; e < as.size(); ++e) {
+                const point<double>&a = as.vertex(e), &b = as.vertex(as.next(e));
+                a_edge_boxes_.push_back(
+                    {std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y), e});
+            }
         make_chunks();
         convex_route_ = distance() == 0 && a_->convex && b_.scene().convex && convex_pair_pays(as.size(), b_.size());
         if (convex_route_) {
@@ -295,7 +301,7 @@ public:
         std::size_t bytes = sizeof(*this) + grid + chunks_.capacity() * sizeof(chunk) +
                             chunk_centers_.capacity() * sizeof(point<double>) +
                             (cache_.capacity() + candidates_.capacity()) * sizeof(std::uint32_t) + b_.heap_bytes() +
-                            a_ring_boxes_.capacity() * sizeof(box);
+                            a_ring_boxes_.capacity() * sizeof(box) + a_edge_boxes_.capacity() * sizeof(edge_box);
         if constexpr (with_witness) bytes += witness_state::value.heap_bytes();
         return bytes;
     }
@@ -642,23 +648,23 @@ private:
             if (options_.witness) witness_state::value.clear();
         const polygon& as = a_->shape;
         const double grow = distance() + f.margin;
-        const box a_box = as.bounds().inflated(grow);
         INFLUENCE2D_ASSERT(b_.size() <= every_pair_limit, "every_pair: more edges of B than its array holds");
-        std::array<edge_box, every_pair_limit> near_a;  // B's edges whose boxes meet A's grown box
+        // (B's boxes grown, A's kept from the constructor: the same
+        // comparisons as A's grown against B's.)
+        std::array<edge_box, every_pair_limit> near_a;  // B's grown edge boxes that meet A's box
         std::size_t near = 0;
         box bb;  // B's box (each vertex starts an edge)
         for (std::size_t j = 0; j < b_.size(); ++j) {
             const point<double>&u = b_.approximate(j), &v = b_.approximate(next_b(j));
-            const edge_box ej{std::min(u.x, v.x), std::max(u.x, v.x), std::min(u.y, v.y), std::max(u.y, v.y),
-                              static_cast<std::uint32_t>(j)};
+            const edge_box ej{std::min(u.x, v.x) - grow, std::max(u.x, v.x) + grow, std::min(u.y, v.y) - grow,
+                              std::max(u.y, v.y) + grow, static_cast<std::uint32_t>(j)};
             bb.add(u);
             near_a[near] = ej;
-            near += boxes_meet(ej, a_box) ? 1 : 0;
+            near += boxes_meet(ej, as.bounds()) ? 1 : 0;
         }
+        bb = bb.inflated(grow);
         for (std::uint32_t e = 0; near > 0 && e < as.size(); ++e) {
-            const point<double>&a = as.vertex(e), &b = as.vertex(as.next(e));
-            const edge_box ea{std::min(a.x, b.x) - grow, std::max(a.x, b.x) + grow, std::min(a.y, b.y) - grow,
-                              std::max(a.y, b.y) + grow, e};
+            const edge_box& ea = a_edge_boxes_[e];
             if (!meets_box(ea, bb)) continue;
             // (The boxes met listed first, without a branch per box: at
             // random poses each would be mispredicted about as often as
@@ -1039,6 +1045,9 @@ private:
     int shift_ = 0;              ///< the polygons and poses scaled by 2^shift_
     double reach_ = 0, margin_ = 0;
     std::vector<box> a_ring_boxes_;  ///< the box of each ring of A
+    /// The box of each edge of A, when the pair may take the every-pair
+    /// search (every_pair_pays); else empty.
+    std::vector<edge_box> a_edge_boxes_;
     /// B's edges per chunk: a chunk's circle test replaces this many edge
     /// tests when it misses, and costs one more when it does not; 8 keeps the
     /// circles tight on the families' polygons while dividing the edge tests
