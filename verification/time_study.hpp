@@ -127,11 +127,14 @@ public:
 };
 
 /// A detector<double> asked for the witnesses of each frame (every edge pair
-/// that meets), fully built: what contact features cost, beside a peer's
-/// contact manifold.
+/// that meets), fully built, each frame's pairs written into one vector kept
+/// from frame to frame (collide(q, pairs), as a loop over many frames would
+/// ask them): what contact features cost, beside a peer's contact manifold
+/// written into the caller's struct.
 class witness_detector : public fully_built<detector<double>> {
 public:
     witness_detector(const polygon& a, const polygon& b) : fully_built<detector<double>>(a, b, with_witness()) {}
+    bool collide(const pose& q) { return detector<double>::collide(q, pairs_); }
 
 private:
     static detector_options with_witness() {
@@ -139,6 +142,7 @@ private:
         o.witness = true;
         return o;
     }
+    std::vector<edge_pair> pairs_;
 };
 
 /// influence2d's one-shot query in NT: intersects<NT>(A, B, pose).
@@ -211,8 +215,9 @@ inline const auto& method_table() {
              "certified_intersects"}},
         method_entry<fully_built<detector<exact_rational>>, one_shot_query<exact_rational>>{
             {"exact", true, true, "", false, any_pair, "detector<exact_rational>", "intersects<exact_rational>"}},
-        method_entry<witness_detector, no_form>{{"double-witness", true, true, "", true, any_pair,
-                                                 "detector<double> with witnesses (every meeting edge pair)", ""}},
+        method_entry<witness_detector, no_form>{
+            {"double-witness", true, true, "", true, any_pair,
+             "detector<double> with witnesses (every meeting edge pair, into a vector kept across frames)", ""}},
         method_entry<no_form, detector_per_query>{
             {"double-detector", true, true, "", true, any_pair, "", "detector<double> built, then one collide"}},
         method_entry<paper_detector<double>, no_form>{

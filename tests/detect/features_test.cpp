@@ -50,6 +50,10 @@ std::vector<pose> walk(const polygon& a, std::uint64_t seed, int frames) {
 template <class NT, class F>
 int check_walk(const polygon& a, const polygon& b, const detector_options& o, const std::vector<pose>& poses) {
     detector<NT, F> d(a, b, o);
+    // The same frames asked with the witnesses written into one vector kept
+    // across frames (collide(q, pairs)).
+    detector<NT, F> into(a, b, o);
+    std::vector<edge_pair> pairs{{7, 7}};  // (cleared by every frame)
     brute_force_detector<NT> ref(a, b, o);
     int collisions = 0;
     for (std::size_t k = 0; k < poses.size(); ++k) {
@@ -58,6 +62,8 @@ int check_walk(const polygon& a, const polygon& b, const detector_options& o, co
         INFO("frame " << k << " features " << F::bits << " d " << o.distance << " witness " << o.witness);
         REQUIRE(got.collides == want.collides);
         REQUIRE(got.pairs == want.pairs);
+        REQUIRE(into.collide(poses[k], pairs) == want.collides);
+        REQUIRE(pairs == want.pairs);
         collisions += want.collides;
     }
     return collisions;

@@ -94,8 +94,10 @@ struct certified_tally {
 void check_certified_frames(const certified_family_pair& fp, const std::vector<pose>& frames, double d,
                             detector<exact_rational>& exact, certified_detector<detector>& cert,
                             certified_detector<brute_force_detector>& cert_brute,
-                            certified_detector<detector>& cert_plain, certified_tally& t) {
+                            certified_detector<detector>& cert_plain, certified_detector<detector>& cert_into,
+                            certified_tally& t) {
     std::size_t reported = 0;
+    std::vector<edge_pair> pairs;  // cert_into's witnesses, the vector kept across frames
     for (std::size_t k = 0; k < frames.size(); ++k) {
         const pose& p = frames[k];
         ++t.frames;
@@ -103,8 +105,11 @@ void check_certified_frames(const certified_family_pair& fp, const std::vector<p
         const frame_result got = cert.collide(p);
         const frame_result brute = cert_brute.collide(p);
         const bool plain = cert_plain.collide(p).collides;
+        const bool into = cert_into.collide(p, pairs);
         t.collisions += want.collides;
-        if (same_frame(got, want) && same_frame(brute, want) && plain == want.collides) continue;
+        if (same_frame(got, want) && same_frame(brute, want) && plain == want.collides &&
+            same_frame({into, pairs}, want))
+            continue;
         ++t.mismatches;
         if (++reported > 3) continue;
         std::ostringstream o;
@@ -116,6 +121,7 @@ void check_certified_frames(const certified_family_pair& fp, const std::vector<p
         INFO("certified<detector>:            " << certified_pairs_text(got));
         INFO("certified<brute_force>:         " << certified_pairs_text(brute));
         INFO("certified<detector>, no witness: " << (plain ? "collides" : "apart"));
+        INFO("certified<detector>, into a vector: " << certified_pairs_text({into, pairs}));
         FAIL_CHECK("certified detectors disagree with the exact detector");
     }
 }
@@ -134,18 +140,19 @@ certified_tally run_all(double d, std::size_t generic_count, std::size_t touchin
         test_random::rng r(fp.seed);
 
         {
-            certified_detector<detector> cert(A, B, wit), cert_plain(A, B, plain);
+            certified_detector<detector> cert(A, B, wit), cert_plain(A, B, plain), cert_into(A, B, wit);
             certified_detector<brute_force_detector> cert_brute(A, B, wit);
             const std::vector<pose> frames = test_poses::near_contact(A, B, generic_count, 0.6, 4, r.gen());
-            check_certified_frames(fp, frames, d, exact, cert, cert_brute, cert_plain, t);
+            check_certified_frames(fp, frames, d, exact, cert, cert_brute, cert_plain, cert_into, t);
             t.generic_frames += frames.size();
-            t.generic_fallbacks += cert.exact_frames() + cert_brute.exact_frames() + cert_plain.exact_frames();
+            t.generic_fallbacks +=
+                cert.exact_frames() + cert_brute.exact_frames() + cert_plain.exact_frames() + cert_into.exact_frames();
         }
         {
-            certified_detector<detector> cert(A, B, wit), cert_plain(A, B, plain);
+            certified_detector<detector> cert(A, B, wit), cert_plain(A, B, plain), cert_into(A, B, wit);
             certified_detector<brute_force_detector> cert_brute(A, B, wit);
             const std::vector<pose> frames = test_poses::touching(A, B, r, touching_count);
-            check_certified_frames(fp, frames, d, exact, cert, cert_brute, cert_plain, t);
+            check_certified_frames(fp, frames, d, exact, cert, cert_brute, cert_plain, cert_into, t);
             t.touching_frames += frames.size();
             t.touching_fallbacks += cert.exact_frames();
             t.brute_touching_fallbacks += cert_brute.exact_frames();

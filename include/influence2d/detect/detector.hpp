@@ -258,6 +258,23 @@ public:
         return collide_at(q);
     }
 
+    /// collide(q) for a loop over many frames: whether the closed regions
+    /// are within d, the witnesses (when asked for) written into `pairs`,
+    /// which is cleared first and keeps its capacity from call to call, so
+    /// that frames allocate nothing once it holds a frame's pairs. The same
+    /// answer and pairs as collide(q).
+    bool collide(const pose& q, std::vector<edge_pair>& pairs) {
+        pairs.clear();
+        // (out_ is set for this call only, an exception included.)
+        struct writing {
+            std::vector<edge_pair>*& at;
+            ~writing() { at = nullptr; }
+        };
+        out_ = &pairs;
+        const writing reset{out_};
+        return collide(q).collides;
+    }
+
     /// Builds now what frames otherwise build on first use: A's cone index
     /// and edge tree, B's edge tree, both polygons' deep cells and reaching
     /// vertices when the pair
@@ -619,7 +636,7 @@ private:
         if (met) return {true, {}};
         if constexpr (with_witness) {
             const pair_collector& pairs = witness_state::value;
-            if (!pairs.empty()) return {true, pairs.in_input_numbering(a_->shape, b_.shape())};
+            if (!pairs.empty()) return {true, numbered(pairs)};
         }
         tally(&detector_statistics::containment_tests);
         // B's box from its posed root circle, as the traversal saw it.
@@ -841,6 +858,15 @@ private:
         INFLUENCE2D_ASSERT(cache_.size() <= s.size(), "more cached candidates than static edges");
     }
 
+    /// The frame's pairs in A's and B's input numbering: written into the
+    /// caller's vector during collide(q, pairs) (none returned), else
+    /// returned.
+    std::vector<edge_pair> numbered(const pair_collector& pairs) const {
+        if (out_ == nullptr) return pairs.in_input_numbering(a_->shape, b_.shape());
+        pairs.in_input_numbering(a_->shape, b_.shape(), *out_);
+        return {};
+    }
+
     /// The end of a frame whose pairs were all tested: the pairs found, if
     /// any (with witnesses), else containment.
     frame_result finish(double n, double frame_margin) {
@@ -849,7 +875,7 @@ private:
             const pair_collector& pairs = witness_state::value;
             if (!pairs.empty()) {
                 r.collides = true;
-                r.pairs = pairs.in_input_numbering(a_->shape, b_.shape());
+                r.pairs = numbered(pairs);
                 return r;
             }
         }
@@ -1045,6 +1071,8 @@ private:
     int shift_ = 0;              ///< the polygons and poses scaled by 2^shift_
     double reach_ = 0, margin_ = 0;
     std::vector<box> a_ring_boxes_;  ///< the box of each ring of A
+    /// The caller's vector for the witnesses during collide(q, pairs); else none.
+    std::vector<edge_pair>* out_ = nullptr;
     /// The box of each edge of A, when the pair may take the every-pair
     /// search (every_pair_pays); else empty.
     std::vector<edge_box> a_edge_boxes_;

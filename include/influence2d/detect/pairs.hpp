@@ -26,11 +26,16 @@ public:
     /// The pairs in A's and B's input numbering, sorted, without repeats.
     std::vector<edge_pair> in_input_numbering(const polygon& a, const polygon& b) const {
         std::vector<edge_pair> out;
+        in_input_numbering(a, b, out);
+        return out;
+    }
+    /// The same pairs written into `out` (cleared first; its capacity kept).
+    void in_input_numbering(const polygon& a, const polygon& b, std::vector<edge_pair>& out) const {
+        out.clear();
         out.reserve(pairs_.size());
         for (const auto& p : pairs_) out.push_back({a.source_edge(p.static_edge), b.source_edge(p.moving_edge)});
         std::sort(out.begin(), out.end());
         out.erase(std::unique(out.begin(), out.end()), out.end());
-        return out;
     }
 
 private:

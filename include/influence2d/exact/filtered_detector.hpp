@@ -75,6 +75,18 @@ public:
         return fallback<Uncertain...>::run([&] { return fast_->collide(p); }, exactly);
     }
 
+    /// collide(p) with the witnesses written into `pairs` (D::collide(p,
+    /// pairs): cleared first, its capacity kept from call to call), when D
+    /// has that form: the same answer and pairs.
+    bool collide(const pose& p, std::vector<edge_pair>& pairs) {
+        const auto exactly = [&] {
+            ++exact_frames_;
+            return exact().collide(p, pairs);
+        };
+        if (!fast_) return exactly();
+        return fallback<Uncertain...>::run([&] { return fast_->collide(p, pairs); }, exactly);
+    }
+
     /// Builds now what the frames would build on first use, when D has such
     /// structures (detector::build_structures; a no-op for D without): the
     /// fast detector's, or the exact one's when building the fast one's asks
