@@ -216,11 +216,8 @@ public:
         const polygon& as = a_->shape;
         ring_boxes(as, as.vertices(), with_holes ? as.ring_count() : 1, a_ring_boxes_);
         if (every_pair_pays())
-            for (std::uint32_t e = 0; e < as.size(); ++e) {
-                const point<double>&a = as.vertex(e), &b = as.vertex(as.next(e));
-                a_edge_boxes_.push_back(
-                    {std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y), e});
-            }
+            for (std::size_t e = 0; e < as.size(); ++e)
+                a_edge_boxes_.push_back(edge_box_of(as, as.vertices(), e, {0, 0}, {0, 0}));
         make_chunks();
         convex_route_ = distance() == 0 && a_->convex && b_.scene().convex && convex_pair_pays(as.size(), b_.size());
         if (convex_route_) {
