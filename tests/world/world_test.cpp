@@ -294,10 +294,12 @@ TEST_CASE("world: thousands of bodies on two threads, the joins and candidates s
         b.add_body(s, where[i], i % 11 == 0);
     }
     const int steps = std::max(2, test_effort::scaled(6));
-    std::size_t contacts = 0;
+    std::vector<char> alive(n, 1);
+    std::size_t contacts = 0, ended = 0;
     for (int step = 0; step < steps; ++step) {
         INFO("step " << step);
         const std::vector<body_pair> ra = a.step(), rb = b.step();
+        for (const contact_event& e : a.events()) ended += e.begins ? 0 : 1;
         REQUIRE(show_pairs(ra) == show_pairs(rb));
         REQUIRE(a.witnesses().size() == b.witnesses().size());
         std::size_t same_witness = 0;
@@ -305,11 +307,24 @@ TEST_CASE("world: thousands of bodies on two threads, the joins and candidates s
             same_witness += a.witnesses()[k].first.index == b.witnesses()[k].first.index &&
                             a.witnesses()[k].second.index == b.witnesses()[k].second.index;
         CHECK(same_witness == ra.size());
-        CHECK(a.events().size() == b.events().size());
+        REQUIRE(a.events().size() == b.events().size());
+        std::size_t same_event = 0;
+        for (std::size_t k = 0; k < a.events().size(); ++k)
+            same_event += a.events()[k].bodies == b.events()[k].bodies && a.events()[k].begins == b.events()[k].begins;
+        CHECK(same_event == a.events().size());
+        CHECK(a.statistics().carried == b.statistics().carried);
         contacts += ra.size();
         const bool jump = step % 2 == 0;
         for (std::size_t i = 0; i < n; ++i) {
-            if (i % 11 == 0) continue;
+            if (i % 11 == 0 || !alive[i]) continue;
+            // (A few bodies removed on steps of small moves: their contacts
+            // end at the next step.)
+            if (!jump && i % 97 == static_cast<std::size_t>(step)) {
+                a.remove(static_cast<std::uint32_t>(i));
+                b.remove(static_cast<std::uint32_t>(i));
+                alive[i] = false;
+                continue;
+            }
             where[i] = jump ? random_pose(g, {0, 0}, 250)
                             : pose{where[i].tx + g.uniform(-0.3, 0.3), where[i].ty + g.uniform(-0.3, 0.3),
                                    where[i].theta + g.uniform(-0.03, 0.03)};
@@ -319,6 +334,7 @@ TEST_CASE("world: thousands of bodies on two threads, the joins and candidates s
     }
     INFO("contacts " << contacts << ", candidates " << a.statistics().candidates);
     CHECK(contacts > 1000);
+    CHECK(ended > 0);
     // Past the thresholds of the parallel passes: more bodies than 4,096 and
     // more candidates a step (so more near pairs) than 16,384.
     CHECK(a.statistics().candidates > 16384 * static_cast<std::size_t>(steps));
