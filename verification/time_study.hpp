@@ -34,8 +34,8 @@
 //             - repeated methods (influence2d's double, certified and paper
 //               detectors; its one-shot double, certified and detector per
 //               query) run in passes on fresh objects; the pass is repeated
-//               (at least 3 passes, an odd number, until `repeat_seconds` of
-//               passes) and the median pass counts, so that a cell of a few
+//               (at least `repeated_passes`, an odd number, and until
+//               `repeat_seconds` of passes) and the median pass counts, so that a cell of a few
 //               milliseconds is not at the mercy of one interruption; the
 //               methods take turns pass by pass, so that a slower spell of the
 //               machine falls on all of them alike and their ratios hold. A
@@ -367,7 +367,8 @@ struct time_study_options {
     double gap = 9;
     double random_inner = 0.4, random_outer = 1.1;  ///< the annulus, in units of R_A + R_B
     double budget = 0.25;                           ///< seconds per strided method and cell
-    double repeat_seconds = 0.02;                   ///< seconds of repeated passes per repeated method and cell
+    double repeat_seconds = 0.05;                   ///< seconds of repeated passes per repeated method and cell
+    std::size_t repeated_passes = 5;                ///< passes of a repeated method at least (odd)
     double preparation_seconds = 0.005;             ///< seconds of repeated builds per method and cell
     std::size_t memory_frames = 1000;               ///< frames of the memory pass (evenly spaced)
     std::uint64_t seed = default_family_seed;       ///< of the family polygons and the random poses
@@ -543,9 +544,10 @@ struct timed_passes {
 
 /// Times `methods` on a cell: passes on fresh objects, the methods taking
 /// turns pass by pass. Every method takes the first 3 rounds; a repeated
-/// method goes on, two rounds at a time, until its passes sum to
-/// `repeat_seconds` (or 101 rounds), so that each ends with an odd number of
-/// passes. A repeated method's frame-form pass is every pose in order; a
+/// method goes on, two rounds at a time, until it has `repeated_passes` and
+/// they sum to `repeat_seconds` (or 101 rounds), so that each ends with an
+/// odd number of passes (a median of 3 passes of a few tens of milliseconds
+/// can fall on two slow spells of the machine). A repeated method's frame-form pass is every pose in order; a
 /// one-shot pass, and every pass of the others, every k-th pose, k from a
 /// probe (on an object of its own: a detector with temporal coherence
 /// starts its timed passes fresh) so that a pass takes about budget / 3.
@@ -567,7 +569,8 @@ inline std::map<std::string, timed_passes> time_passes(const time_study_options&
         if (round >= 3 && round % 2 == 1)
             for (const std::string& m : methods)
                 taking_turns[m] = taking_turns[m] && method_of(m).repeated &&
-                                  std::accumulate(seconds[m].begin(), seconds[m].end(), 0.0) < o.repeat_seconds;
+                                  (seconds[m].size() < o.repeated_passes ||
+                                   std::accumulate(seconds[m].begin(), seconds[m].end(), 0.0) < o.repeat_seconds);
         bool any = false;
         for (const std::string& m : methods) {
             if (!taking_turns[m]) continue;

@@ -182,9 +182,8 @@ inline std::string time_study_markdown(const time_study_result& r, const time_st
     s += "Machine: " + machine_line() + ". Command: `" + command + "` (" + fixed(r.seconds, 0) + " s).\n\n";
     s += workloads_paragraph(o);
     s += "Timing: influence2d's double, certified and paper detectors (and on one-shot its double, certified and "
-         "double-detector queries) run in repeated passes on fresh objects, taking turns pass by pass (at least 3, "
-         "until " +
-         general(o.repeat_seconds) +
+         "double-detector queries) run in repeated passes on fresh objects, taking turns pass by pass (at least " +
+         std::to_string(o.repeated_passes) + " and until " + general(o.repeat_seconds) +
          " s; bench.csv: passes), of which the median pass counts; a "
          "detector's pass is every pose in order, a one-shot pass every k-th pose (a pass about " +
          general(o.budget / 3) +
