@@ -498,24 +498,13 @@ private:
     // only resized, so that the items it already holds are not made again.
     template <class T>
     static void gather_in_order(const std::vector<std::vector<T>>& parts, std::vector<T>& to, unsigned threads) {
-        const std::vector<std::size_t> at = starts_of(parts);
-        to.resize(at.back());
-        run_in_chunks(parts.size(), threads, 1, [&](std::size_t first, std::size_t last) {
-            for (std::size_t k = first; k < last; ++k) copy_to(parts[k], to, at[k]);
-        });
-    }
-    // Where each part starts when the parts are put one after another, and
-    // (last) their total.
-    template <class T>
-    static std::vector<std::size_t> starts_of(const std::vector<std::vector<T>>& parts) {
         std::vector<std::size_t> at(parts.size() + 1, 0);
         for (std::size_t k = 0; k < parts.size(); ++k) at[k + 1] = at[k] + parts[k].size();
-        return at;
-    }
-    // The part copied into `to` from position `at`.
-    template <class T>
-    static void copy_to(const std::vector<T>& part, std::vector<T>& to, std::size_t at) {
-        std::copy(part.begin(), part.end(), to.begin() + static_cast<std::ptrdiff_t>(at));
+        to.resize(at.back());
+        run_in_chunks(parts.size(), threads, 1, [&](std::size_t first, std::size_t last) {
+            for (std::size_t k = first; k < last; ++k)
+                std::copy(parts[k].begin(), parts[k].end(), to.begin() + static_cast<std::ptrdiff_t>(at[k]));
+        });
     }
 
     // Step 2a: the near pairs (enlarged boxes meet), sorted: those of the
@@ -583,17 +572,14 @@ private:
     void candidates() {
         const unsigned threads = near_.size() < parallel_near_pairs ? 1u : batch_threads(options_.threads);
         bool shifted = false;
-        block_threads_ = threads;
         if (threads == 1) {
             tested_.clear();
             kept_.clear();
             shifted = candidates_in(0, near_.size(), tested_, kept_);
-            stats_.carried += kept_.size();
         } else {
             // Blocks of the near pairs, each block's candidates apart (in
             // buffers kept from step to step), then in block order: the
-            // serial pass's. The carried contacts stay in their blocks
-            // (gather() takes them block by block).
+            // serial pass's.
             const std::size_t blocks = 4 * std::size_t{threads};
             block_tested_.resize(blocks);
             block_kept_.resize(blocks);
@@ -602,12 +588,12 @@ private:
                 for (std::size_t k = first; k < last; ++k) {
                     block_tested_[k].clear();
                     block_kept_[k].clear();
-                    shifted_in[k] = candidates_in(block_start(k, blocks), block_start(k + 1, blocks), block_tested_[k],
-                                                  block_kept_[k]);
+                    shifted_in[k] = candidates_in(near_.size() * k / blocks, near_.size() * (k + 1) / blocks,
+                                                  block_tested_[k], block_kept_[k]);
                 }
             });
             gather_in_order(block_tested_, tested_, threads);
-            for (const std::vector<record>& kept : block_kept_) stats_.carried += kept.size();
+            gather_in_order(block_kept_, kept_, threads);
             shifted = std::find(shifted_in.begin(), shifted_in.end(), 1) != shifted_in.end();
         }
         if (shifted)
@@ -617,10 +603,8 @@ private:
                     scaled_shape(bodies_[r.bodies.second].shape, r.shift);
                 }
         stats_.candidates += tested_.size();
+        stats_.carried += kept_.size();
     }
-
-    // The first near pair of block k of `blocks` (candidates()).
-    std::size_t block_start(std::size_t k, std::size_t blocks) const { return near_.size() * k / blocks; }
 
     // Whether the posed bounding discs of bodies a and b lie farther apart
     // than the distance (certainly_farther, each posed centre within its
@@ -946,117 +930,45 @@ private:
     }
 
     // Step 4: this step's pairs (carried and tested), its contacts and
-    // events; the moved marks cleared. Near pairs sought in blocks
-    // (candidates() in parallel) are gathered block by block on the
-    // threads, the last step's contacts cut where each block's near pairs
-    // begin, and the blocks' results put in block order: the serial pass's.
+    // events; the moved marks cleared.
     void gather() {
+        last_.clear();
         std::vector<body_pair> now = std::move(spare_contacts_);  // (its capacity kept from step to step)
-        if (block_threads_ == 1) {
-            last_.clear();
-            now.clear();
-            witnesses_.clear();
-            events_.clear();
-            pairs_of({kept_.data(), kept_.size()}, {tested_.data(), tested_.size()}, last_, now, witnesses_);
-            changes({contacts_.data(), contacts_.size()}, {now.data(), now.size()}, events_);
-        } else {
-            const std::size_t blocks = block_kept_.size();
-            // The candidates of block k: tested_[tested_at[k], tested_at[k + 1]).
-            const std::vector<std::size_t> tested_at = starts_of(block_tested_);
-            std::vector<std::size_t> was_at(blocks + 1, contacts_.size());
-            was_at[0] = 0;
-            for (std::size_t k = 1; k < blocks; ++k) {
-                const std::size_t n = block_start(k, blocks);
-                if (n < near_.size())
-                    was_at[k] = static_cast<std::size_t>(
-                        std::lower_bound(contacts_.begin(), contacts_.end(), near_[n]) - contacts_.begin());
-            }
-            block_last_.resize(blocks);
-            block_now_.resize(blocks);
-            block_witnesses_.resize(blocks);
-            block_events_.resize(blocks);
-            run_in_chunks(blocks, block_threads_, 1, [&](std::size_t first, std::size_t last) {
-                for (std::size_t k = first; k < last; ++k) {
-                    block_last_[k].clear();
-                    block_now_[k].clear();
-                    block_witnesses_[k].clear();
-                    block_events_[k].clear();
-                    pairs_of({block_kept_[k].data(), block_kept_[k].size()},
-                             {tested_.data() + tested_at[k], tested_at[k + 1] - tested_at[k]}, block_last_[k],
-                             block_now_[k], block_witnesses_[k]);
-                    changes({contacts_.data() + was_at[k], was_at[k + 1] - was_at[k]},
-                            {block_now_[k].data(), block_now_[k].size()}, block_events_[k]);
-                }
-            });
-            // (The four results copied into place in one parallel pass.)
-            const std::vector<std::size_t> last_at = starts_of(block_last_), now_at = starts_of(block_now_),
-                                           witnesses_at = starts_of(block_witnesses_),
-                                           events_at = starts_of(block_events_);
-            last_.resize(last_at.back());
-            now.resize(now_at.back());
-            witnesses_.resize(witnesses_at.back());
-            events_.resize(events_at.back());
-            run_in_chunks(blocks, block_threads_, 1, [&](std::size_t first, std::size_t last) {
-                for (std::size_t k = first; k < last; ++k) {
-                    copy_to(block_last_[k], last_, last_at[k]);
-                    copy_to(block_now_[k], now, now_at[k]);
-                    copy_to(block_witnesses_[k], witnesses_, witnesses_at[k]);
-                    copy_to(block_events_[k], events_, events_at[k]);
-                }
-            });
-        }
-        spare_contacts_ = std::move(contacts_);
-        contacts_ = std::move(now);
-        stats_.contacts += contacts_.size();
-        for (body_id i : moved_) bodies_[i].moved = false;
-        moved_.clear();
-    }
-
-    // Items in place: the first and their count.
-    template <class T>
-    struct slice {
-        const T* first;
-        std::size_t size;
-    };
-
-    // The carried and the tested records of a run of near pairs merged by
-    // pair (both sorted), appended: those within the distance to `last`,
-    // `now` and (world_options::witness) `witnesses`; those apart with a
-    // separating edge or parted edges to `last`.
-    void pairs_of(slice<record> kept, slice<record> tested, std::vector<record>& last, std::vector<body_pair>& now,
-                  std::vector<contact_witness>& witnesses) const {
+        now.clear();
+        witnesses_.clear();
         const auto take = [&](const record& r) {
             if (!r.shown) {
-                if (r.apart || r.parted) last.push_back(r);
+                if (r.apart || r.parted) last_.push_back(r);  // apart, its separating edge or parted edges kept
                 return;
             }
-            last.push_back(r);
+            last_.push_back(r);
             now.push_back(r.bodies);
             if (options_.witness)
-                witnesses.push_back(witness_of(r.shown, shapes_[bodies_[r.bodies.first].shape]->shape,
-                                               shapes_[bodies_[r.bodies.second].shape]->shape));
+                witnesses_.push_back(witness_of(r.shown, shapes_[bodies_[r.bodies.first].shape]->shape,
+                                                shapes_[bodies_[r.bodies.second].shape]->shape));
         };
+        // The carried and the tested pairs merged by pair (both sorted).
         std::size_t c = 0, t = 0;
-        while (c < kept.size || t < tested.size)
-            take(t == tested.size || (c < kept.size && kept.first[c].bodies < tested.first[t].bodies)
-                     ? kept.first[c++]
-                     : tested.first[t++]);
-    }
-
-    // The contacts that began (in `now`, not in `was`) and ended (the
-    // reverse), both sorted, appended to `events` in pair order.
-    static void changes(slice<body_pair> was, slice<body_pair> now, std::vector<contact_event>& events) {
+        while (c < kept_.size() || t < tested_.size())
+            take(t == tested_.size() || (c < kept_.size() && kept_[c].bodies < tested_[t].bodies) ? kept_[c++]
+                                                                                                  : tested_[t++]);
+        events_.clear();
         std::size_t i = 0, j = 0;
-        while (i < was.size || j < now.size) {
-            if (j == now.size || (i < was.size && was.first[i] < now.first[j])) {
-                events.push_back({was.first[i++], false});
-            } else if (i == was.size || now.first[j] < was.first[i]) {
-                events.push_back({now.first[j++], true});
+        while (i < contacts_.size() || j < now.size()) {
+            if (j == now.size() || (i < contacts_.size() && contacts_[i] < now[j])) {
+                events_.push_back({contacts_[i++], false});
+            } else if (i == contacts_.size() || now[j] < contacts_[i]) {
+                events_.push_back({now[j++], true});
             } else {
                 ++i;
                 ++j;
             }
         }
+        spare_contacts_ = std::move(contacts_);
+        contacts_ = std::move(now);
+        stats_.contacts += contacts_.size();
+        for (body_id i2 : moved_) bodies_[i2].moved = false;
+        moved_.clear();
     }
 
     world_options options_;
@@ -1073,17 +985,11 @@ private:
     box_tree fixed_tree_, free_tree_;
     std::map<std::pair<shape_id, int>, std::unique_ptr<polygon>> scaled_shapes_;  // scaled_shape's copies
     std::vector<record> last_;    // the last step's pairs within the distance, or apart with a separating edge; sorted
-    std::vector<record> kept_;    // this step's carried pairs (candidates() serial; else block_kept_)
+    std::vector<record> kept_;    // this step's carried pairs
     std::vector<record> tested_;  // this step's candidates (kept for their capacity)
     // The candidates and carried contacts of each block of near pairs when
     // sought in parallel (candidates(); kept for their capacity).
     std::vector<std::vector<record>> block_tested_, block_kept_;
-    unsigned block_threads_ = 1;  // the threads of this step's candidates(); 1: no blocks
-    // Each block's share of gather()'s results (kept for their capacity).
-    std::vector<std::vector<record>> block_last_;
-    std::vector<std::vector<body_pair>> block_now_;
-    std::vector<std::vector<contact_witness>> block_witnesses_;
-    std::vector<std::vector<contact_event>> block_events_;
     std::vector<body_pair> contacts_;
     std::vector<body_pair> spare_contacts_;  // the contacts of the step before last, for their capacity
     std::vector<contact_witness> witnesses_;
