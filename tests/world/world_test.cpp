@@ -341,6 +341,68 @@ TEST_CASE("world: thousands of bodies on two threads, the joins and candidates s
     CHECK(b.statistics().rebuilds == a.statistics().rebuilds);
 }
 
+TEST_CASE("world: many escaped bodies among more that stay, their queries shared by two threads, as on one",
+          "[world]") {
+    // Over 1,024 bodies leave their enlarged boxes at a step, fewer than a
+    // quarter of all (world.hpp: parallel_escaped_queries): their queries of
+    // the trees are shared among the threads; the answers must be the serial
+    // run's, witnesses and events included.
+    rng g(420);
+    const std::vector<polygon> shapes = random_shapes(g, 5);
+    world_options serial, parallel;
+    serial.witness = parallel.witness = true;
+    parallel.threads = 2;
+    world<double> a(serial), b(parallel);
+    for (const polygon& p : shapes) {
+        a.add_shape(p);
+        b.add_shape(p);
+    }
+    const std::size_t n = 6000;
+    std::vector<pose> where(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        where[i] = random_pose(g, {0, 0}, 300);
+        const auto s = static_cast<std::uint32_t>(g.index(shapes.size()));
+        a.add_body(s, where[i], i % 13 == 0);
+        b.add_body(s, where[i], i % 13 == 0);
+    }
+    const int steps = 4;
+    std::size_t contacts = 0;
+    for (int step = 0; step < steps; ++step) {
+        INFO("step " << step);
+        const std::vector<body_pair> ra = a.step(), rb = b.step();
+        REQUIRE(show_pairs(ra) == show_pairs(rb));
+        REQUIRE(a.witnesses().size() == b.witnesses().size());
+        std::size_t same = 0;
+        for (std::size_t k = 0; k < ra.size(); ++k)
+            same += a.witnesses()[k].first.index == b.witnesses()[k].first.index &&
+                    a.witnesses()[k].second.index == b.witnesses()[k].second.index;
+        CHECK(same == ra.size());
+        REQUIRE(a.events().size() == b.events().size());
+        std::size_t same_event = 0;
+        for (std::size_t k = 0; k < a.events().size(); ++k)
+            same_event += a.events()[k].bodies == b.events()[k].bodies && a.events()[k].begins == b.events()[k].begins;
+        CHECK(same_event == a.events().size());
+        contacts += ra.size();
+        // 1,300 free bodies moved by a few units (out of their enlarged
+        // boxes), the others left where they are.
+        for (std::size_t k = 0; k < 1300; ++k) {
+            std::size_t i = g.index(n);
+            while (i % 13 == 0) i = g.index(n);
+            where[i] = {where[i].tx + g.uniform(-4, 4), where[i].ty + g.uniform(-4, 4),
+                        where[i].theta + g.uniform(-0.3, 0.3)};
+            a.move(static_cast<std::uint32_t>(i), where[i]);
+            b.move(static_cast<std::uint32_t>(i), where[i]);
+        }
+    }
+    INFO("contacts " << contacts << ", escaped " << a.statistics().escaped);
+    CHECK(contacts > 1000);
+    // Past the threshold at the steps after the first: over 1,024 escaped
+    // bodies a step, fewer than a quarter of the 6,000.
+    CHECK(a.statistics().escaped >= n + 1024 * static_cast<std::size_t>(steps - 1));
+    CHECK(a.statistics().escaped < n + 1500 * static_cast<std::size_t>(steps - 1));
+    CHECK(b.statistics().rebuilds == a.statistics().rebuilds);
+}
+
 TEST_CASE("world: squares sharing edges and corners touch exactly", "[world]") {
     // A 6 x 6 grid of unit squares, every fourth one fixed: each touches its
     // 8 neighbours (edges and corners), none else; after a shift of the
