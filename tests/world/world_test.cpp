@@ -116,6 +116,64 @@ pose random_pose(rng& g, point<double> origin, double extent) {
     return {x, y, g.uniform(-3.2, 3.2)};
 }
 
+/// Two worlds of double with witnesses, one serial and one on two threads,
+/// holding the same n bodies of `shapes` at random poses within `reach` of
+/// the origin (every `fixed_every`-th body fixed), moved and removed alike.
+struct serial_and_parallel {
+    world<double> serial, parallel;
+    std::vector<pose> where;  // each body's pose
+
+    serial_and_parallel(rng& g, const std::vector<polygon>& shapes, std::size_t n, double reach,
+                        std::size_t fixed_every)
+        : serial(with_witness(1)), parallel(with_witness(2)), where(n) {
+        for (const polygon& p : shapes) {
+            serial.add_shape(p);
+            parallel.add_shape(p);
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            where[i] = random_pose(g, {0, 0}, reach);
+            const auto s = static_cast<std::uint32_t>(g.index(shapes.size()));
+            serial.add_body(s, where[i], i % fixed_every == 0);
+            parallel.add_body(s, where[i], i % fixed_every == 0);
+        }
+    }
+    static world_options with_witness(unsigned threads) {
+        world_options o;
+        o.witness = true;
+        o.threads = threads;
+        return o;
+    }
+    void move(std::size_t i, const pose& q) {
+        where[i] = q;
+        serial.move(static_cast<std::uint32_t>(i), q);
+        parallel.move(static_cast<std::uint32_t>(i), q);
+    }
+    void remove(std::size_t i) {
+        serial.remove(static_cast<std::uint32_t>(i));
+        parallel.remove(static_cast<std::uint32_t>(i));
+    }
+    /// Both worlds stepped: the same contacts, witnesses, events and carried
+    /// pairs; the number of contacts.
+    std::size_t step() {
+        const std::vector<body_pair> ra = serial.step(), rb = parallel.step();
+        REQUIRE(show_pairs(ra) == show_pairs(rb));
+        REQUIRE(serial.witnesses().size() == parallel.witnesses().size());
+        std::size_t same_witness = 0;
+        for (std::size_t k = 0; k < ra.size(); ++k)
+            same_witness += serial.witnesses()[k].first.index == parallel.witnesses()[k].first.index &&
+                            serial.witnesses()[k].second.index == parallel.witnesses()[k].second.index;
+        CHECK(same_witness == ra.size());
+        REQUIRE(serial.events().size() == parallel.events().size());
+        std::size_t same_event = 0;
+        for (std::size_t k = 0; k < serial.events().size(); ++k)
+            same_event += serial.events()[k].bodies == parallel.events()[k].bodies &&
+                          serial.events()[k].begins == parallel.events()[k].begins;
+        CHECK(same_event == serial.events().size());
+        CHECK(serial.statistics().carried == parallel.statistics().carried);
+        return ra.size();
+    }
+};
+
 /// Runs a random scene of `steps` steps through a world and the reference,
 /// checking every step's contacts and the events; a coherent move is up to
 /// `stride` in each coordinate (a tenth of it in radians), and a move is a
@@ -277,68 +335,38 @@ TEST_CASE("world: thousands of bodies on two threads, the joins and candidates s
     // every body jumps (the joins) and steps of small moves, with witnesses.
     rng g(410);
     const std::vector<polygon> shapes = random_shapes(g, 5);
-    world_options serial, parallel;
-    serial.witness = parallel.witness = true;
-    parallel.threads = 2;
-    world<double> a(serial), b(parallel);
-    for (const polygon& p : shapes) {
-        a.add_shape(p);
-        b.add_shape(p);
-    }
     const std::size_t n = 5000;
-    std::vector<pose> where(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        where[i] = random_pose(g, {0, 0}, 250);
-        const auto s = static_cast<std::uint32_t>(g.index(shapes.size()));
-        a.add_body(s, where[i], i % 11 == 0);
-        b.add_body(s, where[i], i % 11 == 0);
-    }
+    serial_and_parallel w(g, shapes, n, 250, 11);
     const int steps = std::max(2, test_effort::scaled(6));
     std::vector<char> alive(n, 1);
     std::size_t contacts = 0, ended = 0;
     for (int step = 0; step < steps; ++step) {
         INFO("step " << step);
-        const std::vector<body_pair> ra = a.step(), rb = b.step();
-        for (const contact_event& e : a.events()) ended += e.begins ? 0 : 1;
-        REQUIRE(show_pairs(ra) == show_pairs(rb));
-        REQUIRE(a.witnesses().size() == b.witnesses().size());
-        std::size_t same_witness = 0;
-        for (std::size_t k = 0; k < ra.size(); ++k)
-            same_witness += a.witnesses()[k].first.index == b.witnesses()[k].first.index &&
-                            a.witnesses()[k].second.index == b.witnesses()[k].second.index;
-        CHECK(same_witness == ra.size());
-        REQUIRE(a.events().size() == b.events().size());
-        std::size_t same_event = 0;
-        for (std::size_t k = 0; k < a.events().size(); ++k)
-            same_event += a.events()[k].bodies == b.events()[k].bodies && a.events()[k].begins == b.events()[k].begins;
-        CHECK(same_event == a.events().size());
-        CHECK(a.statistics().carried == b.statistics().carried);
-        contacts += ra.size();
+        contacts += w.step();
+        for (const contact_event& e : w.serial.events()) ended += e.begins ? 0 : 1;
         const bool jump = step % 2 == 0;
         for (std::size_t i = 0; i < n; ++i) {
             if (i % 11 == 0 || !alive[i]) continue;
             // (A few bodies removed on steps of small moves: their contacts
             // end at the next step.)
             if (!jump && i % 97 == static_cast<std::size_t>(step)) {
-                a.remove(static_cast<std::uint32_t>(i));
-                b.remove(static_cast<std::uint32_t>(i));
+                w.remove(i);
                 alive[i] = false;
                 continue;
             }
-            where[i] = jump ? random_pose(g, {0, 0}, 250)
-                            : pose{where[i].tx + g.uniform(-0.3, 0.3), where[i].ty + g.uniform(-0.3, 0.3),
-                                   where[i].theta + g.uniform(-0.03, 0.03)};
-            a.move(static_cast<std::uint32_t>(i), where[i]);
-            b.move(static_cast<std::uint32_t>(i), where[i]);
+            const pose& at = w.where[i];
+            w.move(i, jump ? random_pose(g, {0, 0}, 250)
+                           : pose{at.tx + g.uniform(-0.3, 0.3), at.ty + g.uniform(-0.3, 0.3),
+                                  at.theta + g.uniform(-0.03, 0.03)});
         }
     }
-    INFO("contacts " << contacts << ", candidates " << a.statistics().candidates);
+    INFO("contacts " << contacts << ", candidates " << w.serial.statistics().candidates);
     CHECK(contacts > 1000);
     CHECK(ended > 0);
     // Past the thresholds of the parallel passes: more bodies than 4,096 and
     // more candidates a step (so more near pairs) than 16,384.
-    CHECK(a.statistics().candidates > 16384 * static_cast<std::size_t>(steps));
-    CHECK(b.statistics().rebuilds == a.statistics().rebuilds);
+    CHECK(w.serial.statistics().candidates > 16384 * static_cast<std::size_t>(steps));
+    CHECK(w.parallel.statistics().rebuilds == w.serial.statistics().rebuilds);
 }
 
 TEST_CASE("world: many escaped bodies among more that stay, their queries shared by two threads, as on one",
@@ -349,58 +377,29 @@ TEST_CASE("world: many escaped bodies among more that stay, their queries shared
     // run's, witnesses and events included.
     rng g(420);
     const std::vector<polygon> shapes = random_shapes(g, 5);
-    world_options serial, parallel;
-    serial.witness = parallel.witness = true;
-    parallel.threads = 2;
-    world<double> a(serial), b(parallel);
-    for (const polygon& p : shapes) {
-        a.add_shape(p);
-        b.add_shape(p);
-    }
     const std::size_t n = 6000;
-    std::vector<pose> where(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        where[i] = random_pose(g, {0, 0}, 300);
-        const auto s = static_cast<std::uint32_t>(g.index(shapes.size()));
-        a.add_body(s, where[i], i % 13 == 0);
-        b.add_body(s, where[i], i % 13 == 0);
-    }
+    serial_and_parallel w(g, shapes, n, 300, 13);
     const int steps = 4;
     std::size_t contacts = 0;
     for (int step = 0; step < steps; ++step) {
         INFO("step " << step);
-        const std::vector<body_pair> ra = a.step(), rb = b.step();
-        REQUIRE(show_pairs(ra) == show_pairs(rb));
-        REQUIRE(a.witnesses().size() == b.witnesses().size());
-        std::size_t same = 0;
-        for (std::size_t k = 0; k < ra.size(); ++k)
-            same += a.witnesses()[k].first.index == b.witnesses()[k].first.index &&
-                    a.witnesses()[k].second.index == b.witnesses()[k].second.index;
-        CHECK(same == ra.size());
-        REQUIRE(a.events().size() == b.events().size());
-        std::size_t same_event = 0;
-        for (std::size_t k = 0; k < a.events().size(); ++k)
-            same_event += a.events()[k].bodies == b.events()[k].bodies && a.events()[k].begins == b.events()[k].begins;
-        CHECK(same_event == a.events().size());
-        contacts += ra.size();
+        contacts += w.step();
         // 1,300 free bodies moved by a few units (out of their enlarged
         // boxes), the others left where they are.
         for (std::size_t k = 0; k < 1300; ++k) {
             std::size_t i = g.index(n);
             while (i % 13 == 0) i = g.index(n);
-            where[i] = {where[i].tx + g.uniform(-4, 4), where[i].ty + g.uniform(-4, 4),
-                        where[i].theta + g.uniform(-0.3, 0.3)};
-            a.move(static_cast<std::uint32_t>(i), where[i]);
-            b.move(static_cast<std::uint32_t>(i), where[i]);
+            const pose& at = w.where[i];
+            w.move(i, {at.tx + g.uniform(-4, 4), at.ty + g.uniform(-4, 4), at.theta + g.uniform(-0.3, 0.3)});
         }
     }
-    INFO("contacts " << contacts << ", escaped " << a.statistics().escaped);
+    INFO("contacts " << contacts << ", escaped " << w.serial.statistics().escaped);
     CHECK(contacts > 1000);
     // Past the threshold at the steps after the first: over 1,024 escaped
     // bodies a step, fewer than a quarter of the 6,000.
-    CHECK(a.statistics().escaped >= n + 1024 * static_cast<std::size_t>(steps - 1));
-    CHECK(a.statistics().escaped < n + 1500 * static_cast<std::size_t>(steps - 1));
-    CHECK(b.statistics().rebuilds == a.statistics().rebuilds);
+    CHECK(w.serial.statistics().escaped >= n + 1024 * static_cast<std::size_t>(steps - 1));
+    CHECK(w.serial.statistics().escaped < n + 1500 * static_cast<std::size_t>(steps - 1));
+    CHECK(w.parallel.statistics().rebuilds == w.serial.statistics().rebuilds);
 }
 
 TEST_CASE("world: squares sharing edges and corners touch exactly", "[world]") {
