@@ -35,14 +35,15 @@
 //               detectors; its one-shot double, certified and detector per
 //               query) run in passes on fresh objects; the pass is repeated
 //               (at least `repeated_passes`, an odd number, and until
-//               `repeat_seconds` of passes) and the median pass counts, so that a cell of a few
-//               milliseconds is not at the mercy of one interruption; the
-//               methods take turns pass by pass, so that a slower spell of the
-//               machine falls on all of them alike and their ratios hold. A
-//               frame form's pass is every pose in order (temporal coherence
-//               is its to use; random poses give it none); a one-shot pass is
-//               every k-th pose, k chosen so that a pass takes about a third
-//               of `budget` (k = 1 when all poses fit);
+//               `repeat_seconds` of passes) and the median pass counts, so
+//               that a cell of a few milliseconds is not at the mercy of one
+//               interruption; the methods take turns pass by pass, so that a
+//               slower spell of the machine falls on all of them alike and
+//               their ratios hold. A frame form's pass is every pose in order
+//               (temporal coherence is its to use; random poses give it
+//               none); a one-shot pass is every k-th pose, k chosen so that a
+//               pass takes about a third of `budget` (k = 1 when all poses
+//               fit);
 //             - the other methods (exact mode, all-pairs test, the peers),
 //               which are slow on large cells, run every k-th pose, k chosen
 //               from a probe of 8 evenly spaced poses so that a pass takes
@@ -547,10 +548,11 @@ struct timed_passes {
 /// method goes on, two rounds at a time, until it has `repeated_passes` and
 /// they sum to `repeat_seconds` (or 101 rounds), so that each ends with an
 /// odd number of passes (a median of 3 passes of a few tens of milliseconds
-/// can fall on two slow spells of the machine). A repeated method's frame-form pass is every pose in order; a
-/// one-shot pass, and every pass of the others, every k-th pose, k from a
-/// probe (on an object of its own: a detector with temporal coherence
-/// starts its timed passes fresh) so that a pass takes about budget / 3.
+/// can fall on two slow spells of the machine). A repeated method's
+/// frame-form pass is every pose in order; a one-shot pass, and every pass of
+/// the others, every k-th pose, k from a probe (on an object of its own: a
+/// detector with temporal coherence starts its timed passes fresh) so that a
+/// pass takes about budget / 3.
 inline std::map<std::string, timed_passes> time_passes(const time_study_options& o, const std::string& trajectory,
                                                        const std::vector<std::string>& methods, const polygon& a,
                                                        const polygon& b, const std::vector<pose>& poses) {
