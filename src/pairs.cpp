@@ -96,6 +96,7 @@ void run_pairs(const pairs_cli_options& o) {
         summary << "\n"
                 << "pairs:         " << pairs.size() << "\n"
                 << "candidates:    " << work.candidates << " (again in exact rationals " << work.exact_pairs << ")\n"
+                << "broad phase:   " << (work.swept ? "the boxes sorted and swept along x" : "box trees") << "\n"
                 << "number type:   " << o.number_type << "\n"
                 << "threads:       " << batch_threads(o.threads) << "\n"
                 << "time: " << fixed(seconds * 1e3, 3) << " ms\n";

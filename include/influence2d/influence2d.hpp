@@ -59,6 +59,7 @@
 #include "influence2d/scene/posed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
 #include "influence2d/version.hpp"
+#include "influence2d/world/box_sweep.hpp"
 #include "influence2d/world/box_tree.hpp"
 #include "influence2d/world/layer_pairs.hpp"
 #include "influence2d/world/narrow_phase.hpp"

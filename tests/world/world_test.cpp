@@ -896,6 +896,72 @@ TEST_CASE("layer_pairs: the candidates and those answered again in exact rationa
     }
 }
 
+TEST_CASE("layer_pairs: swept along x or by box trees, the pairs of the exact reference", "[world]") {
+    // Long bars across the layer along x, on a grid of halves along y (bars
+    // overlapping, touching edge to edge, or apart), three in four
+    // polygons, among small squares and triangles on the same grid: every
+    // bar's x-interval overlaps every other's, more than
+    // sweep_tests_per_box a box, so the candidates come from box trees. The same layer mirrored across the diagonal (x and y
+    // swapped: the same pairs) has bars across y instead, and is swept.
+    rng g(520);
+    const auto mirrored = [](const polygon& p) {
+        std::vector<ring_input> rings;
+        for (std::size_t r = 0; r < p.ring_count(); ++r) {
+            ring_input ring;
+            ring.role = r == 0 ? ring_role::outer : ring_role::hole;
+            for (std::size_t k = p.ring_end(r); k-- > p.ring_begin(r);)
+                ring.vertices.push_back({p.vertex(k).y, p.vertex(k).x});
+            rings.push_back(ring);
+        }
+        return polygon(rings);
+    };
+    for (int round = 0; round < test_effort::scaled(3); ++round) {
+        std::vector<polygon> layer, other;
+        for (int k = 0; k < 200; ++k) {
+            const double y = 0.5 * static_cast<double>(g.index(100)), x = 0.5 * static_cast<double>(g.index(100));
+            std::vector<polygon>& into = k % 3 == 0 ? other : layer;
+            if (k % 4 != 3)
+                into.push_back(polygon({test_shapes::ring({{-1.0 - 0.5 * static_cast<double>(g.index(4)), y},
+                                                           {51, y},
+                                                           {51, y + 0.5 * static_cast<double>(1 + g.index(2))},
+                                                           {-1, y + 0.5}},
+                                                          ring_role::outer)}));
+            else if (k % 8 == 3)
+                into.push_back(test_shapes::square(x, y, 0.5 * static_cast<double>(1 + g.index(3))));
+            else
+                into.push_back(polygon({test_shapes::ring({{x, y}, {x + 1, y + 0.5}, {x, y + 1}}, ring_role::outer)}));
+        }
+        std::vector<polygon> layer_m, other_m;
+        for (const polygon& p : layer) layer_m.push_back(mirrored(p));
+        for (const polygon& p : other) other_m.push_back(mirrored(p));
+        std::vector<test_exact::placed_shape> exact_layer, exact_other;
+        for (const polygon& p : layer) exact_layer.push_back(test_exact::place(p, pose{}));
+        for (const polygon& p : other) exact_other.push_back(test_exact::place(p, pose{}));
+        std::vector<body_pair> want, want2;
+        for (std::size_t i = 0; i < layer.size(); ++i) {
+            for (std::size_t j = i + 1; j < layer.size(); ++j)
+                if (exact_within(exact_layer[i], exact_layer[j], 0))
+                    want.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+            for (std::size_t j = 0; j < other.size(); ++j)
+                if (exact_within(exact_layer[i], exact_other[j], 0))
+                    want2.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+        }
+        INFO("round " << round << ": " << want.size() << " pairs in the layer, " << want2.size() << " across");
+        CHECK(want.size() > 100);
+        CHECK(want2.size() > 50);
+        for (const bool swap : {false, true}) {
+            INFO((swap ? "mirrored: swept" : "as built: box trees"));
+            layer_statistics one, two;
+            CHECK(show_pairs(certified_layer_pairs(swap ? layer_m : layer, 0, 1, &one)) == show_pairs(want));
+            CHECK(show_pairs(certified_layer_pairs(swap ? layer_m : layer, swap ? other_m : other, 0, 2, &two)) ==
+                  show_pairs(want2));
+            CHECK(show_pairs(layer_pairs<exact_rational>(swap ? layer_m : layer, 0, 2)) == show_pairs(want));
+            CHECK(one.swept == swap);
+            CHECK(two.swept == swap);
+        }
+    }
+}
+
 TEST_CASE("layer_pairs: a crowded layer answered by two threads, exact vertices made before they share", "[world]") {
     // Enough candidates (128 and more) for the pair tests to run on two
     // threads, each polygon placed once for all its pairs: in exact

@@ -249,30 +249,45 @@ bool overlapping_run_pairs(const runs_side& a, const runs_side& b, double grow, 
     if (a_runs.empty()) return false;
     runs_meeting(b, b_runs);
     if (b_runs.empty()) return false;
-    // The edges of run r of side s whose grown box meets s's window and
-    // `other` (a grown run box), sorted by min_x; returns their number.
-    using run_edges = std::array<edge_box, edge_run_length>;
-    const auto edges_in = [grow](const runs_side& s, std::size_t r, const edge_box& other, run_edges& out) {
+    // The two runs' edges: the edges of run r of side s whose grown box
+    // meets s's window and `other` (a grown run box) are put in `found` from
+    // `base` (A's from 0, B's from edge_run_length), their number returned.
+    // They are then ordered by min_x through indices into `found` (an
+    // insertion sort, stable, of at most edge_run_length one-byte entries;
+    // the entries themselves, 40 bytes each, stay in place), and only when
+    // both runs have some.
+    static_assert(2 * edge_run_length <= 256, "an index into found fits in one byte");
+    std::array<edge_box, 2 * edge_run_length> found;
+    using run_order = std::array<std::uint8_t, edge_run_length>;
+    const auto edges_in = [grow, &found](const runs_side& s, std::size_t r, const edge_box& other, std::size_t base) {
         std::size_t n = 0;
         const std::size_t first = r * edge_run_length, end = std::min(s.shape.size(), first + edge_run_length);
         for (std::size_t e = first; e < end; ++e) {
             const edge_box k = edge_box_of(s.shape, s.v, e, {-grow, -grow}, {grow, grow});
-            if (!meets_box(k, other) || !meets_box(k, s.window)) continue;
-            // Insertion by min_x: at most edge_run_length entries.
-            std::size_t at = n++;
-            for (; at > 0 && out[at - 1].min_x > k.min_x; --at) out[at] = out[at - 1];
-            out[at] = k;
+            if (meets_box(k, other) && meets_box(k, s.window)) found[base + n++] = k;
         }
         return n;
     };
+    const auto by_min_x = [&found](std::size_t base, std::size_t n, run_order& order) {
+        for (std::size_t k = 0; k < n; ++k) {
+            const double x = found[base + k].min_x;
+            std::size_t at = k;
+            for (; at > 0 && found[order[at - 1]].min_x > x; --at) order[at] = order[at - 1];
+            order[at] = static_cast<std::uint8_t>(base + k);
+        }
+    };
     const auto entry = [](const edge_box& e) -> const edge_box& { return e; };
-    run_edges ea, eb;
+    const auto found_entry = [&found](std::uint8_t k) -> const edge_box& { return found[k]; };
+    run_order oa, ob;
     return sweep_along_x(a_runs, 0, a_runs.size(), b_runs, 0, b_runs.size(), entry, [&](std::size_t i, std::size_t j) {
-        const std::size_t na = edges_in(a, a_runs[i].edge, b_runs[j], ea);
+        const std::size_t na = edges_in(a, a_runs[i].edge, b_runs[j], 0);
         if (na == 0) return false;
-        const std::size_t nb = edges_in(b, b_runs[j].edge, a_runs[i], eb);
-        return sweep_along_x(ea, 0, na, eb, 0, nb, entry,
-                             [&](std::size_t k, std::size_t l) { return meet(ea[k].edge, eb[l].edge); });
+        const std::size_t nb = edges_in(b, b_runs[j].edge, a_runs[i], edge_run_length);
+        if (nb == 0) return false;
+        by_min_x(0, na, oa);
+        by_min_x(edge_run_length, nb, ob);
+        return sweep_along_x(oa, 0, na, ob, 0, nb, found_entry,
+                             [&](std::size_t k, std::size_t l) { return meet(found[oa[k]].edge, found[ob[l]].edge); });
     });
 }
 

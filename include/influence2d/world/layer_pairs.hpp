@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +21,7 @@
 #include "influence2d/query/batch.hpp"
 #include "influence2d/scene/placed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
+#include "influence2d/world/box_sweep.hpp"
 #include "influence2d/world/box_tree.hpp"
 #include "influence2d/world/narrow_phase.hpp"
 #include "influence2d/world/world.hpp"
@@ -32,6 +33,7 @@ namespace influence2d {
 struct layer_statistics {
     std::size_t candidates = 0;   ///< pairs whose grown boxes meet: each tested by bodies_within
     std::size_t exact_pairs = 0;  ///< candidates answered again in the Exact type (a sign NT could not settle)
+    bool swept = false;           ///< the candidates found by sorting the boxes along x (swept_pairs), not by box trees
 };
 
 namespace layer_pairs_detail {
@@ -44,6 +46,8 @@ void boxes_of(const std::vector<polygon>& layer, const char* which, double withi
               std::vector<std::uint32_t>& ids) {
     if (layer.size() >= 0xffffffffu)
         throw invalid_input(std::string("layer_pairs: the ") + which + " layer is too large");
+    boxes.reserve(layer.size());
+    ids.reserve(layer.size());
     for (std::size_t k = 0; k < layer.size(); ++k) {
         if (layer[k].size() == 0)
             throw invalid_input(std::string("layer_pairs: polygon ") + std::to_string(k) + " of the " + which +
@@ -64,25 +68,29 @@ void boxes_of(const std::vector<polygon>& layer, const char* which, double withi
 /// tests' cost.
 inline constexpr std::size_t join_grain = 16;
 
+/// The placings of a layer's polygons, by the polygon's index; in place in
+/// one vector (no allocation of its own per polygon), none for a polygon
+/// no candidate names.
+template <class NT>
+using placed_polygons = std::vector<std::optional<placed_polygon<NT>>>;
+
 /// Each polygon of `layer` that some candidate names (`named`), placed where
 /// it stands once for all its pairs, with its run boxes (in parallel
 /// chunks); every vertex in NT made too when NT's placings keep them and
 /// several threads will read them.
 template <class NT>
-std::vector<std::unique_ptr<placed_polygon<NT>>> placed_layer(const std::vector<polygon>& layer,
-                                                              const std::vector<char>& named, unsigned threads) {
+placed_polygons<NT> placed_layer(const std::vector<polygon>& layer, const std::vector<char>& named, unsigned threads) {
     std::vector<std::size_t> which;
     for (std::size_t k = 0; k < layer.size(); ++k)
         if (named[k]) which.push_back(k);
-    std::vector<std::unique_ptr<placed_polygon<NT>>> placed(layer.size());
+    placed_polygons<NT> placed(layer.size());
     run_in_chunks(which.size(), which.size() < 64 ? 1u : threads, join_grain, [&](std::size_t lo, std::size_t hi) {
         for (std::size_t k = lo; k < hi; ++k) {
-            auto p = std::make_unique<placed_polygon<NT>>(layer[which[k]]);
-            p->make_run_bounds();
-            p->make_ring_bounds();
+            placed_polygon<NT>& p = placed[which[k]].emplace(layer[which[k]]);
+            p.make_run_bounds();
+            p.make_ring_bounds();
             if constexpr (!placed_polygon<NT>::by_value)
-                if (threads != 1) p->all();
-            placed[which[k]] = std::move(p);
+                if (threads != 1) p.all();
         }
     });
     return placed;
@@ -100,10 +108,10 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::v
         named_first[c.first] = 1;
         (same ? named_first : named_second)[c.second] = 1;
     }
-    const auto placed_first = placed_layer<NT>(first, named_first, pair_threads);
-    const auto placed_second = same ? std::vector<std::unique_ptr<placed_polygon<NT>>>{}
-                                    : placed_layer<NT>(second, named_second, pair_threads);
-    const auto& second_placed = same ? placed_first : placed_second;
+    placed_polygons<NT> placed_first = placed_layer<NT>(first, named_first, pair_threads);
+    placed_polygons<NT> placed_second =
+        same ? placed_polygons<NT>{} : placed_layer<NT>(second, named_second, pair_threads);
+    placed_polygons<NT>& second_placed = same ? placed_first : placed_second;
     std::vector<char> meets(candidates.size(), 0), in_exact(candidates.size(), 0);
     run_in_chunks(candidates.size(), pair_threads, join_grain, [&](std::size_t lo, std::size_t hi) {
         const rotation_pose here(pose{});
@@ -170,19 +178,21 @@ inline std::vector<polygon> scaled_layer(const std::vector<polygon>& layer, int 
 ///   distance scaled by a power of two first (core/range_scaling.hpp; the
 ///   same answer)
 ///   boxes <- each polygon's box, grown by within / 2 (and the filters'
-///            margin); a box tree over them (box_tree)
-///   candidates <- the pairs whose boxes meet (the tree joined with itself,
-///                 box_tree::self_join), sorted (sort_body_pairs)
+///            margin)
+///   candidates <- the pairs whose boxes meet, sorted (sort_body_pairs):
+///     by sorting the boxes along x and sweeping (swept_pairs) when that
+///     tests at most sweep_tests_per_box pairs a box; else by a box tree
+///     over them joined with itself (box_tree::self_join)
 ///   each polygon some candidate names placed where it stands, once for
 ///   all its pairs, with its run boxes and, for several rings, its ring
 ///   boxes (placed_layer)
 ///   each candidate, on `threads` threads (0: every hardware thread) taking
 ///   join_grain candidates at a time: bodies_within on the two placings
 ///
-/// `statistics`, when given, receives the number of candidates and of those
-/// answered again in Exact. Throws invalid_input for an empty polygon
-/// (naming it), one beyond NT's range, or a distance that is negative, NaN
-/// or infinite.
+/// `statistics`, when given, receives the number of candidates, of those
+/// answered again in Exact, and whether the sweep found them. Throws
+/// invalid_input for an empty polygon (naming it), one beyond NT's range,
+/// or a distance that is negative, NaN or infinite.
 template <class NT, class Exact = void>
 std::vector<body_pair> layer_pairs(const std::vector<polygon>& layer, double within = 0, unsigned threads = 1,
                                    layer_statistics* statistics = nullptr) {
@@ -193,17 +203,25 @@ std::vector<body_pair> layer_pairs(const std::vector<polygon>& layer, double wit
     std::vector<box> boxes;
     std::vector<std::uint32_t> ids;
     layer_pairs_detail::boxes_of<NT>(layer, "first", within, boxes, ids);
-    box_tree tree;
-    tree.rebuild(boxes, ids);
     std::vector<body_pair> candidates;
-    tree.self_join([&](std::uint32_t i, std::uint32_t j) { candidates.push_back({std::min(i, j), std::max(i, j)}); });
+    const auto candidate = [&](std::uint32_t i, std::uint32_t j) {
+        candidates.push_back({std::min(i, j), std::max(i, j)});
+    };
+    const bool swept = swept_pairs(boxes, sweep_tests_per_box * boxes.size(), candidate);
+    if (!swept) {
+        box_tree tree;
+        tree.rebuild(boxes, ids);
+        tree.self_join(candidate);
+    }
     sort_body_pairs(candidates, layer.size());
+    if (statistics != nullptr) statistics->swept = swept;
     return layer_pairs_detail::within_of<NT, Exact>(layer, layer, true, candidates, within, threads, statistics);
 }
 
 /// Every pair (i, j) of a polygon i of `first` and a polygon j of `second`
 /// whose closed regions come within `within` of each other, sorted; as the
-/// one-layer form otherwise (a box tree over each layer, the two joined).
+/// one-layer form otherwise (the two layers' boxes swept together, or a box
+/// tree over each layer, the two joined).
 template <class NT, class Exact = void>
 std::vector<body_pair> layer_pairs(const std::vector<polygon>& first, const std::vector<polygon>& second,
                                    double within = 0, unsigned threads = 1, layer_statistics* statistics = nullptr) {
@@ -216,11 +234,17 @@ std::vector<body_pair> layer_pairs(const std::vector<polygon>& first, const std:
     std::vector<std::uint32_t> a_ids, b_ids;
     layer_pairs_detail::boxes_of<NT>(first, "first", within, a_boxes, a_ids);
     layer_pairs_detail::boxes_of<NT>(second, "second", within, b_boxes, b_ids);
-    box_tree a_tree, b_tree;
-    a_tree.rebuild(a_boxes, a_ids);
-    b_tree.rebuild(b_boxes, b_ids);
     std::vector<body_pair> candidates;
-    a_tree.join(b_tree, [&](std::uint32_t i, std::uint32_t j) { candidates.push_back({i, j}); });
+    const auto candidate = [&](std::uint32_t i, std::uint32_t j) { candidates.push_back({i, j}); };
+    const bool swept =
+        swept_pairs(a_boxes, b_boxes, sweep_tests_per_box * (a_boxes.size() + b_boxes.size()), candidate);
+    if (!swept) {
+        box_tree a_tree, b_tree;
+        a_tree.rebuild(a_boxes, a_ids);
+        b_tree.rebuild(b_boxes, b_ids);
+        a_tree.join(b_tree, candidate);
+    }
+    if (statistics != nullptr) statistics->swept = swept;
     sort_body_pairs(candidates, std::max(first.size(), second.size()));
     return layer_pairs_detail::within_of<NT, Exact>(first, second, false, candidates, within, threads, statistics);
 }
