@@ -15,16 +15,18 @@
 namespace influence2d {
 
 /// The x-interval overlaps a sweep may test per box before a join takes the
-/// box tree instead (world/box_tree.hpp). The sweep costs a sort of the
-/// boxes and about 3 ns per overlap it tests; the tree's rebuild and
-/// self-join about 100 ns a box. On the 177 countries of a world map
-/// (2,209 overlaps, 12 a box) the sweep took 10 us, 3 of them the sort,
-/// against the tree's 17 to 21 us (docs/world.md, "Layers"). At 32
-/// overlaps a box the two cost about the same; beyond it the tree is
-/// taken. Compact boxes spread over a plane overlap along x about as many
-/// others as a column holds (the square root of their number, times the
-/// columns a box spans), so large layers of parcels take the tree.
-inline constexpr std::size_t sweep_tests_per_box = 32;
+/// box tree instead (world/box_tree.hpp). Measured on boxes of real and
+/// generated layers (docs/world.md, "Layers": medians of 5 to 50 joins of
+/// the boxes alone), the sweep costs 4 to 8 ns per overlap it tests (its
+/// sort and count included) and the tree's rebuild and self-join 77 to 212
+/// ns a box: they cost the same at about 20 overlaps a box. 16 takes the
+/// sweep only where it is the cheaper by some margin: the 177 countries of
+/// a world map (12.5 a box: 9.0 us against the tree's 13.7 us) and 100
+/// generated parcels (12.2 a box: 5.0 against 7.6 us); 1,000 parcels
+/// (41 a box) take the tree (127 us against the sweep's 310 us). Compact
+/// boxes spread over a plane overlap along x about as many others as a
+/// column holds, which grows as the square root of their number.
+inline constexpr std::size_t sweep_tests_per_box = 16;
 
 /// A box of a swept set, with its index in the set.
 struct x_sorted_box {
