@@ -19,11 +19,11 @@ namespace influence2d {
 /// generated layers (docs/world.md, "Layers": medians of 5 to 50 joins of
 /// the boxes alone), the sweep costs 4 to 8 ns per overlap it tests (its
 /// sort and count included) and the tree's rebuild and self-join 77 to 212
-/// ns a box: they cost the same at about 20 overlaps a box. 16 takes the
-/// sweep only where it is the cheaper by some margin: the 177 countries of
-/// a world map (12.5 a box: 9.0 us against the tree's 13.7 us) and 100
-/// generated parcels (12.2 a box: 5.0 against 7.6 us); 1,000 parcels
-/// (41 a box) take the tree (127 us against the sweep's 310 us). Compact
+/// ns a box, so the two cost the same somewhere between 12 overlaps a box,
+/// where the sweep was the faster (the 177 countries of a world map, 12.5
+/// a box: 9.0 us against the tree's 13.7 us; 100 generated parcels, 12.2
+/// a box: 5.0 against 7.6 us), and 41, where the tree was (1,000 parcels:
+/// 127 us against the sweep's 310 us). 16 sweeps the first two. Compact
 /// boxes spread over a plane overlap along x about as many others as a
 /// column holds, which grows as the square root of their number.
 inline constexpr std::size_t sweep_tests_per_box = 16;
