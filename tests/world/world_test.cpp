@@ -901,8 +901,9 @@ TEST_CASE("layer_pairs: swept along x or by box trees, the pairs of the exact re
     // overlapping, touching edge to edge, or apart), three in four
     // polygons, among small squares and triangles on the same grid: every
     // bar's x-interval overlaps every other's, more than
-    // sweep_tests_per_box a box, so the candidates come from box trees. The same layer mirrored across the diagonal (x and y
-    // swapped: the same pairs) has bars across y instead, and is swept.
+    // sweep_tests_per_box a box, so the candidates come from box trees. The
+    // same layer mirrored across the diagonal (x and y swapped: the same
+    // pairs) has bars across y instead, and is swept.
     rng g(520);
     const auto mirrored = [](const polygon& p) {
         std::vector<ring_input> rings;

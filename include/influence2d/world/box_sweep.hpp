@@ -106,9 +106,7 @@ bool swept_pairs(const std::vector<box>& first, const std::vector<box>& second, 
     // x-interval: from its own min_x on (second's) or strictly after it
     // (first's, whose ties the other side tests).
     const auto strictly_after = [](const std::vector<x_sorted_box>& sorted, double x) {
-        return static_cast<std::size_t>(std::upper_bound(sorted.begin(), sorted.end(), x,
-                                                         [](double v, const x_sorted_box& s) { return v < s.min_x; }) -
-                                        sorted.begin());
+        return starting_by(sorted, 0, x);
     };
     const auto from_on = [](const std::vector<x_sorted_box>& sorted, double x) {
         return static_cast<std::size_t>(std::lower_bound(sorted.begin(), sorted.end(), x,
