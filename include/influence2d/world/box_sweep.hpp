@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "influence2d/core/box.hpp"
+#include "influence2d/scene/edge_boxes.hpp"
 
 namespace influence2d {
 
@@ -28,41 +29,35 @@ namespace influence2d {
 /// column holds, which grows as the square root of their number.
 inline constexpr std::size_t sweep_tests_per_box = 16;
 
-/// A box of a swept set, with its index in the set.
-struct x_sorted_box {
-    double min_x;         ///< the box's least abscissa
-    double max_x;         ///< its greatest abscissa
-    double min_y;         ///< its least ordinate
-    double max_y;         ///< its greatest ordinate
-    std::uint32_t index;  ///< its index in the set given
-};
-
-/// The boxes (each finite, not empty) with their indices, sorted by
-/// min_x, then by index.
-inline std::vector<x_sorted_box> sorted_along_x(const std::vector<box>& boxes) {
-    std::vector<x_sorted_box> out;
+/// The boxes (each finite, not empty) as edge_box entries whose `edge` is
+/// the box's index in `boxes`, sorted by min_x, then by index.
+inline std::vector<edge_box> sorted_along_x(const std::vector<box>& boxes) {
+    std::vector<edge_box> out;
     out.reserve(boxes.size());
     for (std::size_t k = 0; k < boxes.size(); ++k) {
         const box& b = boxes[k];
         out.push_back({b.min_x, b.max_x, b.min_y, b.max_y, static_cast<std::uint32_t>(k)});
     }
-    std::sort(out.begin(), out.end(), [](const x_sorted_box& l, const x_sorted_box& r) {
-        return l.min_x < r.min_x || (l.min_x == r.min_x && l.index < r.index);
+    std::sort(out.begin(), out.end(), [](const edge_box& l, const edge_box& r) {
+        return l.min_x < r.min_x || (l.min_x == r.min_x && l.edge < r.edge);
     });
     return out;
 }
 
 /// The number of entries of `sorted` (sorted by min_x) from `from` on
 /// whose min_x is at most x.
-inline std::size_t starting_by(const std::vector<x_sorted_box>& sorted, std::size_t from, double x) {
+inline std::size_t starting_by(const std::vector<edge_box>& sorted, std::size_t from, double x) {
     const auto end = std::upper_bound(sorted.begin() + static_cast<std::ptrdiff_t>(from), sorted.end(), x,
-                                      [](double v, const x_sorted_box& b) { return v < b.min_x; });
+                                      [](double v, const edge_box& b) { return v < b.min_x; });
     return static_cast<std::size_t>(end - sorted.begin()) - from;
 }
 
-/// Whether the y-intervals of two boxes overlap (closed).
-inline bool overlap_along_y(const x_sorted_box& l, const x_sorted_box& r) {
-    return !(l.max_y < r.min_y || r.max_y < l.min_y);
+/// The index of the first entry of `sorted` (sorted by min_x) whose min_x
+/// is at least x.
+inline std::size_t first_from(const std::vector<edge_box>& sorted, double x) {
+    return static_cast<std::size_t>(
+        std::lower_bound(sorted.begin(), sorted.end(), x, [](const edge_box& s, double v) { return s.min_x < v; }) -
+        sorted.begin());
 }
 
 /// Calls found(i, j), i < j, for every pair of boxes of `boxes` that meet
@@ -80,16 +75,16 @@ inline bool overlap_along_y(const x_sorted_box& l, const x_sorted_box& r) {
 /// in min_x order starts inside the earlier's x-interval.
 template <class Found>
 bool swept_pairs(const std::vector<box>& boxes, std::size_t budget, Found&& found) {
-    const std::vector<x_sorted_box> sorted = sorted_along_x(boxes);
+    const std::vector<edge_box> sorted = sorted_along_x(boxes);
     std::size_t tests = 0;
     for (std::size_t a = 0; a < sorted.size() && tests <= budget; ++a)
         tests += starting_by(sorted, a + 1, sorted[a].max_x);
     if (tests > budget) return false;
     for (std::size_t a = 0; a < sorted.size(); ++a) {
-        const x_sorted_box& l = sorted[a];
+        const edge_box& l = sorted[a];
         for (std::size_t b = a + 1; b < sorted.size() && sorted[b].min_x <= l.max_x; ++b)
-            if (overlap_along_y(l, sorted[b]))
-                found(std::min(l.index, sorted[b].index), std::max(l.index, sorted[b].index));
+            if (!(l.max_y < sorted[b].min_y || sorted[b].max_y < l.min_y))
+                found(std::min(l.edge, sorted[b].edge), std::max(l.edge, sorted[b].edge));
     }
     return true;
 }
@@ -97,34 +92,30 @@ bool swept_pairs(const std::vector<box>& boxes, std::size_t budget, Found&& foun
 /// Calls found(i, j) for every box i of `first` and box j of `second` that
 /// meet, in no particular order, and returns true; or, when the sweep would
 /// test more than `budget` pairs, calls nothing and returns false. As the
-/// one-set form, the two sets sorted apart: a pair is tested from the box
-/// that starts first (from `first`'s on a tie).
+/// one-set form, the two sets sorted apart and merged (sweep_along_x): a
+/// pair is tested from the box that starts first, from `first`'s on a tie.
+///
+///   a, b <- each set sorted by min_x (sorted_along_x)
+///   tests <- for each box of a, the boxes of b starting in [its min_x,
+///            its max_x]; for each of b, those of a starting in (its min_x,
+///            its max_x] (binary searches: starting_by, first_from)
+///   tests > budget: false
+///   sweep_along_x(a, b): found for each pair whose boxes overlap
 template <class Found>
 bool swept_pairs(const std::vector<box>& first, const std::vector<box>& second, std::size_t budget, Found&& found) {
-    const std::vector<x_sorted_box> a = sorted_along_x(first), b = sorted_along_x(second);
-    // For a box of one set, the boxes of the other that start inside its
-    // x-interval: from its own min_x on (second's) or strictly after it
-    // (first's, whose ties the other side tests).
-    const auto strictly_after = [](const std::vector<x_sorted_box>& sorted, double x) {
-        return starting_by(sorted, 0, x);
-    };
-    const auto from_on = [](const std::vector<x_sorted_box>& sorted, double x) {
-        return static_cast<std::size_t>(std::lower_bound(sorted.begin(), sorted.end(), x,
-                                                         [](const x_sorted_box& s, double v) { return s.min_x < v; }) -
-                                        sorted.begin());
-    };
+    const std::vector<edge_box> a = sorted_along_x(first), b = sorted_along_x(second);
     std::size_t tests = 0;
-    for (const x_sorted_box& l : a)
-        if (tests <= budget) tests += starting_by(b, from_on(b, l.min_x), l.max_x);
-    for (const x_sorted_box& r : b)
-        if (tests <= budget) tests += starting_by(a, strictly_after(a, r.min_x), r.max_x);
+    for (const edge_box& l : a)
+        if (tests <= budget) tests += starting_by(b, first_from(b, l.min_x), l.max_x);
+    for (const edge_box& r : b)
+        if (tests <= budget) tests += starting_by(a, starting_by(a, 0, r.min_x), r.max_x);
     if (tests > budget) return false;
-    for (const x_sorted_box& l : a)
-        for (std::size_t k = from_on(b, l.min_x); k < b.size() && b[k].min_x <= l.max_x; ++k)
-            if (overlap_along_y(l, b[k])) found(l.index, b[k].index);
-    for (const x_sorted_box& r : b)
-        for (std::size_t k = strictly_after(a, r.min_x); k < a.size() && a[k].min_x <= r.max_x; ++k)
-            if (overlap_along_y(a[k], r)) found(a[k].index, r.index);
+    sweep_along_x(
+        a, 0, a.size(), b, 0, b.size(), [](const edge_box& e) -> const edge_box& { return e; },
+        [&](std::size_t i, std::size_t j) {
+            found(a[i].edge, b[j].edge);
+            return false;
+        });
     return true;
 }
 
