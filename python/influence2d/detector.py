@@ -59,6 +59,23 @@ class Detector:
         p = np.ascontiguousarray(p.reshape(1, 3))
         return self._d.witness(float(p[0, 0]), float(p[0, 1]), float(p[0, 2]))[1]
 
+    def witnesses(self, poses):
+        """Each pose's frame in order, from the detector that witnesses (as
+        :meth:`witness`): ``(collides, pairs)``, ``collides`` an (n,) bool
+        array and ``pairs`` an (k, 3) int64 array of rows (row of the pose,
+        static edge, moving edge), one per edge pair within ``within``,
+        sorted by pose and then as :meth:`witness` lists them. A frame that
+        collides by containment alone has no row.
+
+        >>> d = Detector("POLYGON ((0 0, 2 0, 2 2, 0 2, 0 0))", "POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))")
+        >>> collides, pairs = d.witnesses([[2.0, 0.5, 0.0], [0.5, 0.5, 0.0], [3.0, 0.0, 0.0]])
+        >>> collides
+        array([ True,  True, False])
+        >>> pairs.tolist()
+        [[0, 1, 0], [0, 1, 2], [0, 1, 3]]
+        """
+        return self._d.witnesses(as_poses(poses))
+
     @property
     def exact_frames(self):
         """Frames answered again in exact rationals so far (certified; 0 for

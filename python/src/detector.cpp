@@ -3,7 +3,9 @@
 // consecutive poses keep its coherence (the candidate edges of the last
 // frame); frames answered in order with the GIL released.
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <utility>
@@ -24,6 +26,9 @@ namespace {
 struct frame_source {
     virtual ~frame_source() = default;
     virtual frame_result collide(const pose& p) = 0;
+    /// The frame's answer, its witnesses written into `pairs` (cleared
+    /// first, its capacity kept).
+    virtual bool collide(const pose& p, std::vector<edge_pair>& pairs) = 0;
     virtual std::size_t exact_frames() const { return 0; }
 };
 
@@ -32,6 +37,7 @@ struct frame_source_of final : frame_source {
     template <class... Args>
     explicit frame_source_of(Args&&... args) : d(std::forward<Args>(args)...) {}
     frame_result collide(const pose& p) override { return d.collide(p); }
+    bool collide(const pose& p, std::vector<edge_pair>& pairs) override { return d.collide(p, pairs); }
     std::size_t exact_frames() const override {
         if constexpr (std::is_same_v<D, certified_detector<detector>>)
             return d.exact_frames();
@@ -86,19 +92,37 @@ public:
         {
             py::gil_scoped_release release;
             const std::lock_guard<std::mutex> hold(mutex_);
-            if (options_.witness) {
-                r = source_->collide(p);
-            } else {
-                if (!witness_) {
-                    detector_options o = options_;
-                    o.witness = true;
-                    witness_ = make_source(kind_, a_, b_, o);
-                }
-                r = witness_->collide(p);
-            }
+            r = witnessing().collide(p);
         }
         for (const edge_pair& e : r.pairs) pairs.emplace_back(e.static_edge, e.moving_edge);
         return {r.collides, pairs};
+    }
+
+    /// Each pose's frame in order, from the detector that witnesses (as
+    /// witness()): whether it collides, an (n,) bool array, and its edge
+    /// pairs within `within`, a (k, 3) array of rows (pose's row, static
+    /// edge, moving edge), by row and, within a row, as witness() orders
+    /// them.
+    std::pair<py::array_t<bool>, py::array_t<std::int64_t>> witnesses(const py::array& poses) {
+        const pose_rows rows = pose_rows_of(poses, "poses");
+        py::array_t<bool> collides(static_cast<py::ssize_t>(rows.count));
+        bool* c = collides.mutable_data();
+        std::vector<std::int64_t> found;  // (row, static edge, moving edge) after one another
+        {
+            py::gil_scoped_release release;
+            const std::lock_guard<std::mutex> hold(mutex_);
+            frame_source& source = witnessing();
+            std::vector<edge_pair> pairs;
+            for (std::size_t k = 0; k < rows.count; ++k) {
+                c[k] = source.collide(rows.rows[k], pairs);
+                for (const edge_pair& e : pairs)
+                    found.insert(found.end(), {static_cast<std::int64_t>(k), static_cast<std::int64_t>(e.static_edge),
+                                               static_cast<std::int64_t>(e.moving_edge)});
+            }
+        }
+        py::array_t<std::int64_t> out({static_cast<py::ssize_t>(found.size() / 3), py::ssize_t{3}});
+        std::copy(found.begin(), found.end(), out.mutable_data());
+        return {collides, out};
     }
 
     std::size_t exact_frames() const {
@@ -107,6 +131,19 @@ public:
     }
 
 private:
+    /// The source whose frames gather witnesses: this detector's when it
+    /// was asked for them, else one built on first use (the caller holds
+    /// the mutex).
+    frame_source& witnessing() {
+        if (options_.witness) return *source_;
+        if (!witness_) {
+            detector_options o = options_;
+            o.witness = true;
+            witness_ = make_source(kind_, a_, b_, o);
+        }
+        return *witness_;
+    }
+
     number_kind kind_;
     polygon a_, b_;
     detector_options options_;
@@ -122,6 +159,7 @@ void bind_detector(py::module_& m) {
              py::arg("b"), py::arg("number_type"), py::arg("witness"), py::arg("within"))
         .def("collide", &py_detector::collide, py::arg("poses"))
         .def("witness", &py_detector::witness, py::arg("tx"), py::arg("ty"), py::arg("theta"))
+        .def("witnesses", &py_detector::witnesses, py::arg("poses"))
         .def_property_readonly("exact_frames", &py_detector::exact_frames);
 }
 

@@ -130,6 +130,9 @@ def test_bad_options():
            np.zeros((1, 3)), motion="linear")
     raises("max_steps is -1", influence2d.first_contact, A, B, np.zeros((1, 3)), np.zeros((1, 3)), max_steps=-1)
     raises(r"pose: expected one pose", influence2d.Detector(A, B).witness, np.zeros((2, 3)))
+    raises(r"poses: expected an array of shape \(n, 3\).*got shape \(2, 2\)", influence2d.Detector(A, B).witnesses,
+           np.zeros((2, 2)))
+    raises(r"poses\[1", influence2d.Detector(A, B).witnesses, np.array([[0.0, 0.0, 0.0], [math.inf, 0.0, 0.0]]))
 
 
 def test_bad_layers_name_the_index():

@@ -172,6 +172,56 @@ def test_detector_witness_matches_the_tool(tool, tmp_path, rng):
         assert dw.witness(pose) == want
 
 
+@pytest.mark.parametrize("number_type", ["double", "certified", "exact"])
+def test_detector_witnesses_in_a_batch_match_the_tool(tool, tmp_path, rng, number_type):
+    a = star_polygon(rng, 12)
+    b = star_polygon(rng, 8, radius=0.7)
+    # Poses that touch, overlap deeply (B inside A: containment alone) and
+    # lie apart, mixed.
+    poses = np.concatenate([touching_poses(rng, a, b, 40), np.array([[0.0, 0.0, 0.3], [5.0, 5.0, 0.0]]),
+                            np.array([[rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-3, 3)] for _ in range(40)])])
+    rng.shuffle(poses)
+    rows = tool_frames(tool, tmp_path, a, b, poses, "--number-type", number_type, "--witness", "--distance", "0.01")
+    want_collides = [cols[1] == "1" for cols in rows]
+    want_pairs = [[k, *map(int, e.split(":"))]
+                  for k, cols in enumerate(rows) if cols[2] for e in cols[2].split(";")]
+    assert 0 < len(want_pairs) and any(c and not cols[2] for c, cols in zip(want_collides, rows))
+    for witness in (False, True):
+        d = influence2d.Detector(a, b, number_type=number_type, within=0.01, witness=witness)
+        collides, pairs = d.witnesses(poses)
+        assert collides.dtype == bool and pairs.dtype == np.int64 and pairs.shape == (len(want_pairs), 3)
+        assert collides.tolist() == want_collides
+        assert pairs.tolist() == want_pairs
+        # Split in two calls, in order: the same rows, numbered per call.
+        first, second = d.witnesses(poses[:30]), d.witnesses(poses[30:])
+        assert first[0].tolist() + second[0].tolist() == want_collides
+        assert first[1].tolist() + [[k + 30, s, m] for k, s, m in second[1].tolist()] == want_pairs
+        assert d.collide(poses).tolist() == want_collides
+    empty = influence2d.Detector(a, b).witnesses(np.zeros((0, 3)))
+    assert empty[0].shape == (0,) and empty[1].shape == (0, 3)
+
+
+@pytest.mark.parametrize("number_type", EXACT_TYPES)
+def test_detector_witnesses_are_the_exactly_meeting_edges(rng, number_type):
+    # The exact reference: every edge pair of A and posed B that shares a
+    # point, in rationals (edge k of the input ring order from vertex k).
+    a = star_polygon(rng, 10)
+    b = star_polygon(rng, 7, radius=0.6)
+    poses = np.concatenate([touching_poses(rng, a, b, 40),
+                            np.array([[rng.uniform(-1.5, 1.5), rng.uniform(-1.5, 1.5), rng.uniform(-3, 3)]
+                                      for _ in range(40)])])
+    a_ring = exact_reference.rings_of(a)[0][0]
+    b_ring = exact_reference.rings_of(b)[0][0]
+    collides, pairs = influence2d.Detector(a, b, number_type=number_type).witnesses(poses)
+    for k, pose in enumerate(poses):
+        posed = exact_reference.posed([b_ring], pose)[0]
+        want = [[k, i, j] for i in range(len(a_ring)) for j in range(len(posed))
+                if exact_reference.segments_meet(a_ring[i], a_ring[(i + 1) % len(a_ring)], posed[j],
+                                                 posed[(j + 1) % len(posed)])]
+        assert pairs[pairs[:, 0] == k].tolist() == want, f"pose {k}: {pose.tolist()}"
+        assert collides[k] == exact_reference.intersects(a, b, pose)
+
+
 def test_detector_within_is_a_distance():
     d = influence2d.Detector("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))", "POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))",
                              within=0.25, number_type="exact")
