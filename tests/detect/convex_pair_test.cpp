@@ -72,7 +72,7 @@ TEST_CASE("convexity: one convex ring, decided exactly", "[convexity]") {
 TEST_CASE("convex pairs: the separating-edge route equals the CGAL reference", "[convexity][detector]") {
     test_random::rng r(20261126);
     verdicts v;
-    std::size_t convex_frames = 0;
+    std::size_t convex_frames = 0, disc_frames = 0;
     const auto check_pair = [&](const polygon& a, const polygon& b, const std::vector<pose>& poses, bool exact_poses) {
         REQUIRE(is_convex_polygon(a));
         REQUIRE(is_convex_polygon(b));
@@ -103,6 +103,7 @@ TEST_CASE("convex pairs: the separating-edge route equals the CGAL reference", "
             }
         }
         convex_frames += exact.statistics().convex_frames;
+        disc_frames += exact.statistics().convex_disc_frames;
     };
 
     SECTION("lattice polygons touching exactly under integer translations") {
@@ -139,6 +140,9 @@ TEST_CASE("convex pairs: the separating-edge route equals the CGAL reference", "
     CHECK(v.contacts > 0);
     CHECK(v.contacts < v.frames);
     CHECK(convex_frames > 0);
+    // Both ways of the route ran: inner discs overlapping, and the edges.
+    CHECK(disc_frames > 0);
+    CHECK(disc_frames < convex_frames);
 }
 
 TEST_CASE("convex pairs: in float the separating-edge route answers every frame clear of contact exactly",

@@ -532,6 +532,67 @@ TEST_CASE("filters: certainly_farther answers only points whose every exact vers
     CHECK_FALSE(certainly_farther({0, 0}, {0x1p-1074, 0}, 0, 0));
 }
 
+TEST_CASE(
+    "filters: discs_certainly_overlap answers only discs whose every exact centre within e lies nearer than "
+    "the radii's sum",
+    "[filters]") {
+    test_random::rng r(25);
+    std::size_t overlap = 0, unsure = 0, close_calls = 0;
+    // The exact greatest distance squared between a point within e of p and
+    // one within e of q (on each coordinate): each axis's gap grown by 2e.
+    const auto most2 = [](const point<double>& p, const point<double>& q, double e) -> Q {
+        const auto gap = [&](double a, double b) -> Q {
+            Q d = Q(a) - Q(b);
+            if (d < 0) d = -d;
+            return d + Q(2) * Q(e);
+        };
+        const Q gx = gap(p.x, q.x), gy = gap(p.y, q.y);
+        return gx * gx + gy * gy;
+    };
+    for (int k = 0; k < filter_count(20000); ++k) {
+        // Scales from subnormal to near the top of the range.
+        const int sc = static_cast<int>(r.index(2000)) - 1070;
+        // q sometimes at a smaller scale: p - q then rounds.
+        const int t = r.chance(0.5) ? sc : sc - static_cast<int>(r.index(30));
+        const point<double> p{filter_scale(r, sc), filter_scale(r, sc)}, q{filter_scale(r, t), filter_scale(r, t)};
+        const double d = std::hypot(p.x - q.x, p.y - q.y);
+        const double e = r.chance(0.3) ? 0 : std::ldexp(d, -static_cast<int>(r.index(60)) - 2);
+        // The radii's sum at the edge (d + 3e), near it (more by up to 2^-40
+        // of it), each then moved a few ulps either way, or anywhere above d;
+        // split in two at random (the split rounds too).
+        const std::size_t where = r.index(3);
+        double sum = where == 0   ? d + 3 * e
+                     : where == 1 ? (d + 3 * e) * (1 + std::ldexp(r.unit(), -40))
+                                  : d * (1 + 4 * r.unit());
+        for (int n = static_cast<int>(r.index(9)) - 4; n != 0; n += n > 0 ? -1 : 1)
+            sum = std::nextafter(sum, n > 0 ? infinity : -infinity);
+        const double first = sum * r.unit(), second = sum - first;
+        if (!(first > 0) || !(second > 0) || !std::isfinite(d) || !std::isfinite(sum)) continue;
+        const bool answer = discs_certainly_overlap(p, first, q, second, e);
+        if (!answer) {
+            ++unsure;
+            continue;
+        }
+        ++overlap;
+        close_calls += first + second < (d + 3 * e) * (1 + 0x1p-39) ? 1 : 0;
+        INFO("scale 2^" << sc << ", e " << e << ", radii " << first << " " << second);
+        CHECK(most2(p, q, e) < (Q(first) + Q(second)) * (Q(first) + Q(second)));
+    }
+    CHECK(overlap > filter_at_least(1000));
+    CHECK(unsure > filter_at_least(1000));
+    CHECK(close_calls > filter_at_least(100));  // answers within 2^-39 of the edge were checked
+    // Named cases: centres 3 apart, radii 2 and 2 overlap, 1 and 2 touch
+    // (not strictly nearer: false); e = 0.2 leaves 3.6 < 4, e = 0.4 leaves
+    // 4.2 (3 + 3e) over 4; a radius of 0, NaN and overflow answer false.
+    CHECK(discs_certainly_overlap({0, 0}, 2, {3, 0}, 2, 0));
+    CHECK_FALSE(discs_certainly_overlap({0, 0}, 1, {3, 0}, 2, 0));
+    CHECK(discs_certainly_overlap({0, 0}, 2, {3, 0}, 2, 0.2));
+    CHECK_FALSE(discs_certainly_overlap({0, 0}, 2, {3, 0}, 2, 0.4));
+    CHECK_FALSE(discs_certainly_overlap({0, 0}, 0, {0, 0}, 2, 0));
+    CHECK_FALSE(discs_certainly_overlap({0, 0}, 2, {nan_value, 0}, 2, 0));
+    CHECK_FALSE(discs_certainly_overlap({-DBL_MAX, 0}, DBL_MAX, {DBL_MAX, 0}, DBL_MAX, 0));
+}
+
 TEST_CASE("filters: box_may_be_near_line never drops a box within g of the line", "[filters]") {
     test_random::rng r(10);
     std::size_t near = 0, far = 0;

@@ -102,7 +102,8 @@ std::size_t separating_edge_of(const Poly& poly, const Other& other, double spre
 /// of A strictly outside f's line. `kept` numbers A's edges from 0 and B's
 /// after them; any value is accepted. `spread` bounds |r.x - p.x| +
 /// |r.y - p.y| for the doubles of every vertex r of one polygon and p of
-/// the other.
+/// the other. (A caller with inner discs can first ask whether they overlap,
+/// discs_certainly_overlap, before it poses any vertex.)
 template <class NT, class A, class B>
 bool convex_regions_meet(const A& a, const B& b, double spread, std::uint32_t& kept) {
     const std::size_t na = a.size, nb = b.size;

@@ -46,6 +46,7 @@ struct detector_statistics {
     std::size_t tree_frames = 0;         ///< frames whose pairs came from A's edge tree
     std::size_t jump_frames = 0;         ///< frames with no coherence to use (both edge trees, or every pair)
     std::size_t convex_frames = 0;       ///< frames answered by the separating-edge test of two convex polygons
+    std::size_t convex_disc_frames = 0;  ///< of those, frames answered by the two inner discs overlapping
     std::size_t last_pair_frames = 0;    ///< frames answered by the edge pair that met last (last_pair_meets)
     std::size_t interior_frames = 0;     ///< jumps answered by a vertex deep in the other region (vertices_deep_inside)
 };
@@ -105,8 +106,9 @@ struct distance_state {
 ///   p <- B's centroid posed in double; margin <- the rounding of the frame
 ///   |p - O_A| > R_A + n (the bounding circles apart):          disjoint
 ///   A and B small and convex (convex_pair_pays), d == 0, no witnesses
-///   asked: an edge of one with every vertex of the other strictly outside
-///   its line, the last frame's first (convex_regions_meet):    disjoint
+///   asked: their inner discs certainly overlap:                they meet
+///       an edge of one with every vertex of the other strictly outside
+///       its line, the last frame's first (convex_regions_meet): disjoint
 ///       else                                                    they meet
 ///   (with witnesses the pairs are sought as for any polygons: the edge
 ///   pairs are the answer, and their search shows the meeting too)
@@ -237,9 +239,10 @@ public:
     ///   q's translation scaled by 2^k when the polygons were (the constructor)
     ///   f <- the frame: B's centroid p posed in double, the rounding margin
     ///   if A's and B's bounding circles are apart:            disjoint
-    ///   if A and B are small and convex, and d == 0:
+    ///   if A and B are small and convex, d == 0, and no witnesses asked:
+    ///       if their inner discs certainly overlap:           they meet
     ///       if an edge of one separates them:                 disjoint
-    ///       without witnesses:                                they meet
+    ///       else                                              they meet
     ///   if p jumped (no coherence to use):  pairs from A's and B's edge trees
     ///       traversed together (every pair's boxes, for two small polygons),
     ///       then containment
@@ -507,10 +510,14 @@ private:
     /// the other routes start with a centroid, a cached or a tree search.
     static bool convex_pair_pays(std::size_t na, std::size_t nb) { return na * nb <= convex_pair_limit; }
 
-    /// The separating-edge test of convex A and B (convex_regions_meet): A's
-    /// vertices exact as given, B's posed in double within the frame margin
-    /// and in NT when a sign needs them. The separating edge is kept for the
-    /// next frame with features::coherence. The spread of the vertices'
+    /// Whether convex A and B meet: their inner discs (A's as prepared, B's
+    /// centre posed in double within the frame margin and its radius shrunk
+    /// by 1.5 margin, see b_inner_) certainly overlap, before any vertex of
+    /// B is posed (on random poses near contact, most poses that meet); else
+    /// the separating-edge test (convex_regions_meet): A's vertices exact as
+    /// given, B's posed in double within the frame margin and in NT when a
+    /// sign needs them. The separating edge is kept for the next frame with
+    /// features::coherence. The spread of the vertices'
     /// doubles: a vertex of A lies within R_A of O_A, one of B within r_B
     /// (B's radius) of its exact centroid, whose double p is within the
     /// margin of it and within |p - O_A| of O_A; so two vertices lie within
@@ -519,6 +526,12 @@ private:
     /// sqrt 2 (< 1.5) times that in the L1 norm (the 6% between sqrt 2 and
     /// 1.5 is far above the computation's few roundings of 2^-53 each).
     bool convex_meet(const frame& f) {
+        const disc b_inner{f.t.template apply<double>(b_inner_.centre),
+                           std::max(b_inner_.radius - 1.5 * f.margin, 0.0)};
+        if (discs_certainly_overlap(a_inner_.centre, a_inner_.radius, b_inner.centre, b_inner.radius, f.margin)) {
+            tally(&detector_statistics::convex_disc_frames);
+            return true;
+        }
         b_.place_approximate();
         const polygon& as = a_->shape;
         const auto& cov = a_->covering;
@@ -527,7 +540,7 @@ private:
             a_inner_);
         const auto b = make_convex_view(
             b_.size(), &b_.approximate(0), [&](std::size_t j) -> const point<NT>& { return b_.vertex(j); }, f.margin,
-            disc{f.t.template apply<double>(b_inner_.centre), std::max(b_inner_.radius - 1.5 * f.margin, 0.0)});
+            b_inner);
         const point<double>& o = a_->shape.centroid();
         const double spread = 1.5 * (a_->radius + b_.radius() + filter_length(f.p.x - o.x, f.p.y - o.y) + 4 * f.margin);
         if constexpr (with_coherence) return convex_regions_meet<NT>(a, b, spread, coherence_state::value.separating);
@@ -1170,7 +1183,8 @@ private:
     static constexpr std::size_t convex_pair_limit = 256;
     bool convex_route_ = false;  ///< A and B convex and small, d == 0
     /// With the convex route: A's and B's inner discs, each in its own frame
-    /// (scene/inner_disc.hpp; radius 0: none), which settle the
+    /// (scene/inner_disc.hpp; radius 0: none), which show the polygons
+    /// meeting when they overlap (convex_meet) and settle the
     /// separating-edge test's edges that the other polygon reaches across
     /// with one side test each (separating_edge_of). B's posed in NT is
     /// the rigid image only in an exact NT: in a floating NT each posed

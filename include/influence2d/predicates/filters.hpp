@@ -306,6 +306,18 @@ inline bool certainly_nearer(const point<double>& p, const point<double>& q, dou
            reach * reach * (1 - farther_widening);
 }
 
+/// Whether two discs certainly share a point: the disc of radius r about
+/// the point whose double (within e on each coordinate) is p, and the disc
+/// of radius s about the one whose double is q. Discs whose centres lie
+/// less than r + s apart overlap; certainly_nearer decides that for the
+/// exact centres. The sum r + s rounds by at most 2^-53 relative, which
+/// adds 2^-52 to its square: within certainly_nearer's farther_widening
+/// (2^-47), which covers its own eight roundings of 2^-53 (2^-50) with room
+/// to spare. False when either radius is not positive and for a NaN.
+inline bool discs_certainly_overlap(const point<double>& p, double r, const point<double>& q, double s, double e) {
+    return r > 0 && s > 0 && certainly_nearer(p, q, r + s, e);
+}
+
 /// Whether some point of box b may lie within g of the line through u and v:
 /// false only when every corner lies certainly on one side, beyond g, as
 /// certain_side would find each (then no point within g of the segment
