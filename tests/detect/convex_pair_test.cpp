@@ -103,7 +103,7 @@ TEST_CASE("convex pairs: the separating-edge route equals the CGAL reference", "
             }
         }
         convex_frames += exact.statistics().convex_frames;
-        disc_frames += exact.statistics().convex_disc_frames;
+        disc_frames += exact.statistics().disc_frames;
     };
 
     SECTION("lattice polygons touching exactly under integer translations") {
@@ -143,6 +143,59 @@ TEST_CASE("convex pairs: the separating-edge route equals the CGAL reference", "
     // Both ways of the route ran: inner discs overlapping, and the edges.
     CHECK(disc_frames > 0);
     CHECK(disc_frames < convex_frames);
+}
+
+TEST_CASE(
+    "convex pairs beyond the separating-edge route: jumps answered by overlapping inner discs as the CGAL "
+    "reference answers them",
+    "[convexity][detector]") {
+    // Convex polygons of 20 to 200 vertices (too many for the separating-edge
+    // route), random poses (every frame a jump) and a coherent run, at
+    // several scales, with d = 0 and d > 0. The exact and certified
+    // detectors must equal the reference; frames answered by the discs and
+    // frames answered otherwise must both occur.
+    test_random::rng r(20261202);
+    std::size_t frames = 0, disagreements = 0, contacts = 0, disc_frames = 0, exact_frames = 0;
+    for (int pair = 0; pair < 24; ++pair) {
+        const double scale = pair % 3 == 0 ? 1.0 : (pair % 3 == 1 ? 0x1p-400 : 0x1p+400);
+        const std::size_t na = 20 + r.index(180), nb = 20 + r.index(180);
+        const polygon a = ellipse_polygon(r, na, {0, 0}, scale * r.uniform(1, 3), scale * r.uniform(1, 3));
+        const polygon b = ellipse_polygon(r, nb, {scale * r.uniform(-1, 1), scale * r.uniform(-1, 1)},
+                                          scale * r.uniform(1, 3), scale * r.uniform(1, 3));
+        if (!is_convex_polygon(a) || !is_convex_polygon(b)) continue;
+        const double d = pair % 2 == 0 ? 0.0 : scale * 0.25;
+        detector_options o;
+        o.distance = d;
+        const cgal_reference ref(a, b, d);
+        detector<exact_rational> exact(a, b, o);
+        certified_detector<detector> certified(a, b, o);
+        detector<exact_rational> swapped(b, a, o);
+        std::vector<pose> poses;
+        for (int k = 0; k < 80; ++k)
+            poses.push_back({scale * r.uniform(-6, 6), scale * r.uniform(-6, 6), r.uniform(-3.2, 3.2)});
+        const double theta0 = r.uniform(-3, 3);
+        for (int k = 0; k < 40; ++k) poses.push_back({scale * (-6 + 0.3 * k), scale * 0.01 * k, theta0 + 0.003 * k});
+        for (const pose& q : poses) {
+            ++frames;
+            const bool expected = ref.collide(q).collides;
+            contacts += expected;
+            const bool agree = exact.collide(q).collides == expected && certified.collide(q).collides == expected &&
+                               (q.theta != 0 || swapped.collide(pose{-q.tx, -q.ty, 0}).collides == expected);
+            if (!agree) {
+                ++disagreements;
+                UNSCOPED_INFO("pair " << pair << ", pose " << q.tx << " " << q.ty << " " << q.theta);
+            }
+        }
+        disc_frames += exact.statistics().disc_frames;
+        exact_frames += exact.statistics().frames;
+        CHECK(exact.statistics().convex_frames == 0);  // beyond the separating-edge route
+    }
+    CHECK(disagreements == 0);
+    CHECK(contacts > 0);
+    CHECK(contacts < frames);
+    CHECK(disc_frames > 0);
+    CHECK(disc_frames < contacts);
+    CHECK(exact_frames == frames);
 }
 
 TEST_CASE("convex pairs: in float the separating-edge route answers every frame clear of contact exactly",

@@ -24,6 +24,8 @@
 #include "influence2d/influence/edge_tree.hpp"
 #include "influence2d/influence/influence_areas.hpp"
 #include "influence2d/predicates/convexity.hpp"
+#include "influence2d/scene/bounding_disc.hpp"
+#include "influence2d/scene/inner_disc.hpp"
 #include "influence2d/scene/interior_cells.hpp"
 #include "influence2d/scene/reaching_vertices.hpp"
 
@@ -124,6 +126,12 @@ struct static_scene {
     const reaching_vertices& reaching() const {
         return reaching_.get([this] { return reaching_vertices(shape, shape.centroid()); });
     }
+    /// A disc about the centre of A's box in A's closed region (inner_radius;
+    /// radius 0: none), in A's frame (built on first use, linear time;
+    /// thread-safe).
+    const disc& inner() const {
+        return inner_.get([this] { return disc{shape.bounds().centre(), inner_radius(shape)}; });
+    }
     /// Bytes of the heap blocks held by the parts built so far (for an exact
     /// NT, the numbers' own limbs are not counted).
     std::size_t heap_bytes() const {
@@ -139,6 +147,7 @@ private:
     built_once<edge_tree> tree_;
     built_once<interior_cells> interior_;
     built_once<reaching_vertices> reaching_;
+    built_once<disc> inner_;
 };
 
 /// The moving polygon B prepared in its own frame: its centroid and bounding
@@ -181,6 +190,12 @@ struct moving_scene {
     const reaching_vertices& reaching() const {
         return reaching_.get([this] { return reaching_vertices(shape, centroid); });
     }
+    /// A disc about the centre of B's box in B's closed region (inner_radius;
+    /// radius 0: none), in B's own frame (built on first use, linear time;
+    /// thread-safe).
+    const disc& inner() const {
+        return inner_.get([this] { return disc{shape.bounds().centre(), inner_radius(shape)}; });
+    }
     /// Bytes of the heap blocks held by the parts built so far.
     std::size_t heap_bytes() const {
         const edge_tree* t = tree_.if_built();
@@ -192,6 +207,7 @@ private:
     built_once<edge_tree> tree_;
     built_once<interior_cells> interior_;
     built_once<reaching_vertices> reaching_;
+    built_once<disc> inner_;
 };
 
 /// A prepared for detectors in NT, to be shared by many (detector's
