@@ -72,11 +72,12 @@ void check_frames(const polygon& a, const polygon& b, const std::vector<pose>& p
     }
     // Both answers occur, and most frames found their pairs through A's edge
     // tree: alone, or with B's for frames that jump (these poses all do); or,
-    // for two small convex polygons, by the separating-edge test.
+    // for two small convex polygons, by the separating-edge test; or, for two
+    // convex polygons without witnesses, by their inner discs.
     CHECK(collisions >= poses.size() / 5);
     CHECK(collisions < poses.size());
     for (const detector_statistics& s : {det.statistics(), yes_no.statistics()})
-        CHECK((s.tree_frames + s.jump_frames + s.convex_frames) * 2 >= poses.size());
+        CHECK((s.tree_frames + s.jump_frames + s.convex_frames + s.disc_frames) * 2 >= poses.size());
 }
 
 /// Every scene (static, moving family file names) on `frames` poses near

@@ -354,6 +354,7 @@ private:
             return {};
         }
         if (convex_route_ && !witnessing()) {
+            if (inner_discs_overlap(f)) return {true, {}};
             tally(&detector_statistics::convex_frames);
             return {convex_meet(f), {}};
         }
@@ -540,9 +541,9 @@ private:
         return true;
     }
 
-    /// Whether convex A and B meet: their inner discs overlap
-    /// (inner_discs_overlap); else
-    /// the separating-edge test (convex_regions_meet): A's vertices exact as
+    /// Whether convex A and B meet, their inner discs not certainly
+    /// overlapping (inner_discs_overlap, asked first): the separating-edge
+    /// test (convex_regions_meet): A's vertices exact as
     /// given, B's posed in double within the frame margin and in NT when a
     /// sign needs them. The separating edge is kept for the next frame with
     /// features::coherence. The spread of the vertices'
@@ -554,7 +555,6 @@ private:
     /// sqrt 2 (< 1.5) times that in the L1 norm (the 6% between sqrt 2 and
     /// 1.5 is far above the computation's few roundings of 2^-53 each).
     bool convex_meet(const frame& f) {
-        if (inner_discs_overlap(f)) return true;
         b_.place_approximate();
         const polygon& as = a_->shape;
         const auto& cov = a_->covering;
