@@ -86,7 +86,7 @@ sed -n '/^## Methods/,/^## Targets/p' "$out/bench/bench.md" | sed '$d'
 sed -n '/^## Targets/,/^## Speed-up/p' "$out/bench/bench.md" | sed '$d'
 echo "tables and heat maps: $out/bench/bench.md, $out/bench/heatmap_*.png (full grid: influence2d-bench)"
 echo
-echo "real pairs (countries and NYC boroughs, 200 poses a pair along a random walk and shuffled, against GEOS prepared):"
+echo "real pairs (countries and NYC boroughs, 200 poses a pair along a random walk and shuffled, then each pushed just apart, against GEOS prepared):"
 if bash "$root/scripts/real_layers.sh" "$out/real_layers" >"$out/real_layers.log" 2>&1; then
     "$root/build/src/influence2d-real-bench" --layers "$out/real_layers" --poses 200 --runs 3 --out "$out/real" \
         2>/dev/null | grep -E '^\| static|\| (double|certified|GEOS prepared) \|'

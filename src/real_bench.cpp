@@ -4,7 +4,10 @@
 // multipolygons of many parts, long shared borders, coordinates far from 0).
 // The moving polygon of each pair is posed by poses that mostly overlap the
 // static one: a random walk (coherent, each pose a small step from the last)
-// and the same poses shuffled (no coherence). Every method answers the same
+// and the same poses shuffled (no coherence); and by the walk's poses each
+// pushed just clear of the static polygon (apart, within a 4096th of the
+// pair's range of touching), in the walk's order and shuffled. Every method
+// answers the same
 // poses in the same order, posing included, preparation excluded; the methods
 // are interleaved in a rotating order over repeated runs and each one's time
 // per pose is the median over the runs. Every answer is compared with the
@@ -95,6 +98,35 @@ std::vector<pose> walk(const real_pair& p, std::size_t count, std::uint64_t seed
         v = reflect(v + step(rng));
         w = reflect(w + step(rng));
         out.push_back({u * p.shift, v * p.shift, w * p.turn});
+    }
+    return out;
+}
+
+/// Each pose pushed by a translation along the direction from A's box centre
+/// to B's posed box centre ((1, 0) where they coincide) just far enough to
+/// leave A: the least push found apart by the certified detector (exact),
+/// doubling from a 4096th of the pair's shift, then halving the step twelve
+/// times between a push that meets and one that does not; the pose apart
+/// (within about a 4096th of the shift of touching) is kept.
+std::vector<pose> pushed_apart(const real_pair& p, const polygon& a, const polygon& b, const std::vector<pose>& poses) {
+    certified_detector<detector> reference(a, b);
+    const point<double> ca = a.bounds().centre(), cb = b.bounds().centre();
+    std::vector<pose> out;
+    for (const pose& q : poses) {
+        const point<double> c = rotation_pose(q).apply<double>(cb);
+        const double dx = c.x - ca.x, dy = c.y - ca.y, length = std::hypot(dx, dy);
+        const point<double> u = length > 0 ? point<double>{dx / length, dy / length} : point<double>{1, 0};
+        const auto at = [&](double t) { return pose{q.tx + t * u.x, q.ty + t * u.y, q.theta}; };
+        double meets = 0, apart = p.shift / 4096;
+        for (int k = 0; k < 60 && reference.collide(at(apart)).collides; ++k) {
+            meets = apart;
+            apart *= 2;
+        }
+        for (int k = 0; k < 12; ++k) {
+            const double mid = (meets + apart) / 2;
+            (reference.collide(at(mid)).collides ? meets : apart) = mid;
+        }
+        out.push_back(at(apart));
     }
     return out;
 }
@@ -263,8 +295,12 @@ void run(const bench_options& o) {
         std::vector<pose> poses = walk(p, o.poses, o.seed);
         std::cerr << "real bench: " << name << "\n";
         for (const row& r : run_order(name, "walk", a, b, poses, o.runs, o.budget)) rows.push_back(r);
+        std::vector<pose> apart = pushed_apart(p, a, b, poses);
         std::shuffle(poses.begin(), poses.end(), std::mt19937_64(o.seed + 1));
         for (const row& r : run_order(name, "shuffled", a, b, poses, o.runs, o.budget)) rows.push_back(r);
+        for (const row& r : run_order(name, "apart, walk", a, b, apart, o.runs, o.budget)) rows.push_back(r);
+        std::shuffle(apart.begin(), apart.end(), std::mt19937_64(o.seed + 2));
+        for (const row& r : run_order(name, "apart, shuffled", a, b, apart, o.runs, o.budget)) rows.push_back(r);
     }
     const std::string text = table(rows);
     std::cout << text;
@@ -276,7 +312,11 @@ void run(const bench_options& o) {
                 std::to_string(o.runs) +
                 "`: the moving polygon posed along a random walk (`walk`: each pose a "
                 "step of up to 1/50 of the range from the last) and the same poses shuffled (`shuffled`), in a "
-                "range of translations and turns about the origin where the polygons mostly overlap; time per pose "
+                "range of translations and turns about the origin where the polygons mostly overlap; then each "
+                "pose of the walk pushed along the direction from the static polygon's box centre to the moving "
+                "one's just clear of the static polygon (`apart, walk`: the least push found apart by the "
+                "certified detector, to within a 4096th of the range's translation; the same poses shuffled: "
+                "`apart, shuffled`), where the polygons come nearest without meeting; time per pose "
                 "(posing included, preparation excluded), the median of the runs, the methods interleaved; "
                 "`x GEOS prepared` above 1 is faster than GEOS's prepared intersects; the exact detector and "
                 "Boost.Geometry ask the prefix of the poses that fits the budget; `wrong` counts answers that "
