@@ -363,7 +363,7 @@ private:
             return {true, {}};
         }
         if (!coherent_step(f)) {
-            if (!witnessing() && inner_discs_overlap(f)) return {true, {}};
+            if (inner_discs_overlap(f)) return {true, {}};
             return every_pair_pays() ? every_pair(f) : pairs_through_trees(f);
         }
         refresh_candidates(f);
@@ -532,9 +532,10 @@ private:
     /// (discs_certainly_overlap), each in its polygon's region: on random
     /// poses of convex polygons near contact 60% to 80% of the poses are
     /// answered so, before any vertex of B is posed; other polygons do not
-    /// ask (inner_discs_).
+    /// ask (inner_discs_), nor a frame that gathers witnesses (the discs do
+    /// not tell which edges meet).
     bool inner_discs_overlap(const frame& f) {
-        if (!inner_discs_) return false;
+        if (!inner_discs_ || witnessing()) return false;
         const disc b = posed_b_inner(f);
         if (!discs_certainly_overlap(a_inner_.centre, a_inner_.radius, b.centre, b.radius, f.margin)) return false;
         tally(&detector_statistics::disc_frames);

@@ -84,6 +84,10 @@ bool boxes_meet(const edge_box& k, const W& w) {
     return !((k.max_x < w.min_x) | (k.min_x > w.max_x) | (k.max_y < w.min_y) | (k.min_y > w.max_y));
 }
 
+/// Whether the y-intervals of two entries' boxes overlap (closed): with
+/// their x-intervals known to overlap, whether the boxes meet.
+inline bool overlap_along_y(const edge_box& l, const edge_box& r) { return !(l.max_y < r.min_y || r.max_y < l.min_y); }
+
 /// The box of edge e of a polygon whose vertices (in double) are `v`, its
 /// ends' box widened by `low` below and `high` above on each axis (x, then
 /// y).
@@ -119,19 +123,16 @@ inline void edges_meeting(const polygon& shape, const std::vector<point<double>>
 template <class Seq, class BoxOf, class Pair>
 bool sweep_along_x(const Seq& as, std::size_t a_first, std::size_t a_end, const Seq& bs, std::size_t b_first,
                    std::size_t b_end, BoxOf&& box_of, Pair&& pair) {
-    const auto overlap_y = [](const edge_box& l, const edge_box& r) {
-        return !(l.max_y < r.min_y || r.max_y < l.min_y);
-    };
     std::size_t i = a_first, j = b_first;
     while (i < a_end && j < b_end) {
         const edge_box &ai = box_of(as[i]), &bj = box_of(bs[j]);
         if (ai.min_x <= bj.min_x) {
             for (std::size_t k = j; k < b_end && box_of(bs[k]).min_x <= ai.max_x; ++k)
-                if (overlap_y(ai, box_of(bs[k])) && pair(i, k)) return true;
+                if (overlap_along_y(ai, box_of(bs[k])) && pair(i, k)) return true;
             ++i;
         } else {
             for (std::size_t k = i; k < a_end && box_of(as[k]).min_x <= bj.max_x; ++k)
-                if (overlap_y(box_of(as[k]), bj) && pair(k, j)) return true;
+                if (overlap_along_y(box_of(as[k]), bj) && pair(k, j)) return true;
             ++j;
         }
     }

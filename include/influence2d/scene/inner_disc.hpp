@@ -15,6 +15,7 @@
 #include "influence2d/covering/inclusion.hpp"
 #include "influence2d/number/certified.hpp"
 #include "influence2d/predicates/distance.hpp"
+#include "influence2d/scene/bounding_disc.hpp"
 
 namespace influence2d {
 
@@ -47,5 +48,9 @@ inline double inner_radius(const polygon& p) {
     const double r = least * (1 - bound_rounding);
     return std::isfinite(r) && r >= std::numeric_limits<double>::min() ? r : 0;
 }
+
+/// The disc about the centre of p's box of radius inner_radius(p), in p's
+/// closed region (radius 0: none).
+inline disc inner_disc(const polygon& p) { return {p.bounds().centre(), inner_radius(p)}; }
 
 }  // namespace influence2d

@@ -24,7 +24,6 @@
 #include "influence2d/influence/edge_tree.hpp"
 #include "influence2d/influence/influence_areas.hpp"
 #include "influence2d/predicates/convexity.hpp"
-#include "influence2d/scene/bounding_disc.hpp"
 #include "influence2d/scene/inner_disc.hpp"
 #include "influence2d/scene/interior_cells.hpp"
 #include "influence2d/scene/reaching_vertices.hpp"
@@ -126,11 +125,11 @@ struct static_scene {
     const reaching_vertices& reaching() const {
         return reaching_.get([this] { return reaching_vertices(shape, shape.centroid()); });
     }
-    /// A disc about the centre of A's box in A's closed region (inner_radius;
+    /// A disc about the centre of A's box in A's closed region (inner_disc;
     /// radius 0: none), in A's frame (built on first use, linear time;
     /// thread-safe).
     const disc& inner() const {
-        return inner_.get([this] { return disc{shape.bounds().centre(), inner_radius(shape)}; });
+        return inner_.get([this] { return inner_disc(shape); });
     }
     /// Bytes of the heap blocks held by the parts built so far (for an exact
     /// NT, the numbers' own limbs are not counted).
@@ -190,11 +189,11 @@ struct moving_scene {
     const reaching_vertices& reaching() const {
         return reaching_.get([this] { return reaching_vertices(shape, centroid); });
     }
-    /// A disc about the centre of B's box in B's closed region (inner_radius;
+    /// A disc about the centre of B's box in B's closed region (inner_disc;
     /// radius 0: none), in B's own frame (built on first use, linear time;
     /// thread-safe).
     const disc& inner() const {
-        return inner_.get([this] { return disc{shape.bounds().centre(), inner_radius(shape)}; });
+        return inner_.get([this] { return inner_disc(shape); });
     }
     /// Bytes of the heap blocks held by the parts built so far.
     std::size_t heap_bytes() const {

@@ -83,7 +83,7 @@ bool swept_pairs(const std::vector<box>& boxes, std::size_t budget, Found&& foun
     for (std::size_t a = 0; a < sorted.size(); ++a) {
         const edge_box& l = sorted[a];
         for (std::size_t b = a + 1; b < sorted.size() && sorted[b].min_x <= l.max_x; ++b)
-            if (!(l.max_y < sorted[b].min_y || sorted[b].max_y < l.min_y))
+            if (overlap_along_y(l, sorted[b]))
                 found(std::min(l.edge, sorted[b].edge), std::max(l.edge, sorted[b].edge));
     }
     return true;
