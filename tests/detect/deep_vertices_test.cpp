@@ -11,14 +11,13 @@
 
 #include "support/effort.hpp"
 #include "support/random_scenes.hpp"
+#include "support/reference_frames.hpp"
 #include "support/shapes.hpp"
 
 #include <cmath>
 #include <vector>
 
-#include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/detector.hpp"
-#include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "verification/cgal_reference.hpp"
 #include "verification/families.hpp"
@@ -41,34 +40,6 @@ std::vector<pose> scattered(rng& g, std::size_t count, double shift, double turn
     for (std::size_t k = 0; k < count; ++k)
         out.push_back({g.uniform(-shift, shift), g.uniform(-shift, shift), g.uniform(-turn, turn)});
     return out;
-}
-
-/// Runs the poses through detectors in exact rationals and certified (and
-/// double against the brute force in double), each frame against the
-/// reference; returns the frames the exact detector answered by a deep
-/// vertex. With `built`, the detectors build their structures first;
-/// without, the exact one builds the deep cells after (n_A + n_B) / 16
-/// searches of the trees.
-std::size_t check_scene(const polygon& a, const polygon& b, const std::vector<pose>& poses, double d, bool built) {
-    const verification::cgal_reference ref(a, b, d);
-    detector_options o;
-    o.distance = d;
-    detector<exact_rational> exact(a, b, o);
-    certified_detector<detector> certified(a, b, o);
-    detector<double> fast(a, b, o);
-    brute_force_detector<double> fast_ref(a, b, o);
-    if (built) {
-        exact.build_structures();
-        fast.build_structures();
-    }
-    for (std::size_t k = 0; k < poses.size(); ++k) {
-        INFO("d " << d << " frame " << k << " pose " << poses[k].tx << ", " << poses[k].ty << ", " << poses[k].theta);
-        const bool want = ref.collide(poses[k]).collides;
-        REQUIRE(exact.collide(poses[k]).collides == want);
-        REQUIRE(certified.collide(poses[k]).collides == want);
-        REQUIRE(fast.collide(poses[k]).collides == fast_ref.collide(poses[k]).collides);
-    }
-    return exact.statistics().interior_frames;
 }
 
 }  // namespace
@@ -121,7 +92,9 @@ TEST_CASE("deep vertices: jumps of overlapping polygons answer as the exact refe
             for (const double d : {0.0, 0.05}) {
                 INFO("round " << round << " swapped " << swapped);
                 const bool built = d == 0;
-                deep += swapped ? check_scene(b, a, poses, d, built) : check_scene(a, b, poses, d, built);
+                deep += (swapped ? test_frames::run_against_reference(b, a, poses, d, built)
+                                 : test_frames::run_against_reference(a, b, poses, d, built))
+                            .exact_counters.interior_frames;
                 frames += poses.size();
             }
         }

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
-// The cells deep in a polygon's region (scene/interior_cells.hpp), against
-// CGAL's exact rationals: every point the grid holds lies in the closed
-// region with every point within the margin of it (the point inside, each
-// edge of each ring at least the margin away, exactly), on random
+// The cells deep in a polygon's region and deep outside it
+// (scene/interior_cells.hpp), against CGAL's exact rationals: every point
+// the grid holds lies in the closed region with every point within the
+// margin of it (the point inside, each edge of each ring at least the margin
+// away, exactly), and every point it excludes lies outside with every point
+// within the margin of it, on random
 // multipolygons, messy rings and the time study's families at scales from
 // 2^-600 to 2^500 and far from the origin, on points anywhere in the box and
 // just off the boundary, and on boundaries that run exactly along the
@@ -31,13 +33,16 @@ using Q = exact_rational;
 /// What one polygon's check found.
 struct cells_tally {
     std::size_t asked = 0, inside = 0, held = 0;  ///< the random points of the box
+    std::size_t excluded = 0;                     ///< of them, those the grid excludes
 };
 
 /// Whether every point within m of q lies in p's closed region, exactly: q
 /// in the region and every edge at least m from it.
-bool disc_in_region(const test_exact::placed_shape& p, const point<double>& q, double m) {
+/// With `inside` false: whether every point within m of q lies outside it,
+/// exactly.
+bool disc_in_region(const test_exact::placed_shape& p, const point<double>& q, double m, bool inside = true) {
     const test_exact::point_2 x(Q(q.x), Q(q.y));
-    if (!test_exact::in_region(p, x)) return false;
+    if (test_exact::in_region(p, x) != inside) return false;
     const Q m2 = Q(m) * Q(m);
     for (std::size_t i = 0; i < p.v.size(); ++i) {
         const Q d2 = p.v[i] == p.end(i) ? CGAL::squared_distance(x, p.v[i])
@@ -56,11 +61,15 @@ cells_tally check_cells(const polygon& p, rng& g, std::size_t count) {
     const test_exact::placed_shape exact = test_exact::place(p, pose{});
     const double m = cells.cell_side() / 2;
     cells_tally t;
+    std::size_t excluded = 0;
     const auto ask = [&](const point<double>& q) {
-        if (!cells.holds(q, m)) return false;
+        const bool held = cells.holds(q, m), out = cells.excludes(q, m);
+        excluded += out ? 1 : 0;
+        if (!held && !out) return false;
         INFO("point (" << q.x << ", " << q.y << "), margin " << m << ", " << p.size() << " vertices");
-        CHECK(disc_in_region(exact, q, m));
-        return true;
+        CHECK_FALSE((held && out));
+        CHECK(disc_in_region(exact, q, m, held));
+        return held;
     };
     const box& b = p.bounds();
     for (std::size_t k = 0; k < count; ++k) {
@@ -69,6 +78,7 @@ cells_tally check_cells(const polygon& p, rng& g, std::size_t count) {
         t.inside += test_exact::in_region(exact, test_exact::point_2(Q(q.x), Q(q.y))) ? 1 : 0;
         t.held += ask(q) ? 1 : 0;
     }
+    t.excluded = excluded;
     const double side = cells.cell_side();
     for (std::size_t e = 0; e < p.size(); e += 1 + p.size() / 64) {
         const point<double>&u = p.vertex(e), &v = p.vertex(p.next(e));
@@ -85,6 +95,10 @@ cells_tally check_cells(const polygon& p, rng& g, std::size_t count) {
     CHECK_FALSE(cells.holds(c, std::nextafter(m, 1e300)));
     CHECK_FALSE(cells.holds(c, std::nan("")));
     CHECK_FALSE(cells.holds({std::nan(""), c.y}, 0));
+    CHECK_FALSE(cells.excludes({b.min_x, b.min_y}, std::nextafter(m, 1e300)));
+    CHECK_FALSE(cells.excludes({std::nan(""), c.y}, 0));
+    // Off the grid: not excluded (the callers' box tests answer those).
+    CHECK_FALSE(cells.excludes({b.min_x - 2 * (b.max_x - b.min_x) - 1, c.y}, 0));
     return t;
 }
 
@@ -112,10 +126,14 @@ TEST_CASE("interior_cells: every point held lies in the region with its margin, 
         all.asked += t.asked;
         all.inside += t.inside;
         all.held += t.held;
+        all.excluded += t.excluded;
     }
-    // Not empty: the grid holds most random points of the regions.
-    INFO(all.held << " held of " << all.inside << " inside, " << all.asked << " asked");
+    // Not empty: the grid holds most random points of the regions, and
+    // excludes many of the others.
+    INFO(all.held << " held of " << all.inside << " inside, " << all.excluded << " excluded, " << all.asked
+                  << " asked");
     CHECK(all.held * 2 > all.inside);
+    CHECK(all.excluded * 4 > all.asked - all.inside);
 }
 
 TEST_CASE("interior_cells: boundaries along the cells' sides, touching parts and a slit", "[scene]") {
@@ -133,6 +151,7 @@ TEST_CASE("interior_cells: boundaries along the cells' sides, touching parts and
         // A U whose arms are one cell wide (none of their cells deep).
         polygon({test_shapes::ring({{0, 0}, {64, 0}, {64, 64}, {62, 64}, {62, 16}, {2, 16}, {2, 64}, {0, 64}})}),
     };
+    std::size_t excluded = 0;  // over the shapes: the hole and the U's inside
     for (std::size_t s = 0; s < shapes.size(); ++s) {
         const polygon& p = shapes[s];
         const interior_cells cells(p);
@@ -147,13 +166,17 @@ TEST_CASE("interior_cells: boundaries along the cells' sides, touching parts and
         for (int i = 0; i <= 64 * per_unit; ++i)
             for (int j = 0; j <= 64 * per_unit; ++j) {
                 const point<double> q{i / static_cast<double>(per_unit), j / static_cast<double>(per_unit)};
-                if (!cells.holds(q, 1)) continue;
-                ++held;
+                const bool in = cells.holds(q, 1), out = cells.excludes(q, 1);
+                if (!in && !out) continue;
+                held += in ? 1 : 0;
+                excluded += out ? 1 : 0;
                 INFO("point (" << q.x << ", " << q.y << ")");
-                CHECK(disc_in_region(exact, q, 1));
+                CHECK_FALSE((in && out));
+                CHECK(disc_in_region(exact, q, 1, in));
             }
         CHECK(held > 0);
     }
+    CHECK(excluded > 0);
 }
 
 TEST_CASE("interior_cells: none for a flat box or cells below the coordinates' rounding", "[scene]") {
@@ -171,4 +194,11 @@ TEST_CASE("interior_cells: none for a flat box or cells below the coordinates' r
     const interior_cells near(test_shapes::square(0, 0, 1));
     CHECK(near.deep_cells() > 700);
     CHECK(near.holds({0.5, 0.5}, 0.001));
+    CHECK(near.deep_outside_cells() == 0);  // its box is its region
+    // A square with a square hole: the hole's middle is deep outside.
+    const interior_cells holed(
+        polygon({test_shapes::square_ring(0, 0, 64), test_shapes::square_ring(16, 16, 32, ring_role::hole)}));
+    CHECK(holed.excludes({32, 32}, 1));
+    CHECK_FALSE(holed.holds({32, 32}, 1));
+    CHECK(holed.holds({8, 32}, 1));
 }

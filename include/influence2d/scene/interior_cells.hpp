@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
-/// Which points certainly lie in a polygon's closed region, answered by one
-/// look-up in a grid over its box: the cells that hold no point of the
-/// boundary and lie in the region, with their eight neighbours.
+/// Which points certainly lie in a polygon's closed region, and which
+/// certainly outside it, answered by one look-up in a grid over its box: the
+/// cells that hold no point of the boundary and lie in the region (or
+/// outside it), with their eight neighbours.
 
 #include <algorithm>
 #include <bitset>
@@ -20,11 +21,13 @@
 namespace influence2d {
 
 /// A grid of square cells over a polygon's box that marks the cells lying
-/// deep in its closed region: a deep cell and its eight neighbours hold no
-/// point of the boundary and lie in the region. A point whose cell, found
-/// in double, is deep lies in the region, and so does every point within
-/// half a cell of it: holds() answers "certainly inside" with one look-up,
-/// and false when it cannot tell. Built once per polygon (see
+/// deep in its closed region, and those lying deep outside it: a deep cell
+/// and its eight neighbours hold no point of the boundary and lie all in
+/// the region (all outside it). A point whose cell, found in double, is
+/// deep inside lies in the region, and so does every point within half a
+/// cell of it: holds() answers "certainly inside" with one look-up, and
+/// false when it cannot tell; excludes() answers "certainly outside" so
+/// from the cells deep outside. Built once per polygon (see
 /// static_scene::interior), in time linear in the cells and the edges.
 ///
 ///   size the cells: about cells_per_edge cells per edge, square
@@ -34,8 +37,9 @@ namespace influence2d {
 ///     cells' centres, by exact comparisons of y (half open, as for a
 ///     ray), each at its x in double with its direction
 ///   an unmarked cell is inside when the crossings left of its centre
-///     wind about it (a sum of directions not zero)
-///   a cell is deep when it and its eight neighbours are inside
+///     wind about it (a sum of directions not zero), outside otherwise
+///   a cell is deep inside (outside) when it and its eight neighbours are
+///     inside (outside)
 ///
 /// The one comparison in double, a crossing's x against a centre's, is
 /// right for every unmarked cell: the edge meets the centre's line at a
@@ -70,46 +74,42 @@ public:
         std::vector<std::uint64_t> marked(words_ * ny_, 0);
         for (std::size_t e = 0; e < shape.size(); ++e) mark(shape.vertex(e), shape.vertex(shape.next(e)), marked);
         const std::vector<std::uint64_t> inside = inside_cells(shape, marked);
-        bits_.assign(words_ * ny_, 0);
-        std::vector<std::uint64_t> column(words_);
-        for (std::size_t j = 1; j + 1 < ny_; ++j) {
-            const std::uint64_t* below = &inside[(j - 1) * words_];
-            const std::uint64_t* row = &inside[j * words_];
-            const std::uint64_t* above = &inside[(j + 1) * words_];
-            // Column neighbours first (three rows), then row neighbours by
-            // shifts across words; bits past the last column stay clear.
-            for (std::size_t w = 0; w < words_; ++w) column[w] = below[w] & row[w] & above[w];
+        bits_ = deep_of(inside, deep_);
+        // The unmarked cells that are not inside; bits past the last column
+        // stay clear.
+        std::vector<std::uint64_t> outside(words_ * ny_, 0);
+        for (std::size_t j = 0; j < ny_; ++j)
             for (std::size_t w = 0; w < words_; ++w) {
-                const std::uint64_t from_left = (column[w] << 1) | (w > 0 ? column[w - 1] >> 63 : 0);
-                const std::uint64_t from_right = (column[w] >> 1) | (w + 1 < words_ ? column[w + 1] << 63 : 0);
-                const std::uint64_t deep = column[w] & from_left & from_right;
-                bits_[j * words_ + w] = deep;
-                deep_ += std::bitset<64>(deep).count();
+                const std::size_t used = std::min<std::size_t>(64, nx_ - 64 * w);
+                const std::uint64_t in_row = used == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << used) - 1;
+                outside[j * words_ + w] = in_row & ~marked[j * words_ + w] & ~inside[j * words_ + w];
             }
-        }
-        if (deep_ == 0) bits_.clear();
+        outside_bits_ = deep_of(outside, deep_outside_);
     }
 
     /// Whether every point within `margin` of q certainly lies in the
     /// polygon's closed region: q's cell (found in double) is deep and the
     /// margin is at most half a side. False for a point off the grid, a NaN
     /// coordinate, or a margin that is not a number.
-    bool holds(const point<double>& q, double margin) const {
-        if (bits_.empty() || !(margin <= side_ / 2)) return false;
-        const double u = (q.x - x0_) * inverse_side_, v = (q.y - y0_) * inverse_side_;
-        if (!(u >= 0 && v >= 0 && u < static_cast<double>(nx_) && v < static_cast<double>(ny_))) return false;
-        const auto i = static_cast<std::size_t>(u);
-        return (bits_[static_cast<std::size_t>(v) * words_ + i / 64] >> (i % 64)) & 1;
-    }
+    bool holds(const point<double>& q, double margin) const { return in_deep(bits_, q, margin); }
 
-    /// Whether no cell is deep (holds() is then always false).
+    /// Whether every point within `margin` of q certainly lies outside the
+    /// polygon's closed region: q's cell (found in double) is deep outside
+    /// and the margin is at most half a side. False for a point off the grid
+    /// (beyond the polygon's box: the caller's box tests answer those), a
+    /// NaN coordinate, or a margin that is not a number.
+    bool excludes(const point<double>& q, double margin) const { return in_deep(outside_bits_, q, margin); }
+
+    /// Whether no cell is deep inside (holds() is then always false).
     bool empty() const { return bits_.empty(); }
-    /// The number of deep cells.
+    /// The number of cells deep inside.
     std::size_t deep_cells() const { return deep_; }
+    /// The number of cells deep outside.
+    std::size_t deep_outside_cells() const { return deep_outside_; }
     /// The side of a cell (0 without a grid).
     double cell_side() const { return side_; }
     /// Bytes of the heap blocks held.
-    std::size_t heap_bytes() const { return bits_.capacity() * sizeof(std::uint64_t); }
+    std::size_t heap_bytes() const { return (bits_.capacity() + outside_bits_.capacity()) * sizeof(std::uint64_t); }
 
 private:
     /// About 128 cells per edge (16 bytes of bits): fine enough that the
@@ -136,6 +136,42 @@ private:
     /// the margin of a point whose computed cell is c lies in c's 3 x 3
     /// block.
     static constexpr double max_slack_per_side = 0.125;
+
+    /// Whether q's cell (found in double) is set in `deep` and the margin
+    /// is at most half a side (see holds).
+    bool in_deep(const std::vector<std::uint64_t>& deep, const point<double>& q, double margin) const {
+        if (deep.empty() || !(margin <= side_ / 2)) return false;
+        const double u = (q.x - x0_) * inverse_side_, v = (q.y - y0_) * inverse_side_;
+        if (!(u >= 0 && v >= 0 && u < static_cast<double>(nx_) && v < static_cast<double>(ny_))) return false;
+        const auto i = static_cast<std::size_t>(u);
+        return (deep[static_cast<std::size_t>(v) * words_ + i / 64] >> (i % 64)) & 1;
+    }
+
+    /// The cells of `cells` whose eight neighbours are in `cells` too, as
+    /// bits of rows (no cell of the border rows or columns), counted in
+    /// `count`; no block when none is.
+    std::vector<std::uint64_t> deep_of(const std::vector<std::uint64_t>& cells, std::size_t& count) const {
+        std::vector<std::uint64_t> deep(words_ * ny_, 0);
+        std::vector<std::uint64_t> column(words_);
+        count = 0;
+        for (std::size_t j = 1; j + 1 < ny_; ++j) {
+            const std::uint64_t* below = &cells[(j - 1) * words_];
+            const std::uint64_t* row = &cells[j * words_];
+            const std::uint64_t* above = &cells[(j + 1) * words_];
+            // Column neighbours first (three rows), then row neighbours by
+            // shifts across words; bits past the last column stay clear.
+            for (std::size_t w = 0; w < words_; ++w) column[w] = below[w] & row[w] & above[w];
+            for (std::size_t w = 0; w < words_; ++w) {
+                const std::uint64_t from_left = (column[w] << 1) | (w > 0 ? column[w - 1] >> 63 : 0);
+                const std::uint64_t from_right = (column[w] >> 1) | (w + 1 < words_ ? column[w + 1] << 63 : 0);
+                const std::uint64_t d = column[w] & from_left & from_right;
+                deep[j * words_ + w] = d;
+                count += std::bitset<64>(d).count();
+            }
+        }
+        if (count == 0) deep.clear();
+        return deep;
+    }
 
     /// The grid column (or row, with y0 for x0 and ny for nx) of coordinate
     /// x, clamped to [0, n - 1] (0 for a NaN). (The conversion truncates,
@@ -219,8 +255,9 @@ private:
     }
 
     double x0_ = 0, y0_ = 0, side_ = 0, inverse_side_ = 0, slack_ = 0;
-    std::size_t nx_ = 0, ny_ = 0, words_ = 0, deep_ = 0;
-    std::vector<std::uint64_t> bits_;  ///< row j's bits at j words_: bit i of the row is cell (i, j) deep
+    std::size_t nx_ = 0, ny_ = 0, words_ = 0, deep_ = 0, deep_outside_ = 0;
+    std::vector<std::uint64_t> bits_;          ///< row j's bits at j words_: bit i of the row is cell (i, j) deep
+    std::vector<std::uint64_t> outside_bits_;  ///< the same for the cells deep outside
 };
 
 }  // namespace influence2d

@@ -65,6 +65,9 @@ public:
     /// The posed centroid in double (rounded; for filters only).
     const point<double>& approximate_centroid() const { return approximate_centroid_; }
 
+    /// The frame's pose (the last place()).
+    const rotation_pose& placement() const { return pose_; }
+
     /// Sets the frame's pose and poses the centroid in double.
     void place(const rotation_pose& t) {
         pose_ = t;

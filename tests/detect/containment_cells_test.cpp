@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: BSL-1.0
+// Containment that drops a ring by a vertex deep outside the other polygon
+// (detector::contains_within, interior_cells::excludes): every frame against
+// CGAL's exact answer (verification::cgal_reference, which locates every ring
+// itself), in exact rationals and certified, at d = 0 and d > 0, both roles,
+// with the cells built first and built by the detector on its own, on two
+// polygons along a long shared border whose islands lie in the other's lakes
+// (poses just apart by 2^-30 to 0.1, and crossing), with an island in the
+// other's land in some rounds, and on random multipolygons at 2^20 from the
+// origin; the cells drop many rings.
+
+#include <catch2/catch.hpp>
+
+#include "support/effort.hpp"
+#include "support/random_scenes.hpp"
+#include "support/reference_frames.hpp"
+#include "support/shapes.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "influence2d/detect/detector.hpp"
+
+using namespace influence2d;
+using test_scenes::rng;
+
+namespace {
+
+/// The side of the wiggly border of n edges below it (side -1) or above it
+/// (side +1), with `lakes` square holes of side 1.5 at depth 5, and in each
+/// of the other side's lakes an island of side 0.5 at its middle (the other
+/// side's lakes lie at the same x, mirrored). With `landed`, one more island
+/// on the other side's land, between its lakes.
+polygon coast(std::size_t n, double side, std::size_t lakes, bool landed) {
+    const std::vector<point<double>> border = test_shapes::wiggly_border(n);
+    std::vector<ring_input> rings;
+    ring_input land;
+    land.vertices = border;
+    land.vertices.push_back({border.back().x, 10 * side});
+    land.vertices.push_back({border.front().x, 10 * side});
+    rings.push_back(land);
+    for (std::size_t k = 0; k < lakes; ++k) {
+        const double x = 5 + 90.0 * static_cast<double>(k) / static_cast<double>(lakes);
+        rings.push_back(test_shapes::square_ring(x, 5 * side - 0.75, 1.5, ring_role::hole));
+        rings.push_back(test_shapes::square_ring(x + 0.5, -5 * side - 0.25, 0.5));
+    }
+    if (landed) rings.push_back(test_shapes::square_ring(3, -5 * side - 0.25, 0.5));
+    return polygon(rings);
+}
+
+}  // namespace
+
+TEST_CASE("containment cells: rings dropped by a vertex deep outside answer as the exact reference",
+          "[detect][exact]") {
+    rng g(2631);
+    std::size_t frames = 0, met = 0, excluded = 0;
+    const int rounds = test_effort::scaled(12);
+    for (int round = 0; round < rounds; ++round) {
+        polygon a, b;
+        std::vector<pose> poses;
+        if (round % 3 != 2) {
+            // Two coasts: B just above A (apart), just below (crossing the
+            // border), and moved a little in any way.
+            const bool landed = round % 3 == 1;
+            a = coast(160, -1, 6, landed);
+            b = coast(160, 1, 6, false);
+            for (const double up : {0x1p-30, 1e-6, 1e-3, 0.1}) {
+                poses.push_back({0, up, 0});
+                poses.push_back({0, -up, 0});
+            }
+            for (int k = 0; k < 8; ++k)
+                poses.push_back({g.uniform(-0.3, 0.3), g.uniform(-0.2, 0.4), g.uniform(-2e-3, 2e-3)});
+        } else {
+            // Random multipolygons (holes, islands in holes), far from the
+            // origin: A moved by 2^20, the poses with it.
+            a = test_shapes::translated(test_scenes::random_multi(g, 12, 14).to_polygon(), 0x1p20, -0x1p19);
+            b = test_scenes::random_multi(g, 12, 14).to_polygon();
+            for (int k = 0; k < 24; ++k)
+                poses.push_back({0x1p20 + g.uniform(-8, 8), -0x1p19 + g.uniform(-8, 8), g.uniform(-3, 3)});
+        }
+        for (const bool swapped : {false, true})
+            for (const double d : {0.0, 0.05})
+                for (const bool built : {true, false}) {
+                    INFO("round " << round << " swapped " << swapped << " built " << built);
+                    const test_frames::reference_run run =
+                        swapped ? test_frames::run_against_reference(b, a, poses, d, built)
+                                : test_frames::run_against_reference(a, b, poses, d, built);
+                    frames += poses.size();
+                    met += run.met;
+                    excluded += run.exact_counters.containment_rings_excluded;
+                }
+    }
+    // Both answers occur, and the cells drop many rings.
+    INFO(met << " of " << frames << " frames met, " << excluded << " rings excluded");
+    CHECK(met * 5 > frames);
+    CHECK((frames - met) * 5 > frames);
+    CHECK(excluded > frames);
+}
