@@ -19,6 +19,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "influence2d/scene/interior_cells.hpp"
@@ -74,6 +75,10 @@ cells_tally check_cells(const polygon& p, rng& g, std::size_t count) {
     const box& b = p.bounds();
     for (std::size_t k = 0; k < count; ++k) {
         const point<double> q{g.uniform(b.min_x, b.max_x), g.uniform(b.min_y, b.max_y)};
+        // And every fourth time one about the box, out to half its size
+        // beyond it.
+        const double w = b.max_x - b.min_x, h = b.max_y - b.min_y;
+        if (k % 4 == 0) ask({g.uniform(b.min_x - w / 2, b.max_x + w / 2), g.uniform(b.min_y - h / 2, b.max_y + h / 2)});
         ++t.asked;
         t.inside += test_exact::in_region(exact, test_exact::point_2(Q(q.x), Q(q.y))) ? 1 : 0;
         t.held += ask(q) ? 1 : 0;
@@ -97,8 +102,22 @@ cells_tally check_cells(const polygon& p, rng& g, std::size_t count) {
     CHECK_FALSE(cells.holds({std::nan(""), c.y}, 0));
     CHECK_FALSE(cells.excludes({b.min_x, b.min_y}, std::nextafter(m, 1e300)));
     CHECK_FALSE(cells.excludes({std::nan(""), c.y}, 0));
-    // Off the grid: not excluded (the callers' box tests answer those).
-    CHECK_FALSE(cells.excludes({b.min_x - 2 * (b.max_x - b.min_x) - 1, c.y}, 0));
+    // Beyond the box: excluded when farther than the margin, on every side.
+    const double w = b.max_x - b.min_x, h = b.max_y - b.min_y;
+    for (const double f : {0.001, 0.5, 3.0}) {
+        for (const point<double> q : {point<double>{b.min_x - f * w - 2 * m, c.y},
+                                      {b.max_x + f * w + 2 * m, c.y},
+                                      {c.x, b.min_y - f * h - 2 * m},
+                                      {c.x, b.max_y + f * h + 2 * m}}) {
+            INFO("beyond the box at (" << q.x << ", " << q.y << ")");
+            CHECK(cells.excludes(q, m));
+            CHECK(disc_in_region(exact, q, m, false));
+        }
+    }
+    // Within the margin of the box: not.
+    CHECK_FALSE(cells.excludes({b.min_x - m / 2, c.y}, m));
+    CHECK_FALSE(cells.excludes({c.x, b.max_y + m / 2}, m));
+    CHECK_FALSE(cells.excludes({-std::numeric_limits<double>::infinity(), c.y}, m));
     return t;
 }
 

@@ -955,19 +955,23 @@ private:
         }
         const polygon& as = a_->shape;
         const rotation_pose& t = b_.placement();
-        // A's vertices placed in B's frame by the inverse pose in double
-        // (as vertices_deep_inside).
+        // A's vertices placed in B's frame by the inverse pose in double,
+        // within the margin of vertices_deep_inside, and for a vertex far
+        // from B (beyond its box) within unapply_widening of its distance
+        // from the pose's origin.
         const double placed_margin = 2 * frame_margin + b_.scene().scale * pose_scale_widening;
+        const auto placed_outside = [&](std::size_t e) {
+            const point<double>& v = as.vertex(e);
+            const double reach = std::fabs(v.x - t.tx) + std::fabs(v.y - t.ty);
+            return in_b->excludes(t.unapply_in_double(v), placed_margin + unapply_widening * reach);
+        };
         const auto a_ring_may_fit = [&](std::size_t r) {
             if (finite && !b_box.contains(a_ring_boxes_[r])) return false;
             if (!in_b) {
                 containment_scanned_ += b_.size();
                 return true;
             }
-            if (!ring_certainly_outside(as, r, [&](std::size_t e) {
-                    return in_b->excludes(t.unapply_in_double(as.vertex(e)), placed_margin);
-                }))
-                return true;
+            if (!ring_certainly_outside(as, r, placed_outside)) return true;
             tally(&detector_statistics::containment_rings_excluded);
             return false;
         };

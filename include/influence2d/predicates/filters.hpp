@@ -61,6 +61,14 @@ inline constexpr double sqrt_widening = 1e-12;
 /// covers it with room.
 inline constexpr double pose_scale_widening = 1e-15;
 
+/// The relative error of rotation_pose::unapply_in_double, per coordinate,
+/// against the exact preimage R^-1 (q - t) of the pose's doubles: with x, y
+/// the differences q - t, the two subtractions round by u = 2^-53 of |x| and
+/// |y|, the two products and their sum by about 2u of |x| + |y|, and taking
+/// R^T for R^-1 errs by the scale factor c^2 + s^2, within 2u of 1: in all
+/// less than 8u (|x| + |y|) = 2^-50 (|x| + |y|); 2^-49 doubles it.
+inline constexpr double unapply_widening = 0x1p-49;
+
 /// The widening, in radians, of a cone's angular range in the cone index
 /// beyond NT's filter_slack: std::atan2 is within a few ulps (below 1e-15
 /// rad) of the true angle of its rounded arguments; 1e-12 covers it.

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "influence2d/core/box.hpp"
@@ -57,6 +58,8 @@ public:
     /// gets no deep cell.
     explicit interior_cells(const polygon& shape) {
         const box& b = shape.bounds();
+        box_ = b;
+        has_box_ = shape.size() > 0 && b.min_x <= b.max_x && b.min_y <= b.max_y;
         const double width = b.max_x - b.min_x, height = b.max_y - b.min_y;
         if (shape.size() < 3 || !(width > 0) || !(height > 0) || !std::isfinite(width * height)) return;
         const double wanted = std::clamp(static_cast<double>(shape.size()) * cells_per_edge, min_cells, max_cells);
@@ -94,11 +97,13 @@ public:
     bool holds(const point<double>& q, double margin) const { return in_deep(bits_, q, margin); }
 
     /// Whether every point within `margin` of q certainly lies outside the
-    /// polygon's closed region: q's cell (found in double) is deep outside
-    /// and the margin is at most half a side. False for a point off the grid
-    /// (beyond the polygon's box: the caller's box tests answer those), a
-    /// NaN coordinate, or a margin that is not a number.
-    bool excludes(const point<double>& q, double margin) const { return in_deep(outside_bits_, q, margin); }
+    /// polygon's closed region: q lies beyond the polygon's box by more
+    /// than the margin (beyond_box), or q's cell (found in double) is deep
+    /// outside and the margin is at most half a side. False for a NaN or
+    /// infinite coordinate, or a margin that is not a number.
+    bool excludes(const point<double>& q, double margin) const {
+        return beyond_box(q, margin) || in_deep(outside_bits_, q, margin);
+    }
 
     /// Whether no cell is deep inside (holds() is then always false).
     bool empty() const { return bits_.empty(); }
@@ -131,11 +136,29 @@ private:
     /// marked, both cells when it runs along their shared side, and a
     /// point's computed cell is within the slack of its own.
     static constexpr double marking_slack = 0x1p-40;
+    /// beyond_box's widening: 2^-50 = 8u against the 2u or so of rounding
+    /// it covers; and the least normal double for gaps that underflow.
+    static constexpr double box_slack = 0x1p-50;
+    static constexpr double min_normal = std::numeric_limits<double>::min();
     /// Cells smaller than 8 slacks are not built: the slack and a margin of
     /// half a side then stay below one side, so that every point within
     /// the margin of a point whose computed cell is c lies in c's 3 x 3
     /// block.
     static constexpr double max_slack_per_side = 0.125;
+
+    /// Whether q lies beyond the polygon's box by more than `margin` on one
+    /// axis: a gap g computed in double (one subtraction, within u = 2^-53
+    /// of |q| plus the box's coordinate) exceeds the margin widened by
+    /// box_slack of both. The widening covers the gap's rounding and the
+    /// few of its own right side (each within u of it) with room.
+    bool beyond_box(const point<double>& q, double margin) const {
+        if (!has_box_) return false;
+        const auto beyond = [&](double gap, double x, double side) {
+            return gap > margin + box_slack * (std::fabs(x) + std::fabs(side) + margin) + min_normal;
+        };
+        return beyond(box_.min_x - q.x, q.x, box_.min_x) || beyond(q.x - box_.max_x, q.x, box_.max_x) ||
+               beyond(box_.min_y - q.y, q.y, box_.min_y) || beyond(q.y - box_.max_y, q.y, box_.max_y);
+    }
 
     /// Whether q's cell (found in double) is set in `deep` and the margin
     /// is at most half a side (see holds).
@@ -254,6 +277,8 @@ private:
         return inside;
     }
 
+    box box_;               ///< the polygon's box
+    bool has_box_ = false;  ///< whether box_ holds a point of the polygon
     double x0_ = 0, y0_ = 0, side_ = 0, inverse_side_ = 0, slack_ = 0;
     std::size_t nx_ = 0, ny_ = 0, words_ = 0, deep_ = 0, deep_outside_ = 0;
     std::vector<std::uint64_t> bits_;          ///< row j's bits at j words_: bit i of the row is cell (i, j) deep
