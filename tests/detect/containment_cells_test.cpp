@@ -7,11 +7,15 @@
 // polygons along a long shared border whose islands lie in the other's lakes
 // (poses just apart by 2^-30 to 0.1, and crossing), with an island in the
 // other's land in some rounds, and on random multipolygons at 2^20 from the
-// origin; the cells drop many rings.
+// origin, and on real neighbours (data/real/neighbours.wkt: Chile and
+// Argentina, Indonesia and Malaysia, multipolygons of many islands) pushed
+// apart along the line between their boxes' centres until they just miss
+// or just meet, as CGAL's reference decides; the cells drop many rings.
 
 #include <catch2/catch.hpp>
 
 #include "support/effort.hpp"
+#include "support/neighbours.hpp"
 #include "support/random_scenes.hpp"
 #include "support/reference_frames.hpp"
 #include "support/shapes.hpp"
@@ -20,6 +24,7 @@
 #include <vector>
 
 #include "influence2d/detect/detector.hpp"
+#include "verification/cgal_reference.hpp"
 
 using namespace influence2d;
 using test_scenes::rng;
@@ -46,6 +51,37 @@ polygon coast(std::size_t n, double side, std::size_t lakes, bool landed) {
     }
     if (landed) rings.push_back(test_shapes::square_ring(3, -5 * side - 0.25, 0.5));
     return polygon(rings);
+}
+
+/// Poses of B about A: a random turn about B's box centre and shift, then
+/// B pushed along the line from A's box centre to its own until CGAL's
+/// reference finds it apart, and the push halved 20 times between the last
+/// push that met and the first apart: the pose just apart and the pose just
+/// meeting, for each of `count` starts.
+std::vector<pose> pushed_apart(const polygon& a, const polygon& b, std::size_t count, rng& g) {
+    const verification::cgal_reference ref(a, b, 0);
+    const point<double> ca = a.bounds().centre(), cb = b.bounds().centre();
+    std::vector<pose> out;
+    for (std::size_t k = 0; k < count; ++k) {
+        const double theta = g.uniform(-0.02, 0.02);
+        pose q{g.uniform(-0.5, 0.5), g.uniform(-0.5, 0.5), theta};
+        q.tx += cb.x - (std::cos(theta) * cb.x - std::sin(theta) * cb.y);
+        q.ty += cb.y - (std::sin(theta) * cb.x + std::cos(theta) * cb.y);
+        const double dx = cb.x - ca.x, dy = cb.y - ca.y, length = std::hypot(dx, dy);
+        const auto at = [&](double t) { return pose{q.tx + t * dx / length, q.ty + t * dy / length, theta}; };
+        double meets = 0, apart = 0.01;
+        while (ref.collide(at(apart)).collides) {
+            meets = apart;
+            apart *= 2;
+        }
+        for (int i = 0; i < 20; ++i) {
+            const double m = (meets + apart) / 2;
+            (ref.collide(at(m)).collides ? meets : apart) = m;
+        }
+        out.push_back(at(apart));
+        out.push_back(at(meets));
+    }
+    return out;
 }
 
 }  // namespace
@@ -95,4 +131,30 @@ TEST_CASE("containment cells: rings dropped by a vertex deep outside answer as t
     CHECK(met * 5 > frames);
     CHECK((frames - met) * 5 > frames);
     CHECK(excluded > frames);
+}
+
+TEST_CASE("containment cells: real neighbours pushed just apart answer as the exact reference",
+          "[detect][exact][real]") {
+    const std::vector<polygon> layer = test_data::neighbours();
+    REQUIRE(layer.size() == 4);
+    rng g(2632);
+    const std::size_t count = static_cast<std::size_t>(test_effort::scaled(6));
+    std::size_t frames = 0, met = 0, excluded = 0;
+    for (const auto& [i, j] : {std::pair<int, int>{0, 1}, {1, 0}, {2, 3}, {3, 2}}) {
+        const std::vector<pose> poses = pushed_apart(layer[i], layer[j], count, g);
+        for (const bool built : {true, false}) {
+            INFO("polygons " << i << ", " << j << " built " << built);
+            const test_frames::reference_run run =
+                test_frames::run_against_reference(layer[i], layer[j], poses, 0, built);
+            frames += poses.size();
+            met += run.met;
+            excluded += run.exact_counters.containment_rings_excluded;
+        }
+    }
+    // Half the poses just apart; most of the others just meeting (a start
+    // already apart gives two poses apart); the cells drop rings.
+    INFO(met << " of " << frames << " frames met, " << excluded << " rings excluded");
+    CHECK(met * 4 > frames);
+    CHECK((frames - met) * 2 >= frames);
+    CHECK(excluded * 2 > frames);
 }

@@ -10,34 +10,22 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <fstream>
-#include <string>
 #include <vector>
 
 #include "support/effort.hpp"
+#include "support/neighbours.hpp"
 #include "support/random.hpp"
 #include "support/shapes.hpp"
 
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/detector.hpp"
 #include "influence2d/exact/certified_detector.hpp"
-#include "influence2d/io/wkt.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "verification/cgal_reference.hpp"
 
 using namespace influence2d;
 
 namespace {
-
-/// The file's polygons, one per line: Chile, Argentina, Indonesia, Malaysia.
-std::vector<polygon> neighbours() {
-    const std::string path = std::string(INFLUENCE2D_DATA_DIR) + "/real/neighbours.wkt";
-    std::ifstream in(path);
-    std::vector<polygon> out;
-    for (std::string line; std::getline(in, line);)
-        if (!line.empty()) out.push_back(read_wkt(line, path));
-    return out;
-}
 
 /// Poses about the point o: the identity (the shared border touches), a
 /// translation by a few of o's units in the last place, a turn by up to
@@ -62,7 +50,7 @@ std::vector<pose> poses_about(point<double> o, std::size_t count, std::uint64_t 
 
 TEST_CASE("real neighbours: exact modes answer as the exact reference at their coordinates and far from the origin",
           "[detect][real]") {
-    const std::vector<polygon> layer = neighbours();
+    const std::vector<polygon> layer = test_data::neighbours();
     REQUIRE(layer.size() == 4);
     const std::size_t count = static_cast<std::size_t>(test_effort::scaled(301));
     std::size_t met = 0, apart = 0, asked = 0;
