@@ -644,6 +644,7 @@ private:
             return test_pair(e, j, b_.approximate_now(j), b_.approximate_now(next_b(j)), f.margin) && !witnessing();
         };
         const double grow = distance() + f.margin, line_grow = distance() + 2 * f.margin;
+        const edge_tree::turn_of turn{std::fabs(f.t.c), std::fabs(f.t.s)};
         bool met;
         if (b_.size() <= a_->shape.size()) {
             // B's circles posed into A's frame; B's edges query A's subtrees.
@@ -651,7 +652,7 @@ private:
             const auto ends = [&](std::uint32_t j) {
                 return std::pair<point<double>, point<double>>(b_.approximate_now(j), b_.approximate_now(next_b(j)));
             };
-            met = a_tree().query_pairs(b_tree(), place, circle_grow, grow, line_grow, ends, test);
+            met = a_tree().query_pairs(b_tree(), place, turn, circle_grow, grow, line_grow, ends, test);
         } else {
             // The larger B in its own frame: A's circles and edges placed
             // there by the inverse pose, evaluated in double (rounding of the
@@ -665,7 +666,7 @@ private:
                 return std::pair<point<double>, point<double>>(place(as.vertex(e)), place(as.vertex(as.next(e))));
             };
             const double a_circle_grow = distance() + 2 * f.margin + a_->radius * pose_scale_widening;
-            met = b_tree().query_pairs(a_tree(), place, a_circle_grow, grow, line_grow, ends,
+            met = b_tree().query_pairs(a_tree(), place, turn, a_circle_grow, grow, line_grow, ends,
                                        [&](std::uint32_t j, std::uint32_t e) { return test(e, j); });
         }
         if (met) return {true, {}};

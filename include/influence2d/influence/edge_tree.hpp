@@ -73,13 +73,23 @@ public:
         return query_below(0, u, v, grow, line_grow, visit);
     }
 
+    /// The rotation of a placing, by the absolute values of its cosine and
+    /// sine doubles (the same for a pose and its inverse).
+    struct turn_of {
+        double abs_c = 1, abs_s = 0;
+    };
+
     /// Calls visit(e, f) for each edge e of this tree (in its own frame) and
     /// edge f of `moving` (a tree of another polygon in that polygon's own
     /// frame, placed into this frame by place(point) -> point<double>, a
-    /// rigid motion evaluated in double) that may come within the distance
-    /// the grows stand for. Pairs of nodes are pruned by the moving node's
-    /// bounding circle, its centre placed in double, kept farther than
-    /// its radius + `circle_grow` from the static node's box; below a moving
+    /// rigid motion evaluated in double, turning as `turn` says) that may
+    /// come within the distance the grows stand for. Pairs of nodes are
+    /// pruned by the moving node's bounding circle, its centre placed in
+    /// double, kept farther than its radius + `circle_grow` from the static
+    /// node's box, or by the moving node's box turned about that centre
+    /// (the box of the turned box, grown by `circle_grow`) missing the
+    /// static box on one axis: a node of a long, thin chain of edges (a
+    /// border) has a circle far wider than its box; below a moving
     /// leaf each of its edges, its ends posed by ends(f) (a pair of points in
     /// this frame), queries the static subtree as query() does with `grow`
     /// and `line_grow`. `circle_grow` must cover the separation distance and
@@ -90,11 +100,12 @@ public:
     ///   stack <- (root, root)
     ///   while stack: (s, m) <- pop
     ///       if dist(posed centre of m, box of s) > radius of m + circle_grow: prune
+    ///       if m's box turned and grown misses the box of s: prune
     ///       m a leaf: each edge of m queries s's subtree with its posed ends
     ///       else split the node with the larger circle (m when s is a leaf)
     template <class Place, class Ends, class Visit>
-    bool query_pairs(const edge_tree& moving, Place&& place, double circle_grow, double grow, double line_grow,
-                     Ends&& ends, Visit&& visit) const {
+    bool query_pairs(const edge_tree& moving, Place&& place, turn_of turn, double circle_grow, double grow,
+                     double line_grow, Ends&& ends, Visit&& visit) const {
         if (nodes_.empty() || moving.nodes_.empty()) return false;
         struct pair_of {
             std::uint32_t s, m;
@@ -113,6 +124,15 @@ public:
             const double dy = std::max({s.bounds.min_y - c.y, 0.0, c.y - s.bounds.max_y});
             // (NaN: the comparison fails and the pair stays.)
             if (filter_length(dx, dy) > m.radius + circle_grow) continue;
+            // The moving node's box turned: its posed points lie within
+            // |c| hx + |s| hy of the posed centre along x, |s| hx + |c| hy
+            // along y (hx, hy the box's half sides), exactly for the
+            // pose's doubles c and s; turned_extent_slack covers the
+            // rounding of these extents.
+            const double hx = (m.bounds.max_x - m.bounds.min_x) * 0.5, hy = (m.bounds.max_y - m.bounds.min_y) * 0.5;
+            const double ex = (turn.abs_c * hx + turn.abs_s * hy) * (1 + turned_extent_slack) + circle_grow;
+            const double ey = (turn.abs_s * hx + turn.abs_c * hy) * (1 + turned_extent_slack) + circle_grow;
+            if (dx > ex || dy > ey) continue;
             if (m.count != 0) {
                 for (std::uint32_t j = m.first; j < m.first + m.count; ++j) {
                     const std::uint32_t f = moving.order_[j];
@@ -164,6 +184,12 @@ public:
 
 private:
     static constexpr std::uint32_t leaf_size = 4;
+    /// The relative widening of a turned box's extents: a half side (a
+    /// difference and a halving) rounds by u = 2^-53, the two products and
+    /// their sum by 3u more; 2^-50 = 8u covers the 4u, and its own product
+    /// with room. (The centre's placing and the distance's rounding are
+    /// circle_grow's, as for the circles.)
+    static constexpr double turned_extent_slack = 0x1p-50;
     /// Median splits over at most 2^32 edges in leaves of up to 4: at most 31
     /// levels below the root; 32 with room.
     static constexpr std::size_t max_depth = 32;
