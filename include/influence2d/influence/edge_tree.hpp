@@ -122,17 +122,16 @@ public:
             const point<double> c = place(m.center);
             const double dx = std::max({s.bounds.min_x - c.x, 0.0, c.x - s.bounds.max_x});
             const double dy = std::max({s.bounds.min_y - c.y, 0.0, c.y - s.bounds.max_y});
-            // (NaN: the comparison fails and the pair stays.)
-            if (filter_length(dx, dy) > m.radius + circle_grow) continue;
             // The moving node's box turned: its posed points lie within
             // |c| hx + |s| hy of the posed centre along x, |s| hx + |c| hy
             // along y (hx, hy the box's half sides), exactly for the
             // pose's doubles c and s; turned_extent_slack covers the
-            // rounding of these extents.
+            // rounding of these extents. Asked first: it needs no root.
             const double hx = (m.bounds.max_x - m.bounds.min_x) * 0.5, hy = (m.bounds.max_y - m.bounds.min_y) * 0.5;
             const double ex = (turn.abs_c * hx + turn.abs_s * hy) * (1 + turned_extent_slack) + circle_grow;
             const double ey = (turn.abs_s * hx + turn.abs_c * hy) * (1 + turned_extent_slack) + circle_grow;
-            if (dx > ex || dy > ey) continue;
+            // (NaN: the comparisons fail and the pair stays.)
+            if (dx > ex || dy > ey || filter_length(dx, dy) > m.radius + circle_grow) continue;
             if (m.count != 0) {
                 for (std::uint32_t j = m.first; j < m.first + m.count; ++j) {
                     const std::uint32_t f = moving.order_[j];
