@@ -76,7 +76,8 @@ public:
     /// The rotation of a placing, by the absolute values of its cosine and
     /// sine doubles (the same for a pose and its inverse).
     struct turn_of {
-        double abs_c = 1, abs_s = 0;
+        double abs_c = 1;  ///< |cos|: the absolute value of the cosine double
+        double abs_s = 0;  ///< |sin|: the absolute value of the sine double
     };
 
     /// Calls visit(e, f) for each edge e of this tree (in its own frame) and
