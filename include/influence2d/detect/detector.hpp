@@ -507,12 +507,20 @@ private:
         }
         const interior_cells& in_b = b_.scene().interior();
         if (in_b.empty()) return false;
-        const double margin = 2 * f.margin + b_.scene().scale * pose_scale_widening;
+        const double margin = placed_in_b_margin(f.margin);
         const polygon& as = a_->shape;
         const auto placed_deep = [&](std::uint32_t e) {
             return in_b.holds(f.t.unapply_in_double(as.vertex(e)), margin);
         };
         return deep_a_.found(placed_deep, a_->reaching().toward(f.p.x - o.x, f.p.y - o.y));
+    }
+
+    /// The margin of a vertex of A placed in B's frame by the inverse pose
+    /// in double (rotation_pose::unapply_in_double) and looked up in B's
+    /// cells: twice the frame margin, plus B's scale times
+    /// pose_scale_widening for the pose's scale factor.
+    double placed_in_b_margin(double frame_margin) const {
+        return 2 * frame_margin + b_.scene().scale * pose_scale_widening;
     }
 
     /// Whether two convex polygons are small enough for the separating-edge
@@ -957,10 +965,10 @@ private:
         const polygon& as = a_->shape;
         const rotation_pose& t = b_.placement();
         // A's vertices placed in B's frame by the inverse pose in double,
-        // within the margin of vertices_deep_inside, and for a vertex far
-        // from B (beyond its box) within unapply_widening of its distance
-        // from the pose's origin.
-        const double placed_margin = 2 * frame_margin + b_.scene().scale * pose_scale_widening;
+        // within placed_in_b_margin, and for a vertex far from B (beyond its
+        // box) within unapply_widening of its distance from the pose's
+        // origin.
+        const double placed_margin = placed_in_b_margin(frame_margin);
         const auto placed_outside = [&](std::size_t e) {
             const point<double>& v = as.vertex(e);
             const double reach = std::fabs(v.x - t.tx) + std::fabs(v.y - t.ty);
@@ -968,13 +976,7 @@ private:
         };
         const auto a_ring_may_fit = [&](std::size_t r) {
             if (finite && !b_box.contains(a_ring_boxes_[r])) return false;
-            if (!in_b) {
-                containment_scanned_ += b_.size();
-                return true;
-            }
-            if (!ring_certainly_outside(as, r, placed_outside)) return true;
-            tally(&detector_statistics::containment_rings_excluded);
-            return false;
+            return ring_may_be_inside(in_b, b_.size(), as, r, placed_outside);
         };
         const polygon& bs = b_.shape();
         const point<double>& o = as.centroid();
@@ -983,18 +985,29 @@ private:
             if (!b_may_be_inside_a) return false;
             const point<double> v = approximate(bs.ring_begin(r));
             if (filter_length(v.x - o.x, v.y - o.y) > a_reach) return false;  // NaN: may be
-            if (!in_a) {
-                containment_scanned_ += as.size();
-                return true;
-            }
-            if (!ring_certainly_outside(bs, r,
-                                        [&](std::size_t j) { return in_a->excludes(approximate(j), frame_margin); }))
-                return true;
-            tally(&detector_statistics::containment_rings_excluded);
-            return false;
+            return ring_may_be_inside(in_a, as.size(), bs, r,
+                                      [&](std::size_t j) { return in_a->excludes(approximate(j), frame_margin); });
         };
         return one_contains_other<NT, with_holes>(*a_, b_, std::optional<double>(n), a_ring_may_fit, b_ring_may_fit,
                                                   std::optional<double>(frame_margin));
+    }
+
+    /// Whether ring r of `shape`, past the box and circle filters, may lie
+    /// in the other polygon (of `other_edges` edges): without the other's
+    /// cells (`cells` null) yes, its locate counted as a scan of the other
+    /// polygon for containment_cells_pay; with them, unless
+    /// ring_certainly_outside finds it outside (`outside(j)` looks vertex j
+    /// up in them), which is tallied.
+    template <class Outside>
+    bool ring_may_be_inside(const interior_cells* cells, std::size_t other_edges, const polygon& shape, std::size_t r,
+                            Outside&& outside) {
+        if (!cells) {
+            containment_scanned_ += other_edges;
+            return true;
+        }
+        if (!ring_certainly_outside(shape, r, outside)) return true;
+        tally(&detector_statistics::containment_rings_excluded);
+        return false;
     }
 
     /// Whether ring r of `shape` certainly lies outside the other polygon:

@@ -59,7 +59,6 @@ public:
     explicit interior_cells(const polygon& shape) {
         const box& b = shape.bounds();
         box_ = b;
-        has_box_ = shape.size() > 0 && b.min_x <= b.max_x && b.min_y <= b.max_y;
         const double width = b.max_x - b.min_x, height = b.max_y - b.min_y;
         if (shape.size() < 3 || !(width > 0) || !(height > 0) || !std::isfinite(width * height)) return;
         const double wanted = std::clamp(static_cast<double>(shape.size()) * cells_per_edge, min_cells, max_cells);
@@ -152,7 +151,7 @@ private:
     /// box_slack of both. The widening covers the gap's rounding and the
     /// few of its own right side (each within u of it) with room.
     bool beyond_box(const point<double>& q, double margin) const {
-        if (!has_box_) return false;
+        if (box_.empty()) return false;
         const auto beyond = [&](double gap, double x, double side) {
             return gap > margin + box_slack * (std::fabs(x) + std::fabs(side) + margin) + min_normal;
         };
@@ -277,8 +276,7 @@ private:
         return inside;
     }
 
-    box box_;               ///< the polygon's box
-    bool has_box_ = false;  ///< whether box_ holds a point of the polygon
+    box box_;  ///< the polygon's box (empty for an empty polygon)
     double x0_ = 0, y0_ = 0, side_ = 0, inverse_side_ = 0, slack_ = 0;
     std::size_t nx_ = 0, ny_ = 0, words_ = 0, deep_ = 0, deep_outside_ = 0;
     std::vector<std::uint64_t> bits_;          ///< row j's bits at j words_: bit i of the row is cell (i, j) deep
