@@ -273,8 +273,8 @@ std::string table(const std::vector<row>& rows) {
 std::string csv(const std::vector<row>& rows) {
     std::string t = "pair,static_vertices,moving_vertices,order,method,us_per_pose,poses,collisions,wrong\n";
     for (const row& r : rows)
-        t += "\"" + r.pair + "\"," + std::to_string(r.static_vertices) + "," + std::to_string(r.moving_vertices) + "," +
-             r.order + ",\"" + r.method + "\"," + fixed(r.us, 3) + "," + std::to_string(r.poses) + "," +
+        t += "\"" + r.pair + "\"," + std::to_string(r.static_vertices) + "," + std::to_string(r.moving_vertices) +
+             ",\"" + r.order + "\",\"" + r.method + "\"," + fixed(r.us, 3) + "," + std::to_string(r.poses) + "," +
              std::to_string(r.collisions) + "," + std::to_string(r.wrong) + "\n";
     return t;
 }
