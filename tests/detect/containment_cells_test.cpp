@@ -89,7 +89,7 @@ std::vector<pose> pushed_apart(const polygon& a, const polygon& b, std::size_t c
 TEST_CASE("containment cells: rings dropped by a vertex deep outside answer as the exact reference",
           "[detect][exact]") {
     rng g(2631);
-    std::size_t frames = 0, met = 0, excluded = 0;
+    std::size_t frames = 0, met = 0, excluded = 0, tree_located = 0;
     const int rounds = test_effort::scaled(12);
     for (int round = 0; round < rounds; ++round) {
         polygon a, b;
@@ -124,13 +124,17 @@ TEST_CASE("containment cells: rings dropped by a vertex deep outside answer as t
                     frames += poses.size();
                     met += run.met;
                     excluded += run.exact_counters.containment_rings_excluded;
+                    tree_located += run.exact_counters.containment_tree_locates;
                 }
     }
-    // Both answers occur, and the cells drop many rings.
-    INFO(met << " of " << frames << " frames met, " << excluded << " rings excluded");
+    // Both answers occur, the cells drop many rings, and the edge trees
+    // locate others (every answer above checked).
+    INFO(met << " of " << frames << " frames met, " << excluded << " rings excluded, " << tree_located
+             << " located through a tree");
     CHECK(met * 5 > frames);
     CHECK((frames - met) * 5 > frames);
     CHECK(excluded > frames);
+    CHECK(tree_located > 0);
 }
 
 TEST_CASE("containment cells: real neighbours pushed just apart answer as the exact reference",
@@ -139,7 +143,7 @@ TEST_CASE("containment cells: real neighbours pushed just apart answer as the ex
     REQUIRE(layer.size() == 4);
     rng g(2632);
     const std::size_t count = static_cast<std::size_t>(test_effort::scaled(6));
-    std::size_t frames = 0, met = 0, excluded = 0;
+    std::size_t frames = 0, met = 0, excluded = 0, tree_located = 0;
     for (const auto& [i, j] : {std::pair<int, int>{0, 1}, {1, 0}, {2, 3}, {3, 2}}) {
         const std::vector<pose> poses = pushed_apart(layer[i], layer[j], count, g);
         for (const bool built : {true, false}) {
@@ -149,12 +153,16 @@ TEST_CASE("containment cells: real neighbours pushed just apart answer as the ex
             frames += poses.size();
             met += run.met;
             excluded += run.exact_counters.containment_rings_excluded;
+            tree_located += run.exact_counters.containment_tree_locates;
         }
     }
     // Half the poses just apart; most of the others just meeting (a start
-    // already apart gives two poses apart); the cells drop rings.
-    INFO(met << " of " << frames << " frames met, " << excluded << " rings excluded");
+    // already apart gives two poses apart); the cells drop rings, the edge
+    // trees locate others.
+    INFO(met << " of " << frames << " frames met, " << excluded << " rings excluded, " << tree_located
+             << " located through a tree");
     CHECK(met * 4 > frames);
     CHECK((frames - met) * 2 >= frames);
     CHECK(excluded * 2 > frames);
+    CHECK(tree_located > 0);
 }

@@ -4,7 +4,9 @@
 /// Containment without boundary contact (docs/method.md, "Containment").
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
+#include <type_traits>
 
 #include "influence2d/covering/inclusion.hpp"
 #include "influence2d/predicates/distance.hpp"
@@ -12,6 +14,25 @@
 #include "influence2d/scene/prepared.hpp"
 
 namespace influence2d {
+
+/// What a ring filter of one_contains_other knows of a ring before it is
+/// located: that it lies outside the other polygon, or inside it, or
+/// neither (the ring is then located). A filter may return a bool instead:
+/// true for unknown, false for outside.
+enum class ring_fate : std::uint8_t {
+    outside,  ///< the ring certainly lies outside the other polygon's region
+    inside,   ///< the ring certainly lies in the other polygon's closed region
+    unknown   ///< the ring is to be located
+};
+
+/// A ring filter's answer as a ring_fate.
+template <class Verdict>
+ring_fate fate_of(Verdict verdict) {
+    if constexpr (std::is_same_v<Verdict, bool>)
+        return verdict ? ring_fate::unknown : ring_fate::outside;
+    else
+        return verdict;
+}
 
 /// A ring filter that keeps every ring: each is located.
 struct every_ring {
@@ -57,11 +78,14 @@ location located_in_a(const static_scene<NT>& a, posed_polygon<NT>& b, std::opti
 /// Whether the closed regions of A and the posed B meet, given that their
 /// boundaries do not (the caller found no boundary pair).
 ///
-///   for each ring r of B kept by b_ring_may_be_in_a:
-///       if B's ring r's first vertex is not outside A: meet
-///   for each ring r of A kept by a_ring_may_be_in_b:
-///       if its first vertex is farther than reach from B's centroid: skip
-///       if A's ring r's first vertex is not outside B: meet
+///   for each ring r of B, by b_ring_may_be_in_a's fate:
+///       outside: skip; inside: meet
+///       unknown: if B's ring r's first vertex is not outside A: meet
+///   for each ring r of A, by a_ring_may_be_in_b's fate:
+///       outside: skip; inside: meet
+///       unknown: if its first vertex is farther than reach from B's
+///           centroid: skip
+///           if A's ring r's first vertex is not outside B: meet
 ///   disjoint
 ///
 /// Why one vertex per ring suffices: no ring of one polygon meets a ring of
@@ -74,7 +98,9 @@ location located_in_a(const static_scene<NT>& a, posed_polygon<NT>& b, std::opti
 /// whichever part it is. B inside a hole of A does not meet A.
 ///
 /// The filters are the caller's shortcuts and must be valid per ring: a ring
-/// they drop must certainly lie outside the other polygon. `reach`, when
+/// they drop must certainly lie outside the other polygon, one they call
+/// inside certainly in its closed region (a ring_fate, or a bool: false for
+/// outside). `reach`, when
 /// given, bounds the distance from B's centroid to every point of B (with any
 /// rounding margin). Exact when NT is; a ring of B costs a locate in A
 /// (located_in_a: A's cone index, or in an exact NT given `b_margin` the
@@ -91,13 +117,19 @@ bool one_contains_other(const static_scene<NT>& a, posed_polygon<NT>& b, std::op
                         AFilter a_ring_may_be_in_b = {}, BFilter b_ring_may_be_in_a = {},
                         std::optional<double> b_margin = std::nullopt) {
     const polygon& bs = b.shape();
-    for (std::size_t r = 0; r < (MultiRing ? bs.ring_count() : 1); ++r)
-        if (b_ring_may_be_in_a(r) && located_in_a(a, b, b_margin, bs.ring_begin(r)) != location::outside) return true;
+    for (std::size_t r = 0; r < (MultiRing ? bs.ring_count() : 1); ++r) {
+        const ring_fate fate = fate_of(b_ring_may_be_in_a(r));
+        if (fate == ring_fate::inside) return true;
+        if (fate == ring_fate::unknown && located_in_a(a, b, b_margin, bs.ring_begin(r)) != location::outside)
+            return true;
+    }
     const NT reach_nt = number_traits<NT>::from_double(reach.value_or(0));
     const NT reach2 = reach_nt * reach_nt;
     const polygon& as = a.shape;
     for (std::size_t r = 0; r < (MultiRing ? as.ring_count() : 1); ++r) {
-        if (!a_ring_may_be_in_b(r)) continue;
+        const ring_fate fate = fate_of(a_ring_may_be_in_b(r));
+        if (fate == ring_fate::inside) return true;
+        if (fate == ring_fate::outside) continue;
         const point<NT>& v = a.covering.start(as.ring_begin(r));
         if (reach && compare_values<NT>(squared_distance(v, b.centroid()), reach2) > 0) continue;
         if (located_in(b, b_margin, v) != location::outside) return true;

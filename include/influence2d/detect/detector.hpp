@@ -22,6 +22,7 @@
 #include "influence2d/detect/result.hpp"
 #include "influence2d/influence/edge_grid.hpp"
 #include "influence2d/influence/edge_tree.hpp"
+#include "influence2d/influence/located_through_tree.hpp"
 #include "influence2d/predicates/extended_area.hpp"
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/predicates/segments.hpp"
@@ -50,6 +51,7 @@ struct detector_statistics {
     std::size_t last_pair_frames = 0;    ///< frames answered by the edge pair that met last (last_pair_meets)
     std::size_t interior_frames = 0;     ///< jumps answered by a vertex deep in the other region (vertices_deep_inside)
     std::size_t containment_rings_excluded = 0;  ///< rings containment found outside the other polygon by its cells
+    std::size_t containment_tree_locates = 0;    ///< rings containment located through the other polygon's edge tree
 };
 
 namespace detector_detail {
@@ -154,8 +156,12 @@ struct distance_state {
 ///   containment (no pair met): the regions meet iff one contains a ring of
 ///       the other; a ring's vertex outside the other polygon's bounding
 ///       circle or box (in double, widened) is outside it without a locate;
-///       in an exact or filtered NT, A's vertices are located in B by
-///       crossings settled in double first (one_contains_other)
+///       so is one with a vertex deep outside the other's cells, when built;
+///       a ring whose vertex the other polygon's edge tree, when built,
+///       locates in double for certain takes that answer
+///       (certain_location_through_tree); in an exact or filtered NT, A's
+///       vertices are located in B by crossings settled in double first
+///       (one_contains_other)
 ///
 /// Features (features.hpp) are chosen at compile time; `detector<NT>` has them
 /// all. Without `witness` and `distance` the frame stops at the first meeting
@@ -969,45 +975,69 @@ private:
         // box) within unapply_widening of its distance from the pose's
         // origin.
         const double placed_margin = placed_in_b_margin(frame_margin);
-        const auto placed_outside = [&](std::size_t e) {
+        const auto placed_in_b = [&](std::size_t e) {
             const point<double>& v = as.vertex(e);
             const double reach = std::fabs(v.x - t.tx) + std::fabs(v.y - t.ty);
-            return in_b->excludes(t.unapply_in_double(v), placed_margin + unapply_widening * reach);
+            return std::pair<point<double>, double>(t.unapply_in_double(v), placed_margin + unapply_widening * reach);
         };
-        const auto a_ring_may_fit = [&](std::size_t r) {
-            if (finite && !b_box.contains(a_ring_boxes_[r])) return false;
-            return ring_may_be_inside(in_b, b_.size(), as, r, placed_outside);
+        const auto placed_outside = [&](std::size_t e) {
+            const auto [q, margin] = placed_in_b(e);
+            return in_b->excludes(q, margin);
         };
         const polygon& bs = b_.shape();
+        const auto a_ring_fate = [&](std::size_t r) {
+            if (finite && !b_box.contains(a_ring_boxes_[r])) return ring_fate::outside;
+            return ring_fate_in(in_b, b_.scene().tree_if_built(), bs, as, r, placed_outside, placed_in_b);
+        };
         const point<double>& o = as.centroid();
         const double a_reach = a_->radius + 2 * frame_margin;
-        const auto b_ring_may_fit = [&](std::size_t r) {
-            if (!b_may_be_inside_a) return false;
+        const auto b_ring_fate = [&](std::size_t r) {
+            if (!b_may_be_inside_a) return ring_fate::outside;
             const point<double> v = approximate(bs.ring_begin(r));
-            if (filter_length(v.x - o.x, v.y - o.y) > a_reach) return false;  // NaN: may be
-            return ring_may_be_inside(in_a, as.size(), bs, r,
-                                      [&](std::size_t j) { return in_a->excludes(approximate(j), frame_margin); });
+            if (filter_length(v.x - o.x, v.y - o.y) > a_reach) return ring_fate::outside;  // NaN: may be
+            // (In a type that is not exact, A's cone index locates B's
+            // vertex in a few cones, cheaper than a descent of A's tree.)
+            const edge_tree* tree =
+                number_traits<NT>::category == number_category::exact ? a_->tree_if_built() : nullptr;
+            return ring_fate_in(
+                in_a, tree, as, bs, r, [&](std::size_t j) { return in_a->excludes(approximate(j), frame_margin); },
+                [&](std::size_t j) { return std::pair<point<double>, double>(approximate(j), frame_margin); });
         };
-        return one_contains_other<NT, with_holes>(*a_, b_, std::optional<double>(n), a_ring_may_fit, b_ring_may_fit,
+        return one_contains_other<NT, with_holes>(*a_, b_, std::optional<double>(n), a_ring_fate, b_ring_fate,
                                                   std::optional<double>(frame_margin));
     }
 
-    /// Whether ring r of `shape`, past the box and circle filters, may lie
-    /// in the other polygon (of `other_edges` edges): without the other's
-    /// cells (`cells` null) yes, its locate counted as a scan of the other
-    /// polygon for containment_cells_pay; with them, unless
-    /// ring_certainly_outside finds it outside (`outside(j)` looks vertex j
-    /// up in them), which is tallied.
-    template <class Outside>
-    bool ring_may_be_inside(const interior_cells* cells, std::size_t other_edges, const polygon& shape, std::size_t r,
-                            Outside&& outside) {
-        if (!cells) {
-            containment_scanned_ += other_edges;
-            return true;
+    /// What is known of ring r of `shape`, past the box and circle filters,
+    /// in the other polygon (`other`, in its own frame):
+    ///   the other's cells built (`cells`) and ring_certainly_outside finds
+    ///   the ring outside them (`outside(j)` looks vertex j up): outside,
+    ///   tallied
+    ///   the other's edge tree built (`tree`): the ring's first vertex,
+    ///   placed in the other's frame within a margin (`placed(j)`, a pair of
+    ///   the point in double and the margin), located through it in double
+    ///   (certain_location_through_tree): inside or outside when that
+    ///   settles it, tallied
+    ///   else unknown, to be located by one_contains_other; without the
+    ///   cells that locate is counted as a scan of the other polygon for
+    ///   containment_cells_pay
+    /// The tree's answer is valid for the ring whichever vertex: with no
+    /// boundary pair the ring lies wholly in one face of the other's rings.
+    template <class Outside, class Placed>
+    ring_fate ring_fate_in(const interior_cells* cells, const edge_tree* tree, const polygon& other,
+                           const polygon& shape, std::size_t r, Outside&& outside, Placed&& placed) {
+        if (cells && ring_certainly_outside(shape, r, outside)) {
+            tally(&detector_statistics::containment_rings_excluded);
+            return ring_fate::outside;
         }
-        if (!ring_certainly_outside(shape, r, outside)) return true;
-        tally(&detector_statistics::containment_rings_excluded);
-        return false;
+        if (tree) {
+            const auto [q, margin] = placed(shape.ring_begin(r));
+            if (const std::optional<location> where = certain_location_through_tree(other, *tree, q, margin)) {
+                tally(&detector_statistics::containment_tree_locates);
+                return *where == location::inside ? ring_fate::inside : ring_fate::outside;
+            }
+        }
+        if (!cells) containment_scanned_ += other.size();
+        return ring_fate::unknown;
     }
 
     /// Whether ring r of `shape` certainly lies outside the other polygon:

@@ -73,6 +73,34 @@ public:
         return query_below(0, u, v, grow, line_grow, visit);
     }
 
+    /// Calls visit(e) for each edge e whose box is not certainly off the ray
+    /// from p towards +x by g (certainly_off_ray: above or below p by more
+    /// than g, or left of it by more than g); inner nodes are pruned by the
+    /// same test. Every edge that may add to the ray's crossings for a
+    /// point within g of p is visited, in time that grows with the edges
+    /// near the ray's line, not with all of them. Stops and returns true as
+    /// soon as visit returns true; returns false once every such edge was
+    /// visited. A NaN coordinate of p prunes nothing.
+    template <class Visit>
+    bool query_ray(const point<double>& p, double g, Visit&& visit) const {
+        if (nodes_.empty()) return false;
+        std::uint32_t stack[max_depth + 2];
+        std::size_t top = 0;
+        stack[top++] = 0;
+        while (top > 0) {
+            const node& k = nodes_[stack[--top]];
+            if (certainly_off_ray(k.bounds, p, g)) continue;
+            if (k.count == 0) {
+                stack[top++] = k.first + 1;
+                stack[top++] = k.first;
+                continue;
+            }
+            for (std::uint32_t i = k.first; i < k.first + k.count; ++i)
+                if (!certainly_off_ray(boxes_[i], p, g) && visit(order_[i])) return true;
+        }
+        return false;
+    }
+
     /// The rotation of a placing, by the absolute values of its cosine and
     /// sine doubles (the same for a pose and its inverse).
     struct turn_of {

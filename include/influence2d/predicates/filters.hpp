@@ -384,6 +384,31 @@ inline int certain_crossing(const point<double>& a, const point<double>& b, cons
     return crossing_unknown;
 }
 
+/// What the edge (a, b), its ends exact in double, adds to the winding
+/// number of the ray from P towards +x (edge_crossing in
+/// covering/inclusion.hpp), for every point P within e of p on each
+/// coordinate, when the doubles settle it; else crossing_unknown. Never
+/// crossing_on_edge: an edge settled is certainly off every such P.
+///   certain_crossing settles it (g = 2e): its answer
+///   both ends' heights off p's by more than 2e, one above and one below
+///   (the edge's direction the same for every such P): P's side of its
+///   line, certain_side_within(a, b, p, e) (which lets the ends move by e
+///   too, a bound that only widens), gives edge_crossing's +1 (upward, P
+///   left), -1 (downward, P right) or 0
+///   otherwise crossing_unknown
+/// With e = 0 an answer is edge_crossing's on the doubles.
+inline int certain_crossing_within(const point<double>& a, const point<double>& b, const point<double>& p, double e) {
+    const double g = 2 * e;
+    const int settled = certain_crossing(a, b, p, g);
+    if (settled != crossing_unknown) return settled;
+    const double above = p.y + g, below = p.y - g;
+    const bool upward = a.y < below && b.y > above, downward = a.y > above && b.y < below;
+    if (!upward && !downward) return crossing_unknown;
+    const int side = certain_side_within(a, b, p, e);
+    if (side == 0) return crossing_unknown;
+    return upward ? (side > 0 ? 1 : 0) : (side < 0 ? -1 : 0);
+}
+
 /// Whether every edge with both ends in box b certainly adds nothing to the
 /// crossings of the ray from P towards +x (certain_crossing's 0 for each,
 /// with the same g): b lies above P or below it by more than g, or left of

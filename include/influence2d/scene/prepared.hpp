@@ -113,6 +113,8 @@ struct static_scene {
     const edge_tree& tree() const {
         return tree_.get([this] { return edge_tree(shape); });
     }
+    /// The edge tree if some caller built it, else nullptr (never builds).
+    const edge_tree* tree_if_built() const { return tree_.if_built(); }
     /// The cells deep in A's region, in A's frame (built on first use;
     /// thread-safe).
     const interior_cells& interior() const {
@@ -176,6 +178,8 @@ struct moving_scene {
     const edge_tree& tree() const {
         return tree_.get([this] { return edge_tree(shape); });
     }
+    /// The edge tree if some caller built it, else nullptr (never builds).
+    const edge_tree* tree_if_built() const { return tree_.if_built(); }
     /// The cells deep in B's region, in B's own frame (built on first use;
     /// thread-safe).
     const interior_cells& interior() const {
