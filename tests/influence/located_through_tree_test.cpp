@@ -10,6 +10,7 @@
 #include "influence2d/influence/edge_tree.hpp"
 #include "influence2d/influence/located_through_tree.hpp"
 #include "support/effort.hpp"
+#include "support/neighbours.hpp"
 #include "support/random_scenes.hpp"
 #include "verification/cgal_reference.hpp"
 
@@ -123,4 +124,34 @@ TEST_CASE("certain_location_through_tree: a point on an edge or at a vertex is n
     CHECK_FALSE(certain_location_through_tree(p, tree, {1, 1}, 1).has_value());  // within 1 of the hole's corner
     // At a vertex's height: the ray runs along the hole's bottom edge.
     CHECK_FALSE(certain_location_through_tree(p, tree, {1, 2}, 0).has_value());
+}
+
+TEST_CASE("certain_location_through_tree: real neighbours' vertices, shared borders exactly, in each other",
+          "[influence][locate][real]") {
+    // Every vertex of one country located in its neighbour (Chile and
+    // Argentina, Indonesia and Malaysia: border vertices shared exactly,
+    // so many lie on the other's boundary), and the same vertices moved by
+    // a small step, with and without a margin.
+    const std::vector<polygon> layer = test_data::neighbours();
+    REQUIRE(layer.size() == 4);
+    std::size_t asked = 0, answered = 0;
+    for (const auto& [host, guest] : {std::pair<int, int>{0, 1}, {1, 0}, {2, 3}, {3, 2}}) {
+        const polygon& p = layer[host];
+        const edge_tree tree(p);
+        const verification::cgal_reference reference(p, p);
+        const polygon& g = layer[guest];
+        for (std::size_t i = 0; i < g.size(); ++i)
+            for (const double step : {0.0, 1e-9, -1e-3})
+                for (const double e : {0.0, 0x1p-40}) {
+                    const point<double> q{g.vertex(i).x + step, g.vertex(i).y - step};
+                    const std::optional<location> where = certain_location_through_tree(p, tree, q, e);
+                    ++asked;
+                    if (!where) continue;
+                    ++answered;
+                    INFO("host " << host << ", vertex " << i << " of " << guest << ", step " << step << ", e " << e);
+                    CHECK(reference.static_region_holds(q.x, q.y) == (*where == location::inside));
+                }
+    }
+    INFO("answered " << answered << " of " << asked);
+    CHECK(answered * 2 > asked);
 }
