@@ -980,14 +980,10 @@ private:
             const double reach = std::fabs(v.x - t.tx) + std::fabs(v.y - t.ty);
             return std::pair<point<double>, double>(t.unapply_in_double(v), placed_margin + unapply_widening * reach);
         };
-        const auto placed_outside = [&](std::size_t e) {
-            const auto [q, margin] = placed_in_b(e);
-            return in_b->excludes(q, margin);
-        };
         const polygon& bs = b_.shape();
         const auto a_ring_fate = [&](std::size_t r) {
             if (finite && !b_box.contains(a_ring_boxes_[r])) return ring_fate::outside;
-            return ring_fate_in(in_b, b_.scene().tree_if_built(), bs, as, r, placed_outside, placed_in_b);
+            return ring_fate_in(in_b, b_.scene().tree_if_built(), bs, as, r, placed_in_b);
         };
         const point<double>& o = as.centroid();
         const double a_reach = a_->radius + 2 * frame_margin;
@@ -999,22 +995,23 @@ private:
             // vertex in a few cones, cheaper than a descent of A's tree.)
             const edge_tree* tree =
                 number_traits<NT>::category == number_category::exact ? a_->tree_if_built() : nullptr;
-            return ring_fate_in(
-                in_a, tree, as, bs, r, [&](std::size_t j) { return in_a->excludes(approximate(j), frame_margin); },
-                [&](std::size_t j) { return std::pair<point<double>, double>(approximate(j), frame_margin); });
+            return ring_fate_in(in_a, tree, as, bs, r, [&](std::size_t j) {
+                return std::pair<point<double>, double>(approximate(j), frame_margin);
+            });
         };
         return one_contains_other<NT, with_holes>(*a_, b_, std::optional<double>(n), a_ring_fate, b_ring_fate,
                                                   std::optional<double>(frame_margin));
     }
 
     /// What is known of ring r of `shape`, past the box and circle filters,
-    /// in the other polygon (`other`, in its own frame):
+    /// in the other polygon (`other`, in its own frame), its vertex j placed
+    /// in the other's frame within a margin by `placed(j)` (a pair of the
+    /// point in double and the margin):
     ///   the other's cells built (`cells`) and ring_certainly_outside finds
-    ///   the ring outside them (`outside(j)` looks vertex j up): outside,
-    ///   tallied
+    ///   the ring outside them (its vertices placed, then looked up):
+    ///   outside, tallied
     ///   the other's edge tree built (`tree`): the ring's first vertex,
-    ///   placed in the other's frame within a margin (`placed(j)`, a pair of
-    ///   the point in double and the margin), located through it in double
+    ///   placed, located through it in double
     ///   (certain_location_through_tree): inside or outside when that
     ///   settles it, tallied
     ///   else unknown, to be located by one_contains_other; without the
@@ -1022,9 +1019,13 @@ private:
     ///   containment_cells_pay
     /// The tree's answer is valid for the ring whichever vertex: with no
     /// boundary pair the ring lies wholly in one face of the other's rings.
-    template <class Outside, class Placed>
+    template <class Placed>
     ring_fate ring_fate_in(const interior_cells* cells, const edge_tree* tree, const polygon& other,
-                           const polygon& shape, std::size_t r, Outside&& outside, Placed&& placed) {
+                           const polygon& shape, std::size_t r, Placed&& placed) {
+        const auto outside = [&](std::size_t j) {
+            const auto [q, margin] = placed(j);
+            return cells->excludes(q, margin);
+        };
         if (cells && ring_certainly_outside(shape, r, outside)) {
             tally(&detector_statistics::containment_rings_excluded);
             return ring_fate::outside;
