@@ -116,6 +116,70 @@ TEST_CASE("box_tree: joins and their parts find each meeting pair once", "[box_t
     CHECK(cross_pairs > 20 * static_cast<std::size_t>(rounds));
 }
 
+TEST_CASE("box_tree: one tree rebuilt again and again, growing, shrinking and emptied, refitted between",
+          "[box_tree]") {
+    // A tree keeps its buffers from one rebuild to the next: every rebuild
+    // must answer as a tree made anew. The sets change size by orders of
+    // magnitude (its levels come and go), ids come and go, the boxes move
+    // a little (the last order nearly right: insertion sort) or are drawn
+    // anew (radix sort), and some are refitted between rebuilds.
+    test_random::rng g(4242);
+    box_tree tree;
+    std::vector<box> boxes;
+    std::vector<std::uint32_t> ids;
+    const std::size_t sizes[] = {0, 1, 2000, 17, 0, 300, 4000, 3999, 5, 900, 1, 2500};
+    std::size_t checked = 0;
+    for (int round = 0; round < test_effort::scaled(24); ++round) {
+        const std::size_t n = sizes[static_cast<std::size_t>(round) % std::size(sizes)];
+        const bool moved_a_little = n == boxes.size() && g.chance(0.7);
+        if (moved_a_little) {
+            for (box& b : boxes) {
+                const double dx = g.uniform(-0.5, 0.5), dy = g.uniform(-0.5, 0.5);
+                if (!b.empty()) b = box{b.min_x + dx, b.min_y + dy, b.max_x + dx, b.max_y + dy};
+            }
+        } else {
+            boxes = random_boxes(g, n);
+            ids = ids_of(n, static_cast<std::uint32_t>(g.index(3)));
+            if (g.chance(0.5)) std::reverse(ids.begin(), ids.end());
+        }
+        tree.rebuild(boxes, ids);
+        // Some boxes refitted: moved, or dropped (an empty box).
+        for (std::size_t r = 0; n > 0 && r < n / 10; ++r) {
+            const std::size_t k = g.index(n);
+            const double x = g.uniform(-100, 100), y = g.uniform(-100, 100);
+            boxes[k] = g.chance(0.2) ? box{} : box{x, y, x + g.uniform(0, 6), y + g.uniform(0, 6)};
+            tree.refit(ids[k], boxes[k]);
+        }
+        INFO("round " << round << ", " << n << " boxes" << (moved_a_little ? ", moved a little" : ""));
+        for (std::size_t k = 0; k < n; ++k) CHECK(tree.holds(ids[k]));
+        std::vector<id_pair> want, got;
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = i + 1; j < n; ++j)
+                if (boxes_overlap(boxes[i], boxes[j])) want.push_back(ordered(ids[i], ids[j]));
+        std::sort(want.begin(), want.end());
+        tree.self_join([&](std::uint32_t i, std::uint32_t j) { got.push_back(ordered(i, j)); });
+        std::sort(got.begin(), got.end());
+        CHECK(got == want);
+        // Queries by a few boxes of the set and a box around everything.
+        for (std::size_t q = 0; q < std::min<std::size_t>(n, 20); ++q) {
+            const box& around = boxes[g.index(n)];
+            std::vector<std::uint32_t> want_ids, got_ids;
+            for (std::size_t k = 0; k < n; ++k)
+                if (boxes_overlap(boxes[k], around)) want_ids.push_back(ids[k]);
+            tree.query(around, [&](std::uint32_t id) { got_ids.push_back(id); });
+            std::sort(want_ids.begin(), want_ids.end());
+            std::sort(got_ids.begin(), got_ids.end());
+            CHECK(got_ids == want_ids);
+        }
+        std::size_t all = 0;
+        tree.query(box{-1000, -1000, 1000, 1000}, [&](std::uint32_t) { ++all; });
+        CHECK(all == static_cast<std::size_t>(
+                         std::count_if(boxes.begin(), boxes.end(), [](const box& b) { return !b.empty(); })));
+        checked += want.size();
+    }
+    CHECK(checked > 1000);
+}
+
 TEST_CASE("box_tree: an empty tree has no parts", "[box_tree]") {
     box_tree empty, one;
     one.rebuild({box{0, 0, 1, 1}}, {7});

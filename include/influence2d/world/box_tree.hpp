@@ -40,7 +40,8 @@ class box_tree {
 public:
     /// The boxes and their ids; `boxes[k]` has id `ids[k]`. Keeps the order of
     /// the last rebuild as the start of this one. Boxes that are empty are
-    /// kept and never met.
+    /// kept and never met. Every buffer is the last rebuild's, refilled: a
+    /// tree rebuilt step after step allocates only when it grows.
     void rebuild(const std::vector<box>& boxes, const std::vector<std::uint32_t>& ids) {
         const std::size_t n = boxes.size();
         box centres;
@@ -48,9 +49,11 @@ public:
         const double sx = scale_of(centres.min_x, centres.max_x), sy = scale_of(centres.min_y, centres.max_y);
         // Entries carried over from the last rebuild first (in their order),
         // then the new ones: a scene that changed little stays nearly sorted.
-        std::vector<std::uint32_t> where(n_slots(ids), absent);
+        std::vector<std::uint32_t>& where = spare_.where;
+        where.assign(n_slots(ids), absent);
         for (std::size_t k = 0; k < n; ++k) where[ids[k]] = static_cast<std::uint32_t>(k);
-        std::vector<entry> next;
+        std::vector<entry>& next = spare_.entries;
+        next.clear();
         next.reserve(n);
         for (const entry& e : entries_)
             if (e.id < where.size() && where[e.id] != absent) {
@@ -63,8 +66,8 @@ public:
             const point<double> c = e.bounds.centre();
             e.key = hilbert_position(quantized(c.x, centres.min_x, sx), quantized(c.y, centres.min_y, sy));
         }
-        sort_by_key(next);
-        entries_ = std::move(next);
+        sort_by_key(next, spare_);
+        entries_.swap(next);  // (the old entries' buffer kept for the next rebuild)
         slot_.assign(where.size(), absent);
         for (std::size_t k = 0; k < entries_.size(); ++k) slot_[entries_[k].id] = static_cast<std::uint32_t>(k);
         build_levels();
@@ -231,15 +234,23 @@ private:
         if (!(q > 0)) return 0;  // (NaN too)
         return q >= 65535 ? 65535u : static_cast<std::uint32_t>(q);
     }
+    // The buffers a rebuild fills, kept from one rebuild to the next.
+    struct buffers {
+        std::vector<std::uint32_t> where;     // each id's place among the boxes given
+        std::vector<entry> entries;           // the entries in the making (the last rebuild's, emptied)
+        std::vector<std::uint64_t> keys, by;  // the radix sort's (key, position) pairs and their next order
+        std::vector<entry> sorted;            // the entries in the radix sort's order
+    };
+
     // Insertion sort while it stays cheap (at most 8 moves per entry on
     // average: the entries were nearly in order), else a radix sort. A
     // first pass counts the descents: entries out of order in more than an
     // eighth of the places go to the radix sort at once.
-    static void sort_by_key(std::vector<entry>& v) {
+    static void sort_by_key(std::vector<entry>& v, buffers& spare) {
         std::size_t descents = 0;
         for (std::size_t k = 1; k < v.size(); ++k) descents += v[k - 1].key > v[k].key ? 1 : 0;
         if (descents * 8 > v.size()) {
-            radix_sort_by_key(v);
+            radix_sort_by_key(v, spare);
             return;
         }
         const std::size_t budget = 8 * v.size() + 64;
@@ -252,7 +263,7 @@ private:
                 --j;
                 if (++moves > budget) {
                     v[j] = e;
-                    radix_sort_by_key(v);
+                    radix_sort_by_key(v, spare);
                     return;
                 }
             }
@@ -263,8 +274,10 @@ private:
     // A stable sort by key in linear time: the (key, position) pairs sorted
     // by four passes of counting on one byte each, least significant
     // first, then the entries moved once into their order.
-    static void radix_sort_by_key(std::vector<entry>& v) {
-        std::vector<std::uint64_t> a(v.size()), b(v.size());
+    static void radix_sort_by_key(std::vector<entry>& v, buffers& spare) {
+        std::vector<std::uint64_t>&a = spare.keys, &b = spare.by;
+        a.resize(v.size());
+        b.resize(v.size());
         for (std::size_t k = 0; k < v.size(); ++k) a[k] = std::uint64_t{v[k].key} << 32 | k;
         for (int shift = 32; shift < 64; shift += 8) {
             std::size_t start[257] = {};
@@ -273,33 +286,42 @@ private:
             for (std::uint64_t x : a) b[start[(x >> shift) & 0xff]++] = x;
             a.swap(b);
         }
-        std::vector<entry> sorted(v.size());
+        std::vector<entry>& sorted = spare.sorted;
+        sorted.resize(v.size());
         for (std::size_t k = 0; k < v.size(); ++k) sorted[k] = v[a[k] & 0xffffffffu];
-        v = std::move(sorted);
+        v.swap(sorted);
     }
 
+    // Level `at` of the nodes emptied for a rebuild, its buffer the last
+    // rebuild's.
+    std::vector<box>& level_buffer(std::size_t at) {
+        if (levels_.size() <= at) levels_.resize(at + 1);
+        levels_[at].clear();
+        return levels_[at];
+    }
     void build_levels() {
-        levels_.clear();
-        if (entries_.empty()) return;
-        std::vector<box> level;
-        level.reserve((entries_.size() + fan_out - 1) / fan_out);
-        for (std::size_t k = 0; k < entries_.size(); k += fan_out) {
-            box b;
-            for (std::size_t j = k; j < std::min(k + fan_out, entries_.size()); ++j) grow(b, entries_[j].bounds);
-            level.push_back(b);
-        }
-        levels_.push_back(std::move(level));
-        while (levels_.back().size() > 1) {
-            const std::vector<box>& below = levels_.back();
-            std::vector<box> above;
-            above.reserve((below.size() + fan_out - 1) / fan_out);
-            for (std::size_t k = 0; k < below.size(); k += fan_out) {
+        std::size_t height = 0;  // the levels made
+        if (!entries_.empty()) {
+            std::vector<box>& leaves = level_buffer(height++);
+            leaves.reserve((entries_.size() + fan_out - 1) / fan_out);
+            for (std::size_t k = 0; k < entries_.size(); k += fan_out) {
                 box b;
-                for (std::size_t j = k; j < std::min(k + fan_out, below.size()); ++j) grow(b, below[j]);
-                above.push_back(b);
+                for (std::size_t j = k; j < std::min(k + fan_out, entries_.size()); ++j) grow(b, entries_[j].bounds);
+                leaves.push_back(b);
             }
-            levels_.push_back(std::move(above));
+            while (levels_[height - 1].size() > 1) {
+                std::vector<box>& above = level_buffer(height);  // (before `below`: it may move the levels)
+                const std::vector<box>& below = levels_[height - 1];
+                above.reserve((below.size() + fan_out - 1) / fan_out);
+                for (std::size_t k = 0; k < below.size(); k += fan_out) {
+                    box b;
+                    for (std::size_t j = k; j < std::min(k + fan_out, below.size()); ++j) grow(b, below[j]);
+                    above.push_back(b);
+                }
+                ++height;
+            }
         }
+        levels_.resize(height);
     }
     static void grow(box& b, const box& c) {
         if (c.empty()) return;
@@ -377,6 +399,7 @@ private:
     std::vector<entry> entries_;
     std::vector<std::uint32_t> slot_;       // slot_[id]: the entry of id, or absent
     std::vector<std::vector<box>> levels_;  // levels_[0]: one box per leaf of fan_out entries
+    buffers spare_;                         // the rebuilds' buffers
 };
 
 }  // namespace influence2d

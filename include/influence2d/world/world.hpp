@@ -52,16 +52,27 @@ struct body_pair {
     }
 };
 
+/// The buffers sort_body_pairs fills, kept by a caller that sorts again and
+/// again (a world, step after step) so that it allocates only when the
+/// pairs grow.
+struct body_pair_sort_buffers {
+    std::vector<body_pair> by_second;  ///< the pairs sorted by second id
+    std::vector<std::uint32_t> start;  ///< each id's first place in the counting sort
+};
+
 /// Sorts pairs of ids below n in O(n + pairs): a stable counting sort by
 /// second id, then by first (a radix sort of two digits); std::sort when
-/// the pairs are few (fewer than n / 8: the counts would cost more).
-inline void sort_body_pairs(std::vector<body_pair>& pairs, std::size_t n) {
+/// the pairs are few (fewer than n / 8: the counts would cost more). The
+/// counting sort's buffers are `spare`'s.
+inline void sort_body_pairs(std::vector<body_pair>& pairs, std::size_t n, body_pair_sort_buffers& spare) {
     if (pairs.size() * 8 < n) {
         std::sort(pairs.begin(), pairs.end());
         return;
     }
-    std::vector<body_pair> by_second(pairs.size());
-    std::vector<std::uint32_t> start(n + 1);
+    std::vector<body_pair>& by_second = spare.by_second;
+    std::vector<std::uint32_t>& start = spare.start;
+    by_second.resize(pairs.size());
+    start.resize(n + 1);
     const auto by = [&](const std::vector<body_pair>& in, std::vector<body_pair>& out, auto key) {
         std::fill(start.begin(), start.end(), 0);
         for (const body_pair& p : in) ++start[key(p) + 1];
@@ -70,6 +81,12 @@ inline void sort_body_pairs(std::vector<body_pair>& pairs, std::size_t n) {
     };
     by(pairs, by_second, [](const body_pair& p) { return p.second; });
     by(by_second, pairs, [](const body_pair& p) { return p.first; });
+}
+
+/// sort_body_pairs with buffers of its own.
+inline void sort_body_pairs(std::vector<body_pair>& pairs, std::size_t n) {
+    body_pair_sort_buffers spare;
+    sort_body_pairs(pairs, n, spare);
 }
 
 /// A pair whose contact began or ended at a step.
@@ -467,7 +484,8 @@ private:
         for (const bool fixed : {true, false}) {
             box_tree& tree = fixed ? fixed_tree_ : free_tree_;
             std::size_t& refits = fixed ? fixed_refits_ : free_refits_;
-            std::vector<body_id> refit;
+            std::vector<body_id>& refit = spare_refit_;
+            refit.clear();
             bool rebuild = false;
             for (body_id i : escaped_)
                 if (bodies_[i].fixed == fixed) {
@@ -480,8 +498,10 @@ private:
                 for (body_id i : refit) tree.refit(i, bodies_[i].alive ? bodies_[i].enlarged : box{});
                 continue;
             }
-            std::vector<box> boxes;
-            std::vector<std::uint32_t> ids;
+            std::vector<box>& boxes = spare_boxes_;
+            std::vector<std::uint32_t>& ids = spare_ids_;
+            boxes.clear();
+            ids.clear();
             for (std::size_t i = 0; i < bodies_.size(); ++i)
                 if (bodies_[i].alive && bodies_[i].fixed == fixed) {
                     boxes.push_back(bodies_[i].enlarged);
@@ -540,7 +560,8 @@ private:
     // escaped bodies found again, the others kept.
     void update_near() {
         if (escaped_.empty()) return;
-        std::vector<body_pair> found;
+        std::vector<body_pair>& found = spare_pairs_;
+        found.clear();
         // Adds the pair of i and j (not the same body), ordered, to `to`.
         const auto adding_to = [](std::vector<body_pair>& to) {
             return [&to](std::uint32_t i, std::uint32_t j) {
@@ -595,19 +616,24 @@ private:
                 for (body_id i : escaped_) query(i, add);
             }
         }
-        sort_body_pairs(found, bodies_.size());
+        sort_body_pairs(found, bodies_.size(), spare_sort_);
         found.erase(std::unique(found.begin(), found.end()), found.end());
         if (!most) {
-            std::vector<body_pair> kept;
-            kept.reserve(near_.size());
-            for (const body_pair& p : near_)
-                if (!bodies_[p.first].escaped && !bodies_[p.second].escaped) kept.push_back(p);
-            std::vector<body_pair> all;
-            all.reserve(kept.size() + found.size());
-            std::merge(kept.begin(), kept.end(), found.begin(), found.end(), std::back_inserter(all));
-            found = std::move(all);
+            // The near pairs kept (neither body escaped) merged with those
+            // found, through the sort's buffer.
+            std::vector<body_pair>& all = spare_sort_.by_second;
+            all.clear();
+            all.reserve(near_.size() + found.size());
+            std::size_t f = 0;
+            for (const body_pair& p : near_) {
+                if (bodies_[p.first].escaped || bodies_[p.second].escaped) continue;
+                for (; f < found.size() && found[f] < p; ++f) all.push_back(found[f]);
+                all.push_back(p);
+            }
+            all.insert(all.end(), found.begin() + static_cast<std::ptrdiff_t>(f), found.end());
+            found.swap(all);
         }
-        near_ = std::move(found);
+        near_.swap(found);  // (the last near pairs' buffer kept for the next step)
         for (body_id i : escaped_) bodies_[i].escaped = false;
         escaped_.clear();
     }
@@ -1034,8 +1060,15 @@ private:
     std::vector<point<double>> hull_corners_;
     std::vector<body> bodies_;
     std::vector<body_id> moved_;
-    std::vector<body_id> escaped_;                    // at this step
-    std::vector<body_pair> near_;                     // enlarged boxes meet, not both fixed; sorted
+    std::vector<body_id> escaped_;  // at this step
+    std::vector<body_pair> near_;   // enlarged boxes meet, not both fixed; sorted
+    // Buffers a step fills and empties, kept for their capacity: a world
+    // stepped again and again allocates only when it grows.
+    std::vector<box> spare_boxes_;                    // a tree's boxes for its rebuild
+    std::vector<std::uint32_t> spare_ids_;            // their ids
+    std::vector<body_id> spare_refit_;                // the bodies of a tree refitted
+    std::vector<body_pair> spare_pairs_;              // the near pairs found at a step
+    body_pair_sort_buffers spare_sort_;               // their sort's buffers, and their merge's
     std::size_t fixed_refits_ = 0, free_refits_ = 0;  // since the tree's last rebuild
     box_tree fixed_tree_, free_tree_;
     std::map<std::pair<shape_id, int>, std::unique_ptr<polygon>> scaled_shapes_;  // scaled_shape's copies
