@@ -379,11 +379,21 @@ private:
         if (la == 0 && lb == 0) {
             const auto [ai, aj] = a.children(0, na);
             const auto [bi, bj] = b.children(0, nb);
-            for (std::size_t i = ai; i < aj; ++i) {
+            // B's entries that meet A's leaf's box listed first, without a
+            // branch each, then A's entries that meet B's leaf's box tested
+            // against them alone: sibling leaves of a crowded scene overlap
+            // in a corner, and most of their 64 entry pairs lie outside it.
+            std::uint32_t near[fan_out];
+            std::size_t count = 0;
+            for (std::size_t j = bi; j < bj; ++j) {
+                near[count] = static_cast<std::uint32_t>(j);
+                count += boxes_overlap(b.entries_[j].bounds, a.levels_[0][na]) ? 1 : 0;
+            }
+            for (std::size_t i = ai; i < aj && count > 0; ++i) {
                 if (!boxes_overlap(a.entries_[i].bounds, b.levels_[0][nb])) continue;
-                for (std::size_t j = bi; j < bj; ++j)
-                    if (boxes_overlap(a.entries_[i].bounds, b.entries_[j].bounds))
-                        found(a.entries_[i].id, b.entries_[j].id);
+                for (std::size_t k = 0; k < count; ++k)
+                    if (boxes_overlap(a.entries_[i].bounds, b.entries_[near[k]].bounds))
+                        found(a.entries_[i].id, b.entries_[near[k]].id);
             }
             return;
         }
