@@ -619,18 +619,17 @@ private:
         sort_body_pairs(found, bodies_.size(), spare_sort_);
         found.erase(std::unique(found.begin(), found.end()), found.end());
         if (!most) {
-            // The near pairs kept (neither body escaped) merged with those
-            // found, through the sort's buffer.
+            // The last near pairs kept where neither body escaped (in place:
+            // near_ is replaced below), merged with those found through the
+            // sort's buffer.
+            near_.erase(std::remove_if(
+                            near_.begin(), near_.end(),
+                            [&](const body_pair& p) { return bodies_[p.first].escaped || bodies_[p.second].escaped; }),
+                        near_.end());
             std::vector<body_pair>& all = spare_sort_.by_second;
             all.clear();
             all.reserve(near_.size() + found.size());
-            std::size_t f = 0;
-            for (const body_pair& p : near_) {
-                if (bodies_[p.first].escaped || bodies_[p.second].escaped) continue;
-                for (; f < found.size() && found[f] < p; ++f) all.push_back(found[f]);
-                all.push_back(p);
-            }
-            all.insert(all.end(), found.begin() + static_cast<std::ptrdiff_t>(f), found.end());
+            std::merge(near_.begin(), near_.end(), found.begin(), found.end(), std::back_inserter(all));
             found.swap(all);
         }
         near_.swap(found);  // (the last near pairs' buffer kept for the next step)
