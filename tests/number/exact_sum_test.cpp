@@ -99,3 +99,93 @@ TEST_CASE("exact_sum: signs of random sums of products equal those of exact rati
         CHECK(acc.sign() == static_cast<int>(CGAL::sign(sum)));
     }
 }
+
+#if defined(__SIZEOF_INT128__)
+TEST_CASE("exact_sum: orientation in 128-bit integers equals the accumulator and exact rationals", "[exact_sum]") {
+    using influence2d::exact_sum::orientation_in_window;
+    using influence2d::exact_sum::orientation_sign_accumulated;
+    using influence2d::exact_sum::orientation_window_bits;
+    test_random::rng rng(29);
+    const auto exact_sign = [](const double(&c)[6]) {
+        using q = influence2d::exact_rational;
+        const q det = (q(c[2]) - q(c[0])) * (q(c[5]) - q(c[1])) - (q(c[3]) - q(c[1])) * (q(c[4]) - q(c[0]));
+        return static_cast<int>(CGAL::sign(det));
+    };
+    int in_window = 0, outside = 0, zeros = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        // Coordinates of one data set: a common scale 2^s, each with a
+        // random number of significant bits (1 to 53) and a random offset
+        // within `span` bits, so that the six span from a few bits to
+        // beyond the window; a third of the triples collinear (c on the
+        // line through a and b at a dyadic step that keeps it exact), or
+        // with repeated coordinates.
+        const int s = static_cast<int>(rng.index(200)) - 100;
+        const int span = 8 + static_cast<int>(rng.index(90));
+        const auto coordinate = [&] {
+            const int bits = 1 + static_cast<int>(rng.index(53));
+            const double m = std::floor(rng.unit() * std::ldexp(1.0, bits));
+            const int shift = static_cast<int>(rng.index(static_cast<std::size_t>(std::max(1, span - bits + 1))));
+            return (rng.index(2) == 1 ? -1 : 1) * std::ldexp(m, s + shift);
+        };
+        double c[6];
+        for (double& x : c) x = coordinate();
+        switch (rng.index(4)) {
+        case 0:  // c = a + 2^k (b - a), exact when the sums are
+            c[4] = c[0] + std::ldexp(c[2] - c[0], static_cast<int>(rng.index(5)) - 2);
+            c[5] = c[1] + std::ldexp(c[3] - c[1], static_cast<int>(rng.index(5)) - 2);
+            break;
+        case 1:  // a vertical or horizontal line through two of them
+            c[4] = c[0];
+            c[2] = c[0];
+            break;
+        default: break;
+        }
+        INFO("trial " << trial << ": " << c[0] << " " << c[1] << " " << c[2] << " " << c[3] << " " << c[4] << " "
+                      << c[5]);
+        const int expected = exact_sign(c);
+        CHECK(orientation_sign_accumulated(c[0], c[1], c[2], c[3], c[4], c[5]) == expected);
+        int sign = 2;
+        if (orientation_in_window(c[0], c[1], c[2], c[3], c[4], c[5], sign)) {
+            ++in_window;
+            CHECK(sign == expected);
+        } else {
+            ++outside;
+            CHECK(sign == 2);
+        }
+        zeros += expected == 0 ? 1 : 0;
+    }
+    // Both routes taken, and many exact zeros among them.
+    CHECK(in_window > 5000);
+    CHECK(outside > 2000);
+    CHECK(zeros > 2000);
+}
+
+TEST_CASE("exact_sum: the 128-bit window at its edge", "[exact_sum]") {
+    using influence2d::exact_sum::orientation_in_window;
+    using influence2d::exact_sum::orientation_sign;
+    // 61 bits from the unit 1 to the largest, 2^61 - 2^8 (53 bits set): the
+    // differences reach 2^62 - 2^9 and the products 2^124; in the window.
+    const double big = 0x1p61 - 0x1p8;
+    int sign = 2;
+    CHECK(orientation_in_window(-big, 1, big, -big, big, big, sign));
+    CHECK(sign == 1);  // (2 big)(big - 1) - (-big - 1)(2 big) = 2 big (2 big) > 0
+    CHECK(orientation_in_window(-big, -big, big, big, 1, 1, sign));
+    CHECK(sign == 0);  // c on the diagonal
+    CHECK(orientation_in_window(-big, -big, big, big, 1, 0, sign));
+    CHECK(sign == -1);
+    // One bit more (2^61 itself beside the unit 1): outside the window, and
+    // the accumulator answers.
+    sign = 2;
+    CHECK_FALSE(orientation_in_window(-0x1p61, -0x1p61, 0x1p61, 0x1p61, 1, 1, sign));
+    CHECK(sign == 2);
+    CHECK(orientation_sign(-0x1p61, -0x1p61, 0x1p61, 0x1p61, 1, 1) == 0);
+    CHECK(orientation_sign(-0x1p61, -0x1p61, 0x1p61, 0x1p61, 1, 0) == -1);
+    // Zeros of either sign, and subnormals within one window.
+    CHECK(orientation_in_window(0.0, -0.0, 0.0, 0.0, -0.0, 0.0, sign));
+    CHECK(sign == 0);
+    CHECK(orientation_in_window(0, 0, 0x1p-1070, 0, 0x1p-1070, 0x1p-1074, sign));
+    CHECK(sign == 1);
+    CHECK(orientation_in_window(0, 0, 0x1p-1070, 0, 3 * 0x1p-1070, -0x1p-1074, sign));
+    CHECK(sign == -1);
+}
+#endif

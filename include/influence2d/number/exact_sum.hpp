@@ -6,8 +6,10 @@
 /// input doubles: ring orientation, and the orientation predicate on three input
 /// points when a filter cannot decide it.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include "influence2d/assert.hpp"
 
@@ -102,12 +104,90 @@ inline bool exact_double_sum(double a, double b, double& sum) {
     return (a - (sum - bb)) + (b - bb) == 0;
 }
 
-/// The exact sign of the orientation determinant [a b c] of three points with
-/// double coordinates: +1 when c lies left of the directed line a->b, -1
-/// right, 0 collinear (also when two of the points coincide). The sum
-/// [a b c] = bx cy - bx ay - ax cy - by cx + by ax + ay cx is accumulated
+#if defined(__SIZEOF_INT128__)
+/// (The window below needs 128-bit integers and the bit-counting builtins
+/// of the compilers that have them.)
+
+/// A finite double as m 2^e: m an odd integer (|m| < 2^53) and e in
+/// [-1074, 971], or m = 0 for either zero.
+struct dyadic {
+    std::int64_t m = 0;  ///< the odd integer, with the double's sign
+    int e = 0;           ///< the power of two
+};
+
+/// x (finite) as m 2^e, read from its bits: the stored fraction with its
+/// leading bit (none for a subnormal), its trailing zero bits moved into e.
+inline dyadic dyadic_of(double x) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &x, sizeof bits);
+    const int field = static_cast<int>((bits >> 52) & 0x7ff);
+    std::uint64_t m = bits & ((std::uint64_t{1} << 52) - 1);
+    int e = -1074;
+    if (field != 0) {
+        m |= std::uint64_t{1} << 52;
+        e = field - 1075;
+    }
+    if (m == 0) return {};
+    const int zeros = __builtin_ctzll(m);
+    m >>= zeros;
+    e += zeros;
+    const auto signed_m = static_cast<std::int64_t>(m);
+    return {(bits >> 63) != 0 ? -signed_m : signed_m, e};
+}
+
+/// The widest span, in bits, of six coordinates that orientation_in_window
+/// takes in 128-bit integers: from the least significant bit set among them
+/// to the top of the largest, at most 61 bits; each coordinate is then an
+/// integer below 2^61 in units of that least bit, each difference below
+/// 2^62 (in 64 bits), each product of two below 2^124, and the determinant
+/// below 2^125, inside a signed 128-bit integer. Coordinates of one data set
+/// (a map in degrees or metres, a grid) nearly always fit.
+inline constexpr int orientation_window_bits = 61;
+
+/// The exact sign of the orientation determinant of three points with
+/// finite double coordinates, in 128-bit integers, when the six
+/// coordinates fit orientation_window_bits (returns whether they did;
+/// `sign` is set only then): each coordinate an integer in units of the
+/// least bit set among them, the determinant (b - a) x (c - a) in those
+/// units squared.
+inline bool orientation_in_window(double ax, double ay, double bx, double by, double cx, double cy, int& sign) {
+    const double given[6] = {ax, ay, bx, by, cx, cy};
+    dyadic d[6];
+    int low = 0, high = 0;  // the least bit set, and one above the top bit of the largest
+    bool any = false;
+    for (int k = 0; k < 6; ++k) {
+        d[k] = dyadic_of(given[k]);
+        if (d[k].m == 0) continue;
+        const auto m = static_cast<std::uint64_t>(d[k].m < 0 ? -d[k].m : d[k].m);
+        const int top = d[k].e + 64 - __builtin_clzll(m);  // one above m's top bit, as a power of two
+        low = any ? std::min(low, d[k].e) : d[k].e;
+        high = any ? std::max(high, top) : top;
+        any = true;
+    }
+    if (!any) {
+        sign = 0;
+        return true;
+    }
+    if (high - low > orientation_window_bits) return false;
+    std::int64_t v[6];
+    for (int k = 0; k < 6; ++k) {
+        const std::uint64_t magnitude = static_cast<std::uint64_t>(d[k].m < 0 ? -d[k].m : d[k].m)
+                                        << (d[k].m == 0 ? 0 : d[k].e - low);
+        v[k] = d[k].m < 0 ? -static_cast<std::int64_t>(magnitude) : static_cast<std::int64_t>(magnitude);
+    }
+    __extension__ typedef __int128 wide;  // (__extension__: no pedantic warning)
+    const wide det = static_cast<wide>(v[2] - v[0]) * static_cast<wide>(v[5] - v[1]) -
+                     static_cast<wide>(v[3] - v[1]) * static_cast<wide>(v[4] - v[0]);
+    sign = det > 0 ? 1 : det < 0 ? -1 : 0;
+    return true;
+}
+#endif
+
+/// The exact sign of the orientation determinant [a b c] of three points
+/// with double coordinates by the accumulator, over the whole range: the
+/// sum [a b c] = bx cy - bx ay - ax cy - by cx + by ax + ay cx accumulated
 /// exactly; coordinates must be finite.
-inline int orientation_sign(double ax, double ay, double bx, double by, double cx, double cy) {
+inline int orientation_sign_accumulated(double ax, double ay, double bx, double by, double cx, double cy) {
     accumulator acc;
     acc.add_product(bx, cy);
     acc.add_product(-bx, ay);
@@ -116,6 +196,20 @@ inline int orientation_sign(double ax, double ay, double bx, double by, double c
     acc.add_product(by, ax);
     acc.add_product(ay, cx);
     return acc.sign();
+}
+
+/// The exact sign of the orientation determinant [a b c] of three points with
+/// double coordinates: +1 when c lies left of the directed line a->b, -1
+/// right, 0 collinear (also when two of the points coincide); coordinates
+/// must be finite. In 128-bit integers when the coordinates fit their
+/// window (orientation_in_window, where the compiler has such integers),
+/// else by the accumulator (orientation_sign_accumulated).
+inline int orientation_sign(double ax, double ay, double bx, double by, double cx, double cy) {
+#if defined(__SIZEOF_INT128__)
+    int sign = 0;
+    if (orientation_in_window(ax, ay, bx, by, cx, cy, sign)) return sign;
+#endif
+    return orientation_sign_accumulated(ax, ay, bx, by, cx, cy);
 }
 
 }  // namespace influence2d::exact_sum
