@@ -446,7 +446,11 @@ void run(const bench_options& o) {
         }
     if (!o.layers.empty())
         for (const auto& [file, name] : {std::pair<std::string, std::string>{"countries.wkt", "countries (177)"},
-                                         std::pair<std::string, std::string>{"boroughs.wkt", "NYC boroughs (5)"}}) {
+                                         {"boroughs.wkt", "NYC boroughs (5)"},
+                                         {"counties.wkt", "NC counties (100)"},
+                                         {"blocks.wkt", "Olinda blocks (470)"},
+                                         {"tracts.wkt", "Boston tracts (506)"},
+                                         {"plots.wkt", "wheat plots (500)"}}) {
             std::cerr << "world bench: layer " << name << "\n";
             for (const row& r : run_layer(o.layers + "/" + file, name, o.quick ? 5 : 21)) rows.push_back(r);
         }
@@ -486,7 +490,7 @@ int main(int argc, char** argv) {
     app.add_flag("--quick", o->quick, "100 and 1000 bodies only, fewer runs of the layers");
     app.add_option("--sizes", o->sizes, "Body counts (default 100,1000,10000,100000)")->delimiter(',');
     app.add_option("--steps", o->steps, "Steps per scene (default 21, 11 from 10,000 bodies)");
-    app.add_option("--layers", o->layers, "Directory of countries.wkt and boroughs.wkt (scripts/real_layers.sh)")
+    app.add_option("--layers", o->layers, "Directory of the real layers' WKT files (scripts/real_layers.sh)")
         ->type_name("DIR");
     app.add_option("--out", o->out, "Write world.md, world.csv and world_time.png into DIR")->type_name("DIR");
     app.callback([o] { run(*o); });
