@@ -65,14 +65,19 @@ location locate_placed(placed_polygon<NT>& a, const point<double>& p_approx, con
 /// `a_window` and edge j of B whose box meets `b_window`, the two boxes
 /// overlapping, until meet returns true; returns whether it did. By the
 /// two placings' run boxes when both have them and every coordinate is
-/// finite (overlapping_run_pairs: edges only where two runs overlap); else
+/// finite (overlapping_run_pairs: edges only where two runs overlap; for two
+/// polygons of one run each, few_edge_pairs); else
 /// each edge list made whole (edges_meeting) and swept (overlapping_pairs).
 template <class NT, class Meet>
 bool edge_pairs_near(const placed_polygon<NT>& a, const placed_polygon<NT>& b, const box& a_window, const box& b_window,
                      double grow, Meet&& meet) {
-    if (!a.run_bounds().empty() && !b.run_bounds().empty() && a.finite() && b.finite())
-        return overlapping_run_pairs({a.shape(), a.approx(), a.run_bounds(), a_window},
-                                     {b.shape(), b.approx(), b.run_bounds(), b_window}, grow, meet);
+    if (!a.run_bounds().empty() && !b.run_bounds().empty() && a.finite() && b.finite()) {
+        const runs_side as{a.shape(), a.approx(), a.run_bounds(), a_window},
+            bs{b.shape(), b.approx(), b.run_bounds(), b_window};
+        if (a.shape().size() <= edge_run_length && b.shape().size() <= edge_run_length)
+            return few_edge_pairs(as, bs, grow, meet);
+        return overlapping_run_pairs(as, bs, grow, meet);
+    }
     std::vector<edge_box> a_edges, b_edges;
     edges_meeting(a.shape(), a.approx(), a_window, grow, a_edges);
     edges_meeting(b.shape(), b.approx(), b_window, grow, b_edges);

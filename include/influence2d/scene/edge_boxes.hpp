@@ -11,6 +11,7 @@
 #include <limits>
 #include <vector>
 
+#include "influence2d/assert.hpp"
 #include "influence2d/core/box.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
@@ -290,6 +291,34 @@ bool overlapping_run_pairs(const runs_side& a, const runs_side& b, double grow, 
         return sweep_along_x(oa, 0, na, ob, 0, nb, found_entry,
                              [&](std::size_t k, std::size_t l) { return meet(found[oa[k]].edge, found[ob[l]].edge); });
     });
+}
+
+/// overlapping_run_pairs for two polygons of at most edge_run_length edges
+/// each (one run each): the same pairs offered, each once, in another
+/// order, until meet returns true; returns whether it did. B's edges whose
+/// grown box meets B's window are listed (the index always written, the
+/// count advanced by the test: no branch a box), then each of A's edges
+/// whose grown box meets A's window against that list. No run box, no
+/// sort: for a pair of small polygons (a grid's cells, city blocks) the
+/// runs' machinery costs more than the few box tests it saves. Only where
+/// every coordinate is finite.
+template <class Meet>
+bool few_edge_pairs(const runs_side& a, const runs_side& b, double grow, Meet&& meet) {
+    INFLUENCE2D_ASSERT(a.shape.size() <= edge_run_length && b.shape.size() <= edge_run_length,
+                       "few_edge_pairs: more edges than one run");
+    std::array<edge_box, edge_run_length> near_b;
+    std::size_t count = 0;
+    for (std::size_t j = 0; j < b.shape.size(); ++j) {
+        near_b[count] = edge_box_of(b.shape, b.v, j, {-grow, -grow}, {grow, grow});
+        count += boxes_meet(near_b[count], b.window) ? 1 : 0;
+    }
+    for (std::size_t i = 0; count > 0 && i < a.shape.size(); ++i) {
+        const edge_box k = edge_box_of(a.shape, a.v, i, {-grow, -grow}, {grow, grow});
+        if (!meets_box(k, a.window)) continue;
+        for (std::size_t l = 0; l < count; ++l)
+            if (boxes_meet(near_b[l], k) && meet(k.edge, near_b[l].edge)) return true;
+    }
+    return false;
 }
 
 }  // namespace influence2d
