@@ -176,3 +176,35 @@ TEST_CASE("orientation_of_doubles: the exact sign on nearly collinear and tiny i
     CHECK(by_filter > 1000);
     CHECK(by_sum > 1000);
 }
+
+TEST_CASE("orientation_of_doubles: axis-parallel and nearly axis-parallel triples, exactly", "[orientation]") {
+    // A grid's corners, each coordinate taken from a few values and their
+    // neighbours one or two units in the last place away (as neighbouring
+    // cells of a real grid store their shared sides): many triples share an
+    // abscissa or an ordinate, so that a product of the determinant has a
+    // zero factor, and the sign comes from the other product's differences.
+    // At scales from 2^-1000 to 2^1000; CGAL's exact orientation decides.
+    test_random::rng g(78);
+    const rational_kernel::Orientation_2 exact_orientation;
+    std::size_t zero_factor = 0, zeros = 0;
+    for (int k = 0; k < 20000; ++k) {
+        const double scale = std::ldexp(1.0, static_cast<int>(g.index(2000)) - 1000);
+        const auto coordinate = [&] {
+            double x = scale * (1 + static_cast<double>(g.index(4)) * 0.7);
+            for (int n = static_cast<int>(g.index(3)); n > 0; --n)
+                x = std::nextafter(x, g.chance(0.5) ? HUGE_VAL : -HUGE_VAL);
+            return g.chance(0.2) ? -x : x;
+        };
+        const double ax = coordinate(), ay = coordinate(), bx = coordinate(), by = coordinate(), cx = coordinate(),
+                     cy = coordinate();
+        const int got = orientation_of_doubles(ax, ay, bx, by, cx, cy);
+        const int want = static_cast<int>(exact_orientation(
+            rational_kernel::Point_2(ax, ay), rational_kernel::Point_2(bx, by), rational_kernel::Point_2(cx, cy)));
+        INFO(ax << " " << ay << " " << bx << " " << by << " " << cx << " " << cy);
+        REQUIRE(got == want);
+        zero_factor += (bx == ax || cy == ay || by == ay || cx == ax) ? 1 : 0;
+        zeros += want == 0 ? 1 : 0;
+    }
+    CHECK(zero_factor > 3000);
+    CHECK(zeros > 250);
+}

@@ -38,7 +38,8 @@ inline constexpr double orientation_underflow = 0x1p-1072;
 /// doubles, exactly: in double when the rounded determinant exceeds its
 /// error bound (orientation_relative_bound), which settles nearly every
 /// call at the cost of a few multiplications; else 0 when two of the points
-/// are the same; else by the exact fixed-point sum (number/exact_sum.hpp).
+/// are the same; else by the signs of the differences when one product has
+/// a zero factor; else by the exact sum (number/exact_sum.hpp).
 inline int orientation_of_doubles(double ax, double ay, double bx, double by, double cx, double cy) {
     const double left = (bx - ax) * (cy - ay), right = (by - ay) * (cx - ax);
     const double det = left - right;
@@ -48,6 +49,15 @@ inline int orientation_of_doubles(double ax, double ay, double bx, double by, do
     // Two of the points the same (a vertex shared by two polygons, say):
     // collinear, without the sum.
     if ((ax == bx && ay == by) || (ax == cx && ay == cy) || (bx == cx && by == cy)) return 0;
+    // A product with a zero factor (two equal coordinates: an axis-parallel
+    // edge, a shared abscissa or ordinate) is 0 exactly, and the
+    // determinant then has the sign of the other product, that of its two
+    // differences: a rounded difference of doubles has the sign of the exact
+    // one, and is 0 only when the two are equal. Grids and rectangles come
+    // here, without the exact sum.
+    const auto sign_of = [](double x) { return (x > 0) - (x < 0); };
+    if (bx == ax || cy == ay) return -sign_of(by - ay) * sign_of(cx - ax);
+    if (by == ay || cx == ax) return sign_of(bx - ax) * sign_of(cy - ay);
     return exact_sum::orientation_sign(ax, ay, bx, by, cx, cy);
 }
 
