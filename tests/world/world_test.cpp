@@ -585,6 +585,15 @@ TEST_CASE("world: a kept separating edge is tried where the bodies stand exactly
         run(certified_world{}, true);
         run(world<exact_rational>{}, true);
         run(world<double>{}, intersects<double>(triangle, a_at, square, pose{w.x, w.y, 0}));
+        // B placed on w at once: a new pair, answered by the one-shot test on
+        // the two posed placings, whose filters must allow for the posing's
+        // rounding (a margin of 0 there misses the meeting).
+        certified_world at_once;
+        at_once.add_shape(triangle);
+        at_once.add_shape(square);
+        at_once.add_body(0, a_at, true);
+        at_once.add_body(1, {w.x, w.y, 0});
+        CHECK(at_once.step().size() == 1);
         // The reference: B's corner w lies in A's region, exactly.
         CHECK(test_exact::regions_meet(a_exact, test_exact::place(square, pose{w.x, w.y, 0})));
     }
@@ -846,6 +855,91 @@ TEST_CASE("layer_pairs: cells along long shared borders against the exact refere
     }
     // Not vacuous: most neighbours touch (some 40 pairs a round).
     CHECK(meeting_pairs >= 20 * static_cast<std::size_t>(rounds));
+}
+
+TEST_CASE("layer_pairs: a grid of rectangles whose shared sides are a unit in the last place apart", "[world]") {
+    // Axis-parallel rectangles on a grid, as a field of plots is stored:
+    // each side shared with a neighbour is written once as the grid line and
+    // once moved by 0, 1 or 2 units in the last place either way, so that
+    // neighbours touch, overlap by a hair or stand a hair apart. Two closed
+    // rectangles meet exactly when their closed boxes do: that is the
+    // reference (no polygon test in it). Within a distance, two rectangles
+    // are within d when the gaps between their boxes along x and y, taken
+    // in exact rationals, have a sum of squares at most d^2. Also at 2^-600
+    // and 2^600 times the scale, and against a copy of the grid moved by a
+    // translation whose sums are exact.
+    rng g(503);
+    std::size_t touching = 0, apart_by_a_hair = 0;
+    for (int round = 0; round < test_effort::scaled(6); ++round) {
+        const double scale = round % 3 == 0 ? 1 : round % 3 == 1 ? 0x1p-600 : 0x1p600;
+        const int columns = 12, rows = 9;
+        const auto line = [&](int k, double step, double origin) { return scale * (origin + step * k); };
+        const auto nudged = [&](double x) {
+            for (int n = static_cast<int>(g.index(5)) - 2; n != 0; n += n > 0 ? -1 : 1)
+                x = std::nextafter(x, n > 0 ? HUGE_VAL : -HUGE_VAL);
+            return x;
+        };
+        std::vector<polygon> layer;
+        std::vector<box> boxes;
+        for (int r = 0; r < rows; ++r)
+            for (int c = 0; c < columns; ++c) {
+                const double x0 = c == 0 ? line(c, 2.51, 1.255) : nudged(line(c, 2.51, 1.255));
+                const double x1 = line(c + 1, 2.51, 1.255),
+                             y0 = r == 0 ? line(r, 3.3, 64.05) : nudged(line(r, 3.3, 64.05));
+                const double y1 = line(r + 1, 3.3, 64.05);
+                layer.push_back(polygon({ring_input{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}}}));
+                boxes.push_back(box{x0, y0, x1, y1});
+            }
+        const double within = round >= 3 ? scale * 0x1p-50 : 0;
+        std::vector<body_pair> want;
+        for (std::size_t i = 0; i < layer.size(); ++i)
+            for (std::size_t j = i + 1; j < layer.size(); ++j) {
+                const box &a = boxes[i], &b = boxes[j];
+                const auto gap = [](double lo_a, double hi_a, double lo_b, double hi_b) {
+                    const exact_rational d1 = exact_rational(lo_b) - exact_rational(hi_a),
+                                         d2 = exact_rational(lo_a) - exact_rational(hi_b);
+                    const exact_rational d = d1 > d2 ? d1 : d2;
+                    return d > 0 ? d : exact_rational(0);
+                };
+                const exact_rational gx = gap(a.min_x, a.max_x, b.min_x, b.max_x),
+                                     gy = gap(a.min_y, a.max_y, b.min_y, b.max_y);
+                const exact_rational w(within);
+                if (gx * gx + gy * gy <= w * w)
+                    want.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+                const bool near = std::fabs(a.min_x - b.max_x) <= std::fabs(a.max_x) * 0x1p-50 ||
+                                  std::fabs(b.min_x - a.max_x) <= std::fabs(a.max_x) * 0x1p-50;
+                if (near && within == 0) (gx == 0 && gy == 0 ? touching : apart_by_a_hair) += 1;
+            }
+        INFO("round " << round << ", scale " << scale);
+        CHECK(show_pairs(certified_layer_pairs(layer, within)) == show_pairs(want));
+        CHECK(show_pairs(layer_pairs<exact_rational>(layer, within)) == show_pairs(want));
+        CHECK(show_pairs(layer_pairs<double>(layer, within)) == show_pairs(want));
+        // The same grid moved by a translation whose sums are exact (a whole
+        // number of grid steps at the scale): the pairs between the two
+        // layers are the pairs of each with its own copy, and of the copies
+        // of the pairs.
+        if (within == 0) {
+            std::vector<polygon> moved;
+            for (const box& b : boxes) {
+                const double dx = scale * 2.51 * 4;
+                moved.push_back(polygon({ring_input{{{b.min_x + dx, b.min_y},
+                                                     {b.max_x + dx, b.min_y},
+                                                     {b.max_x + dx, b.max_y},
+                                                     {b.min_x + dx, b.max_y}}}}));
+            }
+            std::vector<body_pair> want2;
+            for (std::size_t i = 0; i < layer.size(); ++i)
+                for (std::size_t j = 0; j < moved.size(); ++j) {
+                    const box b = moved[j].bounds(), &a = boxes[i];
+                    if (!(a.max_x < b.min_x || b.max_x < a.min_x || a.max_y < b.min_y || b.max_y < a.min_y))
+                        want2.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+                }
+            CHECK(show_pairs(certified_layer_pairs(layer, moved)) == show_pairs(want2));
+        }
+    }
+    // Not vacuous: neighbours along x that touch and that stand a hair apart.
+    CHECK(touching > 50);
+    CHECK(apart_by_a_hair > 50);
 }
 
 TEST_CASE("layer_pairs: the candidates and those answered again in exact rationals are counted", "[world]") {

@@ -110,6 +110,11 @@ public:
     const box& bounds() const { return bounds_; }
     /// Whether every double coordinate is finite.
     bool finite() const { return finite_; }
+    /// Whether approx() holds exactly the values the decisions take in NT:
+    /// in double always (the same doubles), in another NT for the polygon
+    /// where it stands (its input doubles). Filters on such a placing need
+    /// no margin for it (bodies_within).
+    bool exact_in_double() const { return std::is_same_v<NT, double> || how_ == how::own; }
     /// The boxes of the runs of consecutive edges in double (edge_run_boxes),
     /// once make_run_bounds() made them at the present placing; else empty.
     const std::vector<box>& run_bounds() const { return runs_; }

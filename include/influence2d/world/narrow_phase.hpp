@@ -194,7 +194,8 @@ meeting nearby_edges_meet(const meeting& last, bool with_last, const body_view<N
 ///
 ///   last still holds (witness_holds):    last
 ///   else placed_within on the placed bodies, with the margin of their
-///   posing (placing_margin of the sum of their scales)
+///   posing (placing_margin of the sum of their scales; none when both
+///   placings' doubles are the decisions' own values, exact_in_double)
 template <class NT, class Exact = void>
 meeting bodies_within(const meeting& last, const body_view<NT>& a, const body_view<NT>& b, double d,
                       bool* by_witness = nullptr, witness_preference prefer = witness_preference::cheapest,
@@ -210,7 +211,8 @@ meeting bodies_within(const meeting& last, const body_view<NT>& a, const body_vi
             if (by_witness != nullptr) *by_witness = true;
             return witness;
         }
-        return placed_within(pa, pb, placing_margin<T>(a.scale + b.scale), d, d2, prefer);
+        const double margin = pa.exact_in_double() && pb.exact_in_double() ? 0.0 : placing_margin<T>(a.scale + b.scale);
+        return placed_within(pa, pb, margin, d, d2, prefer);
     };
     const auto fast = [&] { return in(NT{}, *a.placed, *b.placed, last, &a, &b); };
     if constexpr (std::is_void_v<Exact>) {
