@@ -169,12 +169,8 @@ inline bool orientation_in_window(double ax, double ay, double bx, double by, do
         return true;
     }
     if (high - low > orientation_window_bits) return false;
-    std::int64_t v[6];
-    for (int k = 0; k < 6; ++k) {
-        const std::uint64_t magnitude = static_cast<std::uint64_t>(d[k].m < 0 ? -d[k].m : d[k].m)
-                                        << (d[k].m == 0 ? 0 : d[k].e - low);
-        v[k] = d[k].m < 0 ? -static_cast<std::int64_t>(magnitude) : static_cast<std::int64_t>(magnitude);
-    }
+    std::int64_t v[6];  // each in units of 2^low: |v| < 2^61, so that the product stays in 64 bits
+    for (int k = 0; k < 6; ++k) v[k] = d[k].m == 0 ? 0 : d[k].m * (std::int64_t{1} << (d[k].e - low));
     __extension__ typedef __int128 wide;  // (__extension__: no pedantic warning)
     const wide det = static_cast<wide>(v[2] - v[0]) * static_cast<wide>(v[5] - v[1]) -
                      static_cast<wide>(v[3] - v[1]) * static_cast<wide>(v[4] - v[0]);

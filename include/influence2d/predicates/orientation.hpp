@@ -55,9 +55,9 @@ inline int orientation_of_doubles(double ax, double ay, double bx, double by, do
     // differences: a rounded difference of doubles has the sign of the exact
     // one, and is 0 only when the two are equal. Grids and rectangles come
     // here, without the exact sum.
-    const auto sign_of = [](double x) { return (x > 0) - (x < 0); };
-    if (bx == ax || cy == ay) return -sign_of(by - ay) * sign_of(cx - ax);
-    if (by == ay || cx == ax) return sign_of(bx - ax) * sign_of(cy - ay);
+    using tr = number_traits<double>;
+    if (bx == ax || cy == ay) return -tr::sign(by - ay) * tr::sign(cx - ax);
+    if (by == ay || cx == ax) return tr::sign(bx - ax) * tr::sign(cy - ay);
     return exact_sum::orientation_sign(ax, ay, bx, by, cx, cy);
 }
 
