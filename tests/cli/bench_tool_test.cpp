@@ -26,7 +26,7 @@ std::set<std::string> bench_options_in(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("cli bench: influence2d-bench runs the time study and writes its tables", "[cli]") {
+TEST_CASE("cli bench: influence2d-bench runs the time study and writes its tables", "[cli][bench_program]") {
     const temp_dir dir;
     const auto r = run_bench(dir,
                              "--types convex --sizes 8 --trajectories linear --methods double "
@@ -42,14 +42,14 @@ TEST_CASE("cli bench: influence2d-bench runs the time study and writes its table
     CHECK(slurp(dir / "out" / "bench.csv").find("convex,linear,8,8,double,16,") != std::string::npos);
 }
 
-TEST_CASE("cli bench: bad options are refused with the program's name and exit code 2", "[cli]") {
+TEST_CASE("cli bench: bad options are refused with the program's name and exit code 2", "[cli][bench_program]") {
     const temp_dir dir;
     const auto r = run_bench(dir, "--types nope --out " + quote((dir / "out").string()));
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("influence2d-bench: error: --types: unknown name 'nope'") == 0);
 }
 
-TEST_CASE("cli bench: the README's synopsis of influence2d-bench names the options it has", "[cli]") {
+TEST_CASE("cli bench: the README's synopsis of influence2d-bench names the options it has", "[cli][bench_program]") {
     const std::string readme = slurp(fs::path(INFLUENCE2D_DATA_DIR).parent_path() / "README.md");
     // The synopsis entry: the line "influence2d-bench ..." and the indented lines after it.
     std::string entry;

@@ -15,7 +15,7 @@
 
 using namespace test_process;
 
-TEST_CASE("cli world bench: every scene, every method, the answers compared", "[cli]") {
+TEST_CASE("cli world bench: every scene, every method, the answers compared", "[cli][bench_program]") {
     const temp_dir dir;
     const auto r = run_world_bench(dir, "--sizes 40 --steps 3 --out " + quote((dir / "out").string()));
     INFO(r.err);
@@ -53,7 +53,7 @@ TEST_CASE("cli world bench: every scene, every method, the answers compared", "[
     CHECK(fs::exists(dir / "out" / "world.md"));
 }
 
-TEST_CASE("cli world bench: bad options exit 2", "[cli]") {
+TEST_CASE("cli world bench: bad options exit 2", "[cli][bench_program]") {
     const temp_dir dir;
     CHECK(run_world_bench(dir, "--sizes x").exit_code == 2);
     CHECK(run_world_bench(dir, "--layers " + quote((dir / "none").string()) + " --sizes 10 --steps 2").exit_code == 2);

@@ -336,7 +336,7 @@ TEST_CASE("time study: random and one-shot rows, no disagreement, the preparatio
 }
 
 TEST_CASE("time study: the command writes the table, the summary and the heat maps",
-          "[verification][bench][cli][time_study]") {
+          "[verification][bench][cli][time_study][bench_program]") {
     const temp_dir dir;
     const auto r = run_bench(dir,
                              "--quick --types convex --sizes 8,16 --trajectories linear,one-shot "
@@ -387,7 +387,7 @@ TEST_CASE("time study: the command writes the table, the summary and the heat ma
     }
 }
 
-TEST_CASE("time study: bad arguments are named, exit code 2", "[verification][bench][cli][time_study]") {
+TEST_CASE("time study: bad arguments are named, exit code 2", "[verification][bench][cli][time_study][bench_program]") {
     const temp_dir dir;
     const std::string out = " --out " + quote((dir / "out").string());
     const auto bad_size = run_bench(dir, "--sizes 8,100" + out);
