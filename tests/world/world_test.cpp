@@ -600,6 +600,64 @@ TEST_CASE("world: a kept separating edge is tried where the bodies stand exactly
     CHECK(found == wanted);
 }
 
+TEST_CASE("world: a turned body touching exactly where its vertex in double rounds off the other's box", "[world]") {
+    // A: the unit square where it stands (its doubles are the decisions'
+    // own). B: a thin triangle led by its vertex q = (qx, qy), turned by
+    // theta and moved by (tx, ty), tx sought among the doubles next to
+    // 1 - (c*qx - s*qy) so that q posed exactly (CGAL) lands on A's right
+    // side x = 1 or just inside it, while q posed in double (three
+    // roundings, of products near 2) lands beyond it: B's box in double
+    // misses A's by a few units in the last place. Every other vertex of B
+    // lies further right. The pair is new at its step, so the one-shot test
+    // answers it, on a turned placing whose filters must allow for its
+    // rounding (with no margin for it, the boxes keep the bodies apart).
+    // Both orders of the bodies, certified and exact worlds, against the
+    // reference; the double world answers for its own posing.
+    const polygon square({test_shapes::ring({{0, 0}, {1, 0}, {1, 1}, {0, 1}})});
+    rng g(2718);
+    const int wanted = std::max(3, test_effort::scaled(12));
+    int found = 0, trials = 0;
+    while (found < wanted && trials < 2000) {
+        ++trials;
+        const point<double> q{g.uniform(1.5, 2), g.uniform(1.5, 2)};
+        const polygon thin({test_shapes::ring({q, {q.x + 6, q.y - 0.25}, {q.x + 6, q.y + 0.25}})});
+        const double theta = g.uniform(0.05, 0.3);
+        const rotation_pose turn(pose{0, 0, theta});
+        const point<double> at_zero = turn.apply<double>(q);
+        const double ty = 0.5 - at_zero.y;
+        const double base = 1 - at_zero.x;
+        double tx = base;
+        bool placed = false;
+        for (int k = -12; k <= 12 && !placed; ++k) {
+            tx = base + k * std::ldexp(1.0, std::ilogb(base) - 52);
+            const pose b_at{tx, ty, theta};
+            const test_exact::placed_shape exact_b = test_exact::place(thin, b_at);
+            placed = rotation_pose(b_at).apply<double>(q).x > 1 && exact_b.v[0].x() <= 1;
+        }
+        if (!placed) continue;
+        ++found;
+        const pose b_at{tx, ty, theta};
+        INFO("trial " << trials << " theta " << theta << " tx " << tx);
+        REQUIRE(test_exact::regions_meet(test_exact::place(square, pose{0, 0, 0}), test_exact::place(thin, b_at)));
+        const auto contacts = [&](auto world_type, bool square_first) {
+            decltype(world_type) world;
+            world.add_shape(square);
+            world.add_shape(thin);
+            if (square_first) world.add_body(0, pose{0, 0, 0}, true);
+            world.add_body(1, b_at);
+            if (!square_first) world.add_body(0, pose{0, 0, 0}, true);
+            return world.step().size();
+        };
+        for (const bool square_first : {true, false}) {
+            CHECK(contacts(certified_world{}, square_first) == 1);
+            CHECK(contacts(world<exact_rational>{}, square_first) == 1);
+            CHECK(contacts(world<double>{}, square_first) ==
+                  (intersects<double>(square, pose{0, 0, 0}, thin, b_at) ? 1u : 0u));
+        }
+    }
+    CHECK(found == wanted);
+}
+
 TEST_CASE("world: turned bodies touching at the edge of their bounding discs", "[world]") {
     // An octagon whose vertices (+-2, 0) and (0, +-2) lie on its bounding
     // disc (radius 2) and whose other vertices lie inside it. Body A of
