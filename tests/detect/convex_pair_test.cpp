@@ -72,7 +72,8 @@ TEST_CASE("convexity: one convex ring, decided exactly", "[convexity]") {
 TEST_CASE("convex pairs: the separating-edge route equals the CGAL reference", "[convexity][detector]") {
     test_random::rng r(20261126);
     verdicts v;
-    std::size_t convex_frames = 0, disc_frames = 0;
+    std::size_t convex_frames = 0, disc_frames = 0, witness_disc_frames = 0, held_frames = 0;
+    bool large = false;  // polygons beyond the separating-edge route (convex_pair_pays)
     const auto check_pair = [&](const polygon& a, const polygon& b, const std::vector<pose>& poses, bool exact_poses) {
         REQUIRE(is_convex_polygon(a));
         REQUIRE(is_convex_polygon(b));
@@ -97,6 +98,8 @@ TEST_CASE("convex pairs: the separating-edge route equals the CGAL reference", "
                                w.pairs == rw.pairs && cw.collides == expected && cw.pairs == rw.pairs &&
                                (!exact_poses || plain.collide(q).collides == expected) &&
                                (q.theta != 0 || swapped.collide(pose{-q.tx, -q.ty, 0}).collides == expected);
+            // One polygon holding the other: they meet at no edge pair.
+            held_frames += w.collides && w.pairs.empty();
             if (!agree) {
                 ++v.disagreements;
                 UNSCOPED_INFO("pose " << q.tx << " " << q.ty << " " << q.theta);
@@ -104,6 +107,7 @@ TEST_CASE("convex pairs: the separating-edge route equals the CGAL reference", "
         }
         convex_frames += exact.statistics().convex_frames;
         disc_frames += exact.statistics().disc_frames;
+        witness_disc_frames += exact_witness.statistics().disc_frames;
     };
 
     SECTION("lattice polygons touching exactly under integer translations") {
@@ -136,12 +140,29 @@ TEST_CASE("convex pairs: the separating-edge route equals the CGAL reference", "
             check_pair(a, b, poses, false);
         }
     }
+    SECTION("convex polygons too large for the separating-edge route, their inner discs still asked") {
+        large = true;
+        for (int pair = 0; pair < 8; ++pair) {
+            const std::size_t na = 17 + r.index(24), nb = 17 + r.index(24);
+            const polygon a = ellipse_polygon(r, na, {0, 0}, r.uniform(1, 3), r.uniform(1, 3));
+            const polygon b = ellipse_polygon(r, nb, {0, 0}, r.uniform(0.3, 3), r.uniform(0.3, 3));
+            if (!is_convex_polygon(a) || !is_convex_polygon(b)) continue;
+            std::vector<pose> poses;
+            for (int k = 0; k < 80; ++k) poses.push_back({r.uniform(-5, 5), r.uniform(-5, 5), r.uniform(-3.2, 3.2)});
+            check_pair(a, b, poses, false);
+        }
+    }
     CHECK(v.disagreements == 0);
     CHECK(v.contacts > 0);
     CHECK(v.contacts < v.frames);
-    CHECK(convex_frames > 0);
+    CHECK((convex_frames > 0) != large);
     // Both ways of the route ran: inner discs overlapping, and the edges.
     CHECK(disc_frames > 0);
+    // With witnesses too: the inner discs overlapping show the meeting, so a
+    // pair search that finds no pair means that one polygon holds the other
+    // (no containment test), and such frames came up.
+    CHECK(witness_disc_frames > 0);
+    CHECK(held_frames > 0);
 }
 
 TEST_CASE(

@@ -113,15 +113,19 @@ struct distance_state {
 ///       an edge of one with every vertex of the other strictly outside
 ///       its line, the last frame's first (convex_regions_meet): disjoint
 ///       else                                                    they meet
-///   (with witnesses the pairs are sought as for any polygons: the edge
-///   pairs are the answer, and their search shows the meeting too)
+///   with witnesses, A and B small and convex, their inner discs certainly
+///   overlap: the pairs of a jump (below), no containment: none
+///   means that one holds the other                          they meet
+///   (else the pairs are sought as for any polygons: the edge pairs are
+///   the answer, and their search shows the meeting too)
 ///   no witnesses asked, p within the skin of the last frame's, and the edge
 ///   pair that met last (features::coherence) meets again by the pair tests
 ///   (last_pair_meets):                                          they meet
 ///   p jumped (a random pose, a first frame far from the last, or no
 ///   features::coherence: coherent_step):
-///       A and B convex, no witnesses asked, their inner discs certainly
-///           overlap (inner_discs_overlap):                      they meet
+///       A and B convex, their inner discs certainly overlap
+///           (inner_discs_overlap):                              they meet
+///           (with witnesses: the pairs below, no containment)
 ///       few edge pairs (every_pair_pays): B posed in double; B's edges
 ///           whose boxes meet A's box, against A's edges whose boxes meet
 ///           B's: every pair whose boxes meet gets the pair tests; then containment
@@ -253,9 +257,12 @@ public:
     ///       if their inner discs certainly overlap:           they meet
     ///       if an edge of one separates them:                 disjoint
     ///       else                                              they meet
+    ///   if A and B are small and convex, witnesses asked, and their inner
+    ///   discs certainly overlap: the pairs below, no containment
     ///   if p jumped (no coherence to use):
-    ///       if A and B are convex, no witnesses asked, and their inner
-    ///       discs certainly overlap:                          they meet
+    ///       if A and B are convex and their inner discs certainly
+    ///       overlap:                       they meet (with witnesses: the
+    ///                                      pairs below, no containment)
     ///       pairs from A's and B's edge trees
     ///       traversed together (every pair's boxes, for two small polygons),
     ///       then containment
@@ -365,12 +372,14 @@ private:
             tally(&detector_statistics::convex_frames);
             return {convex_meet(f), {}};
         }
+        if (convex_route_ && inner_discs_overlap(f)) return convex_pairs(f);
         if (last_pair_meets(f)) {
             tally(&detector_statistics::last_pair_frames);
             return {true, {}};
         }
         if (!coherent_step(f)) {
-            if (inner_discs_overlap(f)) return {true, {}};
+            if (!convex_route_ && inner_discs_overlap(f))
+                return witnessing() ? convex_pairs(f) : frame_result{true, {}};
             return every_pair_pays() ? every_pair(f) : pairs_through_trees(f);
         }
         refresh_candidates(f);
@@ -547,10 +556,11 @@ private:
     /// (discs_certainly_overlap), each in its polygon's region: on random
     /// poses of convex polygons near contact 60% to 80% of the poses are
     /// answered so, before any vertex of B is posed; other polygons do not
-    /// ask (inner_discs_), nor a frame that gathers witnesses (the discs do
-    /// not tell which edges meet).
+    /// ask (inner_discs_). A frame that gathers witnesses still seeks its
+    /// pairs (the discs do not tell which edges meet), but needs no
+    /// containment test when it finds none (convex_pairs).
     bool inner_discs_overlap(const frame& f) {
-        if (!inner_discs_ || witnessing()) return false;
+        if (!inner_discs_) return false;
         const disc b = posed_b_inner(f);
         if (!discs_certainly_overlap(a_inner_.centre, a_inner_.radius, b.centre, b.radius, f.margin)) return false;
         tally(&detector_statistics::disc_frames);
@@ -585,6 +595,14 @@ private:
         if constexpr (with_coherence) return convex_regions_meet<NT>(a, b, spread, coherence_state::value.separating);
         std::uint32_t none = 0;
         return convex_regions_meet<NT>(a, b, spread, none);
+    }
+
+    /// The witnesses of two convex polygons known to meet (their inner discs
+    /// overlap, inner_discs_overlap): every edge pair that meets, by the
+    /// pair search of a jump; none means that one polygon holds the other,
+    /// so no containment test is asked.
+    frame_result convex_pairs(const frame& f) {
+        return every_pair_pays() ? every_pair(f, true) : pairs_through_trees(f, true);
     }
 
     /// For a jump, testing the boxes of every edge pair costs less than
@@ -637,7 +655,7 @@ private:
     /// inverse pose), and each such pair gets the pair tests,
     /// stopping at the first meeting pair without witnesses; then containment
     /// with B's box taken from its posed bounding circle.
-    frame_result pairs_through_trees(const frame& f) {
+    frame_result pairs_through_trees(const frame& f, bool meet_known = false) {
         tally(&detector_statistics::jump_frames);
         if (!witnessing() && interiors_pay() && interior_odds_.worth_asking()) {
             const bool deep = vertices_deep_inside(f);
@@ -688,6 +706,7 @@ private:
             const pair_collector& pairs = witness_state::value;
             if (!pairs.empty()) return {true, numbered(pairs)};
         }
+        if (meet_known) return {true, {}};
         tally(&detector_statistics::containment_tests);
         // B's box from its posed root circle, as the traversal saw it.
         const point<double> c = f.t.template apply<double>(b_tree().root_center());
@@ -708,7 +727,7 @@ private:
     /// box misses B's, meets no edge of the other: the pairs' boxes are
     /// tested only between the edges left (every_pair_pays: B has at most
     /// every_pair_limit edges, A at least three).
-    frame_result every_pair(const frame& f) {
+    frame_result every_pair(const frame& f, bool meet_known = false) {
         tally(&detector_statistics::jump_frames);
         place_approximate(f.t);
         if constexpr (with_witness)
@@ -749,7 +768,7 @@ private:
                     return {true, {}};
             }
         }
-        return finish(f.n, f.margin);
+        return finish(f.n, f.margin, meet_known);
     }
 
     /// The pair search through A's edge tree: each moving edge, posed in double,
@@ -918,8 +937,9 @@ private:
     }
 
     /// The end of a frame whose pairs were all tested: the pairs found, if
-    /// any (with witnesses), else containment.
-    frame_result finish(double n, double frame_margin) {
+    /// any (with witnesses), else containment (or the meeting already known,
+    /// `meet_known`: one polygon holds the other).
+    frame_result finish(double n, double frame_margin, bool meet_known = false) {
         frame_result r;
         if constexpr (with_witness) {
             const pair_collector& pairs = witness_state::value;
@@ -929,6 +949,8 @@ private:
                 return r;
             }
         }
+        r.collides = meet_known;
+        if (meet_known) return r;
         tally(&detector_statistics::containment_tests);
         r.collides = contains(n, frame_margin);
         return r;

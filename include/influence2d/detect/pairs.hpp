@@ -34,6 +34,11 @@ public:
         out.clear();
         out.reserve(pairs_.size());
         for (const auto& p : pairs_) out.push_back({a.source_edge(p.static_edge), b.source_edge(p.moving_edge)});
+        // (A search that lists the pairs in order, as every_pair does for
+        // polygons stored in their input order, needs neither pass.)
+        if (std::adjacent_find(out.begin(), out.end(),
+                               [](const edge_pair& x, const edge_pair& y) { return !(x < y); }) == out.end())
+            return;
         std::sort(out.begin(), out.end());
         out.erase(std::unique(out.begin(), out.end()), out.end());
     }
