@@ -1,0 +1,84 @@
+# SPDX-License-Identifier: BSL-1.0
+"""intersects on real neighbours against GEOS (shapely), a reference that
+shares nothing with the library: North Carolina's 100 counties
+(data/real/nc_counties.wkt, from r-cran-sf's nc.shp; a tiling whose shared
+borders touch exactly) and four countries of Natural Earth's 1:110m map
+(data/real/neighbours.wkt), every pair that touches as given, in both roles.
+
+The poses are translations (theta = 0, so that B's posed vertices are
+x + tx and y + ty, as shapely.affinity.translate makes them) kept only where
+every such sum is exact in double: then GEOS sees the exactly posed polygon,
+and its predicates decide exactly on doubles. A translation of about the
+coordinates' unit in the last place or less, made of a coarser unit, moves
+the shared border by the least amounts the data can express."""
+
+import math
+import os
+from fractions import Fraction
+
+import numpy as np
+import pytest
+import shapely.affinity
+import shapely.wkt
+
+import influence2d
+
+DATA = os.path.join(os.path.dirname(__file__), "..", "..", "data", "real")
+
+
+def layer(name):
+    with open(os.path.join(DATA, name)) as f:
+        return [line.strip() for line in f if line.strip()]
+
+
+def coordinates(geometry):
+    parts = geometry.geoms if geometry.geom_type == "MultiPolygon" else [geometry]
+    for p in parts:
+        for ring in [p.exterior, *p.interiors]:
+            yield from ring.coords
+
+
+def exact_translation(points, tx, ty):
+    """Whether x + tx and y + ty round to nothing for every point."""
+    ftx, fty = Fraction(tx), Fraction(ty)
+    return all(Fraction(x + tx) == Fraction(x) + ftx and Fraction(y + ty) == Fraction(y) + fty for x, y in points)
+
+
+def translations(rng, points):
+    """The identity, and pushes along the axes and in random directions at
+    scales from below the coordinates' unit in the last place to 1e-3,
+    each a multiple of 2^-k for the scale's k; those not exact dropped."""
+    unit = max(math.ulp(abs(c)) for p in points for c in p)
+    out = [(0.0, 0.0)]
+    for scale in (unit, 4 * unit, 2.0 ** -30, 1e-6, 1e-3):
+        grain = 2.0 ** math.floor(math.log2(scale))
+        directions = [(1, 0), (-1, 0), (0, 1), (0, -1)]
+        for _ in range(3):
+            a = rng.uniform(0, 2 * math.pi)
+            directions.append((math.cos(a), math.sin(a)))
+        for dx, dy in directions:
+            out.append((round(scale * dx / grain) * grain, round(scale * dy / grain) * grain))
+    return [t for t in out if exact_translation(points, *t)]
+
+
+@pytest.mark.parametrize("file", ["nc_counties.wkt", "neighbours.wkt"])
+def test_touching_real_neighbours_against_geos(rng, file):
+    lines = layer(file)
+    geometries = [shapely.wkt.loads(w) for w in lines]
+    pairs = [(i, j) for i in range(len(lines)) for j in range(len(lines)) if i != j and geometries[i].touches(geometries[j])]
+    assert len(pairs) >= 4  # both roles of at least two borders
+    poses_asked = met = 0
+    for i, j in pairs:
+        points = list(coordinates(geometries[j]))
+        kept = translations(rng, points)
+        assert len(kept) >= 20  # the identity and most pushes are exact
+        poses = np.array([(tx, ty, 0.0) for tx, ty in kept], dtype=np.float64)
+        want = [geometries[i].intersects(shapely.affinity.translate(geometries[j], tx, ty)) for tx, ty in kept]
+        assert want[0]  # touching where they stand
+        poses_asked += len(kept)
+        met += sum(want)
+        for number_type in ("certified", "exact", "double"):
+            got = influence2d.intersects(lines[i], lines[j], poses, number_type=number_type)
+            assert got.tolist() == want, (file, i, j, number_type)
+    # Both answers came up often: the pushes cross the shared borders both ways.
+    assert 0.2 * poses_asked < met < 0.95 * poses_asked
