@@ -82,3 +82,24 @@ def test_touching_real_neighbours_against_geos(rng, file):
             assert got.tolist() == want, (file, i, j, number_type)
     # Both answers came up often: the pushes cross the shared borders both ways.
     assert 0.2 * poses_asked < met < 0.95 * poses_asked
+
+
+@pytest.mark.parametrize("file", ["nc_counties.wkt", "neighbours.wkt"])
+def test_layer_join_of_real_neighbours_against_geos(file):
+    """Every pair that meets in one layer, and between the layer and a copy
+    shifted by an exact translation of a few units in the last place (some
+    borders then overlap, some part), against GEOS on every pair."""
+    lines = layer(file)
+    geometries = [shapely.wkt.loads(w) for w in lines]
+    points = [p for g in geometries for p in coordinates(g)]
+    unit = max(math.ulp(abs(c)) for p in points for c in p)
+    shift = (3 * unit, -2 * unit)
+    assert exact_translation(points, *shift)
+    moved = [shapely.affinity.translate(g, *shift) for g in geometries]
+    n = len(geometries)
+    want_one = [[i, j] for i in range(n) for j in range(i + 1, n) if geometries[i].intersects(geometries[j])]
+    want_two = [[i, j] for i in range(n) for j in range(n) if geometries[i].intersects(moved[j])]
+    assert want_one and want_two
+    for number_type in ("certified", "exact", "double"):
+        assert influence2d.pairs(lines, number_type=number_type).tolist() == want_one
+        assert influence2d.pairs(lines, moved, number_type=number_type).tolist() == want_two
