@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 // The influence2d-real-bench program: the time study on pairs of real
-// polygons (countries and New York City boroughs from scripts/real_layers.sh:
-// multipolygons of many parts, long shared borders, coordinates far from 0).
+// polygons (countries, New York City boroughs and North Carolina counties
+// from scripts/real_layers.sh: multipolygons of many parts, long shared
+// borders, coordinates far from 0).
 // The moving polygon of each pair is posed by poses that mostly overlap the
 // static one: a random walk (coherent, each pose a small step from the last)
 // and the same poses shuffled (no coherence); and by the walk's poses each
@@ -65,6 +66,11 @@ const std::vector<real_pair>& study_pairs() {
         // 2,000 feet, as far as the translation does.
         {"boroughs", "Brooklyn", "Queens", 2000, 0.002},
         {"boroughs", "Manhattan", "Bronx", 2000, 0.002},
+        // Degrees near (-77, 35), counties about half a degree across, the
+        // longest shared borders of the layer (they touch exactly where they
+        // stand): a turn of 0.0005 rad moves a county by about 0.04 degrees.
+        {"counties", "Northampton", "Halifax", 0.05, 0.0005},
+        {"counties", "Jones", "Craven", 0.05, 0.0005},
     };
     return pairs;
 }
@@ -333,7 +339,8 @@ void run(const bench_options& o) {
 int main(int argc, char** argv) {
     using namespace influence2d::cli;
     CLI::App app{
-        "The time study on pairs of real polygons (countries and New York City boroughs) against GEOS and "
+        "The time study on pairs of real polygons (countries, New York City boroughs, North Carolina counties) "
+        "against GEOS and "
         "Boost.Geometry, coherent and shuffled poses",
         "influence2d-real-bench"};
     auto o = std::make_shared<bench_options>();
