@@ -336,7 +336,8 @@ public:
         const std::size_t grid =
             grid_built_ ? (grid_.cell_count() + 1 + grid_.entry_count()) * sizeof(std::uint32_t) : 0;
         std::size_t bytes = sizeof(*this) + grid + chunks_.capacity() * sizeof(chunk) +
-                            chunk_centers_.capacity() * sizeof(point<double>) +
+                            chunk_centers_.capacity() * sizeof(point<double>) + b_edge_boxes_.capacity() * sizeof(box) +
+                            chunk_boxes_frame_.capacity() * sizeof(std::uint64_t) +
                             (cache_.capacity() + candidates_.capacity()) * sizeof(std::uint32_t) + b_.heap_bytes() +
                             a_ring_boxes_.capacity() * sizeof(box) + a_edge_boxes_.capacity() * sizeof(edge_box);
         if constexpr (with_witness) bytes += witness_state::value.heap_bytes();
@@ -835,6 +836,7 @@ private:
         if (!posed) place_approximate(f.t);
         if constexpr (with_witness)
             if (options_.witness) witness_state::value.clear();
+        ++boxes_frame_;  // B's edges' boxes made anew, chunk by chunk, as test_edge reaches them
         for (std::uint32_t e : candidates_)
             if (test_edge(e, f.margin) && !witnessing()) return {true, {}};
         return finish(f.n, f.margin);
@@ -1133,6 +1135,8 @@ private:
                 chunks_.push_back(k);
             }
         chunk_centers_.resize(chunks_.size());
+        b_edge_boxes_.resize(b_.size());
+        chunk_boxes_frame_.assign(chunks_.size(), 0);
     }
 
     /// Tests static edge e against the moving edges whose boxes (from the
@@ -1154,13 +1158,18 @@ private:
             const point<double>& q = chunk_centers_[c];
             const double r = chunks_[c].radius + 2 * frame_margin;
             if (q.x < eb.min_x - r || q.x > eb.max_x + r || q.y < eb.min_y - r || q.y > eb.max_y + r) continue;
+            if (chunk_boxes_frame_[c] != boxes_frame_) {
+                // This frame's boxes of the chunk's edges, for every candidate after this one.
+                chunk_boxes_frame_[c] = boxes_frame_;
+                for (std::size_t j = chunks_[c].first; j < chunks_[c].last; ++j) {
+                    const point<double>&u = b_.approximate(j), &v = b_.approximate(next_b(j));
+                    b_edge_boxes_[j] = {std::min(u.x, v.x), std::min(u.y, v.y), std::max(u.x, v.x), std::max(u.y, v.y)};
+                }
+            }
             for (std::size_t j = chunks_[c].first; j < chunks_[c].last; ++j) {
-                const point<double>& u = b_.approximate(j);
-                const point<double>& v = b_.approximate(next_b(j));
-                if (std::max(u.x, v.x) < eb.min_x || std::min(u.x, v.x) > eb.max_x || std::max(u.y, v.y) < eb.min_y ||
-                    std::min(u.y, v.y) > eb.max_y)
-                    continue;
-                if (!test_pair(e, j, u, v, frame_margin)) continue;
+                const box& be = b_edge_boxes_[j];
+                if (be.max_x < eb.min_x || be.min_x > eb.max_x || be.max_y < eb.min_y || be.min_y > eb.max_y) continue;
+                if (!test_pair(e, j, b_.approximate(j), b_.approximate(next_b(j)), frame_margin)) continue;
                 if (!witnessing()) return true;
                 found = true;
             }
@@ -1253,6 +1262,12 @@ private:
     };
     std::vector<chunk> chunks_;
     std::vector<point<double>> chunk_centers_;  ///< posed by place_approximate
+    /// B's posed edges' boxes, made by test_edge for the chunks it reaches:
+    /// chunk c's are this frame's when chunk_boxes_frame_[c] is
+    /// boxes_frame_ (counted by pairs_through_candidates from 1).
+    std::vector<box> b_edge_boxes_;
+    std::vector<std::uint64_t> chunk_boxes_frame_;
+    std::uint64_t boxes_frame_ = 0;
     /// A's edge tree (shared; built by the first frame that asks for it).
     const edge_tree& a_tree() const { return a_->tree(); }
     /// B's edge tree in B's own frame (shared; built by the first frame that asks).
