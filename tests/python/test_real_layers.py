@@ -38,6 +38,17 @@ def coordinates(geometry):
             yield from ring.coords
 
 
+def touching_pairs(geometries):
+    """Every ordered pair (i, j), i != j, of geometries that touch as given."""
+    n = len(geometries)
+    return [(i, j) for i in range(n) for j in range(n) if i != j and geometries[i].touches(geometries[j])]
+
+
+def last_place_unit(points):
+    """The largest unit in the last place of the points' coordinates."""
+    return max(math.ulp(abs(c)) for p in points for c in p)
+
+
 def exact_translation(points, tx, ty):
     """Whether x + tx and y + ty round to nothing for every point."""
     ftx, fty = Fraction(tx), Fraction(ty)
@@ -48,7 +59,7 @@ def translations(rng, points):
     """The identity, and pushes along the axes and in random directions at
     scales from below the coordinates' unit in the last place to 1e-3,
     each a multiple of 2^-k for the scale's k; those not exact dropped."""
-    unit = max(math.ulp(abs(c)) for p in points for c in p)
+    unit = last_place_unit(points)
     out = [(0.0, 0.0)]
     for scale in (unit, 4 * unit, 2.0 ** -30, 1e-6, 1e-3):
         grain = 2.0 ** math.floor(math.log2(scale))
@@ -65,7 +76,7 @@ def translations(rng, points):
 def test_touching_real_neighbours_against_geos(rng, file):
     lines = layer(file)
     geometries = [shapely.wkt.loads(w) for w in lines]
-    pairs = [(i, j) for i in range(len(lines)) for j in range(len(lines)) if i != j and geometries[i].touches(geometries[j])]
+    pairs = touching_pairs(geometries)
     assert len(pairs) >= 4  # both roles of at least two borders
     poses_asked = met = 0
     for i, j in pairs:
@@ -92,7 +103,7 @@ def test_layer_join_of_real_neighbours_against_geos(file):
     lines = layer(file)
     geometries = [shapely.wkt.loads(w) for w in lines]
     points = [p for g in geometries for p in coordinates(g)]
-    unit = max(math.ulp(abs(c)) for p in points for c in p)
+    unit = last_place_unit(points)
     shift = (3 * unit, -2 * unit)
     assert exact_translation(points, *shift)
     moved = [shapely.affinity.translate(g, *shift) for g in geometries]
@@ -114,7 +125,7 @@ def test_turned_counties_against_the_exact_reference(rng):
 
     lines = layer("nc_counties.wkt")
     geometries = [shapely.wkt.loads(w) for w in lines]
-    pairs = [(i, j) for i in range(len(lines)) for j in range(len(lines)) if i != j and geometries[i].touches(geometries[j])]
+    pairs = touching_pairs(geometries)
     met = asked = 0
     for i, j in rng.sample(pairs, 10):
         shared = list(set(coordinates(geometries[i])) & set(coordinates(geometries[j])))

@@ -951,8 +951,7 @@ private:
                 return r;
             }
         }
-        r.collides = meet_known;
-        if (meet_known) return r;
+        if (meet_known) return {true, {}};
         tally(&detector_statistics::containment_tests);
         r.collides = contains(n, frame_margin);
         return r;
