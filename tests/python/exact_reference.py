@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: BSL-1.0
 """An exact reference that does not use the library: whether two closed
-polygonal regions meet, in rational arithmetic (fractions.Fraction) on the
-posed coordinates.
+polygonal regions meet, and how far apart they are, in rational arithmetic
+(fractions.Fraction) on the posed coordinates.
 
 Posing follows the library's definition (core/pose.hpp): B's vertex q goes
 to (c qx - s qy + tx, s qx + c qy + ty) with the doubles c = cos(theta) and
@@ -109,6 +109,48 @@ def intersects(a_geom, b_geom, pose):
     """The exact answer of influence2d.intersects for one pose."""
     return regions_meet(oriented(rings_of(a_geom)), posed(oriented(rings_of(b_geom)), pose))
 
+
+
+def _point_segment_squared(a, b, p):
+    """The squared distance from p to the closed segment ab."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    length2 = dx * dx + dy * dy
+    t = Fraction(0) if length2 == 0 else min(max(((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / length2, 0), 1)
+    ex, ey = p[0] - (a[0] + t * dx), p[1] - (a[1] + t * dy)
+    return ex * ex + ey * ey
+
+
+def segments_squared_distance(a, b, c, d):
+    """The squared distance between the closed segments ab and cd: 0 when
+    they meet, else that of the nearest end to the other segment."""
+    if segments_meet(a, b, c, d):
+        return Fraction(0)
+    return min(_point_segment_squared(a, b, c), _point_segment_squared(a, b, d), _point_segment_squared(c, d, a),
+               _point_segment_squared(c, d, b))
+
+
+def squared_distance(a_geom, b_geom, pose, reach, a_pose=(0.0, 0.0, 0.0)):
+    """The exact squared distance between A posed by a_pose and B posed by
+    pose (0 when the closed regions meet), or None when it exceeds reach**2:
+    apart, the nearest points lie on the boundaries, and edge pairs whose
+    boxes are farther than reach apart on either axis are not asked."""
+    a_rings = posed(oriented(rings_of(a_geom)), a_pose)
+    b_rings = posed(oriented(rings_of(b_geom)), pose)
+    if regions_meet(a_rings, b_rings):
+        return Fraction(0)
+    reach = Fraction(reach)
+    best = None
+    for a0, a1 in _edges(a_rings):
+        low_x, high_x = min(a0[0], a1[0]) - reach, max(a0[0], a1[0]) + reach
+        low_y, high_y = min(a0[1], a1[1]) - reach, max(a0[1], a1[1]) + reach
+        for b0, b1 in _edges(b_rings):
+            if (max(b0[0], b1[0]) < low_x or min(b0[0], b1[0]) > high_x or max(b0[1], b1[1]) < low_y
+                    or min(b0[1], b1[1]) > high_y):
+                continue
+            d2 = segments_squared_distance(a0, a1, b0, b1)
+            if best is None or d2 < best:
+                best = d2
+    return best if best is not None and best <= reach * reach else None
 
 def rational_turn_transform(start, end, t):
     """B's rotation (c, s) and translation (tx, ty) at time t of the motion

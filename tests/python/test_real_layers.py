@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: BSL-1.0
 """intersects on real neighbours against GEOS (shapely), a reference that
-shares nothing with the library: North Carolina's 100 counties
+shares nothing with the library, and within d against the rational distance
+of exact_reference.py: North Carolina's 100 counties
 (data/real/nc_counties.wkt, from r-cran-sf's nc.shp; a tiling whose shared
 borders touch exactly) and four countries of Natural Earth's 1:110m map
 (data/real/neighbours.wkt), every pair that touches as given, in both roles.
@@ -47,6 +48,14 @@ def touching_pairs(geometries):
 def last_place_unit(points):
     """The largest unit in the last place of the points' coordinates."""
     return max(math.ulp(abs(c)) for p in points for c in p)
+
+
+def turned_about(point, theta):
+    """The pose that turns by theta about point (its translation in double,
+    so the point lands a hair off where it stood)."""
+    px, py = point
+    c, s = math.cos(theta), math.sin(theta)
+    return (px - (c * px - s * py), py - (s * px + c * py), theta)
 
 
 def exact_translation(points, tx, ty):
@@ -132,9 +141,7 @@ def test_turned_counties_against_the_exact_reference(rng):
         assert shared  # the tiling's borders share their vertices
         poses = []
         for theta in (1e-9, -1e-9, 1e-6, -1e-6, 1e-3, -1e-3):
-            px, py = rng.choice(shared)
-            c, s = math.cos(theta), math.sin(theta)
-            poses.append((px - (c * px - s * py), py - (s * px + c * py), theta))
+            poses.append(turned_about(rng.choice(shared), theta))
         poses = np.array(poses, dtype=np.float64)
         want = [exact_reference.intersects(geometries[i], geometries[j], p) for p in poses]
         asked += len(want)
@@ -143,3 +150,75 @@ def test_turned_counties_against_the_exact_reference(rng):
             got = influence2d.intersects(lines[i], lines[j], poses, number_type=number_type)
             assert got.tolist() == want, (i, j, number_type)
     assert 0 < met < asked  # 53 of 60 meet with the seed of conftest.py
+
+
+def test_within_a_hair_of_the_exact_distance(rng):
+    """Counties that do not touch but come near, asked whether they lie
+    within d of each other for d a few units in the last place either side
+    of their exact distance (the hardest d there is), posed as given, turned
+    about a vertex and moved, in the layer join, the detector and the world
+    (both bodies posed); certified and exact against the rational distance
+    of exact_reference.py, and separation within a unit in the last place
+    of it."""
+    import exact_reference
+
+    lines = layer("nc_counties.wkt")
+    geometries = [shapely.wkt.loads(w) for w in lines]
+    n = len(geometries)
+    near = sorted((geometries[i].distance(geometries[j]), i, j) for i in range(n) for j in range(i + 1, n)
+                  if not geometries[i].intersects(geometries[j]) and geometries[i].distance(geometries[j]) < 0.03)
+    assert len(near) >= 6
+    reach = 0.06
+    asked = within = 0
+    steps_in_contact = [0, 0]
+    for _, i, j in near[:6]:
+        points = list(coordinates(geometries[j]))
+        poses = [(0.0, 0.0, 0.0), (0.003, -0.002, 0.0)]
+        for theta in (1e-7, -1e-5, 3e-4):
+            poses.append(turned_about(rng.choice(points), theta))
+        for pose in poses:
+            d2 = exact_reference.squared_distance(geometries[i], geometries[j], pose, reach)
+            assert d2, (i, j, pose)  # apart, and within reach
+            for number_type in ("certified", "exact"):
+                got = influence2d.separation(lines[i], lines[j], np.array([pose]), number_type=number_type)[0]
+                ulp = Fraction(math.ulp(got))
+                assert (Fraction(got) - ulp) ** 2 <= d2 <= (Fraction(got) + ulp) ** 2, (i, j, pose, number_type)
+            nearest = math.sqrt(float(d2))
+            for k in range(-3, 4):
+                d = nearest
+                for _ in range(abs(k)):
+                    d = math.nextafter(d, math.copysign(math.inf, k))
+                want = Fraction(d) ** 2 >= d2
+                asked += 1
+                within += want
+                for number_type in ("certified", "exact"):
+                    detector = influence2d.Detector(lines[i], lines[j], number_type=number_type, within=d)
+                    assert bool(detector.collide(np.array([pose]))[0]) == want, (i, j, pose, d, number_type)
+                    if pose == poses[0]:
+                        got = influence2d.pairs([lines[i], lines[j]], within=d, number_type=number_type)
+                        assert got.tolist() == ([[0, 1]] if want else []), (i, j, d, number_type)
+        # The world poses both bodies, A turned about one of its vertices: a
+        # world for each pose at that pose's own distance, and one at the
+        # first pose's with B moved along the poses step after step, there
+        # and back (each step's contact kept or dropped against the new pose).
+        a_pose = turned_about(rng.choice(list(coordinates(geometries[i]))), 2e-6)
+        distances = [exact_reference.squared_distance(geometries[i], geometries[j], p, reach, a_pose) for p in poses]
+        assert all(distances)
+        for number_type in ("certified", "exact"):
+            for pose, d2 in zip(poses, distances):
+                d = math.sqrt(float(d2))
+                world = influence2d.World(number_type=number_type, within=d)
+                world.add_bodies(world.add_shapes([lines[i], lines[j]]), [a_pose, pose])
+                assert world.step().tolist() == ([[0, 1]] if Fraction(d) ** 2 >= d2 else []), (i, j, pose)
+            d = math.sqrt(float(distances[0]))
+            world = influence2d.World(number_type=number_type, within=d)
+            world.add_bodies(world.add_shapes([lines[i], lines[j]]), [a_pose, poses[0]])
+            for k in [*range(len(poses)), *reversed(range(len(poses) - 1))]:
+                world.move([1], [poses[k]])
+                want = [[0, 1]] if Fraction(d) ** 2 >= distances[k] else []
+                assert world.step().tolist() == want, (i, j, poses[k], number_type)
+                steps_in_contact[bool(want)] += 1
+    # d fell on both sides of the distance, and the moving world's contacts
+    # came and went.
+    assert 0.3 * asked < within < 0.7 * asked
+    assert min(steps_in_contact) > 0, steps_in_contact
