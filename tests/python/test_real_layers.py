@@ -45,6 +45,15 @@ def touching_pairs(geometries):
     return [(i, j) for i in range(n) for j in range(n) if i != j and geometries[i].touches(geometries[j])]
 
 
+def near_pairs(geometries, gap):
+    """The pairs (i, j), i < j, of geometries apart by less than gap (GEOS's
+    distance), nearest first."""
+    n = len(geometries)
+    found = [(geometries[i].distance(geometries[j]), i, j) for i in range(n) for j in range(i + 1, n)
+             if not geometries[i].intersects(geometries[j])]
+    return [(i, j) for d, i, j in sorted(found) if d < gap]
+
+
 def last_place_unit(points):
     """The largest unit in the last place of the points' coordinates."""
     return max(math.ulp(abs(c)) for p in points for c in p)
@@ -164,14 +173,12 @@ def test_within_a_hair_of_the_exact_distance(rng):
 
     lines = layer("nc_counties.wkt")
     geometries = [shapely.wkt.loads(w) for w in lines]
-    n = len(geometries)
-    near = sorted((geometries[i].distance(geometries[j]), i, j) for i in range(n) for j in range(i + 1, n)
-                  if not geometries[i].intersects(geometries[j]) and geometries[i].distance(geometries[j]) < 0.03)
+    near = near_pairs(geometries, 0.03)
     assert len(near) >= 6
     reach = 0.06
     asked = within = 0
     steps_in_contact = [0, 0]
-    for _, i, j in near[:6]:
+    for i, j in near[:6]:
         points = list(coordinates(geometries[j]))
         poses = [(0.0, 0.0, 0.0), (0.003, -0.002, 0.0)]
         for theta in (1e-7, -1e-5, 3e-4):
@@ -222,3 +229,29 @@ def test_within_a_hair_of_the_exact_distance(rng):
     # came and went.
     assert 0.3 * asked < within < 0.7 * asked
     assert min(steps_in_contact) > 0, steps_in_contact
+
+
+def test_first_contact_of_real_neighbours_against_the_exact_reference():
+    """Counties that come near, the second moved 0.1 degrees towards the
+    first's centroid while turning by 0, 1e-4 or -2e-3 rad (the rational
+    model: exact in certified and exact): the time of first contact is the
+    double nearest the exact one, so the exact reference finds them apart
+    one double before it and meeting one after (moving on into A)."""
+    import exact_reference
+
+    lines = layer("nc_counties.wkt")
+    geometries = [shapely.wkt.loads(w) for w in lines]
+    for i, j in near_pairs(geometries, 0.03)[:4]:
+        a, b = geometries[i].centroid, geometries[j].centroid
+        length = math.hypot(a.x - b.x, a.y - b.y)
+        start = (0.0, 0.0, 0.0)
+        for theta in (0.0, 1e-4, -2e-3):
+            end = ((a.x - b.x) / length * 0.1, (a.y - b.y) / length * 0.1, theta)
+            for number_type in ("certified", "exact"):
+                contact, t = influence2d.first_contact(lines[i], lines[j], np.array([start]), np.array([end]),
+                                                       number_type=number_type, motion="rational")
+                assert contact[0], (i, j, theta, number_type)
+                assert 0 < t[0] < 1
+                before, after = math.nextafter(t[0], 0), math.nextafter(t[0], 1)
+                assert not exact_reference.meet_in_rational_turn(geometries[i], geometries[j], start, end, before)
+                assert exact_reference.meet_in_rational_turn(geometries[i], geometries[j], start, end, after)
