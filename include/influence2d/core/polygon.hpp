@@ -4,6 +4,7 @@
 /// The polygon model: any number of closed rings of double coordinates.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -65,6 +66,13 @@ public:
     /// zero area keeps the input order.
     explicit polygon(std::vector<ring_input> rings) {
         if (rings.empty()) throw invalid_input("polygon has no ring");
+        std::size_t given = 0;  // vertices as given, closing copies included: room enough
+        for (const ring_input& ring : rings) given += ring.vertices.size();
+        vertices_.reserve(given);
+        next_.reserve(given);
+        source_edge_.reserve(given);
+        ring_begin_.reserve(rings.size() + 1);
+        roles_.reserve(rings.size());
         for (std::size_t r = 0; r < rings.size(); ++r) add_ring(r, std::move(rings[r]));
         ring_begin_.push_back(vertices_.size());
         centroid_ = compute_centroid();
@@ -137,14 +145,15 @@ public:
     /// Vertices compare with double `==`, so +0 equals -0 and each NaN counts
     /// as distinct.
     static std::size_t count_distinct(const std::vector<point<double>>& vs) {
-        std::vector<point<double>> seen;
+        std::array<point<double>, 3> seen;
+        std::size_t count = 0;
         for (const auto& v : vs) {
             bool found = false;
-            for (const auto& s : seen) found = found || s == v;
-            if (!found) seen.push_back(v);
-            if (seen.size() >= 3) break;
+            for (std::size_t k = 0; k < count; ++k) found = found || seen[k] == v;
+            if (!found) seen[count++] = v;
+            if (count == seen.size()) break;
         }
-        return seen.size();
+        return count;
     }
 
     /// The exact sign of a ring's signed area: +1 counter-clockwise, -1
