@@ -19,7 +19,7 @@ import numpy as np
 from . import _core
 from .audit import _item, audit_layer
 from .pairs import pairs as _local_pairs
-from .polygon import Polygon, as_polygons
+from .polygon import Polygon, _core_polygons, as_polygons
 from .study import _frames, study_names
 from .world import _frame as _world_frame
 from .world import _Plan as _WorldPlan
@@ -268,7 +268,7 @@ def _is_collection(values):
 def _pack(items, name):
     """One partition of a dask collection packed where it was computed: a
     _core.Layer of its polygons, each refused naming ``name[index]``."""
-    return _core.Layer([p._p for p in as_polygons(_sequence(items, name), name)])
+    return _core.Layer(_core_polygons(_sequence(items, name), name))
 
 
 def _bounds_of(layer):

@@ -6,7 +6,7 @@ layer_pairs: a box tree, then each candidate pair tested exactly)."""
 import numpy as np
 
 from . import _core
-from .polygon import as_polygons
+from .polygon import _core_polygons
 
 __all__ = ["pairs"]
 
@@ -38,8 +38,8 @@ def pairs(layer, other=None, within=0.0, number_type="certified", threads=0, ret
     >>> pairs(layer, within=1.0, return_statistics=True)[1]
     {'candidates': 2, 'exact_pairs': 1}
     """
-    first = [p._p for p in as_polygons(layer, "layer")]
-    second = None if other is None else [p._p for p in as_polygons(other, "other")]
+    first = _core_polygons(layer, "layer")
+    second = None if other is None else _core_polygons(other, "other")
     try:
         within = float(within)
     except (TypeError, ValueError):

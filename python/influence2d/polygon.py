@@ -211,6 +211,12 @@ def as_polygons(values, name="layer"):
     >>> [p.num_vertices for p in as_polygons([shapely.geometry.box(0, 0, 1, 1), "POLYGON ((0 0, 1 0, 0 1, 0 0))"])]
     [4, 3]
     """
+    return [Polygon(p) for p in _core_polygons(values, name)]
+
+
+def _core_polygons(values, name="layer"):
+    """as_polygons, the extension's polygons without their Polygon wrappers
+    (what the package's functions hand to the extension)."""
     if hasattr(values, "geom_type") and hasattr(values, "to_wkb"):  # a GeoSeries
         values = list(values.values)
     elif isinstance(values, (str, bytes, Polygon)) or hasattr(values, "geom_type"):
@@ -219,4 +225,33 @@ def as_polygons(values, name="layer"):
         values = list(values)
     except TypeError:
         raise InvalidInput(f"{name}: expected a sequence of polygons, got {type(values).__name__}") from None
-    return [as_polygon(v, f"{name}[{k}]") for k, v in enumerate(values)]
+    if values and all(_is_shapely(v) for v in values):
+        # Shapely geometries, all read in one call from their WKB (one WKB
+        # writer for them all); a geometry refused is named below, one by one.
+        try:
+            return _core.Polygon.many_from_wkb(_wkb_of(values), name)
+        except InvalidInput:
+            pass
+    return [as_polygon(v, f"{name}[{k}]")._p for k, v in enumerate(values)]
+
+
+def _is_shapely(value):
+    """Whether value is a shapely geometry (by its class where shapely is
+    there: its geom_type asks GEOS)."""
+    try:
+        from shapely.geometry.base import BaseGeometry
+    except ImportError:
+        return getattr(value, "geom_type", None) is not None
+    return isinstance(value, BaseGeometry)
+
+
+def _wkb_of(geoms):
+    """The WKB of each shapely geometry, as its ``wkb`` gives it, written by
+    one shapely WKBWriter where shapely has them (``wkb`` makes one for
+    every geometry, half the time of the conversion of a layer)."""
+    try:
+        from shapely.geos import WKBWriter, lgeos
+    except ImportError:
+        return [g.wkb for g in geoms]
+    writer = WKBWriter(lgeos)
+    return [writer.write(g) for g in geoms]

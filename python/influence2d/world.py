@@ -7,7 +7,7 @@ import numpy as np
 
 from . import _core
 from ._core import InvalidInput
-from .polygon import as_polygon, as_polygons
+from .polygon import _core_polygons, as_polygon
 from .poses import as_poses
 
 __all__ = ["World", "world_contacts"]
@@ -105,7 +105,7 @@ class World:
         >>> World().add_shapes(["POLYGON ((0 0, 1 0, 0 1, 0 0))", "POLYGON ((0 0, 2 0, 0 2, 0 0))"])
         array([0, 1])
         """
-        polygons = [p._p for p in as_polygons(shapes, "shapes")]
+        polygons = _core_polygons(shapes, "shapes")
         first = self._w.add_shapes(polygons)
         return np.arange(first, first + len(polygons), dtype=np.int64)
 
@@ -386,7 +386,7 @@ def world_contacts(shapes, steps, number_type="certified", within=0.0, events=Fa
     0     0  10  20  begin
     1     1  20  30  begin
     """
-    polygons = [p._p for p in as_polygons(shapes, "shapes")]
+    polygons = _core_polygons(shapes, "shapes")
     plan = _plan_of(steps, len(polygons))
     return _frame(*_play(polygons, plan, number_type, _within(within), bool(events), _threads(threads)),
                   bool(events))

@@ -139,6 +139,16 @@ def test_bad_layers_name_the_index():
     raises(r"layer\[2\]: ring 0 is not closed", influence2d.pairs, [A, B, "POLYGON ((0 0, 1 0, 0 1))"])
     raises(r"other\[1\]: expected a Polygon", influence2d.pairs, [A], [B, 42])
     raises(r"layer\[0\]: the Polygon is empty", influence2d.pairs, [shapely.wkt.loads("POLYGON EMPTY")])
+    # A layer of shapely geometries is read in one call: the one refused is
+    # still named, with what is wrong with it.
+    boxes = [shapely.geometry.box(k, 0, k + 1, 1) for k in range(3)]
+    raises(r"layer\[2\]: expected a Polygon or MultiPolygon, got a LineString", influence2d.pairs,
+           boxes[:2] + [shapely.geometry.LineString([(0, 0), (1, 1)])] + boxes[2:])
+    raises(r"layer\[1\]: the Polygon has z coordinates", influence2d.pairs,
+           [boxes[0], shapely.geometry.Polygon([(0, 0, 1), (1, 0, 1), (0, 1, 1)]), boxes[1]])
+    raises(r"layer\[3\]: the Polygon is empty", influence2d.pairs, boxes + [shapely.wkt.loads("POLYGON EMPTY")])
+    raises(r"other\[1\]: ring 0: fewer than three distinct vertices", influence2d.pairs, boxes,
+           [boxes[0], shapely.geometry.Polygon([(0, 0), (1, 0), (0, 0)])])
     raises("sequence of polygons", influence2d.pairs, A)
 
 

@@ -45,6 +45,14 @@ def test_shapely_round_trip_keeps_every_coordinate(rng):
         assert Polygon.from_wkb(g.wkb).to_wkt() == p.to_wkt()
 
 
+def test_a_layer_of_shapely_geometries_reads_as_each_one_alone(rng):
+    layer = [star_polygon(rng, rng.randint(3, 30), radius=rng.uniform(0.1, 1e6)) for _ in range(20)]
+    layer += [shapely.wkt.loads(SQUARE_WITH_HOLE),
+              shapely.wkt.loads("MULTIPOLYGON (((0 0, 1 0, 0 1, 0 0)), ((5 5, 6 5, 5 6, 5 5)))")]
+    together = influence2d.as_polygons(layer)
+    assert [p.to_wkt() for p in together] == [Polygon.from_shapely(g).to_wkt() for g in layer]
+
+
 def test_from_wkb_both_byte_orders():
     g = shapely.wkt.loads(SQUARE_WITH_HOLE)
     little = Polygon.from_wkb(shapely.wkb.dumps(g, big_endian=False))
