@@ -5,9 +5,17 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <random>
 #include <string>
+
+#include <boost/lexical_cast.hpp>
 
 #include "influence2d/io/wkt.hpp"
 
@@ -114,6 +122,70 @@ TEST_CASE("wkt: rejects nan and inf and names ring and vertex", "[io][wkt]") {
     // A non-finite first point is reported as such, not as an unclosed ring.
     CHECK(wkt_error("POLYGON((nan 0,1 0,1 1,nan 0))") == "<text>: ring 0, vertex 0: coordinate is not a finite number");
     CHECK(wkt_error("POLYGON((0 0,1 0,1 1e999,0 0))").find("<text>: parse error") == 0);
+}
+
+TEST_CASE("wkt: numbers read as boost::lexical_cast<double> reads them", "[io][wkt]") {
+    // The ring's first x is the number's text; the reader's answer against
+    // lexical_cast's on the same text: refused by both, or the same double.
+    const auto read_x = [](const std::string& number) -> std::optional<double> {
+        try {
+            return read_wkt_rings("POLYGON((" + number + " 0,1 0,1 1," + number + " 0))").at(0).points.at(0).x;
+        } catch (const invalid_input&) {
+            return std::nullopt;
+        }
+    };
+    const auto lexical = [](const std::string& number) -> std::optional<double> {
+        try {
+            return boost::lexical_cast<double>(number);
+        } catch (const boost::bad_lexical_cast&) {
+            return std::nullopt;
+        }
+    };
+    const auto same = [](std::optional<double> a, std::optional<double> b) {
+        if (!a || !b) return !a && !b;
+        return std::memcmp(&*a, &*b, sizeof(double)) == 0 || (std::isnan(*a) && std::isnan(*b));
+    };
+    for (const std::string number : {"1",        "+1",
+                                     "-1",       "1.",
+                                     ".5",       "-.5",
+                                     "+.5",      "1e5",
+                                     "1E+5",     "1e-5",
+                                     "-0",       "00012",
+                                     "1e0005",   "inf",
+                                     "-inf",     "nan",
+                                     "NaN",      "1e400",
+                                     "-1e400",   "1e-400",
+                                     "4.9e-324", "2.2250738585072011e-308",
+                                     "+-1",      "-+1",
+                                     "--1",      "1.5.3",
+                                     "1e",       "e5",
+                                     ".",        "+",
+                                     "-",        "0x10",
+                                     "1d5",      "1f",
+                                     "1_0"})
+        CHECK(same(read_x(number), lexical(number)));
+    // Random texts of signs, digits, points and exponents, and random
+    // doubles in shortest and 17-digit form.
+    std::mt19937_64 rng(20040202);
+    const std::string alphabet = "0123456789.eE+-";
+    for (int k = 0; k < 20000; ++k) {
+        std::string number;
+        if (k % 2 == 0) {
+            const std::size_t length = 1 + rng() % 8;
+            for (std::size_t i = 0; i < length; ++i) number += alphabet[rng() % alphabet.size()];
+        } else {
+            std::uint64_t bits = rng();
+            double x = 0;
+            std::memcpy(&x, &bits, sizeof x);
+            if (!std::isfinite(x)) continue;
+            char buffer[40];
+            std::snprintf(buffer, sizeof buffer, "%.17g", x);
+            number = k % 4 == 1 ? format_coordinate(x) : std::string(buffer);
+            REQUIRE(read_x(number) == x);
+        }
+        INFO(number);
+        CHECK(same(read_x(number), lexical(number)));
+    }
 }
 
 TEST_CASE("wkt: rejects a ring with fewer than three distinct vertices", "[io][wkt]") {
