@@ -717,3 +717,57 @@ TEST_CASE("separation: certified_separation_query answers as certified_separatio
     CHECK(in_words * 10 > frames * 6);
     CHECK(in_words < frames);
 }
+
+TEST_CASE(
+    "separation: a closest vertex of B posed exactly halfway between two doubles is rounded without the "
+    "exact query",
+    "[separation][reference]") {
+    // Poses of the time study's random annulus (seed 20040202) at which B's
+    // closest feature is its vertex 0, (50, 0): its posed coordinates
+    // c 50 + tx and s 50 + ty have a few bits more than a double, and one of
+    // them lies exactly halfway between two doubles, which no bound of a
+    // double word settles.
+    struct halfway_case {
+        verification::family fa;
+        std::size_t n;
+        verification::family fb;
+        std::size_t m;
+        pose q;
+    };
+    using verification::family;
+    const halfway_case cases[] = {
+        {family::convex, 8, family::convex, 8, {-75.682783025328149, -63.546403024480291, 0.69650661204877395}},
+        {family::convex, 8, family::convex, 8, {40.550918511716688, 88.559525136646101, 4.3136131908219815}},
+        {family::contour, 1024, family::contour, 8, {47.443710335022757, -104.77772572452697, 2.6757361172791891}},
+        {family::contour, 1024, family::contour, 8, {-18.39952354201677, -92.3377329198795, 1.0484779024862194}},
+        {family::starred, 256, family::starred, 256, {26.313732481525488, -96.662980968492846, 1.970558100051313}},
+        {family::irregular,
+         1024,
+         family::irregular,
+         1024,
+         {-100.76338594592535, -28.625049736455882, 0.027593917517312373}},
+    };
+    // Whether x lies exactly halfway between the double nearest to it and
+    // that double's neighbour on x's side.
+    const auto halfway = [](const ER& x) {
+        const double d = test_exact::nearest_double(x);
+        const double beyond = std::nextafter(d, x > ER(d) ? HUGE_VAL : -HUGE_VAL);
+        return x != ER(d) && (x - ER(d)) * 2 == ER(beyond) - ER(d);
+    };
+    for (const halfway_case& k : cases) {
+        const polygon& a = test_families::load(k.fa, k.n);
+        const polygon& b = test_families::load(k.fb, k.m);
+        INFO(describe_separation(a, b, k.q));
+        const separation_result<ER> e = separation<ER>(a, b, k.q);
+        REQUIRE(e.moving_feature.kind == feature_kind::vertex);
+        CHECK(e.moving_feature.index == 0);
+        CHECK((halfway(e.moving_point.x) || halfway(e.moving_point.y)));
+        const certified_separation_result c = certified_separation(a, b, k.q);
+        check_certified(c, e, reference(a, b, k.q));
+        CHECK(c.exact_pairs == 0);
+        certified_separation_query query(a, b);
+        const certified_separation_result d = query(k.q);
+        check_same_separation(d, c);
+        CHECK(d.exact_pairs == 0);
+    }
+}

@@ -67,21 +67,51 @@ inline double nearest_of(const double_word& x) {
     return d;
 }
 
+/// The double nearest to each exact coordinate of a closest point that is
+/// a vertex, when its double word cannot settle the rounding. A posed
+/// vertex's exact coordinates c x - s y + tx and s x + c y + ty have a few
+/// bits more than a double (those of the vertex's short coordinates, as 50
+/// or 0.5, beyond the 53 of c and s), and then lie exactly halfway between
+/// two doubles often enough (about one in 2^k for k such bits) that no
+/// bound decides them. Taken exactly in rationals, that vertex alone: A's
+/// vertices are its input doubles, B's posed by the query's pose, as the
+/// exact query poses it. Only a vertex: any other point raises
+/// uncertain_sign (the whole pose then goes to exact rationals).
+struct vertex_rounding {
+    const polygon* a;   ///< the static polygon
+    const polygon* b;   ///< the moving polygon
+    const pose* posed;  ///< B's pose
+    /// The point `w` of the answer rounded, `at` the vertex it is when it
+    /// is one (the feature of the static polygon when `moving` is false).
+    point<double> operator()(const point<double_word>& w, const feature& at, bool moving) const {
+        point<double> r;
+        if (certain_nearest(w.x, r.x) && certain_nearest(w.y, r.y)) return r;
+        if (at.kind != feature_kind::vertex) throw uncertain_sign();
+        if (!moving) return a->vertex(input_vertex(*a, at.index));
+        const point<exact_rational> v =
+            rotation_pose(*posed).apply<exact_rational>(b->vertex(input_vertex(*b, at.index)));
+        return {nearest_double(v.x), nearest_double(v.y)};
+    }
+};
+
 /// The answer in double words rounded as `rounded` rounds the exact one, or
-/// uncertain_sign when a rounding is in doubt. Its features are the exact
-/// ones (every sign of the query was certain). A squared distance in
-/// [word_floor, word_ceiling] is a double of scaled_nearest's exponent 0, so
-/// the distance is the root of its nearest double, as distance_of's.
-inline certified_separation_result rounded(const separation_result<double_word>& w) {
+/// uncertain_sign when a rounding is in doubt that vertex_rounding cannot
+/// settle. Its features are the exact ones (every sign of the query was
+/// certain). A squared distance in [word_floor, word_ceiling] is a double
+/// of scaled_nearest's exponent 0, so the distance is the root of its
+/// nearest double, as distance_of's. The static point is A's feature, or
+/// B's vertex in A's interior; the moving point B's feature, or the static
+/// point when they meet.
+inline certified_separation_result rounded(const separation_result<double_word>& w, const vertex_rounding& vertex) {
     certified_separation_result r;
     r.squared_distance = nearest_of(w.squared_distance);
     r.distance = std::sqrt(r.squared_distance);
     r.static_feature = w.static_feature;
     r.moving_feature = w.moving_feature;
     r.meet = w.meet();
-    r.static_point = {nearest_of(w.static_point.x), nearest_of(w.static_point.y)};
-    r.moving_point =
-        r.meet ? r.static_point : point<double>{nearest_of(w.moving_point.x), nearest_of(w.moving_point.y)};
+    const bool moving_inside = w.static_feature.kind == feature_kind::interior;
+    r.static_point = vertex(w.static_point, moving_inside ? w.moving_feature : w.static_feature, moving_inside);
+    r.moving_point = r.meet ? r.static_point : vertex(w.moving_point, w.moving_feature, true);
     return r;
 }
 
@@ -100,8 +130,10 @@ inline certified_separation_result rounded(const separation_result<double_word>&
 /// depend on which one ran. Throws invalid_input for an empty polygon or a
 /// pose with a NaN or infinite component.
 inline certified_separation_result certified_separation(const polygon& a, const polygon& b, const pose& q) {
-    return fallback<>::run([&] { return certified_separation_detail::rounded(separation<double_word>(a, b, q)); },
-                           [&] { return certified_separation_detail::rounded(separation<exact_rational>(a, b, q)); });
+    const certified_separation_detail::vertex_rounding vertex{&a, &b, &q};
+    return fallback<>::run(
+        [&] { return certified_separation_detail::rounded(separation<double_word>(a, b, q), vertex); },
+        [&] { return certified_separation_detail::rounded(separation<exact_rational>(a, b, q)); });
 }
 
 /// certified_separation as a function object.
@@ -142,7 +174,8 @@ public:
             return r;
         };
         if (!fast_) return in_rationals();
-        return fallback<>::run([&] { return certified_separation_detail::rounded((*fast_)(q)); }, in_rationals);
+        const certified_separation_detail::vertex_rounding vertex{&a_, &b_, &q};
+        return fallback<>::run([&] { return certified_separation_detail::rounded((*fast_)(q), vertex); }, in_rationals);
     }
 
 private:
