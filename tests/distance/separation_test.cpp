@@ -34,14 +34,17 @@
 #include "support/effort.hpp"
 #include "support/exact_regions.hpp"
 #include "support/families.hpp"
+#include "support/neighbours.hpp"
 #include "support/poses.hpp"
 #include "support/random_scenes.hpp"
 #include "support/shapes.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CGAL/squared_distance_2.h>
@@ -770,4 +773,115 @@ TEST_CASE(
         check_same_separation(d, c);
         CHECK(d.exact_pairs == 0);
     }
+}
+
+TEST_CASE(
+    "separation: real neighbours pushed apart by a translation are settled in double words, as the exact "
+    "reference and its tie rule",
+    "[separation][reference][real]") {
+    // North Carolina's counties (data/real/nc_counties.wkt), which share
+    // their border vertices exactly. B pushed off A by a translation, along
+    // the line from A's centroid to B's and along a random direction, by the
+    // first of 1e-5, 2e-5, 4e-5, ... degrees (below 8) that leaves them apart (the
+    // exact query tells), and the roles swapped. A shared border so moved is
+    // parallel to itself: its vertices lie at one distance from the other
+    // polygon's edges, ties that no bound separates (docs/separation.md).
+    const std::vector<polygon> layer = test_data::real_layer("nc_counties.wkt");
+    REQUIRE(layer.size() == 100);
+    // Neighbours: polygons that share a vertex.
+    std::vector<std::vector<std::pair<double, double>>> vertices(layer.size());
+    for (std::size_t i = 0; i < layer.size(); ++i) {
+        for (const point<double>& v : layer[i].vertices()) vertices[i].push_back({v.x, v.y});
+        std::sort(vertices[i].begin(), vertices[i].end());
+    }
+    const auto share_a_vertex = [&](std::size_t i, std::size_t j) {
+        std::vector<std::pair<double, double>> common;
+        std::set_intersection(vertices[i].begin(), vertices[i].end(), vertices[j].begin(), vertices[j].end(),
+                              std::back_inserter(common));
+        return !common.empty();
+    };
+    const std::size_t wanted = static_cast<std::size_t>(test_effort::scaled(10));
+    test_random::rng g(0x6e63);
+    separation_tally t;
+    std::size_t pairs = 0, ties = 0;
+    for (std::size_t i = 0; i < layer.size() && pairs < wanted; i += 7)
+        for (std::size_t j = i + 1; j < layer.size() && pairs < wanted; ++j) {
+            if (!share_a_vertex(i, j)) continue;
+            ++pairs;
+            const polygon &a = layer[i], &b = layer[j];
+            const point<double> ca = a.centroid(), cb = b.centroid();
+            const double angle = g.uniform(0, 6.283185307179586);
+            const point<double> along[2] = {{cb.x - ca.x, cb.y - ca.y}, {std::cos(angle), std::sin(angle)}};
+            for (const point<double>& d : along) {
+                const double length = std::hypot(d.x, d.y);
+                for (double push = 1e-5; push < 8; push *= 2) {
+                    const pose q{d.x / length * push, d.y / length * push, 0};
+                    if (separation<ER>(a, b, q).meet()) continue;
+                    for (const bool swapped : {false, true}) {
+                        const polygon &s = swapped ? b : a, &m = swapped ? a : b;
+                        const pose p = swapped ? pose{-q.tx, -q.ty, 0} : q;
+                        check_separation_frame(s, m, p, t, floating::none);
+                        const reference_answer ref = reference(s, m, p);
+                        const std::pair<P, P> expected = tie_rule_points(ref.a, ref.b);
+                        const certified_separation_result c = certified_separation(s, m, p);
+                        CHECK(c.static_point.x == test_exact::nearest_double(expected.first.x()));
+                        CHECK(c.static_point.y == test_exact::nearest_double(expected.first.y()));
+                        CHECK(c.moving_point.x == test_exact::nearest_double(expected.second.x()));
+                        CHECK(c.moving_point.y == test_exact::nearest_double(expected.second.y()));
+                        std::size_t at_least = 0;
+                        for (std::size_t e = 0; e < s.size(); ++e)
+                            for (std::size_t f = 0; f < m.size(); ++f)
+                                at_least += pair_squared(ref.a, e, ref.b, f) == ref.boundary_squared;
+                        ties += at_least > 1;
+                    }
+                    break;
+                }
+            }
+        }
+    INFO(pairs << " neighbours, " << t.frames << " frames apart, " << ties << " with tied edge pairs, " << t.in_words
+               << " in double words");
+    CHECK(pairs == wanted);
+    CHECK(t.frames == 4 * pairs);
+    CHECK(t.meet == 0);
+    CHECK(ties * 2 > t.frames);
+    CHECK(t.in_words * 10 >= t.frames * 9);
+}
+
+TEST_CASE("separation: under a translation, distances within each other's bounds but not equal are not taken as a tie",
+          "[separation][reference]") {
+    // A's two lowest features lie 1 and 1 + 2^-50 above B's, far closer than
+    // any bound in double separates, and the farther one belongs to the
+    // least edge pair: only an exact comparison names the nearer. First,
+    // an edge of A all but parallel to an edge of B (its two ends' distances
+    // within one edge pair); two teeth of A over one edge of B (both
+    // distances from A's vertices to one line of B, in two edge pairs); a
+    // tooth of A over a flat edge of B beside a flat edge of A over a peak
+    // of B (a vertex of A to a line of B against a vertex of B to a line of
+    // A). Each with the roles swapped.
+    const double up = 1 + 0x1p-50;
+    const polygon ramp({test_shapes::ring({{1, up}, {3, 1}, {4, 5}, {0, 5}})});
+    const polygon teeth({test_shapes::ring({{1, up}, {2, 3}, {3, 1}, {4, 5}, {0, 5}})});
+    const polygon slab({test_shapes::ring({{-10, -5}, {10, -5}, {10, 0}, {-10, 0}})});
+    const polygon tooth_and_flat({test_shapes::ring({{1, up}, {3, 4}, {5, 1}, {8, 1}, {8, 6}, {0, 6}})});
+    const polygon flat_and_peak(
+        {test_shapes::ring({{-2, -5}, {10, -5}, {10, -3}, {6.5, 0}, {4, -3}, {2, 0}, {0, 0}, {-2, -3}})});
+    separation_tally t;
+    for (const auto& [a, b] :
+         {std::pair<const polygon*, const polygon*>{&ramp, &slab}, {&teeth, &slab}, {&tooth_and_flat, &flat_and_peak}})
+        for (const double tx : {0.0, 0.25})
+            for (const bool swapped : {false, true}) {
+                const polygon &s = swapped ? *b : *a, &m = swapped ? *a : *b;
+                const pose p{swapped ? -tx : tx, 0, 0};
+                check_separation_frame(s, m, p, t);
+                const reference_answer ref = reference(s, m, p);
+                REQUIRE(ref.squared == ER(1));
+                const std::pair<P, P> expected = tie_rule_points(ref.a, ref.b);
+                const separation_result<ER> e = separation<ER>(s, m, p);
+                CHECK(to_p(e.static_point) == expected.first);
+                CHECK(to_p(e.moving_point) == expected.second);
+                const certified_separation_result c = certified_separation(s, m, p);
+                CHECK(P(c.static_point.x, c.static_point.y) == expected.first);
+                CHECK(P(c.moving_point.x, c.moving_point.y) == expected.second);
+            }
+    CHECK(t.frames == 12);
 }

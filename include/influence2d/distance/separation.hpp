@@ -298,14 +298,33 @@ struct settled_pair {
     std::uint32_t static_edge = 0, moving_edge = 0;
 };
 
+/// The distance of a settled pair (stored edges e of A and f of B, apart)
+/// as a point-to-line distance on the points as given, when one of its
+/// closest points lies inside an edge; none when both are ends.
+inline std::optional<point_line_distance> pair_point_line(const search_input& in, std::uint32_t e, std::uint32_t f,
+                                                          const settled_closest& c) {
+    const auto end = [](const polygon& p, std::uint32_t edge, segment_part part) {
+        return p.vertex(part == segment_part::start ? edge : p.next(edge));
+    };
+    if (c.second_part == segment_part::interior && c.first_part != segment_part::interior)
+        return point_line_distance{end(in.a, e, c.first_part), in.b.vertex(f), in.b.vertex(in.b.next(f)), false};
+    if (c.first_part == segment_part::interior && c.second_part != segment_part::interior)
+        return point_line_distance{end(in.b, f, c.second_part), in.a.vertex(e), in.a.vertex(in.a.next(e)), true};
+    return std::nullopt;
+}
+
 /// Phase 2 decided in double, for candidates and no pair certainly crossing:
 /// the pair closest_candidate chooses, when the bounds settle it, or nothing.
 /// Each candidate in the order evaluated_before is settled in double
 /// (settled_closest_between: its bounds and the parts of its closest points);
 /// against the best so far it is certainly nearer (its upper bound below the
-/// best's lower bound), certainly farther, or at the same features (the same
-/// points: the same distance, the least (A's edge, B's edge) kept, as
-/// closest_candidate keeps it); anything else is in doubt. The loop stops
+/// best's lower bound), certainly farther, or at the same distance by its
+/// points: the same features (the same points), or, when B's pose is a
+/// translation, a point-to-line distance equal to the best's by
+/// equal_point_line_distances (two edges of a shared border moved apart
+/// are parallel: its vertices all lie at one distance from the other
+/// polygon's edge); the least (A's edge, B's edge) is kept, as
+/// closest_candidate keeps it. Anything else is in doubt. The loop stops
 /// where closest_candidate's does, at a lower bound beyond the best's upper
 /// bound. An exact NT then evaluates the chosen pair alone, from the parts
 /// of its closest points (closest_at_parts), instead of every pair the
@@ -313,28 +332,41 @@ struct settled_pair {
 ///
 ///   for each candidate c in order:
 ///       c.lower > best's upper bound: stop
-///       settle c in double; in doubt: nothing
+///       settle c in double (parallel edges known exactly when B is
+///       translated); in doubt: nothing
 ///       no best, or c certainly nearer: best <- c
 ///       c certainly farther: next
-///       same features as best: best <- the least of the two pairs
+///       same features as best, or (translated) an equal point-to-line
+///       distance: best <- the least of the two pairs
 ///       else: nothing
 template <class Approx>
 std::optional<settled_pair> settled_candidate(const search_input& in, Approx& approx, const search_space& space) {
+    const bool translated = in.t.c == 1 && in.t.s == 0;
     std::optional<settled_pair> best;
     for (const candidate& c : space.candidates) {
         if (best && c.lower > best->closest.upper) break;
         const std::uint32_t e = c.static_edge, f = c.moving_edge;
-        const std::optional<settled_closest> d = settled_closest_between(in.a.vertex(e), in.a.vertex(in.a.next(e)),
-                                                                         approx[f], approx[in.b.next(f)], in.delta);
+        const point<double>&a0 = in.a.vertex(e), &a1 = in.a.vertex(in.a.next(e));
+        const std::size_t f1 = in.b.next(f);
+        const std::optional<settled_closest> d = settled_closest_between(a0, a1, approx[f], approx[f1], in.delta, [&] {
+            return translated && exact_cross_sign(a0, a1, in.b.vertex(f), in.b.vertex(f1)) == 0;
+        });
         if (!d) return std::nullopt;
         if (!best || d->upper < best->closest.lower) {
             best = settled_pair{*d, e, f};
             continue;
         }
         if (d->lower > best->closest.upper) continue;
-        if (feature_key(in.a, e, d->first_part) != feature_key(in.a, best->static_edge, best->closest.first_part) ||
-            feature_key(in.b, f, d->second_part) != feature_key(in.b, best->moving_edge, best->closest.second_part))
-            return std::nullopt;
+        const bool same_features =
+            feature_key(in.a, e, d->first_part) == feature_key(in.a, best->static_edge, best->closest.first_part) &&
+            feature_key(in.b, f, d->second_part) == feature_key(in.b, best->moving_edge, best->closest.second_part);
+        if (!same_features) {
+            if (!translated) return std::nullopt;
+            const std::optional<point_line_distance> x = pair_point_line(in, e, f, *d),
+                                                     y = pair_point_line(in, best->static_edge, best->moving_edge,
+                                                                         best->closest);
+            if (!x || !y || !equal_point_line_distances(*x, *y)) return std::nullopt;
+        }
         if (e < best->static_edge || (e == best->static_edge && f < best->moving_edge)) best = settled_pair{*d, e, f};
     }
     return best;

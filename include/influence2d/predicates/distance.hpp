@@ -19,6 +19,7 @@
 #include "influence2d/core/box.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/number/traits.hpp"
+#include "influence2d/predicates/exact_doubles.hpp"
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/predicates/orientation.hpp"
 #include "influence2d/predicates/segments.hpp"
@@ -624,14 +625,21 @@ struct settled_closest {
 ///     distance is the least end-to-segment candidate's;
 ///   - among the candidates that may be least (each one's bounds from its
 ///     point_segment_estimate, as in the filtered closest_between_segments),
-///     the first has its parts settled (settled_part; the end part of [u, v]
-///     needs u != v), and every other one has the same parts, neither an
-///     interior: the same two points, at the same distance, which the first
-///     of them wins (least_end_distance).
-/// The bounds are the first candidate's.
-inline std::optional<settled_closest> settled_closest_between(const point<double>& a, const point<double>& b,
-                                                              const point<double>& u, const point<double>& v,
-                                                              double delta) {
+///     every one has its parts settled (settled_part; the end part of
+///     [u, v] needs u != v), and either every other one has the first one's
+///     parts, neither an interior (the same two points, at the same
+///     distance, which the first of them wins: least_end_distance), or the
+///     segments are exactly parallel (exactly_parallel(), asked only then)
+///     and one of them has a part inside a segment: the first such one wins.
+///     An end whose foot lies inside the other segment is at the distance
+///     between the two parallel lines, the least any two points have; an end
+///     whose foot lies beyond the other segment (its part there settled as
+///     an end) is farther.
+/// The bounds are the winner's.
+template <class ExactlyParallel>
+std::optional<settled_closest> settled_closest_between(const point<double>& a, const point<double>& b,
+                                                       const point<double>& u, const point<double>& v, double delta,
+                                                       ExactlyParallel&& exactly_parallel) {
     if (segments_may_meet(a, b, u, v, delta)) return std::nullopt;
     const end_bounds bounds(a, b, u, v, delta);
     const auto parts = [&](int k) -> std::optional<std::pair<segment_part, segment_part>> {
@@ -644,21 +652,62 @@ inline std::optional<settled_closest> settled_closest_between(const point<double
         if (u == v) return std::nullopt;
         return std::make_pair(*p, segment_part::end);
     };
-    std::optional<settled_closest> first;
+    std::optional<settled_closest> first, first_inside;
+    bool same_ends = true;  // every candidate after the first has its parts, neither an interior
     for (int k = 0; k < 4; ++k) {
         // (NaN bounds: in doubt.)
         if (!bounds.may_be_least(k)) continue;
         const auto p = parts(k);
         if (!p || !(bounds.upper[k] < HUGE_VAL)) return std::nullopt;
+        const settled_closest here{p->first, p->second, std::max(bounds.lower[k], 0.0), bounds.upper[k]};
+        const bool inside = p->first == segment_part::interior || p->second == segment_part::interior;
+        if (inside && !first_inside) first_inside = here;
         if (!first) {
-            first = settled_closest{p->first, p->second, std::max(bounds.lower[k], 0.0), bounds.upper[k]};
+            first = here;
             continue;
         }
-        if (p->first != first->first_part || p->second != first->second_part || p->first == segment_part::interior ||
-            p->second == segment_part::interior)
-            return std::nullopt;
+        if (p->first != first->first_part || p->second != first->second_part || inside) same_ends = false;
     }
-    return first;
+    if (same_ends) return first;
+    if (first_inside && a != b && u != v && exactly_parallel()) return first_inside;
+    return std::nullopt;
+}
+
+/// settled_closest_between with no parallel segments known.
+inline std::optional<settled_closest> settled_closest_between(const point<double>& a, const point<double>& b,
+                                                              const point<double>& u, const point<double>& v,
+                                                              double delta) {
+    return settled_closest_between(a, b, u, v, delta, [] { return false; });
+}
+
+/// A distance from a point to the line through two others, all as given:
+/// the moving polygon's points before its pose, which translates them.
+struct point_line_distance {
+    point<double> at;        ///< the point
+    point<double> from;      ///< one point of the line
+    point<double> to;        ///< another (the line's direction: to - from)
+    bool at_moving = false;  ///< whether `at` is B's (the line then A's), else A's (the line B's)
+};
+
+/// Whether two point-to-line distances between A and B, B translated, are
+/// equal by their points alone, decided exactly on the doubles as given (a
+/// translation keeps every difference of B's points, and every side of
+/// B's points against B's lines). Equal when:
+///   - the two points are of one polygon and the lines of the other: the
+///     lines are one (x's from and to, and y's, collinear) and the points'
+///     difference is parallel to it, so both lie on one parallel;
+///   - x's point is A's and y's B's: the lines are parallel, x's point lies
+///     on y's line and y's point on x's, so both are the distance between
+///     the two lines.
+/// False otherwise, whether or not the distances are equal (a line of two
+/// equal points included).
+inline bool equal_point_line_distances(const point_line_distance& x, const point_line_distance& y) {
+    if (x.from == x.to || y.from == y.to) return false;
+    if (x.at_moving == y.at_moving)
+        return exact_orientation(x.from, x.to, y.from) == 0 && exact_orientation(x.from, x.to, y.to) == 0 &&
+               exact_cross_sign(x.at, y.at, x.from, x.to) == 0;
+    return exact_cross_sign(x.from, x.to, y.from, y.to) == 0 && exact_orientation(y.from, y.to, x.at) == 0 &&
+           exact_orientation(x.from, x.to, y.at) == 0;
 }
 
 /// closest_between_segments of [a, b] and [u, v], apart, from the parts of

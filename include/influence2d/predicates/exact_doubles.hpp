@@ -25,6 +25,25 @@ inline int exact_orientation(const point<double>& a, const point<double>& b, con
     return orientation_of_doubles(a.x, a.y, b.x, b.y, c.x, c.y);
 }
 
+/// The exact sign of the cross product (b - a) x (d - c) of the directions
+/// of two segments with finite double coordinates: 0 when they are parallel
+/// (or one has length 0). The eight products of its expansion, bx dy -
+/// bx cy - ax dy + ax cy - by dx + by cx + ay dx - ay cx, summed exactly
+/// (exact_sum::accumulator): no difference is rounded.
+inline int exact_cross_sign(const point<double>& a, const point<double>& b, const point<double>& c,
+                            const point<double>& d) {
+    exact_sum::accumulator sum;
+    sum.add_product(b.x, d.y);
+    sum.add_product(-b.x, c.y);
+    sum.add_product(-a.x, d.y);
+    sum.add_product(a.x, c.y);
+    sum.add_product(-b.y, d.x);
+    sum.add_product(b.y, c.x);
+    sum.add_product(a.y, d.x);
+    sum.add_product(-a.y, c.x);
+    return sum.sign();
+}
+
 /// Whether q lies on the closed segment [a, b] (exact).
 inline bool on_segment_exactly(const point<double>& q, const point<double>& a, const point<double>& b) {
     return exact_orientation(a, b, q) == 0 && within_collinear_segment(q, a, b);
