@@ -13,6 +13,7 @@
 #include "support/effort.hpp"
 #include "support/exact_regions.hpp"
 #include "support/families.hpp"
+#include "support/neighbours.hpp"
 #include "support/poses.hpp"
 #include "support/random_scenes.hpp"
 #include "support/shapes.hpp"
@@ -347,6 +348,57 @@ TEST_CASE("sweep: random translations of the families against the reference", "[
     CHECK(t.at_start > t.motions / 10);
     CHECK(t.later > t.motions / 5);
     CHECK(t.none > t.motions / 20);
+}
+
+TEST_CASE("sweep: real neighbours pushed apart and translated back, certified as exact", "[sweep][reference][real]") {
+    // North Carolina's counties (data/real/nc_counties.wkt) share their
+    // border vertices exactly. B pushed off A along the line between the
+    // centroids by 1e-3 degrees, then translated back past its place and
+    // aside by 0.3 times the push, to either side: the border's collinear
+    // runs reach A together, events of one time that no bound orders
+    // (sweep::same_reaching_time). The roles swapped too.
+    const std::vector<polygon> layer = test_data::real_layer("nc_counties.wkt");
+    REQUIRE(layer.size() == 100);
+    contact_tally t;
+    const std::size_t wanted = static_cast<std::size_t>(test_effort::scaled(6));
+    std::size_t pairs = 0;
+    for (std::size_t i = 0; i < layer.size() && pairs < wanted; i += 9)
+        for (std::size_t j = i + 1; j < layer.size() && pairs < wanted; ++j) {
+            if (!intersects<exact_rational>(layer[i], layer[j], pose{})) continue;
+            ++pairs;
+            const polygon a = renumbered(layer[i]), b = renumbered(layer[j]);
+            const point<double> ca = a.centroid(), cb = b.centroid();
+            const double length = std::hypot(cb.x - ca.x, cb.y - ca.y), push = 1e-3;
+            const point<double> out{(cb.x - ca.x) / length * push, (cb.y - ca.y) / length * push};
+            for (const double aside : {0.3, -0.3}) {
+                const pose from{out.x, out.y, 0}, to{-out.x - aside * out.y, -out.y + aside * out.x, 0};
+                check_translation(a, b, from, to, t);
+                check_translation(b, a, pose{-from.tx, -from.ty, 0}, pose{-to.tx, -to.ty, 0}, t);
+            }
+        }
+    CHECK(pairs == wanted);
+    CHECK(t.later == t.motions);
+}
+
+TEST_CASE("sweep: events a unit in the last place apart are not taken as one time", "[sweep][reference]") {
+    // B falls onto A from 2^20 above: two of its vertices, one a unit in the
+    // last place higher (2^-32) and first in site order, over A's flat top;
+    // then a vertex of B over A's top beside a flat edge of B over a peak of
+    // A 2^-32 high. The times differ by 2^-52 of themselves, below any
+    // bound of `certified`: only an exact comparison names the first event.
+    // The roles swapped too.
+    const double y = 0x1p20, up = y + 0x1p-32;
+    const polygon top = square(-10, -5, 10, 0);
+    const polygon teeth = outer_polygon({{2, up}, {3.5, y + 2}, {5, y}, {6, y + 5}, {1, y + 5}});
+    const polygon peaked = outer_polygon({{-10, -5}, {10, -5}, {10, 0}, {8, 0}, {7, 0x1p-32}, {6, 0}, {-10, 0}});
+    const polygon tooth_and_flat = outer_polygon({{2, y}, {4, y + 2}, {6, y}, {8, y}, {9, y + 5}, {0, y + 5}});
+    contact_tally t;
+    for (const auto& [a, b] : {std::pair<const polygon*, const polygon*>{&top, &teeth}, {&peaked, &tooth_and_flat}}) {
+        const pose from{0, 0, 0}, to{0, -2 * y, 0};
+        check_translation(*a, *b, from, to, t);
+        check_translation(*b, *a, pose{0, 0, 0}, pose{0, 2 * y, 0}, t);
+    }
+    CHECK(t.later == 4);
 }
 
 TEST_CASE("sweep: random translations far from the origin against the reference", "[sweep][reference]") {

@@ -478,17 +478,46 @@ inline int compare_time_with(const time_fraction<certified>& t, double x) {
     return compare_values<certified>(t.num, certified(x) * t.den);
 }
 
+/// The site's vertex and edge as a point-to-line distance on the points as
+/// given (equal_point_line_distances).
+inline point_line_distance site_point_line(const polygon& a, const polygon& b, const contact_site& s) {
+    if (s.moving_vertex) return {b.vertex(s.vertex), a.vertex(s.edge), a.vertex(a.next(s.edge)), true};
+    return {a.vertex(s.vertex), b.vertex(s.edge), b.vertex(b.next(s.edge)), false};
+}
+
+/// Whether the events of two sites (both with a time) come at one time
+/// when B, not turned (its rotation's doubles exactly 1 and 0), translates
+/// from `from` to `to`, shown by exact signs on the points as given.
+/// Neither edge is parallel to the displacement (exact_cross_sign of the
+/// edge and the segment from (from.tx, from.ty) to (to.tx, to.ty)): each
+/// event is then its vertex crossing its edge's line, once. And the two
+/// vertex-line pairs are related as equal_point_line_distances relates
+/// them: two vertices of one polygon on a parallel to one line of the
+/// other reach it together; a vertex of B on a line of B's parallel to a
+/// line of A holding a vertex of A reaches A's line when B's line reaches
+/// A's vertex, both when the two lines coincide. Two polygons that share
+/// a border and translate back onto it meet along all of it at once.
+inline bool same_reaching_time(const polygon& a, const polygon& b, const pose& from, const pose& to,
+                               const contact_site& l, const contact_site& r) {
+    const point<double> start{from.tx, from.ty}, end{to.tx, to.ty};
+    const point_line_distance x = site_point_line(a, b, l), y = site_point_line(a, b, r);
+    return exact_cross_sign(x.from, x.to, start, end) != 0 && exact_cross_sign(y.from, y.to, start, end) != 0 &&
+           equal_point_line_distances(x, y);
+}
+
 /// The sign of c's time minus e's: in certified when both have one and the
-/// bound settles it; else c's certified time against the doubles around
-/// e's exact time; else exactly (`exact_time` computes a site's exact
-/// time: it exists, both events having one).
-template <class Exact, class ExactTime>
-int order(filtered_event<Exact>& c, filtered_event<Exact>& e, ExactTime&& exact_time) {
+/// bound settles it; else 0 when `same_time(c's site, e's)` shows them
+/// equal; else c's certified time against the doubles around e's exact
+/// time; else exactly (`exact_time` computes a site's exact time: it
+/// exists, both events having one).
+template <class Exact, class SameTime, class ExactTime>
+int order(filtered_event<Exact>& c, filtered_event<Exact>& e, SameTime&& same_time, ExactTime&& exact_time) {
     if (c.fast && e.fast) {
         try {
             return compare_times(*c.fast, *e.fast);
         } catch (const uncertain_sign&) {}
     }
+    if (same_time(c.site, e.site)) return 0;
     if (c.fast && e.exact) {
         try {
             if (compare_time_with(*c.fast, e.above) > 0) return 1;
@@ -525,7 +554,8 @@ inline double estimated_time(const polygon& a, const polygon& b, const std::vect
 ///       later: skipped
 ///       else its time in `certified`, in the exact field Exact when its
 ///       signs are not certain; compared with the best in certified, or
-///       exactly when the bound cannot settle the order (order)
+///       when the bound cannot settle the order, equal when B is not turned
+///       and same_reaching_time shows it, else exactly (order)
 ///
 /// The double times order the sites so that the earliest is met first and
 /// most others are then skipped by their paths alone; neither the order
@@ -540,6 +570,7 @@ std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const p
         if (!exact_d) exact_d = displacement<Exact>(from, to);
         return site_time(a, b, start, *exact_d, s);
     };
+    const bool unturned = start.c == 1 && start.s == 0;
     std::optional<filtered_event<Exact>> best;
     const std::vector<point<double>>& b_start = fast.b.approx();
     const point<double> sweep{to.tx - from.tx, to.ty - from.ty};
@@ -562,7 +593,12 @@ std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const p
             c.set_exact(std::move(*t));
         }
         if (best) {
-            const int o = order(c, *best, exact_time);
+            const int o = order(
+                c, *best,
+                [&](const contact_site& l, const contact_site& r) {
+                    return unturned && same_reaching_time(a, b, from, to, l, r);
+                },
+                exact_time);
             if (o > 0 || (o == 0 && !site_before(s, best->site))) return;
         }
         best = std::move(c);
