@@ -23,8 +23,18 @@
 //       annulus, must move along the direction of that pose's translation
 //       motion (above) to leave A: influence2d's exit_distance<double> and
 //       certified_exit_distance.
+//   tiling/<query>/<method>   North Carolina's counties (data/real/
+//       nc_counties.wkt, a tiling whose neighbours share their border
+//       vertices exactly), every pair of neighbours (polygons sharing a
+//       vertex): separation, B pushed off A along the line from A's centroid
+//       to B's by the first of 1e-5, 2e-5, 4e-5, ... degrees that leaves
+//       them apart, the one-shot separation<double> and certified_separation;
+//       first_contact, B pushed off by 1e-3 degrees and translated back past
+//       its place and aside by 0.3 times the push, to either side,
+//       first_contact<double> and certified_first_contact. A shared border
+//       moved by a translation stays parallel to itself: exact ties.
 // One iteration is one query; the queries cycle through 1,024 poses or
-// motions. Counters: max_relative_difference (separation: the largest
+// motions (tiling: through its pairs' poses or motions). Counters: max_relative_difference (separation: the largest
 // |d - d_GEOS| / max(d_GEOS, 1e-300) over the poses, checked once before
 // timing), exact_share (certified separation: the share of poses answered
 // in exact rationals), contacts (first contact: the share of motions with
@@ -36,7 +46,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "bench_common.hpp"
@@ -45,6 +59,7 @@
 #include "influence2d/exact/certified_first_contact.hpp"
 #include "influence2d/exact/certified_separation.hpp"
 #include "influence2d/influence/bounds.hpp"
+#include "influence2d/io/wkt.hpp"
 #include "influence2d/motion/exit_distance.hpp"
 #include "influence2d/motion/first_contact.hpp"
 #include "influence2d/motion/trajectory.hpp"
@@ -185,6 +200,102 @@ void exit_distances(benchmark::State& state, const cell& c, bool certified) {
     if (certified) state.counters["by_filter"] = static_cast<double>(by_filter) / n;
 }
 
+/// The tiling: North Carolina's counties and their pairs of neighbours
+/// (polygons sharing a vertex), each pair's translation off the shared
+/// border (a unit vector along the line between the centroids).
+struct tiling {
+    std::vector<polygon> counties;
+    struct neighbours {
+        std::size_t a, b;
+        point<double> out;  ///< from A's centroid towards B's, of length 1
+    };
+    std::vector<neighbours> pairs;
+
+    tiling() {
+        const std::string path = std::string(INFLUENCE2D_DATA_DIR) + "/real/nc_counties.wkt";
+        std::ifstream in(path);
+        for (std::string line; std::getline(in, line);)
+            if (!line.empty()) counties.push_back(read_wkt(line, path));
+        std::vector<std::vector<std::pair<double, double>>> vertices(counties.size());
+        for (std::size_t i = 0; i < counties.size(); ++i) {
+            for (const point<double>& v : counties[i].vertices()) vertices[i].push_back({v.x, v.y});
+            std::sort(vertices[i].begin(), vertices[i].end());
+        }
+        for (std::size_t i = 0; i < counties.size(); ++i)
+            for (std::size_t j = i + 1; j < counties.size(); ++j) {
+                std::vector<std::pair<double, double>> common;
+                std::set_intersection(vertices[i].begin(), vertices[i].end(), vertices[j].begin(), vertices[j].end(),
+                                      std::back_inserter(common));
+                if (common.empty()) continue;
+                const point<double> ca = counties[i].centroid(), cb = counties[j].centroid();
+                const double length = std::hypot(cb.x - ca.x, cb.y - ca.y);
+                pairs.push_back({i, j, {(cb.x - ca.x) / length, (cb.y - ca.y) / length}});
+            }
+    }
+    static const tiling& get() {
+        static const tiling t;
+        return t;
+    }
+};
+
+/// The tiling's separation queries: each pair of neighbours with B pushed
+/// off A by the first of 1e-5 2^k degrees that leaves them apart.
+std::vector<std::pair<std::size_t, pose>> tiling_apart() {
+    const tiling& t = tiling::get();
+    std::vector<std::pair<std::size_t, pose>> out;
+    for (std::size_t k = 0; k < t.pairs.size(); ++k) {
+        const auto& n = t.pairs[k];
+        for (double push = 1e-5; push < 8; push *= 2) {
+            const pose q{n.out.x * push, n.out.y * push, 0};
+            if (separation<exact_rational>(t.counties[n.a], t.counties[n.b], q).meet()) continue;
+            out.push_back({k, q});
+            break;
+        }
+    }
+    return out;
+}
+
+void tiling_separation(benchmark::State& state, bool certified) {
+    const tiling& t = tiling::get();
+    const std::vector<std::pair<std::size_t, pose>> queries = tiling_apart();
+    std::size_t k = 0, exact = 0, asked = 0;
+    for (auto _ : state) {
+        const auto& [i, q] = queries[k];
+        const polygon &a = t.counties[t.pairs[i].a], &b = t.counties[t.pairs[i].b];
+        if (certified) {
+            const certified_separation_result r = certified_separation(a, b, q);
+            exact += r.exact_pairs != 0;
+            benchmark::DoNotOptimize(r.distance);
+        } else {
+            benchmark::DoNotOptimize(separation<double>(a, b, q).squared_distance);
+        }
+        ++asked;
+        k = (k + 1) % queries.size();
+    }
+    if (certified)
+        state.counters["exact_share"] =
+            static_cast<double>(exact) / static_cast<double>(std::max<std::size_t>(asked, 1));
+}
+
+void tiling_first_contact(benchmark::State& state, bool certified) {
+    const tiling& t = tiling::get();
+    std::vector<std::tuple<std::size_t, pose, pose>> motions;
+    const double push = 1e-3;
+    for (std::size_t k = 0; k < t.pairs.size(); ++k)
+        for (const double aside : {0.3, -0.3}) {
+            const point<double> o{t.pairs[k].out.x * push, t.pairs[k].out.y * push};
+            motions.emplace_back(k, pose{o.x, o.y, 0}, pose{-o.x - aside * o.y, -o.y + aside * o.x, 0});
+        }
+    std::size_t k = 0;
+    for (auto _ : state) {
+        const auto& [i, from, to] = motions[k];
+        const polygon &a = t.counties[t.pairs[i].a], &b = t.counties[t.pairs[i].b];
+        benchmark::DoNotOptimize(certified ? certified_first_contact(a, b, from, to).time
+                                           : first_contact<double>(a, b, from, to).time);
+        k = (k + 1) % motions.size();
+    }
+}
+
 #if INFLUENCE2D_HAVE_GEOS
 /// GEOS's distance, A built (and prepared) once, B built posed per query.
 class geos_distance {
@@ -297,6 +408,11 @@ void register_query_benchmarks() {
                                      first_contact_double, c, true, turning_model::rational);
         benchmark::RegisterBenchmark(("first_contact_turning/rational_certified/" + c.name()).c_str(),
                                      first_contact_certified, c, true, turning_model::rational);
+    }
+    for (const bool certified : {false, true}) {
+        const std::string method = certified ? "certified" : "double";
+        benchmark::RegisterBenchmark(("tiling/separation/" + method).c_str(), tiling_separation, certified);
+        benchmark::RegisterBenchmark(("tiling/first_contact/" + method).c_str(), tiling_first_contact, certified);
     }
     const cell small{"convex", 8, 8};
 #if INFLUENCE2D_HAVE_BOX2D
