@@ -34,7 +34,8 @@
 //       first_contact<double> and certified_first_contact. A shared border
 //       moved by a translation stays parallel to itself: exact ties.
 // One iteration is one query; the queries cycle through 1,024 poses or
-// motions (tiling: through its pairs' poses or motions). Counters: max_relative_difference (separation: the largest
+// motions (tiling: through its pairs' poses or motions). Counters:
+// max_relative_difference (separation: the largest
 // |d - d_GEOS| / max(d_GEOS, 1e-300) over the poses, checked once before
 // timing), exact_share (certified separation: the share of poses answered
 // in exact rationals), contacts (first contact: the share of motions with

@@ -67,27 +67,25 @@ inline double nearest_of(const double_word& x) {
     return d;
 }
 
-/// The double nearest to each exact coordinate of a closest point that is
-/// a vertex, when its double word cannot settle the rounding. A posed
-/// vertex's exact coordinates c x - s y + tx and s x + c y + ty have a few
-/// bits more than a double (those of the vertex's short coordinates, as 50
-/// or 0.5, beyond the 53 of c and s), and then lie exactly halfway between
-/// two doubles often enough (about one in 2^k for k such bits) that no
-/// bound decides them. Taken exactly in rationals, that vertex alone: A's
-/// vertices are its input doubles, B's posed by the query's pose, as the
-/// exact query poses it. Only a vertex: any other point raises
-/// uncertain_sign (the whole pose then goes to exact rationals).
+/// The double nearest to each exact coordinate of a closest point of B,
+/// when its double word cannot settle the rounding. A posed vertex's exact
+/// coordinates c x - s y + tx and s x + c y + ty have a few bits more than
+/// a double (those of the vertex's short coordinates, as 50 or 0.5, beyond
+/// the 53 of c and s), and then lie exactly halfway between two doubles
+/// often enough (about one in 2^k for k such bits) that no bound decides
+/// them. Taken exactly in rationals, that vertex alone, posed by the query's
+/// pose as the exact query poses it. Only a vertex: any other point raises
+/// uncertain_sign (the whole pose then goes to exact rationals). (A's points
+/// need none of this: a vertex of A is its input double, which its double
+/// word holds exactly.)
 struct vertex_rounding {
-    const polygon* a;   ///< the static polygon
     const polygon* b;   ///< the moving polygon
     const pose* posed;  ///< B's pose
-    /// The point `w` of the answer rounded, `at` the vertex it is when it
-    /// is one (the feature of the static polygon when `moving` is false).
-    point<double> operator()(const point<double_word>& w, const feature& at, bool moving) const {
+    /// The point `w` of the answer rounded, `at` B's feature there.
+    point<double> operator()(const point<double_word>& w, const feature& at) const {
         point<double> r;
         if (certain_nearest(w.x, r.x) && certain_nearest(w.y, r.y)) return r;
         if (at.kind != feature_kind::vertex) throw uncertain_sign();
-        if (!moving) return a->vertex(input_vertex(*a, at.index));
         const point<exact_rational> v =
             rotation_pose(*posed).apply<exact_rational>(b->vertex(input_vertex(*b, at.index)));
         return {nearest_double(v.x), nearest_double(v.y)};
@@ -109,9 +107,10 @@ inline certified_separation_result rounded(const separation_result<double_word>&
     r.static_feature = w.static_feature;
     r.moving_feature = w.moving_feature;
     r.meet = w.meet();
-    const bool moving_inside = w.static_feature.kind == feature_kind::interior;
-    r.static_point = vertex(w.static_point, moving_inside ? w.moving_feature : w.static_feature, moving_inside);
-    r.moving_point = r.meet ? r.static_point : vertex(w.moving_point, w.moving_feature, true);
+    r.static_point = w.static_feature.kind == feature_kind::interior
+                         ? vertex(w.static_point, w.moving_feature)
+                         : point<double>{nearest_of(w.static_point.x), nearest_of(w.static_point.y)};
+    r.moving_point = r.meet ? r.static_point : vertex(w.moving_point, w.moving_feature);
     return r;
 }
 
@@ -130,7 +129,7 @@ inline certified_separation_result rounded(const separation_result<double_word>&
 /// depend on which one ran. Throws invalid_input for an empty polygon or a
 /// pose with a NaN or infinite component.
 inline certified_separation_result certified_separation(const polygon& a, const polygon& b, const pose& q) {
-    const certified_separation_detail::vertex_rounding vertex{&a, &b, &q};
+    const certified_separation_detail::vertex_rounding vertex{&b, &q};
     return fallback<>::run(
         [&] { return certified_separation_detail::rounded(separation<double_word>(a, b, q), vertex); },
         [&] { return certified_separation_detail::rounded(separation<exact_rational>(a, b, q)); });
@@ -174,7 +173,7 @@ public:
             return r;
         };
         if (!fast_) return in_rationals();
-        const certified_separation_detail::vertex_rounding vertex{&a_, &b_, &q};
+        const certified_separation_detail::vertex_rounding vertex{&b_, &q};
         return fallback<>::run([&] { return certified_separation_detail::rounded((*fast_)(q), vertex); }, in_rationals);
     }
 
