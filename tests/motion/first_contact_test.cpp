@@ -664,6 +664,69 @@ TEST_CASE("exit distance: random overlaps of multipolygons against the reference
     CHECK(exits_seen.filtered >= exits_seen.total * 9 / 10);
 }
 
+TEST_CASE("exit distance: real neighbours pushed into each other, certified as exact", "[sweep][exit][real]") {
+    // North Carolina's counties share their border vertices exactly. B
+    // pushed into A along the line between the centroids by 1e-3 degrees,
+    // then leaving along the push: straight back onto the shared border,
+    // where every shared vertex passes through its twin at once
+    // (sweep::same_passage_time, the sides decided on the doubles as given:
+    // exact_translated_side); or aside by 0.3 of the push, either way, where
+    // the border's straight runs reach A's lines together
+    // (sweep::same_reaching_time). The roles swapped too.
+    const std::vector<polygon> layer = test_data::real_layer("nc_counties.wkt");
+    REQUIRE(layer.size() == 100);
+    const exit_tally before = exits_seen;
+    const std::size_t wanted = static_cast<std::size_t>(test_effort::scaled(5));
+    std::size_t pairs = 0, deep = 0;
+    for (std::size_t i = 0; i < layer.size() && pairs < wanted; i += 11)
+        for (std::size_t j = i + 1; j < layer.size() && pairs < wanted; ++j) {
+            if (!intersects<exact_rational>(layer[i], layer[j], pose{})) continue;
+            ++pairs;
+            const polygon &a = layer[i], &b = layer[j];
+            const point<double> ca = a.centroid(), cb = b.centroid();
+            const double length = std::hypot(cb.x - ca.x, cb.y - ca.y), push = 1e-3;
+            const point<double> out{(cb.x - ca.x) / length * push, (cb.y - ca.y) / length * push};
+            for (const double aside : {0.0, 0.3, -0.3}) {
+                const point<double> d{out.x - aside * out.y, out.y + aside * out.x};
+                check_exit(a, b, pose{-out.x, -out.y, 0}, d.x, d.y, deep);
+                check_exit(b, a, pose{out.x, out.y, 0}, -d.x, -d.y, deep);
+            }
+        }
+    CHECK(pairs == wanted);
+    CHECK(deep == 6 * wanted);
+    const std::size_t filtered = exits_seen.filtered - before.filtered, total = exits_seen.total - before.total;
+    INFO(filtered << " of " << total << " answered in certified");
+    CHECK(filtered >= total * 9 / 10);
+}
+
+TEST_CASE("exit distance: vertex passages a unit in the last place apart are not taken as one time", "[sweep][exit]") {
+    // B over A's right side, leaving along +x: its left corners pass through
+    // A's right corners, (3, 0) through (4, 0) at s = 1 and the upper one
+    // through (4, 4) at s = 1 - 2^-51 when it stands a unit in the last
+    // place right of x = 3. The exit is the later: 1, not 1 - 2^-51, below
+    // any bound of `certified`: only an exact comparison of the passages
+    // orders them. With both corners at x = 3 the passages are one time,
+    // which the doubles as given show (sweep::same_passage_time). The roles
+    // swapped too.
+    const polygon a = square(0, 0, 4, 4);
+    for (const double upper : {3.0, 3 + 0x1p-51}) {
+        const polygon b = outer_polygon({{3, 0}, {5, 0}, {5, 4}, {upper, 4}});
+        CAPTURE(upper);
+        bool by_filter[2] = {false, false};
+        CHECK(exit_distance<exact_rational>(a, b, pose{}, 1, 0) == 1);
+        CHECK(certified_exit_distance(a, b, pose{}, 1, 0, &by_filter[0]) == 1.0);
+        CHECK(exit_distance<exact_rational>(b, a, pose{}, -1, 0) == 1);
+        CHECK(certified_exit_distance(b, a, pose{}, -1, 0, &by_filter[1]) == 1.0);
+        // One time, shown on the doubles: no exact arithmetic.
+        if (upper == 3) CHECK((by_filter[0] && by_filter[1]));
+        // B moved to the right by 0.5 first, and A: the same exit, 0.5.
+        std::size_t deep = 0;
+        check_exit(a, b, pose{0.5, 0, 0}, 1, 0, deep);
+        check_exit(b, a, pose{-0.5, 0, 0}, -1, 0, deep);
+        CHECK(deep == 2);
+    }
+}
+
 TEST_CASE("exit distance: far from the origin against the reference", "[sweep][exit][reference]") {
     // The families moved to 1e7 and 2^40, B overlapping A: the exact and
     // certified exits against the reference. At 1e7 the search in certified

@@ -59,6 +59,25 @@ TEST_CASE("exact_sum: exact over the whole range of double", "[exact_sum]") {
     CHECK(tiny.sign() == -1);
 }
 
+TEST_CASE("exact_sum: carries across words in the totals of either sign", "[exact_sum]") {
+    // 2049 terms of 2^53 - 1 (all significand bits set) sum past 2^64: the
+    // positive total carries into its next word; one product takes it all
+    // back from the negative side; then the least product of two
+    // subnormals, of either sign.
+    const double ones = 0x1p53 - 1;
+    for (const double side : {1.0, -1.0}) {
+        accumulator acc;
+        for (int k = 0; k < 2049; ++k) acc.add(side * ones);
+        CHECK(acc.sign() == static_cast<int>(side));
+        acc.add_product(-side * ones, 2049);
+        CHECK(acc.sign() == 0);
+        acc.add_product(side * 0x1p-1074, 0x1p-1074);
+        CHECK(acc.sign() == static_cast<int>(side));
+        acc.add_product(-side * 0x1p-1074, 2 * 0x1p-1074);
+        CHECK(acc.sign() == -static_cast<int>(side));
+    }
+}
+
 TEST_CASE("exact_sum: orientation of points at 1e200 and at subnormal scale", "[exact_sum]") {
     using influence2d::exact_sum::orientation_sign;
     CHECK(orientation_sign(0, 0, 1e200, 0, 1e200, 1e200) == 1);

@@ -31,8 +31,11 @@
 //       them apart, the one-shot separation<double> and certified_separation;
 //       first_contact, B pushed off by 1e-3 degrees and translated back past
 //       its place and aside by 0.3 times the push, to either side,
-//       first_contact<double> and certified_first_contact. A shared border
-//       moved by a translation stays parallel to itself: exact ties.
+//       first_contact<double> and certified_first_contact; exit_distance,
+//       B pushed into A by 1e-3 degrees and leaving along the push or aside
+//       by 0.3 times it, to either side, exit_distance<double> and
+//       certified_exit_distance. A shared border moved by a translation
+//       stays parallel to itself: exact ties.
 // One iteration is one query; the queries cycle through 1,024 poses or
 // motions (tiling: through its pairs' poses or motions). Counters:
 // max_relative_difference (separation: the largest
@@ -297,6 +300,34 @@ void tiling_first_contact(benchmark::State& state, bool certified) {
     }
 }
 
+void tiling_exit_distance(benchmark::State& state, bool certified) {
+    const tiling& t = tiling::get();
+    std::vector<std::tuple<std::size_t, pose, point<double>>> queries;
+    const double push = 1e-3;
+    for (std::size_t k = 0; k < t.pairs.size(); ++k)
+        for (const double aside : {0.0, 0.3, -0.3}) {
+            const point<double> o{t.pairs[k].out.x * push, t.pairs[k].out.y * push};
+            queries.emplace_back(k, pose{-o.x, -o.y, 0}, point<double>{o.x - aside * o.y, o.y + aside * o.x});
+        }
+    std::size_t k = 0, by_filter = 0, asked = 0;
+    for (auto _ : state) {
+        const auto& [i, q, d] = queries[k];
+        const polygon &a = t.counties[t.pairs[i].a], &b = t.counties[t.pairs[i].b];
+        if (certified) {
+            bool filtered = false;
+            benchmark::DoNotOptimize(certified_exit_distance(a, b, q, d.x, d.y, &filtered));
+            by_filter += filtered ? 1 : 0;
+        } else {
+            benchmark::DoNotOptimize(exit_distance<double>(a, b, q, d.x, d.y));
+        }
+        ++asked;
+        k = (k + 1) % queries.size();
+    }
+    if (certified)
+        state.counters["by_filter"] =
+            static_cast<double>(by_filter) / static_cast<double>(std::max<std::size_t>(asked, 1));
+}
+
 #if INFLUENCE2D_HAVE_GEOS
 /// GEOS's distance, A built (and prepared) once, B built posed per query.
 class geos_distance {
@@ -414,6 +445,7 @@ void register_query_benchmarks() {
         const std::string method = certified ? "certified" : "double";
         benchmark::RegisterBenchmark(("tiling/separation/" + method).c_str(), tiling_separation, certified);
         benchmark::RegisterBenchmark(("tiling/first_contact/" + method).c_str(), tiling_first_contact, certified);
+        benchmark::RegisterBenchmark(("tiling/exit_distance/" + method).c_str(), tiling_exit_distance, certified);
     }
     const cell small{"convex", 8, 8};
 #if INFLUENCE2D_HAVE_BOX2D

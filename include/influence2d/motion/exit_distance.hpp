@@ -223,12 +223,16 @@ struct timed_site {
     time_fraction<NT> time;
     contact_site site;
     int which = 0;
+    /// The vertices it passes through exactly, when the frame names them
+    /// (translation_frame::given).
+    std::optional<vertex_passage> passage;
     /// The time's double, to sort by (sort_by_time; a NaN quotient of two
     /// times beyond double's range is infinity); 0 in a floating NT, which
     /// sorts by its times themselves.
     double estimate = 0;
 
-    timed_site(time_fraction<NT> t, const contact_site& s, int w) : time(std::move(t)), site(s), which(w) {
+    timed_site(time_fraction<NT> t, const contact_site& s, int w, std::optional<vertex_passage> p = std::nullopt)
+        : time(std::move(t)), site(s), which(w), passage(p) {
         using tr = number_traits<NT>;
         if constexpr (tr::category != number_category::floating) {
             const double q = tr::to_double(time.num) / tr::to_double(time.den);
@@ -237,7 +241,39 @@ struct timed_site {
     }
 };
 
-/// Sorts the events by time (compare_times in NT). For a type other than
+/// No two events shown equal but by their times: for an NT that compares
+/// them itself.
+struct by_times_only {
+    template <class NT>
+    bool operator()(const timed_site<NT>&, const timed_site<NT>&) const {
+        return false;
+    }
+};
+
+/// The sign of l's time minus r's (compare_times in NT); in a filtered NT,
+/// when the bound cannot settle it, 0 if `same_time(l, r)` shows the times
+/// equal (else uncertain_sign as before).
+template <class NT, class SameTime>
+int compare_events(const timed_site<NT>& l, const timed_site<NT>& r, SameTime&& same_time) {
+    if constexpr (std::is_same_v<NT, certified>) {
+        // (The sign asked without a throw: ties are common here.)
+        int sign = 0;
+        if ((l.time.num * r.time.den - r.time.num * l.time.den).try_sign(sign)) return sign;
+        if (same_time(l, r)) return 0;
+        throw uncertain_sign();
+    } else if constexpr (number_traits<NT>::category == number_category::filtered) {
+        try {
+            return compare_times(l.time, r.time);
+        } catch (const uncertain_sign&) {
+            if (same_time(l, r)) return 0;
+            throw;
+        }
+    } else {
+        return compare_times(l.time, r.time);
+    }
+}
+
+/// Sorts the events by time (compare_events in NT). For a type other than
 /// the floating ones: by the doubles of their times first, then checked
 /// pair of neighbours by pair of neighbours in NT, and sorted by NT's
 /// comparisons only when one pair is out of order. A comparison sort
@@ -245,19 +281,20 @@ struct timed_site {
 /// that sorting by NT alone would not, and asks n - 1 where the sort asks
 /// about n log n (each a product of two times in `certified` or exact
 /// rationals).
-template <class NT>
-void sort_by_time(std::vector<timed_site<NT>>& events) {
+template <class NT, class SameTime>
+void sort_by_time(std::vector<timed_site<NT>>& events, SameTime&& same_time) {
     using tr = number_traits<NT>;
+    const auto before = [&](const timed_site<NT>& l, const timed_site<NT>& r) {
+        return compare_events(l, r, same_time) < 0;
+    };
     if constexpr (tr::category != number_category::floating) {
         std::sort(events.begin(), events.end(),
                   [](const timed_site<NT>& l, const timed_site<NT>& r) { return l.estimate < r.estimate; });
         bool ordered = true;
-        for (std::size_t k = 1; k < events.size() && ordered; ++k)
-            ordered = compare_times(events[k - 1].time, events[k].time) <= 0;
+        for (std::size_t k = 1; k < events.size() && ordered; ++k) ordered = !before(events[k], events[k - 1]);
         if (ordered) return;
     }
-    std::sort(events.begin(), events.end(),
-              [](const timed_site<NT>& l, const timed_site<NT>& r) { return compare_times(l.time, r.time) < 0; });
+    std::sort(events.begin(), events.end(), before);
 }
 
 /// The exit search of exit_distance (its pseudocode) for B posed by t and
@@ -265,13 +302,18 @@ void sort_by_time(std::vector<timed_site<NT>>& events) {
 /// `scale` bounds the magnitudes of the polygons and of t's translation.
 /// Returns the event at the exit, whose time is the exit in units of
 /// (dx, dy); none when the exit is 0 (the regions do not meet at q, or no
-/// event comes after it).
-template <class NT>
+/// event comes after it). `same_time(l, r)` may show two events equal where
+/// a filtered NT's bound cannot (compare_events). In `certified`, with B
+/// not turned, the sides its bound leaves in doubt are decided exactly
+/// (translation_frame::given).
+template <class NT, class SameTime>
 std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, const rotation_pose& t, double dx,
-                                          double dy, double scale) {
+                                          double dy, double scale, SameTime&& same_time) {
     using namespace sweep;
     using tr = number_traits<NT>;
     translation_frame<NT> f(a, b, t, {tr::from_double(dx), tr::from_double(dy)});
+    if (std::is_same_v<NT, certified> && t.c == 1 && t.s == 0)
+        f.given = given_translation{{t.tx, t.ty}, {0, 0}, {dx, dy}};
     const double reach = std::fabs(dx) + std::fabs(dy);
     const double e0 = placing_margin<NT>(scale);
     const time_fraction<NT> zero{NT(0), NT(1)};
@@ -304,12 +346,13 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
                 } catch (const uncertain_sign&) {}
             }
             time_fraction<NT> times[2];
-            const int k = f.times(site, false, times);
+            std::optional<vertex_passage> passages[2];
+            const int k = f.times(site, false, times, passages);
             for (int i = 0; i < k; ++i)
                 if ((w_low < 0 || beyond(times[i], w_low)) && !beyond(times[i], w))
-                    events.emplace_back(std::move(times[i]), site, i);
+                    events.emplace_back(std::move(times[i]), site, i, passages[i]);
         });
-        sort_by_time(events);
+        sort_by_time(events, same_time);
     };
     double w_low = -1, w = std::min(s_max, s_max * first_window);
     load(w_low, w);
@@ -320,7 +363,10 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
         // event taken as the exit is not compared with itself: a filtered
         // NT cannot tell a value from itself.)
         const time_fraction<NT>& last = exit ? exit->time : zero;
-        for (; next < events.size() && compare_times(events[next].time, last) <= 0; ++next)
+        const auto at_last = [&](const timed_site<NT>& x) {
+            return (exit ? compare_events(x, *exit, same_time) : compare_times(x.time, zero)) <= 0;
+        };
+        for (; next < events.size() && at_last(events[next]); ++next)
             if (touches(witness, events[next].site, a, b)) stale = true;
         while (next == events.size() && w < s_max) {
             w_low = w;
@@ -399,7 +445,7 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
     }
     const unit_direction u(dx, dy);
     const double scale = coordinate_scale(a) + coordinate_scale(b) + std::fabs(q.tx) + std::fabs(q.ty);
-    const std::optional<timed_site<NT>> exit = exit_search<NT>(a, b, t, u.dx, u.dy, scale);
+    const std::optional<timed_site<NT>> exit = exit_search<NT>(a, b, t, u.dx, u.dy, scale, by_times_only{});
     if (!exit) return NT(0);
     return exit->time.num / exit->time.den * u.factor<NT>();
 }
@@ -410,16 +456,23 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
 /// uncertain_sign), then the one event at the exit evaluated again from its
 /// site's three vertices and rounded, in double words where their bound
 /// settles the rounding, else in Exact (nearest_site_time). The search takes
-/// the exact search's every branch, so its exit is the exact exit; a sign that
-/// `certified` cannot settle (a tie between events, a touching meeting test,
-/// coordinates far from 1 in scale) sends the query to exit_search<Exact>
-/// whole. Throws as exit_distance. `*by_filter`, when given, says whether the
-/// search in `certified` answered (no sign sent the query to Exact).
+/// the exact search's every branch, so its exit is the exact exit. When B is
+/// not turned (its rotation's doubles exactly 1 and 0), the signs its bound
+/// leaves in doubt where a shared border moves along itself are decided on
+/// the doubles as given: a vertex's side against another's line of motion
+/// (translation_frame::given), two events of one time (a vertex passing
+/// through a vertex, same_passage_time; vertices reaching parallel lines
+/// together, same_reaching_time). Any other sign that `certified` cannot
+/// settle (a tie those do not show, a touching meeting test, coordinates
+/// far from 1 in scale) sends the query to exit_search<Exact> whole. Throws
+/// as exit_distance. `*by_filter`, when given, says whether the search in
+/// `certified` answered (no sign sent the query to Exact).
 /// certified_exit_distance (exact/certified_exit_distance.hpp) is this query
 /// in exact rationals.
 ///
-///   (exit, event) <- exit_search<certified>, or on uncertain_sign
-///                    exit_search<Exact>
+///   (exit, event) <- exit_search<certified> (B not turned: the doubles as
+///                    given decide the sides and ties above), or on
+///                    uncertain_sign exit_search<Exact>
 ///   no event:                      0
 ///   the event's time times 2^shift, rounded to the nearest double: in
 ///   double words (site_reaching_time, else the site's contact_times), or in
@@ -437,7 +490,15 @@ double filtered_exit_distance(const polygon& a, const polygon& b, const pose& q,
     if (by_filter != nullptr) *by_filter = false;
     return fallback<>::run(
         [&] {
-            const std::optional<timed_site<certified>> exit = exit_search<certified>(a, b, t, u.dx, u.dy, scale);
+            const bool unturned = t.c == 1 && t.s == 0;
+            const pose along{u.dx, u.dy, 0};
+            const std::optional<timed_site<certified>> exit = exit_search<certified>(
+                a, b, t, u.dx, u.dy, scale, [&](const timed_site<certified>& l, const timed_site<certified>& r) {
+                    if (!unturned) return false;
+                    if (l.passage && r.passage)
+                        return same_passage_time(a, b, {0, 0}, {u.dx, u.dy}, *l.passage, *r.passage);
+                    return same_reaching_time(a, b, pose{}, along, l.site, r.site);
+                });
             if (by_filter != nullptr) *by_filter = true;
             if (!exit) return 0.0;
             const point<double_word> d{double_word(u.dx), double_word(u.dy)};
@@ -454,7 +515,8 @@ double filtered_exit_distance(const polygon& a, const polygon& b, const pose& q,
             });
         },
         [&] {
-            const std::optional<timed_site<Exact>> exit = exit_search<Exact>(a, b, t, u.dx, u.dy, scale);
+            const std::optional<timed_site<Exact>> exit =
+                exit_search<Exact>(a, b, t, u.dx, u.dy, scale, by_times_only{});
             return exit ? nearest_double(time_fraction<Exact>{exit->time.num * u.factor<Exact>(), exit->time.den})
                         : 0.0;
         });

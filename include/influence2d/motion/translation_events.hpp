@@ -29,6 +29,7 @@
 #include "influence2d/number/double_word.hpp"
 #include "influence2d/number/fallback.hpp"
 #include "influence2d/predicates/contact_time.hpp"
+#include "influence2d/predicates/exact_doubles.hpp"
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/predicates/orientation.hpp"
 #include "influence2d/query/intersects.hpp"
@@ -228,6 +229,24 @@ double time_above(const time_fraction<NT>& t) {
     return std::isfinite(q) ? q * (1 + 0x1p-40) + 0x1p-1000 : std::numeric_limits<double>::infinity();
 }
 
+/// A contact at which a site's vertex passes exactly through a vertex of
+/// the other polygon (its line of motion holds an end of the edge: the one
+/// time when the edge crosses that line there, either time when the edge
+/// lies on it): A's vertex and B's, stored numbering. Its time is that at
+/// which B's vertex, translated, sits on A's.
+struct vertex_passage {
+    std::uint32_t a_vertex = 0;  ///< A's vertex
+    std::uint32_t b_vertex = 0;  ///< B's vertex
+};
+
+/// A translation as given in double, for B not turned: B posed by the
+/// translation t, displaced by to - from.
+struct given_translation {
+    point<double> t;     ///< B's translation at the start
+    point<double> from;  ///< the displacement's start: it is to - from
+    point<double> to;    ///< the displacement's end
+};
+
 /// A translation in NT: A where it stands, B posed at the start, the
 /// displacement d (and -d, A's motion relative to B).
 template <class NT>
@@ -236,22 +255,71 @@ struct translation_frame {
     placed_polygon<NT> b;  ///< B posed at the start
     point<NT> d;           ///< B's displacement over the motion
     point<NT> minus_d;     ///< A's displacement relative to B
+    /// For NT = certified and B not turned, the translation as given: the
+    /// sides that the bound leaves in doubt are then decided exactly on its
+    /// doubles (exact_translated_side), and a side of exactly 0 names a
+    /// vertex_passage (times).
+    std::optional<given_translation> given;
 
     /// A and B placed for the translation of B by dd from `start`.
     translation_frame(const polygon& as, const polygon& bs, const rotation_pose& start, point<NT> dd)
         : a(as), b(bs, start), d(dd), minus_d{-dd.x, -dd.y} {}
 
     /// The site's contact times in range (t in [0, 1] when bounded, t >= 0
-    /// otherwise): at most two (contact_times).
-    int times(const contact_site& s, bool bounded, time_fraction<NT> out[2]) {
-        if (s.moving_vertex) return contact_times(b[s.vertex], d, a[s.edge], a[a.shape().next(s.edge)], bounded, out);
-        return contact_times(a[s.vertex], minus_d, b[s.edge], b[b.shape().next(s.edge)], bounded, out);
+    /// otherwise): at most two (contact_times). With `given`, passages[k]
+    /// (when asked: an array of two) names the vertices out[k] passes
+    /// through exactly, or none.
+    int times(const contact_site& s, bool bounded, time_fraction<NT> out[2],
+              std::optional<vertex_passage>* passages = nullptr) {
+        const polygon &as = a.shape(), &bs = b.shape();
+        if (passages != nullptr) passages[0] = passages[1] = std::nullopt;
+        if constexpr (std::is_same_v<NT, certified>) {
+            if (given) return times_given(s, bounded, out, passages);
+        }
+        if (s.moving_vertex) return contact_times(b[s.vertex], d, a[s.edge], a[as.next(s.edge)], bounded, out);
+        return contact_times(a[s.vertex], minus_d, b[s.edge], b[bs.next(s.edge)], bounded, out);
     }
 
     /// The site's earliest contact time in [0, 1], if any.
     std::optional<time_fraction<NT>> earliest(const contact_site& s) {
         if (s.moving_vertex) return earliest_contact_time(b[s.vertex], d, a[s.edge], a[a.shape().next(s.edge)]);
         return earliest_contact_time(a[s.vertex], minus_d, b[s.edge], b[b.shape().next(s.edge)]);
+    }
+
+private:
+    /// times for `given`: each side's sign in certified when its bound
+    /// settles it, else exactly on the doubles as given (a vertex of A
+    /// against B's moving line and a vertex of B's edge against A's
+    /// vertex's line relative to B have the one sign exact_translated_side
+    /// takes).
+    int times_given(const contact_site& s, bool bounded, time_fraction<NT> out[2],
+                    std::optional<vertex_passage>* passages) {
+        const polygon &as = a.shape(), &bs = b.shape();
+        const std::uint32_t e1 = static_cast<std::uint32_t>(s.moving_vertex ? as.next(s.edge) : bs.next(s.edge));
+        const point<NT> p = s.moving_vertex ? b[s.vertex] : a[s.vertex];
+        const point<NT>& dd = s.moving_vertex ? d : minus_d;
+        const point<NT> q0 = s.moving_vertex ? a[s.edge] : b[s.edge], q1 = s.moving_vertex ? a[e1] : b[e1];
+        // The pair (A's vertex, B's vertex) of the site's vertex with the
+        // edge's end `end`.
+        const auto pair_with = [&](std::uint32_t end) {
+            return s.moving_vertex ? vertex_passage{end, s.vertex} : vertex_passage{s.vertex, end};
+        };
+        const auto side = [&](const NT& x, std::uint32_t end) {
+            int sign = 0;
+            if (x.try_sign(sign)) return sign;
+            const vertex_passage v = pair_with(end);
+            return exact_translated_side(given->from, given->to, as.vertex(v.a_vertex), bs.vertex(v.b_vertex),
+                                         given->t);
+        };
+        segment_sides<NT> sides{cross_from(dd, p, q0), cross_from(dd, p, q1), 0, 0};
+        sides.sa = side(sides.alpha, s.edge);
+        sides.sb = side(sides.beta, e1);
+        int ends[2] = {-1, -1};
+        const int k = contact_times_on_sides(sides, p, dd, q0, q1, bounded, out, ends);
+        if (passages != nullptr)
+            for (int i = 0; i < k; ++i)
+                if (ends[i] >= 0) passages[i] = pair_with(ends[i] == 0 ? s.edge : e1);
+        return k;
     }
 };
 
@@ -503,6 +571,19 @@ inline bool same_reaching_time(const polygon& a, const polygon& b, const pose& f
     const point_line_distance x = site_point_line(a, b, l), y = site_point_line(a, b, r);
     return exact_cross_sign(x.from, x.to, start, end) != 0 && exact_cross_sign(y.from, y.to, start, end) != 0 &&
            equal_point_line_distances(x, y);
+}
+
+/// Whether two vertex passages come at one time when B, not turned,
+/// translates by d = to - from (doubles as given): B's vertex v, translated
+/// by t, sits on A's vertex a when v + t + s d = a, at s = d . (a - v - t) /
+/// d . d (A's vertex moving by -d relative to B passes B's at the same s);
+/// two such times are equal when d . ((a - v) - (a2 - v2)) = 0, whatever t
+/// (exact_offsets_along). Two polygons that share their border's vertices
+/// and translate back onto it pass them all at once.
+inline bool same_passage_time(const polygon& a, const polygon& b, point<double> from, point<double> to,
+                              const vertex_passage& l, const vertex_passage& r) {
+    return exact_offsets_along(from, to, a.vertex(l.a_vertex), b.vertex(l.b_vertex), a.vertex(r.a_vertex),
+                               b.vertex(r.b_vertex)) == 0;
 }
 
 /// The sign of c's time minus e's: in certified when both have one and the

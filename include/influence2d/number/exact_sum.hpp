@@ -16,14 +16,18 @@
 /// Exact signs of sums of products of doubles (no number type involved).
 namespace influence2d::exact_sum {
 
-/// An exact sum of products of doubles, kept as one fixed-point two's
-/// complement integer wide enough for any of them: a finite double is M 2^E
-/// with an integer |M| < 2^53 and E >= -1126, so a product is an integer below
-/// 2^106 times 2^(E1 + E2) with E1 + E2 in [-2252, 1942]; the integer counts
-/// units of 2^-2252 in 70 words of 64 bits (4480 bits: the 4300 a product can
-/// reach, and room for 2^100 terms' carries). Precondition: finite inputs
-/// (the callers ensure it; NaN or infinity gives a meaningless sum). Each
-/// addition costs a few word operations plus its carry; it allocates nothing.
+/// An exact sum of products of doubles, kept as two fixed-point unsigned
+/// integers wide enough for any of them, the positive terms' total and the
+/// negative terms' (so that no term borrows across the words a sum near 0
+/// would span in two's complement): a finite double is m 2^e with an
+/// integer m < 2^53 (read from its bits) and e in [-1074, 971], so a product
+/// is an integer below 2^106 times 2^(e1 + e2) with e1 + e2 in [-2148,
+/// 1942]; each integer counts units of 2^-2252 in 70 words of 64 bits (4480
+/// bits: the 4200 a product can reach, and room for 2^100 terms' carries).
+/// The sign compares the two from their highest word touched. Precondition:
+/// finite inputs (the callers ensure it; NaN or infinity gives a
+/// meaningless sum). Each addition costs a few word operations plus its
+/// carry; it allocates nothing.
 class accumulator {
 public:
     /// Adds x exactly (x finite).
@@ -33,25 +37,20 @@ public:
     /// double's range or below its subnormals.
     void add_product(double a, double b) {
         if (a == 0 || b == 0) return;
-        int ea = 0, eb = 0;
-        const double fa = std::frexp(a, &ea), fb = std::frexp(b, &eb);
-        // |fa|, |fb| in [0.5, 1): the integers |fa| 2^53 and |fb| 2^53 are exact.
-        const auto ma = static_cast<std::uint64_t>(std::ldexp(std::fabs(fa), 53));
-        const auto mb = static_cast<std::uint64_t>(std::ldexp(std::fabs(fb), 53));
+        const std::uint64_t ma = significand(a), mb = significand(b);
         // The product ma mb < 2^106 as two words, from 32-bit halves.
         const std::uint64_t a_lo = ma & 0xffffffffu, a_hi = ma >> 32, b_lo = mb & 0xffffffffu, b_hi = mb >> 32;
         const std::uint64_t lo = a_lo * b_lo, mid = a_lo * b_hi + a_hi * b_lo, hi = a_hi * b_hi;
         const std::uint64_t low = lo + (mid << 32);
         const std::uint64_t high = hi + (mid >> 32) + (low < lo);
-        const int position = (ea - 53) + (eb - 53) + bias;  // bit of the product's unit
-        add_shifted(low, high, position, (a < 0) != (b < 0));
+        const int position = exponent(a) + exponent(b) + bias;  // bit of the product's unit
+        add_shifted(low, high, position, (a < 0) != (b < 0) ? negative_ : positive_);
     }
 
     /// The sign of the exact sum: -1, 0 or +1 (0 for no term).
     int sign() const {
-        if (words_[count - 1] >> 63) return -1;
-        for (const std::uint64_t w : words_)
-            if (w != 0) return 1;
+        for (int k = top_; k-- > 0;)
+            if (positive_[k] != negative_[k]) return positive_[k] > negative_[k] ? 1 : -1;
         return 0;
     }
 
@@ -59,8 +58,26 @@ private:
     static constexpr int bias = 2252;
     static constexpr int count = 70;
 
-    /// Adds (or subtracts) (high 2^64 + low) 2^position to the integer.
-    void add_shifted(std::uint64_t low, std::uint64_t high, int position, bool negative) {
+    static std::uint64_t bits_of(double x) {
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &x, sizeof bits);
+        return bits;
+    }
+    /// The integer m < 2^53 of a finite x = +-m 2^e: its stored fraction,
+    /// with the leading bit unless x is subnormal.
+    static std::uint64_t significand(double x) {
+        const std::uint64_t bits = bits_of(x), fraction = bits & ((std::uint64_t{1} << 52) - 1);
+        return (bits >> 52 & 0x7ff) == 0 ? fraction : fraction | std::uint64_t{1} << 52;
+    }
+    /// The power e of a finite x = +-m 2^e (significand): -1074 for a
+    /// subnormal.
+    static int exponent(double x) {
+        const int field = static_cast<int>(bits_of(x) >> 52 & 0x7ff);
+        return field == 0 ? -1074 : field - 1075;
+    }
+
+    /// Adds (high 2^64 + low) 2^position to the integer in `words`.
+    void add_shifted(std::uint64_t low, std::uint64_t high, int position, std::uint64_t* words) {
         INFLUENCE2D_ASSERT(position >= 0 && position / 64 + 3 <= count,
                            "a product's bits beyond the accumulator's words");
         const int word = position / 64, shift = position % 64;
@@ -68,27 +85,23 @@ private:
         const std::uint64_t part[3] = {low << shift, shift ? (high << shift) | (low >> (64 - shift)) : high,
                                        shift ? high >> (64 - shift) : 0};
         unsigned carry = 0;
-        for (int k = word; k < count; ++k) {
+        int k = word;
+        for (; k < count; ++k) {
             const std::uint64_t p = k - word < 3 ? part[k - word] : 0;
             if (k - word >= 3 && carry == 0) break;
-            const std::uint64_t w = words_[k];
-            if (!negative) {
-                const std::uint64_t s = w + p;
-                const unsigned c1 = s < w;
-                const std::uint64_t t = s + carry;
-                carry = c1 | (t < s);
-                words_[k] = t;
-            } else {
-                const std::uint64_t s = w - p;
-                const unsigned b1 = w < p;
-                const std::uint64_t t = s - carry;
-                carry = b1 | (s < carry);
-                words_[k] = t;
-            }
+            const std::uint64_t w = words[k];
+            const std::uint64_t s = w + p;
+            const unsigned c1 = s < w;
+            const std::uint64_t t = s + carry;
+            carry = c1 | (t < s);
+            words[k] = t;
         }
+        top_ = std::max(top_, k);
     }
 
-    std::uint64_t words_[count] = {};
+    std::uint64_t positive_[count] = {};  ///< the positive terms' total
+    std::uint64_t negative_[count] = {};  ///< the negative terms' magnitudes' total
+    int top_ = 0;                         ///< one above the highest word either total has touched
 };
 
 /// Whether a + b is a double (the sum rounds to itself); `sum` gets the

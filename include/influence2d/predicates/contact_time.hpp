@@ -84,6 +84,36 @@ time_fraction<NT> passing_time(const point<NT>& p, const point<NT>& d, const poi
     return {d.x * (x.x - p.x) + d.y * (x.y - p.y), d.x * d.x + d.y * d.y};
 }
 
+/// contact_times with the sides of a and b against p's line of motion
+/// given (`sides`: sides_of's values, their signs decided by the caller,
+/// exactly). When `ends` is given, ends[k] says which end of the segment
+/// p passes through at out[k]: 0 for a, 1 for b, -1 for neither (it
+/// crosses the segment inside).
+template <class NT>
+int contact_times_on_sides(const segment_sides<NT>& sides, const point<NT>& p, const point<NT>& d, const point<NT>& a,
+                           const point<NT>& b, bool bounded, time_fraction<NT> out[2], int* ends = nullptr) {
+    if (!sides.meet()) return 0;
+    int count = 0;
+    const auto keep = [&](time_fraction<NT>&& t, int end) {
+        if (!time_in_range(t, bounded)) return;
+        if (ends != nullptr) ends[count] = end;
+        out[count++] = std::move(t);
+    };
+    if (!sides.on_line()) {
+        const point<NT> e{b.x - a.x, b.y - a.y};
+        NT num = cross_from(e, p, a), den = sides.alpha - sides.beta;
+        if (sides.sa < sides.sb) {  // den = alpha - beta < 0: both signs turned
+            num = -num;
+            den = -den;
+        }
+        keep({std::move(num), std::move(den)}, sides.sa == 0 ? 0 : sides.sb == 0 ? 1 : -1);
+    } else {
+        keep(passing_time(p, d, a), 0);
+        keep(passing_time(p, d, b), 1);
+    }
+    return count;
+}
+
 /// The times at which a point p moving as p + t d (d != 0) starts or stops
 /// lying on the closed segment [a, b], restricted to t >= 0 (and t <= 1 when
 /// `bounded`): written to out[0..count), count returned (0, 1 or 2).
@@ -104,25 +134,7 @@ time_fraction<NT> passing_time(const point<NT>& p, const point<NT>& d, const poi
 template <class NT>
 int contact_times(const point<NT>& p, const point<NT>& d, const point<NT>& a, const point<NT>& b, bool bounded,
                   time_fraction<NT> out[2]) {
-    const segment_sides<NT> sides = sides_of(p, d, a, b);
-    if (!sides.meet()) return 0;
-    int count = 0;
-    const auto keep = [&](time_fraction<NT>&& t) {
-        if (time_in_range(t, bounded)) out[count++] = std::move(t);
-    };
-    if (!sides.on_line()) {
-        const point<NT> e{b.x - a.x, b.y - a.y};
-        NT num = cross_from(e, p, a), den = sides.alpha - sides.beta;
-        if (sides.sa < sides.sb) {  // den = alpha - beta < 0: both signs turned
-            num = -num;
-            den = -den;
-        }
-        keep({std::move(num), std::move(den)});
-    } else {
-        keep(passing_time(p, d, a));
-        keep(passing_time(p, d, b));
-    }
-    return count;
+    return contact_times_on_sides(sides_of(p, d, a, b), p, d, a, b, bounded, out);
 }
 
 /// The time at which p moving as p + t d reaches the line through a and b,

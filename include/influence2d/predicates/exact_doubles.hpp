@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "influence2d/core/point.hpp"
@@ -41,6 +42,58 @@ inline int exact_cross_sign(const point<double>& a, const point<double>& b, cons
     sum.add_product(b.y, c.x);
     sum.add_product(a.y, d.x);
     sum.add_product(-a.y, c.x);
+    return sum.sign();
+}
+
+/// x - y in `out`, returning whether it is exact (each coordinate's
+/// difference a double: exact_sum::exact_double_sum).
+inline bool exact_difference(const point<double>& x, const point<double>& y, point<double>& out) {
+    return exact_sum::exact_double_sum(x.x, -y.x, out.x) && exact_sum::exact_double_sum(x.y, -y.y, out.y);
+}
+
+/// The exact sign of d x (a - (v + t)) for d = to - from, all finite
+/// doubles as given: the side of the point a against the line through v + t
+/// with direction d (a point v of a polygon translated by t, moving by
+/// to - from). When the differences d, a - v and then a - v - t are
+/// doubles (exact_difference), the orientation of 0, d and that point
+/// (exact_sum::orientation_sign); else the twelve products of its
+/// expansion summed exactly. The
+/// same sign is that of a against -d's line through v + t: a vertex of the
+/// still polygon moving by -d relative to the other.
+inline int exact_translated_side(const point<double>& from, const point<double>& to, const point<double>& a,
+                                 const point<double>& v, const point<double>& t) {
+    point<double> d, av, w;
+    if (exact_difference(to, from, d) && exact_difference(a, v, av) && exact_difference(av, t, w))
+        return exact_sum::orientation_sign(0, 0, d.x, d.y, w.x, w.y);  // d x w
+    exact_sum::accumulator sum;
+    for (const auto& [q, sign] : {std::pair<const point<double>*, double>{&a, 1}, {&v, -1}, {&t, -1}}) {
+        sum.add_product(sign * to.x, q->y);
+        sum.add_product(-sign * from.x, q->y);
+        sum.add_product(-sign * to.y, q->x);
+        sum.add_product(sign * from.y, q->x);
+    }
+    return sum.sign();
+}
+
+/// The exact sign of d . ((a - v) - (a2 - v2)) for d = to - from, all
+/// finite doubles as given: 0 when the offsets a - v and a2 - v2 reach as
+/// far along d. When d, the offsets and their difference g are doubles
+/// (exact_difference), d . g as the orientation of 0, d and g turned a
+/// quarter (exact_sum::orientation_sign); else its sixteen products summed
+/// exactly.
+inline int exact_offsets_along(const point<double>& from, const point<double>& to, const point<double>& a,
+                               const point<double>& v, const point<double>& a2, const point<double>& v2) {
+    point<double> d, o, o2, g;
+    if (exact_difference(to, from, d) && exact_difference(a, v, o) && exact_difference(a2, v2, o2) &&
+        exact_difference(o, o2, g))
+        return exact_sum::orientation_sign(0, 0, d.x, d.y, -g.y, g.x);  // d . g = d x (-g.y, g.x)
+    exact_sum::accumulator sum;
+    for (const auto& [q, sign] : {std::pair<const point<double>*, double>{&a, 1}, {&v, -1}, {&a2, -1}, {&v2, 1}}) {
+        sum.add_product(sign * to.x, q->x);
+        sum.add_product(-sign * from.x, q->x);
+        sum.add_product(sign * to.y, q->y);
+        sum.add_product(-sign * from.y, q->y);
+    }
     return sum.sign();
 }
 

@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: BSL-1.0
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include "influence2d/number/cgal.hpp"
+#include "influence2d/predicates/exact_doubles.hpp"
+#include "support/random.hpp"
+
+namespace {
+
+using influence2d::exact_rational;
+using influence2d::point;
+
+exact_rational q(double x) { return exact_rational(x); }
+
+/// The sign of d x (a - v - t), d = to - from, in exact rationals.
+int side_reference(point<double> from, point<double> to, point<double> a, point<double> v, point<double> t) {
+    const exact_rational dx = q(to.x) - q(from.x), dy = q(to.y) - q(from.y);
+    const exact_rational wx = q(a.x) - q(v.x) - q(t.x), wy = q(a.y) - q(v.y) - q(t.y);
+    return static_cast<int>(CGAL::sign(dx * wy - dy * wx));
+}
+
+/// The sign of d . ((a - v) - (a2 - v2)), d = to - from, in exact rationals.
+int offsets_reference(point<double> from, point<double> to, point<double> a, point<double> v, point<double> a2,
+                      point<double> v2) {
+    const exact_rational dx = q(to.x) - q(from.x), dy = q(to.y) - q(from.y);
+    const exact_rational gx = q(a.x) - q(v.x) - q(a2.x) + q(v2.x), gy = q(a.y) - q(v.y) - q(a2.y) + q(v2.y);
+    return static_cast<int>(CGAL::sign(dx * gx + dy * gy));
+}
+
+}  // namespace
+
+TEST_CASE("exact doubles: a translated point's side and offsets along a motion against exact rationals",
+          "[exact_doubles]") {
+    // Coordinates of one scale (where the differences are doubles and the
+    // 128-bit orientation answers) and of mixed scales from 2^-60 to 2^60
+    // (where they round and the twelve or sixteen products are summed);
+    // half the cases built to be 0 exactly: a = v + t with d along it, or
+    // equal offsets, then one coordinate moved by a unit in its last place.
+    test_random::rng g(0x51de);
+    const auto coordinate = [&](bool mixed) {
+        const double x = g.uniform(-100, 100);
+        return mixed ? std::ldexp(x, static_cast<int>(g.index(121)) - 60) : x;
+    };
+    const auto any_point = [&](bool mixed) { return point<double>{coordinate(mixed), coordinate(mixed)}; };
+    const auto nudged = [&](double x) { return g.chance(0.5) ? x : std::nextafter(x, g.chance(0.5) ? 1e300 : -1e300); };
+    int zeros = 0, checked = 0;
+    for (int trial = 0; trial < 4000; ++trial) {
+        const bool mixed = trial % 2 == 1;
+        point<double> from = g.chance(0.5) ? point<double>{0, 0} : any_point(mixed), to = any_point(mixed);
+        point<double> a = any_point(mixed), v = any_point(mixed), t = any_point(mixed);
+        if (g.chance(0.5)) {
+            // a shared vertex (a = v) translated along the motion: t = -k d.
+            v = a;
+            const double k = g.chance(0.5) ? 1 : 0.5;
+            t = {-k * (to.x - from.x), -k * (to.y - from.y)};
+            t = {nudged(t.x), nudged(t.y)};
+        }
+        INFO("trial " << trial);
+        const int side = influence2d::exact_translated_side(from, to, a, v, t);
+        CHECK(side == side_reference(from, to, a, v, t));
+        point<double> a2 = any_point(mixed), v2 = any_point(mixed);
+        if (g.chance(0.5)) {
+            // the same offset: a2 - v2 = a - v, a2 moved by a shift.
+            const point<double> shift = any_point(false);
+            a2 = {a.x + shift.x, a.y + shift.y};
+            v2 = {v.x + shift.x, v.y + shift.y};
+            a2 = {nudged(a2.x), nudged(a2.y)};
+        }
+        const int along = influence2d::exact_offsets_along(from, to, a, v, a2, v2);
+        CHECK(along == offsets_reference(from, to, a, v, a2, v2));
+        zeros += (side == 0) + (along == 0);
+        checked += 2;
+    }
+    // Both branches of each predicate ran, zeros among them.
+    INFO(zeros << " zeros of " << checked);
+    CHECK(zeros > checked / 20);
+}
+
+TEST_CASE("exact doubles: a side decided below a unit in the last place", "[exact_doubles]") {
+    // B's vertex v = a shared with A, B translated back by t = -d: its line
+    // of motion holds a exactly (0); t one unit in its last place off that:
+    // the side's sign follows the unit's.
+    const point<double> d{0.1, 0.7}, a{-78.3, 35.9};
+    CHECK(influence2d::exact_translated_side({0, 0}, d, a, a, {-d.x, -d.y}) == 0);
+    CHECK(influence2d::exact_translated_side({0, 0}, d, a, a, {std::nextafter(-d.x, 1.0), -d.y}) == 1);
+    CHECK(influence2d::exact_translated_side({0, 0}, d, a, a, {std::nextafter(-d.x, -1.0), -d.y}) == -1);
+    // The same motion given as the difference of two far points.
+    const point<double> from{1e6, -1e6}, to{1e6 + d.x, -1e6 + d.y};
+    const point<double> dd{to.x - from.x, to.y - from.y};
+    CHECK(influence2d::exact_translated_side(from, to, a, a, {-dd.x, -dd.y}) ==
+          side_reference(from, to, a, a, {-dd.x, -dd.y}));
+    // Offsets equal to the last bit, and one unit apart.
+    const point<double> v{-78.25, 35.875}, a2{-77.0, 36.5};
+    const point<double> v2{a2.x - (a.x - v.x), a2.y - (a.y - v.y)};
+    CHECK(influence2d::exact_offsets_along({0, 0}, d, a, v, a2, v2) == 0);
+    CHECK(influence2d::exact_offsets_along({0, 0}, d, a, v, a2, {std::nextafter(v2.x, 0.0), v2.y}) ==
+          offsets_reference({0, 0}, d, a, v, a2, {std::nextafter(v2.x, 0.0), v2.y}));
+}
