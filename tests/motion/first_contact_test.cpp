@@ -353,10 +353,12 @@ TEST_CASE("sweep: random translations of the families against the reference", "[
 TEST_CASE("sweep: real neighbours pushed apart and translated back, certified as exact", "[sweep][reference][real]") {
     // North Carolina's counties (data/real/nc_counties.wkt) share their
     // border vertices exactly. B pushed off A along the line between the
-    // centroids by 1e-3 degrees, then translated back past its place and
-    // aside by 0.3 times the push, to either side: the border's collinear
-    // runs reach A together, events of one time that no bound orders
-    // (sweep::same_reaching_time). The roles swapped too.
+    // centroids by 1e-3 degrees, then translated back past its place,
+    // straight (every shared vertex passes through its twin at once:
+    // sweep::same_passage_time) or aside by 0.3 times the push, to either
+    // side (the border's collinear runs reach A together:
+    // sweep::same_reaching_time): events of one time that no bound orders.
+    // The roles swapped too.
     const std::vector<polygon> layer = test_data::real_layer("nc_counties.wkt");
     REQUIRE(layer.size() == 100);
     contact_tally t;
@@ -370,7 +372,7 @@ TEST_CASE("sweep: real neighbours pushed apart and translated back, certified as
             const point<double> ca = a.centroid(), cb = b.centroid();
             const double length = std::hypot(cb.x - ca.x, cb.y - ca.y), push = 1e-3;
             const point<double> out{(cb.x - ca.x) / length * push, (cb.y - ca.y) / length * push};
-            for (const double aside : {0.3, -0.3}) {
+            for (const double aside : {0.0, 0.3, -0.3}) {
                 const pose from{out.x, out.y, 0}, to{-out.x - aside * out.y, -out.y + aside * out.x, 0};
                 check_translation(a, b, from, to, t);
                 check_translation(b, a, pose{-from.tx, -from.ty, 0}, pose{-to.tx, -to.ty, 0}, t);
@@ -398,7 +400,22 @@ TEST_CASE("sweep: events a unit in the last place apart are not taken as one tim
         check_translation(*a, *b, from, to, t);
         check_translation(*b, *a, pose{0, 0, 0}, pose{0, 2 * y, 0}, t);
     }
-    CHECK(t.later == 4);
+    // B's left corners pass through A's right ones, moving along -x: (6, 0)
+    // through (4, 0) at t = 0.5 and, standing a unit in the last place
+    // further right, (6 + 2^-50, 4) through (4, 4) at 0.5 + 2^-52: vertex
+    // passages no bound of `certified` orders (sweep::same_passage_time
+    // shows them apart). Each rotation of B's ring, so that either corner
+    // comes first in site order.
+    const polygon box = square(0, 0, 4, 4);
+    const std::vector<point<double>> corners{{6, 0}, {8, 0}, {8, 4}, {6 + 0x1p-50, 4}};
+    for (int turn = 0; turn < 4; ++turn) {
+        std::vector<point<double>> ring;
+        for (int k = 0; k < 4; ++k) ring.push_back(corners[(turn + k) % 4]);
+        const polygon b = renumbered(outer_polygon(ring));
+        check_translation(box, b, pose{0, 0, 0}, pose{-4, 0, 0}, t);
+        check_translation(b, box, pose{0, 0, 0}, pose{4, 0, 0}, t);
+    }
+    CHECK(t.later == 4 + 8);
 }
 
 TEST_CASE("sweep: random translations far from the origin against the reference", "[sweep][reference]") {

@@ -31,7 +31,9 @@
 //       them apart, the one-shot separation<double> and certified_separation;
 //       first_contact, B pushed off by 1e-3 degrees and translated back past
 //       its place and aside by 0.3 times the push, to either side,
-//       first_contact<double> and certified_first_contact; exit_distance,
+//       first_contact<double> and certified_first_contact;
+//       first_contact_straight, the same translated straight back (every
+//       shared vertex passes through its twin at once); exit_distance,
 //       B pushed into A by 1e-3 degrees and leaving along the push or aside
 //       by 0.3 times it, to either side, exit_distance<double> and
 //       certified_exit_distance. A shared border moved by a translation
@@ -281,12 +283,12 @@ void tiling_separation(benchmark::State& state, bool certified) {
             static_cast<double>(exact) / static_cast<double>(std::max<std::size_t>(asked, 1));
 }
 
-void tiling_first_contact(benchmark::State& state, bool certified) {
+void tiling_first_contact(benchmark::State& state, bool certified, bool straight) {
     const tiling& t = tiling::get();
     std::vector<std::tuple<std::size_t, pose, pose>> motions;
     const double push = 1e-3;
     for (std::size_t k = 0; k < t.pairs.size(); ++k)
-        for (const double aside : {0.3, -0.3}) {
+        for (const double aside : straight ? std::vector<double>{0.0} : std::vector<double>{0.3, -0.3}) {
             const point<double> o{t.pairs[k].out.x * push, t.pairs[k].out.y * push};
             motions.emplace_back(k, pose{o.x, o.y, 0}, pose{-o.x - aside * o.y, -o.y + aside * o.x, 0});
         }
@@ -444,7 +446,10 @@ void register_query_benchmarks() {
     for (const bool certified : {false, true}) {
         const std::string method = certified ? "certified" : "double";
         benchmark::RegisterBenchmark(("tiling/separation/" + method).c_str(), tiling_separation, certified);
-        benchmark::RegisterBenchmark(("tiling/first_contact/" + method).c_str(), tiling_first_contact, certified);
+        benchmark::RegisterBenchmark(("tiling/first_contact/" + method).c_str(), tiling_first_contact, certified,
+                                     false);
+        benchmark::RegisterBenchmark(("tiling/first_contact_straight/" + method).c_str(), tiling_first_contact,
+                                     certified, true);
         benchmark::RegisterBenchmark(("tiling/exit_distance/" + method).c_str(), tiling_exit_distance, certified);
     }
     const cell small{"convex", 8, 8};

@@ -250,24 +250,15 @@ struct by_times_only {
     }
 };
 
-/// The sign of l's time minus r's (compare_times in NT); in a filtered NT,
-/// when the bound cannot settle it, 0 if `same_time(l, r)` shows the times
-/// equal (else uncertain_sign as before).
+/// The sign of l's time minus r's (compare_times in NT); in a filtered NT
+/// with try_sign, when the bound cannot settle it, 0 if `same_time(l, r)`
+/// shows the times equal, else uncertain_sign.
 template <class NT, class SameTime>
 int compare_events(const timed_site<NT>& l, const timed_site<NT>& r, SameTime&& same_time) {
-    if constexpr (std::is_same_v<NT, certified>) {
-        // (The sign asked without a throw: ties are common here.)
-        int sign = 0;
-        if ((l.time.num * r.time.den - r.time.num * l.time.den).try_sign(sign)) return sign;
+    if constexpr (has_try_sign<NT>::value) {
+        if (const std::optional<int> o = certain_time_order(l.time, r.time)) return *o;
         if (same_time(l, r)) return 0;
         throw uncertain_sign();
-    } else if constexpr (number_traits<NT>::category == number_category::filtered) {
-        try {
-            return compare_times(l.time, r.time);
-        } catch (const uncertain_sign&) {
-            if (same_time(l, r)) return 0;
-            throw;
-        }
     } else {
         return compare_times(l.time, r.time);
     }

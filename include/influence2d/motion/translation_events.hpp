@@ -280,8 +280,22 @@ struct translation_frame {
         return contact_times(a[s.vertex], minus_d, b[s.edge], b[bs.next(s.edge)], bounded, out);
     }
 
-    /// The site's earliest contact time in [0, 1], if any.
-    std::optional<time_fraction<NT>> earliest(const contact_site& s) {
+    /// The site's earliest contact time in [0, 1], if any. With `given`,
+    /// `*passage` (when asked) names the vertices it passes through exactly,
+    /// or none.
+    std::optional<time_fraction<NT>> earliest(const contact_site& s, std::optional<vertex_passage>* passage = nullptr) {
+        if (passage != nullptr) passage->reset();
+        if constexpr (std::is_same_v<NT, certified>) {
+            if (given) {
+                time_fraction<NT> t[2];
+                std::optional<vertex_passage> passages[2];
+                const int k = times_given(s, true, t, passages);
+                if (k == 0) return std::nullopt;
+                const int first = k == 2 && compare_times(t[1], t[0]) < 0 ? 1 : 0;
+                if (passage != nullptr) *passage = passages[first];
+                return std::move(t[first]);
+            }
+        }
         if (s.moving_vertex) return earliest_contact_time(b[s.vertex], d, a[s.edge], a[a.shape().next(s.edge)]);
         return earliest_contact_time(a[s.vertex], minus_d, b[s.edge], b[b.shape().next(s.edge)]);
     }
@@ -515,6 +529,7 @@ template <class Exact>
 struct filtered_event {
     contact_site site;                             ///< where the event happens
     std::optional<time_fraction<certified>> fast;  ///< the time in certified, when certain
+    std::optional<vertex_passage> passage;         ///< the vertices it passes through, when the frame names them
     std::optional<time_fraction<Exact>> exact;     ///< the exact time, once asked
     double rounded = 0;                            ///< the exact time's nearest double, with exact
     double below = 0;                              ///< a double at most the exact time, with exact
@@ -540,10 +555,10 @@ struct filtered_event {
     }
 };
 
-/// The sign of the time t (in certified) minus the double x; throws
-/// uncertain_sign when not certain.
-inline int compare_time_with(const time_fraction<certified>& t, double x) {
-    return compare_values<certified>(t.num, certified(x) * t.den);
+/// The sign of the time t (in certified) minus the double x when the bound
+/// settles it, else none (certain_time_order).
+inline std::optional<int> compare_time_with(const time_fraction<certified>& t, double x) {
+    return certain_time_order(t, time_fraction<certified>{certified(x), certified(1)});
 }
 
 /// The site's vertex and edge as a point-to-line distance on the points as
@@ -587,23 +602,20 @@ inline bool same_passage_time(const polygon& a, const polygon& b, point<double> 
 }
 
 /// The sign of c's time minus e's: in certified when both have one and the
-/// bound settles it; else 0 when `same_time(c's site, e's)` shows them
+/// bound settles it; else 0 when `same_time(c, e)` shows them
 /// equal; else c's certified time against the doubles around e's exact
 /// time; else exactly (`exact_time` computes a site's exact time: it
 /// exists, both events having one).
 template <class Exact, class SameTime, class ExactTime>
 int order(filtered_event<Exact>& c, filtered_event<Exact>& e, SameTime&& same_time, ExactTime&& exact_time) {
-    if (c.fast && e.fast) {
-        try {
-            return compare_times(*c.fast, *e.fast);
-        } catch (const uncertain_sign&) {}
-    }
-    if (same_time(c.site, e.site)) return 0;
+    if (c.fast && e.fast)
+        if (const std::optional<int> o = certain_time_order(*c.fast, *e.fast)) return *o;
+    if (same_time(c, e)) return 0;
     if (c.fast && e.exact) {
-        try {
-            if (compare_time_with(*c.fast, e.above) > 0) return 1;
-            if (compare_time_with(*c.fast, e.below) < 0) return -1;
-        } catch (const uncertain_sign&) {}
+        const std::optional<int> above = compare_time_with(*c.fast, e.above);
+        if (above && *above > 0) return 1;
+        const std::optional<int> below = compare_time_with(*c.fast, e.below);
+        if (below && *below < 0) return -1;
     }
     for (filtered_event<Exact>* x : {&c, &e})
         if (!x->exact) x->set_exact(*exact_time(x->site));
@@ -646,12 +658,13 @@ std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const p
                                                                          const pose& from, const pose& to,
                                                                          const rotation_pose& start) {
     translation_frame<certified> fast(a, b, start, displacement<certified>(from, to));
+    const bool unturned = start.c == 1 && start.s == 0;
+    if (unturned) fast.given = given_translation{{start.tx, start.ty}, {from.tx, from.ty}, {to.tx, to.ty}};
     std::optional<point<Exact>> exact_d;
     const auto exact_time = [&](const contact_site& s) {
         if (!exact_d) exact_d = displacement<Exact>(from, to);
         return site_time(a, b, start, *exact_d, s);
     };
-    const bool unturned = start.c == 1 && start.s == 0;
     std::optional<filtered_event<Exact>> best;
     const std::vector<point<double>>& b_start = fast.b.approx();
     const point<double> sweep{to.tx - from.tx, to.ty - from.ty};
@@ -664,9 +677,9 @@ std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const p
             const double u = std::min(1.0, best->time_above());
             if (!site_may_meet(a, b, b_start, {0, 0}, {u * sweep.x, u * sweep.y}, e, s)) return;
         }
-        filtered_event<Exact> c{s, std::nullopt, std::nullopt};
+        filtered_event<Exact> c{s, std::nullopt, std::nullopt, std::nullopt};
         try {
-            c.fast = fast.earliest(s);
+            c.fast = fast.earliest(s, &c.passage);
             if (!c.fast) return;
         } catch (const uncertain_sign&) {
             std::optional<time_fraction<Exact>> t = exact_time(s);
@@ -676,8 +689,11 @@ std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const p
         if (best) {
             const int o = order(
                 c, *best,
-                [&](const contact_site& l, const contact_site& r) {
-                    return unturned && same_reaching_time(a, b, from, to, l, r);
+                [&](const filtered_event<Exact>& l, const filtered_event<Exact>& r) {
+                    if (!unturned) return false;
+                    if (l.passage && r.passage)
+                        return same_passage_time(a, b, {from.tx, from.ty}, {to.tx, to.ty}, *l.passage, *r.passage);
+                    return same_reaching_time(a, b, from, to, l.site, r.site);
                 },
                 exact_time);
             if (o > 0 || (o == 0 && !site_before(s, best->site))) return;

@@ -6,6 +6,7 @@
 
 #include <limits>
 #include <type_traits>
+#include <utility>
 
 namespace influence2d {
 
@@ -113,6 +114,16 @@ int compare_values(const NT& a, const NT& b) {
         return number_traits<NT>::sign(a - b);
     }
 }
+
+/// Whether number_traits<NT> provides try_sign (the sign when certain,
+/// without a throw).
+template <class NT, class = void>
+struct has_try_sign : std::false_type {};
+/// See has_try_sign.
+template <class NT>
+struct has_try_sign<NT,
+                    std::void_t<decltype(number_traits<NT>::try_sign(std::declval<const NT&>(), std::declval<int&>()))>>
+    : std::true_type {};
 
 /// Whether number_traits<NT> provides sum_of_products.
 template <class NT, class = void>

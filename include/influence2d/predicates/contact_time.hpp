@@ -40,6 +40,17 @@ int compare_times(const time_fraction<NT>& t, const time_fraction<NT>& u) {
     return compare_values<NT>(t.num * u.den, u.num * t.den);
 }
 
+/// The sign of t - u as compare_times, for a filtered NT whose traits give
+/// try_sign (has_try_sign): when its bound settles it, else none, without a throw (ties
+/// between events are common where shared borders move, and a throw costs
+/// microseconds).
+template <class NT>
+std::optional<int> certain_time_order(const time_fraction<NT>& t, const time_fraction<NT>& u) {
+    int sign = 0;
+    if (number_traits<NT>::try_sign(t.num * u.den - u.num * t.den, sign)) return sign;
+    return std::nullopt;
+}
+
 /// Whether t >= 0, and when `bounded` also t <= 1 (num <= den).
 template <class NT>
 bool time_in_range(const time_fraction<NT>& t, bool bounded) {
