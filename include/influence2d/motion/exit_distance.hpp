@@ -199,6 +199,18 @@ meeting witness_near(const translation_frame<NT>& f, const places_between<NT>& a
     return {};
 }
 
+/// What shows the meeting at an s strictly between the events s0 < s1
+/// (places_between): an edge pair next to `last`, the site of the event at
+/// s0, when given (witness_near), else the meeting there (meeting_between);
+/// none when they do not meet there.
+template <class NT>
+meeting witness_between(translation_frame<NT>& f, const time_fraction<NT>& s0, const time_fraction<NT>& s1,
+                        const contact_site* last, double scale, double reach) {
+    const places_between<NT> at(f, s0, s1);
+    const meeting w = last != nullptr ? witness_near(f, at, *last) : meeting{};
+    return w ? w : meeting_between(f, at, scale, reach);
+}
+
 /// Whether an event at `s` can change what the witness `w` shows: it
 /// puts one of the witness's features in contact. A vertex located in the
 /// other polygon stays there until it reaches that polygon's boundary (an
@@ -241,26 +253,46 @@ struct timed_site {
     }
 };
 
-/// No two events shown equal but by their times: for an NT that compares
-/// them itself.
-struct by_times_only {
+/// The search in NT alone (exit_search's `settle` and `redo`): a doubt of a
+/// filtered NT's bound raises uncertain_sign.
+struct nt_alone {
     template <class NT>
-    bool operator()(const timed_site<NT>&, const timed_site<NT>&) const {
-        return false;
+    int operator()(const timed_site<NT>&, const timed_site<NT>&) const {
+        throw uncertain_sign();
+    }
+    template <class NT>
+    int operator()(const timed_site<NT>&) const {
+        throw uncertain_sign();
+    }
+    template <class NT>
+    meeting operator()(const timed_site<NT>*, const timed_site<NT>*) const {
+        throw uncertain_sign();
     }
 };
 
 /// The sign of l's time minus r's (compare_times in NT); in a filtered NT
-/// with try_sign, when the bound cannot settle it, 0 if `same_time(l, r)`
-/// shows the times equal, else uncertain_sign.
-template <class NT, class SameTime>
-int compare_events(const timed_site<NT>& l, const timed_site<NT>& r, SameTime&& same_time) {
+/// with try_sign, when the bound cannot settle it, `settle(l, r)` (the
+/// sign found otherwise, or uncertain_sign).
+template <class NT, class Settle>
+int compare_events(const timed_site<NT>& l, const timed_site<NT>& r, Settle&& settle) {
     if constexpr (has_try_sign<NT>::value) {
         if (const std::optional<int> o = certain_time_order(l.time, r.time)) return *o;
-        if (same_time(l, r)) return 0;
-        throw uncertain_sign();
+        return settle(l, r);
     } else {
         return compare_times(l.time, r.time);
+    }
+}
+
+/// The sign of e's time (its comparison with 0); in a filtered NT with
+/// try_sign, when the bound cannot settle it, `settle(e)`.
+template <class NT, class Settle>
+int sign_of_time(const timed_site<NT>& e, Settle&& settle) {
+    if constexpr (has_try_sign<NT>::value) {
+        int sign = 0;
+        if (number_traits<NT>::try_sign(e.time.num, sign)) return sign;
+        return settle(e);
+    } else {
+        return number_traits<NT>::sign(e.time.num);
     }
 }
 
@@ -272,11 +304,11 @@ int compare_events(const timed_site<NT>& l, const timed_site<NT>& r, SameTime&& 
 /// that sorting by NT alone would not, and asks n - 1 where the sort asks
 /// about n log n (each a product of two times in `certified` or exact
 /// rationals).
-template <class NT, class SameTime>
-void sort_by_time(std::vector<timed_site<NT>>& events, SameTime&& same_time) {
+template <class NT, class Settle>
+void sort_by_time(std::vector<timed_site<NT>>& events, Settle&& settle) {
     using tr = number_traits<NT>;
     const auto before = [&](const timed_site<NT>& l, const timed_site<NT>& r) {
-        return compare_events(l, r, same_time) < 0;
+        return compare_events(l, r, settle) < 0;
     };
     if constexpr (tr::category != number_category::floating) {
         std::sort(events.begin(), events.end(),
@@ -293,13 +325,15 @@ void sort_by_time(std::vector<timed_site<NT>>& events, SameTime&& same_time) {
 /// `scale` bounds the magnitudes of the polygons and of t's translation.
 /// Returns the event at the exit, whose time is the exit in units of
 /// (dx, dy); none when the exit is 0 (the regions do not meet at q, or no
-/// event comes after it). `same_time(l, r)` may show two events equal where
-/// a filtered NT's bound cannot (compare_events). In `certified`, with B
-/// not turned, the sides its bound leaves in doubt are decided exactly
-/// (translation_frame::given).
-template <class NT, class SameTime>
+/// event comes after it). `settle(l, r)` orders two events where a filtered
+/// NT's bound cannot (compare_events), `settle(e)` gives the sign of one's
+/// time (sign_of_time); `redo(last, following)` finds the
+/// witness between two events (last none: 0), or at 0 (both none), where
+/// its bound leaves a meeting test in doubt. In `certified`, with B not turned, the sides its
+/// bound leaves in doubt are decided exactly (translation_frame::given).
+template <class NT, class Settle, class Redo>
 std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, const rotation_pose& t, double dx,
-                                          double dy, double scale, SameTime&& same_time) {
+                                          double dy, double scale, Settle&& settle, Redo&& redo) {
     using namespace sweep;
     using tr = number_traits<NT>;
     translation_frame<NT> f(a, b, t, {tr::from_double(dx), tr::from_double(dy)});
@@ -309,7 +343,12 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
     const double e0 = placing_margin<NT>(scale);
     const time_fraction<NT> zero{NT(0), NT(1)};
     std::optional<timed_site<NT>> exit;
-    meeting witness = placed_meet(f.a, f.b, e0);
+    meeting witness;
+    try {
+        witness = placed_meet(f.a, f.b, e0);
+    } catch (const uncertain_sign&) {  // (a filtered NT's doubt)
+        witness = redo(static_cast<const timed_site<NT>*>(nullptr), static_cast<const timed_site<NT>*>(nullptr));
+    }
     if (!witness) return exit;
     const double s_max = exit_reach(a.bounds(), f.b.bounds(), dx, dy, e0);
     const double e = placing_margin<NT>(scale + s_max * reach);
@@ -343,7 +382,7 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
                 if ((w_low < 0 || beyond(times[i], w_low)) && !beyond(times[i], w))
                     events.emplace_back(std::move(times[i]), site, i, passages[i]);
         });
-        sort_by_time(events, same_time);
+        sort_by_time(events, settle);
     };
     double w_low = -1, w = std::min(s_max, s_max * first_window);
     load(w_low, w);
@@ -355,7 +394,7 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
         // NT cannot tell a value from itself.)
         const time_fraction<NT>& last = exit ? exit->time : zero;
         const auto at_last = [&](const timed_site<NT>& x) {
-            return (exit ? compare_events(x, *exit, same_time) : compare_times(x.time, zero)) <= 0;
+            return (exit ? compare_events(x, *exit, settle) : sign_of_time(x, settle)) <= 0;
         };
         for (; next < events.size() && at_last(events[next]); ++next)
             if (touches(witness, events[next].site, a, b)) stale = true;
@@ -368,9 +407,11 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
         if (next == events.size()) return exit;  // after the last event, apart
         timed_site<NT> following = events[next++];
         if (stale) {
-            const places_between<NT> at(f, last, following.time);
-            witness = exit ? witness_near(f, at, exit->site) : meeting{};
-            if (!witness) witness = meeting_between(f, at, scale, reach);
+            try {
+                witness = witness_between(f, last, following.time, exit ? &exit->site : nullptr, scale, reach);
+            } catch (const uncertain_sign&) {  // (a filtered NT's doubt)
+                witness = redo(exit ? &*exit : nullptr, &following);
+            }
             if (!witness) return exit;
         }
         stale = touches(witness, following.site, a, b);
@@ -436,7 +477,7 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
     }
     const unit_direction u(dx, dy);
     const double scale = coordinate_scale(a) + coordinate_scale(b) + std::fabs(q.tx) + std::fabs(q.ty);
-    const std::optional<timed_site<NT>> exit = exit_search<NT>(a, b, t, u.dx, u.dy, scale, by_times_only{});
+    const std::optional<timed_site<NT>> exit = exit_search<NT>(a, b, t, u.dx, u.dy, scale, nt_alone{}, nt_alone{});
     if (!exit) return NT(0);
     return exit->time.num / exit->time.den * u.factor<NT>();
 }
@@ -451,19 +492,24 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
 /// not turned (its rotation's doubles exactly 1 and 0), the signs its bound
 /// leaves in doubt where a shared border moves along itself are decided on
 /// the doubles as given: a vertex's side against another's line of motion
-/// (translation_frame::given), two events of one time (a vertex passing
-/// through a vertex, same_passage_time; vertices reaching parallel lines
-/// together, same_reaching_time). Any other sign that `certified` cannot
-/// settle (a tie those do not show, a touching meeting test, coordinates
-/// far from 1 in scale) sends the query to exit_search<Exact> whole. Throws
-/// as exit_distance. `*by_filter`, when given, says whether the search in
-/// `certified` answered (no sign sent the query to Exact).
+/// and a time's numerator (translation_frame::given), two events of one
+/// time (a vertex passing through a vertex, same_passage_time; vertices
+/// reaching parallel lines together, same_reaching_time). Two events it
+/// cannot order otherwise are ordered on their sites' times in double
+/// words, else in Exact (`settle`); a meeting test it leaves in doubt is
+/// done again in Exact at the events' exact times (`redo`). Any other sign
+/// that `certified` cannot settle (coordinates far from 1 in scale, say)
+/// sends the query to exit_search<Exact> whole. Throws as exit_distance.
+/// `*by_filter`, when given, says whether the search in `certified`
+/// answered (no sign sent the whole query to exit_search<Exact>).
 /// certified_exit_distance (exact/certified_exit_distance.hpp) is this query
 /// in exact rationals.
 ///
 ///   (exit, event) <- exit_search<certified> (B not turned: the doubles as
-///                    given decide the sides and ties above), or on
-///                    uncertain_sign exit_search<Exact>
+///                    given decide the sides, numerators and ties above;
+///                    other doubtful orders in double words or Exact, doubtful
+///                    meeting tests in Exact), or on uncertain_sign
+///                    exit_search<Exact>
 ///   no event:                      0
 ///   the event's time times 2^shift, rounded to the nearest double: in
 ///   double words (site_reaching_time, else the site's contact_times), or in
@@ -479,35 +525,75 @@ double filtered_exit_distance(const polygon& a, const polygon& b, const pose& q,
     const unit_direction u(dx, dy);
     const double scale = coordinate_scale(a) + coordinate_scale(b) + std::fabs(q.tx) + std::fabs(q.ty);
     if (by_filter != nullptr) *by_filter = false;
+    // An event's time in W, from its site's three vertices posed alone
+    // (site_times, the event's own of them), times 2^shift when `scaled`.
+    const auto event_time = [&](auto tag, const timed_site<certified>& e, bool scaled) {
+        using W = decltype(tag);
+        using wt = number_traits<W>;
+        time_fraction<W> times[2];
+        const int k = site_times(a, b, t, point<W>{wt::from_double(u.dx), wt::from_double(u.dy)}, e.site, false, times);
+        INFLUENCE2D_ASSERT(e.which < k, "an event is not one of its site's times");
+        if (scaled) times[e.which].num *= u.factor<W>();
+        return std::move(times[e.which]);
+    };
+    const bool unturned = t.c == 1 && t.s == 0;
+    const pose along{u.dx, u.dy, 0};
+    // Two events that certified cannot order: one time when the doubles as
+    // given show it, else ordered in double words, else in Exact; one
+    // event's time against 0 likewise (r none).
+    const auto order_of = [&](const timed_site<certified>& l, const timed_site<certified>* r) -> int {
+        if (r != nullptr && unturned &&
+            (l.passage && r->passage ? same_passage_time(a, b, {0, 0}, {u.dx, u.dy}, *l.passage, *r->passage)
+                                     : same_reaching_time(a, b, pose{}, along, l.site, r->site)))
+            return 0;
+        const auto in = [&](auto tag) {
+            using W = decltype(tag);
+            const time_fraction<W> zero{W(0), W(1)};
+            return std::pair<time_fraction<W>, time_fraction<W>>(event_time(tag, l, false),
+                                                                 r ? event_time(tag, *r, false) : zero);
+        };
+        return fallback<>::run(
+            [&] {
+                const auto [x, y] = in(double_word{});
+                const std::optional<int> o = certain_time_order(x, y);
+                if (!o) throw uncertain_sign();
+                return *o;
+            },
+            [&] {
+                const auto [x, y] = in(Exact{});
+                return compare_times(x, y);
+            });
+    };
+    struct settler {
+        const decltype(order_of)& order;
+        int operator()(const timed_site<certified>& l, const timed_site<certified>& r) const { return order(l, &r); }
+        int operator()(const timed_site<certified>& e) const { return order(e, nullptr); }
+    } settle{order_of};
+    // The witness between two events where certified leaves a meeting test
+    // in doubt: the same tests in Exact, at the events' exact times.
+    std::optional<translation_frame<Exact>> exact_frame;
+    const auto redo = [&](const timed_site<certified>* last, const timed_site<certified>* following) {
+        if (!exact_frame) exact_frame.emplace(a, b, t, point<Exact>{Exact(u.dx), Exact(u.dy)});
+        if (following == nullptr) return placed_meet(exact_frame->a, exact_frame->b, placing_margin<Exact>(scale));
+        const time_fraction<Exact> s0 =
+            last ? event_time(Exact{}, *last, false) : time_fraction<Exact>{Exact(0), Exact(1)};
+        return witness_between(*exact_frame, s0, event_time(Exact{}, *following, false), last ? &last->site : nullptr,
+                               scale, std::fabs(u.dx) + std::fabs(u.dy));
+    };
     return fallback<>::run(
         [&] {
-            const bool unturned = t.c == 1 && t.s == 0;
-            const pose along{u.dx, u.dy, 0};
-            const std::optional<timed_site<certified>> exit = exit_search<certified>(
-                a, b, t, u.dx, u.dy, scale, [&](const timed_site<certified>& l, const timed_site<certified>& r) {
-                    if (!unturned) return false;
-                    if (l.passage && r.passage)
-                        return same_passage_time(a, b, {0, 0}, {u.dx, u.dy}, *l.passage, *r.passage);
-                    return same_reaching_time(a, b, pose{}, along, l.site, r.site);
-                });
+            const std::optional<timed_site<certified>> exit =
+                exit_search<certified>(a, b, t, u.dx, u.dy, scale, settle, redo);
             if (by_filter != nullptr) *by_filter = true;
             if (!exit) return 0.0;
             const point<double_word> d{double_word(u.dx), double_word(u.dy)};
             double x = 0;
             if (certain_nearest(site_reaching_time(a, b, t, d, exit->site) * u.factor<double_word>(), x)) return x;
-            return nearest_site_time<Exact>([&](auto tag) {
-                using W = decltype(tag);
-                using wt = number_traits<W>;
-                time_fraction<W> times[2];
-                const int k = site_times(a, b, t, point<W>{wt::from_double(u.dx), wt::from_double(u.dy)}, exit->site,
-                                         false, times);
-                INFLUENCE2D_ASSERT(exit->which < k, "the exit's event is not one of its site's times");
-                return time_fraction<W>{times[exit->which].num * u.factor<W>(), times[exit->which].den};
-            });
+            return nearest_site_time<Exact>([&](auto tag) { return event_time(tag, *exit, true); });
         },
         [&] {
             const std::optional<timed_site<Exact>> exit =
-                exit_search<Exact>(a, b, t, u.dx, u.dy, scale, by_times_only{});
+                exit_search<Exact>(a, b, t, u.dx, u.dy, scale, nt_alone{}, nt_alone{});
             return exit ? nearest_double(time_fraction<Exact>{exit->time.num * u.factor<Exact>(), exit->time.den})
                         : 0.0;
         });

@@ -301,11 +301,12 @@ struct translation_frame {
     }
 
 private:
-    /// times for `given`: each side's sign in certified when its bound
-    /// settles it, else exactly on the doubles as given (a vertex of A
-    /// against B's moving line and a vertex of B's edge against A's
-    /// vertex's line relative to B have the one sign exact_translated_side
-    /// takes).
+    /// times for `given`: each side's sign, and each time's numerator's,
+    /// in certified when its bound settles it, else exactly on the doubles
+    /// as given (a vertex of A against B's moving line and a vertex of B's
+    /// edge against A's vertex's line relative to B have the one sign
+    /// exact_translated_side takes; a passing time's numerator is a dot
+    /// product, exact_offsets_along).
     int times_given(const contact_site& s, bool bounded, time_fraction<NT> out[2],
                     std::optional<vertex_passage>* passages) {
         const polygon &as = a.shape(), &bs = b.shape();
@@ -318,18 +319,35 @@ private:
         const auto pair_with = [&](std::uint32_t end) {
             return s.moving_vertex ? vertex_passage{end, s.vertex} : vertex_passage{s.vertex, end};
         };
-        const auto side = [&](const NT& x, std::uint32_t end) {
+        // (A side found 0 exactly is then known exactly.)
+        const auto side = [&](NT& x, std::uint32_t end) {
             int sign = 0;
             if (x.try_sign(sign)) return sign;
             const vertex_passage v = pair_with(end);
-            return exact_translated_side(given->from, given->to, as.vertex(v.a_vertex), bs.vertex(v.b_vertex),
-                                         given->t);
+            sign =
+                exact_translated_side(given->from, given->to, as.vertex(v.a_vertex), bs.vertex(v.b_vertex), given->t);
+            if (sign == 0) x = NT(0);
+            return sign;
         };
         segment_sides<NT> sides{cross_from(dd, p, q0), cross_from(dd, p, q1), 0, 0};
         sides.sa = side(sides.alpha, s.edge);
         sides.sb = side(sides.beta, e1);
+        // A time's numerator on the doubles as given (contact_times_on_sides'
+        // formulas): the edge's ends u0, u1 and the vertex w as given, B's
+        // among them translated by t.
+        const point<double> u0 = (s.moving_vertex ? as : bs).vertex(s.edge),
+                            u1 = (s.moving_vertex ? as : bs).vertex(e1),
+                            w = (s.moving_vertex ? bs : as).vertex(s.vertex), origin{0, 0};
+        const auto numerator_sign = [&](int formula) {
+            if (formula < 0)  // (u1 - u0) x (u0 - p)
+                return s.moving_vertex ? exact_translated_side(u0, u1, u0, w, given->t)
+                                       : -exact_translated_side(u0, u1, w, u0, given->t);
+            const point<double>& u = formula == 0 ? u0 : u1;  // dd . (u - p)
+            return s.moving_vertex ? exact_offsets_along(given->from, given->to, u, w, given->t, origin)
+                                   : exact_offsets_along(given->from, given->to, w, u, given->t, origin);
+        };
         int ends[2] = {-1, -1};
-        const int k = contact_times_on_sides(sides, p, dd, q0, q1, bounded, out, ends);
+        const int k = contact_times_on_sides(sides, p, dd, q0, q1, bounded, out, ends, numerator_sign);
         if (passages != nullptr)
             for (int i = 0; i < k; ++i)
                 if (ends[i] >= 0) passages[i] = pair_with(ends[i] == 0 ? s.edge : e1);

@@ -8,10 +8,12 @@
 /// (certified) gives the exact answer or throws uncertain_sign.
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 #include <optional>
+#include <type_traits>
 #include <utility>
 
 #include "influence2d/core/point.hpp"
@@ -99,28 +101,47 @@ time_fraction<NT> passing_time(const point<NT>& p, const point<NT>& d, const poi
 /// given (`sides`: sides_of's values, their signs decided by the caller,
 /// exactly). When `ends` is given, ends[k] says which end of the segment
 /// p passes through at out[k]: 0 for a, 1 for b, -1 for neither (it
-/// crosses the segment inside).
-template <class NT>
+/// crosses the segment inside). When `numerator_sign` is given (an NT with
+/// try_sign), a numerator whose sign its bound leaves in doubt (a time of 0:
+/// p on the segment's line at the start) takes it from
+/// `numerator_sign(formula)`: the exact sign of (b - a) x (a - p) for
+/// formula -1, of d . (a - p) and d . (b - p) (the passing times) for 0 and
+/// 1, before the normalisation.
+template <class NT, class NumeratorSign = std::nullptr_t>
 int contact_times_on_sides(const segment_sides<NT>& sides, const point<NT>& p, const point<NT>& d, const point<NT>& a,
-                           const point<NT>& b, bool bounded, time_fraction<NT> out[2], int* ends = nullptr) {
+                           const point<NT>& b, bool bounded, time_fraction<NT> out[2], int* ends = nullptr,
+                           NumeratorSign numerator_sign = nullptr) {
+    using tr = number_traits<NT>;
     if (!sides.meet()) return 0;
     int count = 0;
-    const auto keep = [&](time_fraction<NT>&& t, int end) {
-        if (!time_in_range(t, bounded)) return;
+    // flip: -1 when the numerator was negated with the denominator.
+    const auto keep = [&](time_fraction<NT>&& t, int end, int formula, int flip) {
+        int sign = 0;
+        if constexpr (!std::is_same_v<NumeratorSign, std::nullptr_t>) {
+            if (!tr::try_sign(t.num, sign)) {
+                sign = flip * numerator_sign(formula);
+                if (sign == 0) t.num = NT(0);  // (then known exactly: a time of 0)
+            }
+        } else {
+            sign = tr::sign(t.num);
+        }
+        if (sign < 0 || (bounded && compare_values(t.num, t.den) > 0)) return;
         if (ends != nullptr) ends[count] = end;
         out[count++] = std::move(t);
     };
     if (!sides.on_line()) {
         const point<NT> e{b.x - a.x, b.y - a.y};
         NT num = cross_from(e, p, a), den = sides.alpha - sides.beta;
+        int flip = 1;
         if (sides.sa < sides.sb) {  // den = alpha - beta < 0: both signs turned
             num = -num;
             den = -den;
+            flip = -1;
         }
-        keep({std::move(num), std::move(den)}, sides.sa == 0 ? 0 : sides.sb == 0 ? 1 : -1);
+        keep({std::move(num), std::move(den)}, sides.sa == 0 ? 0 : sides.sb == 0 ? 1 : -1, -1, flip);
     } else {
-        keep(passing_time(p, d, a), 0);
-        keep(passing_time(p, d, b), 1);
+        keep(passing_time(p, d, a), 0, 0, 1);
+        keep(passing_time(p, d, b), 1, 1, 1);
     }
     return count;
 }
