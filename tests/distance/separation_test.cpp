@@ -53,6 +53,7 @@
 #include "influence2d/exact/certified_separation.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/number/multiprecision.hpp"
+#include "influence2d/query/intersects.hpp"
 
 namespace {
 
@@ -775,6 +776,43 @@ TEST_CASE(
     }
 }
 
+/// Neighbours a and b (sharing border vertices exactly) with B pushed off A
+/// by a translation, along the line from A's centroid to B's and along
+/// `aside`, by the first of 1e-5, 2e-5, 4e-5, ... (below 8) that leaves
+/// them apart (the exact query tells), and the roles swapped: each frame
+/// checked (check_separation_frame), certified_separation's points against
+/// the reference's tie rule; `ties` counts the frames whose least distance
+/// several edge pairs share.
+void check_pushed_apart(const polygon& a, const polygon& b, point<double> aside, separation_tally& t,
+                        std::size_t& ties) {
+    const point<double> ca = a.centroid(), cb = b.centroid();
+    for (const point<double>& d : {point<double>{cb.x - ca.x, cb.y - ca.y}, aside}) {
+        const double length = std::hypot(d.x, d.y);
+        for (double push = 1e-5; push < 8; push *= 2) {
+            const pose q{d.x / length * push, d.y / length * push, 0};
+            if (separation<ER>(a, b, q).meet()) continue;
+            for (const bool swapped : {false, true}) {
+                const polygon &s = swapped ? b : a, &m = swapped ? a : b;
+                const pose p = swapped ? pose{-q.tx, -q.ty, 0} : q;
+                check_separation_frame(s, m, p, t, floating::none);
+                const reference_answer ref = reference(s, m, p);
+                const std::pair<P, P> expected = tie_rule_points(ref.a, ref.b);
+                const certified_separation_result c = certified_separation(s, m, p);
+                CHECK(c.static_point.x == test_exact::nearest_double(expected.first.x()));
+                CHECK(c.static_point.y == test_exact::nearest_double(expected.first.y()));
+                CHECK(c.moving_point.x == test_exact::nearest_double(expected.second.x()));
+                CHECK(c.moving_point.y == test_exact::nearest_double(expected.second.y()));
+                std::size_t at_least = 0;
+                for (std::size_t e = 0; e < s.size(); ++e)
+                    for (std::size_t f = 0; f < m.size(); ++f)
+                        at_least += pair_squared(ref.a, e, ref.b, f) == ref.boundary_squared;
+                ties += at_least > 1;
+            }
+            break;
+        }
+    }
+}
+
 TEST_CASE(
     "separation: real neighbours pushed apart by a translation are settled in double words, as the exact "
     "reference and its tie rule",
@@ -808,40 +846,52 @@ TEST_CASE(
         for (std::size_t j = i + 1; j < layer.size() && pairs < wanted; ++j) {
             if (!share_a_vertex(i, j)) continue;
             ++pairs;
-            const polygon &a = layer[i], &b = layer[j];
-            const point<double> ca = a.centroid(), cb = b.centroid();
             const double angle = g.uniform(0, 6.283185307179586);
-            const point<double> along[2] = {{cb.x - ca.x, cb.y - ca.y}, {std::cos(angle), std::sin(angle)}};
-            for (const point<double>& d : along) {
-                const double length = std::hypot(d.x, d.y);
-                for (double push = 1e-5; push < 8; push *= 2) {
-                    const pose q{d.x / length * push, d.y / length * push, 0};
-                    if (separation<ER>(a, b, q).meet()) continue;
-                    for (const bool swapped : {false, true}) {
-                        const polygon &s = swapped ? b : a, &m = swapped ? a : b;
-                        const pose p = swapped ? pose{-q.tx, -q.ty, 0} : q;
-                        check_separation_frame(s, m, p, t, floating::none);
-                        const reference_answer ref = reference(s, m, p);
-                        const std::pair<P, P> expected = tie_rule_points(ref.a, ref.b);
-                        const certified_separation_result c = certified_separation(s, m, p);
-                        CHECK(c.static_point.x == test_exact::nearest_double(expected.first.x()));
-                        CHECK(c.static_point.y == test_exact::nearest_double(expected.first.y()));
-                        CHECK(c.moving_point.x == test_exact::nearest_double(expected.second.x()));
-                        CHECK(c.moving_point.y == test_exact::nearest_double(expected.second.y()));
-                        std::size_t at_least = 0;
-                        for (std::size_t e = 0; e < s.size(); ++e)
-                            for (std::size_t f = 0; f < m.size(); ++f)
-                                at_least += pair_squared(ref.a, e, ref.b, f) == ref.boundary_squared;
-                        ties += at_least > 1;
-                    }
-                    break;
-                }
-            }
+            check_pushed_apart(layer[i], layer[j], {std::cos(angle), std::sin(angle)}, t, ties);
         }
     INFO(pairs << " neighbours, " << t.frames << " frames apart, " << ties << " with tied edge pairs, " << t.in_words
                << " in double words");
     CHECK(pairs == wanted);
     CHECK(t.frames == 4 * pairs);
+    CHECK(t.meet == 0);
+    CHECK(ties * 2 > t.frames);
+    CHECK(t.in_words * 10 >= t.frames * 9);
+}
+
+TEST_CASE("separation: a survey grid's neighbours pushed apart are settled in double words, as the exact reference",
+          "[separation][reference]") {
+    // Rectangles of a survey grid, 2.51 by 3.3 from (1.255, 64.05) (its
+    // corners doubles no sum of the steps gives exactly, each computed once
+    // and shared by the four plots that meet there). Neighbours pushed apart
+    // along the line between their centroids (along a row or column, or
+    // diagonally from a shared corner) and along a random direction: edges
+    // on one line apart along it (boxes apart by far more than the bounds,
+    // where no side separates them), feet of corners exactly at corners
+    // (translated_part), corner pairs at one offset (same_offset).
+    std::vector<double> xs, ys;
+    for (int i = 0; i < 5; ++i) xs.push_back(1.255 + 2.51 * i);
+    for (int j = 0; j < 4; ++j) ys.push_back(64.05 + 3.3 * j);
+    std::vector<polygon> plots;
+    for (int j = 0; j + 1 < 4; ++j)
+        for (int i = 0; i + 1 < 5; ++i)
+            plots.push_back(polygon({ring_input{
+                {{xs[i], ys[j]}, {xs[i + 1], ys[j]}, {xs[i + 1], ys[j + 1]}, {xs[i], ys[j + 1]}}, ring_role::outer}}));
+    test_random::rng g(0x9e1d);
+    separation_tally t;
+    std::size_t pairs = 0, ties = 0;
+    for (std::size_t i = 0; i < plots.size(); ++i)
+        for (std::size_t j = i + 1; j < plots.size(); ++j) {
+            if (!intersects<ER>(plots[i], plots[j], pose{})) continue;
+            ++pairs;
+            const double angle = g.uniform(0, 6.283185307179586);
+            check_pushed_apart(plots[i], plots[j], {std::cos(angle), std::sin(angle)}, t, ties);
+        }
+    INFO(pairs << " neighbours, " << t.frames << " frames apart, " << ties << " with tied edge pairs, " << t.in_words
+               << " in double words");
+    CHECK(pairs == 29);
+    // (A random direction into A may need more than the pushes tried to
+    // carry B through it: a few frames fewer.)
+    CHECK(t.frames > 3 * pairs);
     CHECK(t.meet == 0);
     CHECK(ties * 2 > t.frames);
     CHECK(t.in_words * 10 >= t.frames * 9);

@@ -574,3 +574,39 @@ TEST_CASE("distance bounds: nearest_double is the nearest double, scaled_nearest
     CHECK(nearest_double(Q(0)) == 0);
     CHECK(nearest_double(pow2(1100)) == inf);
 }
+
+TEST_CASE("distance: translated_part names closest_on_segment's part exactly", "[distance]") {
+    // A point and a segment one of which is translated by t (not a double
+    // sum): the part closest_on_segment takes on the exact posed points,
+    // in exact rationals, against translated_part on the doubles as given.
+    // Feet exactly at an end: the point level with an end after the
+    // translation, where no bound settles the part.
+    test_random::rng g(0x7a47);
+    int at_ends = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        const point<double> u{g.uniform(-50, 50), g.uniform(-50, 50)}, v{g.uniform(-50, 50), g.uniform(-50, 50)};
+        const point<double> t{g.uniform(-1, 1) * 1e-3, g.uniform(-1, 1) * 1e-3};
+        const bool moving_segment = trial % 2 == 0;
+        point<double> p{g.uniform(-50, 50), g.uniform(-50, 50)};
+        if (g.chance(0.5)) p = g.chance(0.5) ? u : v;  // a shared vertex, then moved apart by t
+        const auto Qp = [](const point<double>& x, const point<double>& shift, bool moved) {
+            return exact_point(moved ? Q(x.x) + Q(shift.x) : Q(x.x), moved ? Q(x.y) + Q(shift.y) : Q(x.y));
+        };
+        const auto P = Qp(p, t, !moving_segment), U = Qp(u, t, moving_segment), V = Qp(v, t, moving_segment);
+        const Q along = (V.x() - U.x()) * (P.x() - U.x()) + (V.y() - U.y()) * (P.y() - U.y());
+        const Q length2 = (V.x() - U.x()) * (V.x() - U.x()) + (V.y() - U.y()) * (V.y() - U.y());
+        const segment_part expected = along <= 0         ? segment_part::start
+                                      : along >= length2 ? segment_part::end
+                                                         : segment_part::interior;
+        INFO("trial " << trial);
+        CHECK(translated_part(p, u, v, t, moving_segment) == expected);
+        at_ends += expected != segment_part::interior ? 1 : 0;
+    }
+    CHECK(at_ends > 300);
+    // A's corner level with B's after B moved along A's side: the foot at
+    // B's end exactly (start), and a unit in the last place inside.
+    const point<double> a0{3.7649999999999997, 64.05}, t{1e-5, 0};
+    CHECK(translated_part(a0, a0, {a0.x, 67.35000000000001}, t, true) == segment_part::start);
+    CHECK(translated_part({a0.x, std::nextafter(a0.y, 100.0)}, a0, {a0.x, 67.35000000000001}, t, true) ==
+          segment_part::interior);
+}

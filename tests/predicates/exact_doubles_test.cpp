@@ -99,3 +99,29 @@ TEST_CASE("exact doubles: a side decided below a unit in the last place", "[exac
     CHECK(influence2d::exact_offsets_along({0, 0}, d, a, v, a2, {std::nextafter(v2.x, 0.0), v2.y}) ==
           offsets_reference({0, 0}, d, a, v, a2, {std::nextafter(v2.x, 0.0), v2.y}));
 }
+
+TEST_CASE("exact doubles: two offsets equal to the last bit", "[exact_doubles]") {
+    // Equal offsets of points of one scale and of mixed scales, and one
+    // coordinate moved by a unit in its last place, against exact rationals.
+    test_random::rng g(0x0ff5);
+    int equal = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        const bool mixed = trial % 2 == 1;
+        const auto coordinate = [&] {
+            const double x = g.uniform(-100, 100);
+            return mixed ? std::ldexp(x, static_cast<int>(g.index(81)) - 40) : x;
+        };
+        const point<double> a{coordinate(), coordinate()}, v{coordinate(), coordinate()};
+        const point<double> shift{coordinate(), coordinate()};
+        point<double> a2{a.x + shift.x, a.y + shift.y}, v2{v.x + shift.x, v.y + shift.y};
+        if (g.chance(0.5)) a2.y = std::nextafter(a2.y, 1e300);
+        const bool expected = q(a.x) - q(v.x) == q(a2.x) - q(v2.x) && q(a.y) - q(v.y) == q(a2.y) - q(v2.y);
+        INFO("trial " << trial);
+        CHECK(influence2d::same_offset(a, v, a2, v2) == expected);
+        equal += expected ? 1 : 0;
+    }
+    CHECK(equal > 100);
+    CHECK(influence2d::same_offset({3.765, 64.05}, {3.765, 64.05}, {6.275, 67.35}, {6.275, 67.35}));
+    CHECK_FALSE(
+        influence2d::same_offset({3.765, 64.05}, {3.765, 64.05}, {6.275, 67.35}, {6.275, std::nextafter(67.35, 0.0)}));
+}

@@ -411,9 +411,16 @@ TEST_CASE("filters: segments_may_meet never drops segments that meet, with or wi
     //         |
     //   a-----u-----b      u on the interior of [a, b] (a T)
     CHECK(segments_may_meet({0, 0}, {2, 0}, {1, 0}, {1, 1}, 0));
-    //   a-----b  u-----v   collinear, apart: no line of either separates the
-    //                      other's ends, so the filter keeps them (conservative)
-    CHECK(segments_may_meet({0, 0}, {1, 0}, {2, 0}, {3, 0}, 0));
+    //   a-----b  u-----v   collinear, 1 apart: no line of either separates
+    //                      the other's ends, their boxes do: apart for e = 0
+    //                      and e = 0.2 (2e < 1), maybe meeting for e = 0.6
+    CHECK_FALSE(segments_may_meet({0, 0}, {1, 0}, {2, 0}, {3, 0}, 0));
+    CHECK_FALSE(segments_may_meet({0, 0}, {1, 0}, {2, 0}, {3, 0}, 0.2));
+    CHECK(segments_may_meet({0, 0}, {1, 0}, {2, 0}, {3, 0}, 0.6));
+    //   a-----b            the same, apart by exactly 2e on x: may meet (the
+    //          u-----v     exact ends, each moved by e, touch)
+    CHECK(segments_may_meet({0, 0}, {1, 0}, {1.5, 0}, {3, 0}, 0.25));
+    CHECK_FALSE(segments_may_meet({0, 0}, {1, 0}, {1.5, 0}, {3, 0}, 0.24));
     //             v
     //            /
     //           u          u and v both above the line of [a, b]: apart

@@ -313,6 +313,22 @@ inline std::optional<point_line_distance> pair_point_line(const search_input& in
     return std::nullopt;
 }
 
+/// Whether two settled pairs whose closest points are vertices (no part
+/// inside an edge: pair_point_line gives none) are at one distance by their
+/// vertices alone: A's vertex less B's the same offset in both, on the
+/// points as given (same_offset; B translated keeps it).
+inline bool pair_vertices_offset_alike(const search_input& in, std::uint32_t e, std::uint32_t f,
+                                       const settled_closest& c, const settled_pair& other) {
+    const auto end = [](const polygon& p, std::uint32_t edge, segment_part part) {
+        return p.vertex(part == segment_part::start ? edge : p.next(edge));
+    };
+    for (const segment_part part : {c.first_part, c.second_part, other.closest.first_part, other.closest.second_part})
+        if (part == segment_part::interior) return false;
+    return same_offset(end(in.a, e, c.first_part), end(in.b, f, c.second_part),
+                       end(in.a, other.static_edge, other.closest.first_part),
+                       end(in.b, other.moving_edge, other.closest.second_part));
+}
+
 /// Phase 2 decided in double, for candidates and no pair certainly crossing:
 /// the pair closest_candidate chooses, when the bounds settle it, or nothing.
 /// Each candidate in the order evaluated_before is settled in double
@@ -332,8 +348,9 @@ inline std::optional<point_line_distance> pair_point_line(const search_input& in
 ///
 ///   for each candidate c in order:
 ///       c.lower > best's upper bound: stop
-///       settle c in double (parallel edges known exactly when B is
-///       translated); in doubt: nothing
+///       settle c in double (parallel edges, and the parts of closest
+///       points the bounds leave in doubt, known exactly when B is
+///       translated: translated_part); in doubt: nothing
 ///       no best, or c certainly nearer: best <- c
 ///       c certainly farther: next
 ///       same features as best, or (translated) an equal point-to-line
@@ -348,9 +365,22 @@ std::optional<settled_pair> settled_candidate(const search_input& in, Approx& ap
         const std::uint32_t e = c.static_edge, f = c.moving_edge;
         const point<double>&a0 = in.a.vertex(e), &a1 = in.a.vertex(in.a.next(e));
         const std::size_t f1 = in.b.next(f);
-        const std::optional<settled_closest> d = settled_closest_between(a0, a1, approx[f], approx[f1], in.delta, [&] {
-            return translated && exact_cross_sign(a0, a1, in.b.vertex(f), in.b.vertex(f1)) == 0;
-        });
+        const point<double>&b0 = in.b.vertex(f), &b1 = in.b.vertex(f1), t{in.t.tx, in.t.ty};
+        const std::optional<settled_closest> d = settled_closest_between(
+            a0, a1, approx[f], approx[f1], in.delta,
+            [&] { return translated && exact_cross_sign(a0, a1, b0, b1) == 0; },
+            [&](int k) -> std::optional<segment_part> {
+                if (!translated) return std::nullopt;
+                if (k < 2) return translated_part(k == 0 ? a0 : a1, b0, b1, t, true);
+                return translated_part(k == 2 ? b0 : b1, a0, a1, t, false);
+            },
+            [&](std::pair<segment_part, segment_part> x, std::pair<segment_part, segment_part> y) {
+                const auto at = [](const point<double>& s0, const point<double>& s1, segment_part part) {
+                    return part == segment_part::start ? s0 : s1;
+                };
+                return translated && same_offset(at(a0, a1, x.first), at(b0, b1, x.second), at(a0, a1, y.first),
+                                                 at(b0, b1, y.second));
+            });
         if (!d) return std::nullopt;
         if (!best || d->upper < best->closest.lower) {
             best = settled_pair{*d, e, f};
@@ -365,7 +395,9 @@ std::optional<settled_pair> settled_candidate(const search_input& in, Approx& ap
             const std::optional<point_line_distance> x = pair_point_line(in, e, f, *d),
                                                      y = pair_point_line(in, best->static_edge, best->moving_edge,
                                                                          best->closest);
-            if (!x || !y || !equal_point_line_distances(*x, *y)) return std::nullopt;
+            const bool equal = x && y ? equal_point_line_distances(*x, *y)
+                                      : !x && !y && pair_vertices_offset_alike(in, e, f, *d, *best);
+            if (!equal) return std::nullopt;
         }
         if (e < best->static_edge || (e == best->static_edge && f < best->moving_edge)) best = settled_pair{*d, e, f};
     }

@@ -10,10 +10,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 #include <optional>
+#include <type_traits>
 #include <utility>
 
 #include "influence2d/core/box.hpp"
@@ -608,6 +610,25 @@ inline std::optional<segment_part> settled_part(const point<double>& p, const po
     return segment_part::interior;
 }
 
+/// closest_on_segment's part for a point and a segment one of which is
+/// translated by t (B's, when its pose is a translation), decided exactly
+/// on the doubles as given: A's point p against B's segment [u + t, v + t]
+/// (`moving_segment`), or B's point p + t against A's segment [u, v].
+/// Start when (V - U).(P - U) <= 0, end when (V - U).(P - V) >= 0, else
+/// interior (exact_offsets_along: a translation keeps V - U, and P - U is
+/// p - u less or plus t).
+inline segment_part translated_part(const point<double>& p, const point<double>& u, const point<double>& v,
+                                    const point<double>& t, bool moving_segment) {
+    const point<double> origin{0, 0};
+    const auto ahead_of = [&](const point<double>& end) {  // the sign of (V - U).(P - end)
+        return moving_segment ? exact_offsets_along(u, v, p, end, t, origin)
+                              : -exact_offsets_along(u, v, end, p, t, origin);
+    };
+    if (ahead_of(u) <= 0) return segment_part::start;
+    if (ahead_of(v) >= 0) return segment_part::end;
+    return segment_part::interior;
+}
+
 /// The closest points of two segments apart, settled in double: where the
 /// two points closest_between_segments picks lie, and bounds of the distance.
 struct settled_closest {
@@ -635,16 +656,26 @@ struct settled_closest {
 ///     between the two parallel lines, the least any two points have; an end
 ///     whose foot lies beyond the other segment (its part there settled as
 ///     an end) is farther.
+/// A part the bounds leave in doubt is asked of `exact_part(k)` when given
+/// (candidate k: a, b against [u, v], then u, v against [a, b]; the part
+/// decided exactly, or none); and a candidate whose points are both ends,
+/// as the first's, counts as the first's when `same_end_distance(first's
+/// parts, its parts)` (when given) shows the two distances equal exactly.
 /// The bounds are the winner's.
-template <class ExactlyParallel>
+template <class ExactlyParallel, class ExactPart = std::nullptr_t, class SameEndDistance = std::nullptr_t>
 std::optional<settled_closest> settled_closest_between(const point<double>& a, const point<double>& b,
                                                        const point<double>& u, const point<double>& v, double delta,
-                                                       ExactlyParallel&& exactly_parallel) {
+                                                       ExactlyParallel&& exactly_parallel,
+                                                       ExactPart exact_part = nullptr,
+                                                       SameEndDistance same_end_distance = nullptr) {
     if (segments_may_meet(a, b, u, v, delta)) return std::nullopt;
     const end_bounds bounds(a, b, u, v, delta);
     const auto parts = [&](int k) -> std::optional<std::pair<segment_part, segment_part>> {
-        const std::optional<segment_part> p =
+        std::optional<segment_part> p =
             k < 2 ? settled_part(k == 0 ? a : b, u, v, delta) : settled_part(k == 2 ? u : v, a, b, delta);
+        if constexpr (!std::is_same_v<ExactPart, std::nullptr_t>) {
+            if (!p) p = exact_part(k);
+        }
         if (!p) return std::nullopt;
         if (k == 0) return std::make_pair(segment_part::start, *p);
         if (k == 1) return std::make_pair(a == b ? segment_part::start : segment_part::end, *p);
@@ -666,7 +697,16 @@ std::optional<settled_closest> settled_closest_between(const point<double>& a, c
             first = here;
             continue;
         }
-        if (p->first != first->first_part || p->second != first->second_part || inside) same_ends = false;
+        if (p->first == first->first_part && p->second == first->second_part && !inside) continue;
+        // (Other ends at the first's distance exactly: the first wins too.)
+        if constexpr (!std::is_same_v<SameEndDistance, std::nullptr_t>) {
+            const bool first_inside_parts =
+                first->first_part == segment_part::interior || first->second_part == segment_part::interior;
+            if (!inside && !first_inside_parts &&
+                same_end_distance(std::make_pair(first->first_part, first->second_part), *p))
+                continue;
+        }
+        same_ends = false;
     }
     if (same_ends) return first;
     if (first_inside && a != b && u != v && exactly_parallel()) return first_inside;

@@ -97,6 +97,22 @@ inline int exact_offsets_along(const point<double>& from, const point<double>& t
     return sum.sign();
 }
 
+/// Whether a - v = a2 - v2 exactly, all finite doubles as given: two pairs
+/// of points with one offset (the same distance, whatever translation t
+/// moves v and v2 by). When the offsets are doubles (exact_difference),
+/// compared as doubles; else each coordinate's four terms summed exactly.
+inline bool same_offset(const point<double>& a, const point<double>& v, const point<double>& a2,
+                        const point<double>& v2) {
+    point<double> o, o2;
+    if (exact_difference(a, v, o) && exact_difference(a2, v2, o2)) return o.x == o2.x && o.y == o2.y;
+    exact_sum::accumulator x, y;
+    for (const auto& [q, sign] : {std::pair<const point<double>*, double>{&a, 1}, {&v, -1}, {&a2, -1}, {&v2, 1}}) {
+        x.add(sign * q->x);
+        y.add(sign * q->y);
+    }
+    return x.sign() == 0 && y.sign() == 0;
+}
+
 /// Whether q lies on the closed segment [a, b] (exact).
 inline bool on_segment_exactly(const point<double>& q, const point<double>& a, const point<double>& b) {
     return exact_orientation(a, b, q) == 0 && within_collinear_segment(q, a, b);
