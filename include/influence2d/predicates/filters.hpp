@@ -212,20 +212,16 @@ inline constexpr double box_gap_widening = 1 + 0x1p-50;
 
 /// Whether the segments [a, b] and [u, v] may meet, each point known only to
 /// within e on each coordinate (the paper's detailed test, both ways, as a
-/// filter): false when their boxes lie apart by more than 2e on an axis
-/// (box_gap_widening: the rounded gap is within 2^-53 of itself; collinear
-/// segments apart along their line, which no side separates), when u and v
-/// lie certainly on one side of the line through a and b farther than 2e
-/// from it, or a and b certainly on one side of the line through u and v
-/// (an exact segment within e sqrt 2 < 2e of its approximation). The slack
-/// of each side is 2e (|dx| + |dy|) >= 2e |b - a|.
+/// filter): false when u and v lie certainly on one side of the line
+/// through a and b farther than 2e from it, or a and b certainly on one
+/// side of the line through u and v (an exact segment within e sqrt 2 < 2e
+/// of its approximation), or, asked last, when their boxes lie apart by
+/// more than 2e on an axis (box_gap_widening: the rounded gap is within
+/// 2^-53 of itself; collinear segments apart along their line, which no
+/// side separates). The slack of each side is 2e (|dx| + |dy|) >= 2e
+/// |b - a|.
 inline bool segments_may_meet(const point<double>& a, const point<double>& b, const point<double>& u,
                               const point<double>& v, double e) {
-    const double room = 2 * e * box_gap_widening;
-    const auto apart = [room](double p, double q, double s, double t) {
-        return std::min(s, t) - std::max(p, q) > room || std::min(p, q) - std::max(s, t) > room;
-    };
-    if (apart(a.x, b.x, u.x, v.x) || apart(a.y, b.y, u.y, v.y)) return false;
     const auto one_side = [e](const point<double>& p, const point<double>& q, const point<double>& s,
                               const point<double>& t) {
         const double dx = q.x - p.x, dy = q.y - p.y;
@@ -233,7 +229,14 @@ inline bool segments_may_meet(const point<double>& a, const point<double>& b, co
         const int side = certain_side(p, dx, dy, s, slack);
         return side != 0 && certain_side(p, dx, dy, t, slack) == side;
     };
-    return !one_side(a, b, u, v) && !one_side(u, v, a, b);
+    if (one_side(a, b, u, v) || one_side(u, v, a, b)) return false;
+    // (The boxes last: the callers' pairs have boxes that overlap already,
+    // but for collinear segments.)
+    const double room = 2 * e * box_gap_widening;
+    const auto apart = [room](double p, double q, double s, double t) {
+        return std::min(s, t) - std::max(p, q) > room || std::min(p, q) - std::max(s, t) > room;
+    };
+    return !apart(a.x, b.x, u.x, v.x) && !apart(a.y, b.y, u.y, v.y);
 }
 
 /// The slack of certain_side_within and certain_ahead_within, for
