@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "influence2d/number/cgal.hpp"
@@ -30,6 +31,22 @@ int offsets_reference(point<double> from, point<double> to, point<double> a, poi
     return static_cast<int>(CGAL::sign(dx * gx + dy * gy));
 }
 
+/// Random doubles of one scale (within 100) or of mixed scales from 2^-60
+/// to 2^60, and a double moved by a unit in its last place or not.
+struct random_doubles {
+    test_random::rng g;
+    explicit random_doubles(std::uint64_t seed) : g(seed) {}
+    double coordinate(bool mixed) {
+        const double x = g.uniform(-100, 100);
+        return mixed ? std::ldexp(x, static_cast<int>(g.index(121)) - 60) : x;
+    }
+    point<double> any_point(bool mixed) {
+        const double x = coordinate(mixed);
+        return {x, coordinate(mixed)};
+    }
+    double nudged(double x) { return g.chance(0.5) ? x : std::nextafter(x, g.chance(0.5) ? 1e300 : -1e300); }
+};
+
 }  // namespace
 
 TEST_CASE("exact doubles: a translated point's side and offsets along a motion against exact rationals",
@@ -39,35 +56,30 @@ TEST_CASE("exact doubles: a translated point's side and offsets along a motion a
     // (where they round and the twelve or sixteen products are summed);
     // half the cases built to be 0 exactly: a = v + t with d along it, or
     // equal offsets, then one coordinate moved by a unit in its last place.
-    test_random::rng g(0x51de);
-    const auto coordinate = [&](bool mixed) {
-        const double x = g.uniform(-100, 100);
-        return mixed ? std::ldexp(x, static_cast<int>(g.index(121)) - 60) : x;
-    };
-    const auto any_point = [&](bool mixed) { return point<double>{coordinate(mixed), coordinate(mixed)}; };
-    const auto nudged = [&](double x) { return g.chance(0.5) ? x : std::nextafter(x, g.chance(0.5) ? 1e300 : -1e300); };
+    random_doubles r(0x51de);
+    test_random::rng& g = r.g;
     int zeros = 0, checked = 0;
     for (int trial = 0; trial < 4000; ++trial) {
         const bool mixed = trial % 2 == 1;
-        point<double> from = g.chance(0.5) ? point<double>{0, 0} : any_point(mixed), to = any_point(mixed);
-        point<double> a = any_point(mixed), v = any_point(mixed), t = any_point(mixed);
+        point<double> from = g.chance(0.5) ? point<double>{0, 0} : r.any_point(mixed), to = r.any_point(mixed);
+        point<double> a = r.any_point(mixed), v = r.any_point(mixed), t = r.any_point(mixed);
         if (g.chance(0.5)) {
             // a shared vertex (a = v) translated along the motion: t = -k d.
             v = a;
             const double k = g.chance(0.5) ? 1 : 0.5;
             t = {-k * (to.x - from.x), -k * (to.y - from.y)};
-            t = {nudged(t.x), nudged(t.y)};
+            t = {r.nudged(t.x), r.nudged(t.y)};
         }
         INFO("trial " << trial);
         const int side = influence2d::exact_translated_side(from, to, a, v, t);
         CHECK(side == side_reference(from, to, a, v, t));
-        point<double> a2 = any_point(mixed), v2 = any_point(mixed);
+        point<double> a2 = r.any_point(mixed), v2 = r.any_point(mixed);
         if (g.chance(0.5)) {
             // the same offset: a2 - v2 = a - v, a2 moved by a shift.
-            const point<double> shift = any_point(false);
+            const point<double> shift = r.any_point(false);
             a2 = {a.x + shift.x, a.y + shift.y};
             v2 = {v.x + shift.x, v.y + shift.y};
-            a2 = {nudged(a2.x), nudged(a2.y)};
+            a2 = {r.nudged(a2.x), r.nudged(a2.y)};
         }
         const int along = influence2d::exact_offsets_along(from, to, a, v, a2, v2);
         CHECK(along == offsets_reference(from, to, a, v, a2, v2));
@@ -124,4 +136,37 @@ TEST_CASE("exact doubles: two offsets equal to the last bit", "[exact_doubles]")
     CHECK(influence2d::same_offset({3.765, 64.05}, {3.765, 64.05}, {6.275, 67.35}, {6.275, 67.35}));
     CHECK_FALSE(
         influence2d::same_offset({3.765, 64.05}, {3.765, 64.05}, {6.275, 67.35}, {6.275, std::nextafter(67.35, 0.0)}));
+}
+
+TEST_CASE("exact doubles: the cross sign of two directions, nearly parallel, against exact rationals",
+          "[exact_doubles]") {
+    // (b - a) x (d - c): decided in double past its bound, else by the exact
+    // sum. Half the cases parallel before one coordinate moves by a unit in
+    // its last place (or none), at one scale and at mixed scales from 2^-60
+    // to 2^60, where the rounded cross product often has the wrong sign.
+    random_doubles r(0xc2055);
+    test_random::rng& g = r.g;
+    int zeros = 0, rounded_wrong = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const bool mixed = trial % 2 == 1;
+        const point<double> a = r.any_point(mixed), b = r.any_point(mixed), c = r.any_point(mixed);
+        point<double> d = r.any_point(mixed);
+        if (g.chance(0.75)) {
+            // d - c along b - a, scaled by a power of two or by 3.
+            const double k = g.chance(0.5) ? std::ldexp(1.0, static_cast<int>(g.index(9)) - 4) : 3.0;
+            d = {r.nudged(c.x + k * (b.x - a.x)), r.nudged(c.y + k * (b.y - a.y))};
+        }
+        const exact_rational cross = (q(b.x) - q(a.x)) * (q(d.y) - q(c.y)) - (q(b.y) - q(a.y)) * (q(d.x) - q(c.x));
+        const int reference = static_cast<int>(CGAL::sign(cross));
+        INFO("trial " << trial);
+        const int sign = influence2d::exact_cross_sign(a, b, c, d);
+        CHECK(sign == reference);
+        const double rounded = (b.x - a.x) * (d.y - c.y) - (b.y - a.y) * (d.x - c.x);
+        rounded_wrong += (rounded > 0) - (rounded < 0) != reference;
+        zeros += reference == 0;
+    }
+    // Cases the double evaluation alone gets wrong were asked, and exact 0s.
+    INFO(zeros << " zeros, " << rounded_wrong << " rounded to the wrong sign");
+    CHECK(zeros > 200);
+    CHECK(rounded_wrong > 200);
 }

@@ -242,6 +242,9 @@ struct timed_site {
     /// times beyond double's range is infinity); 0 in a floating NT, which
     /// sorts by its times themselves.
     double estimate = 0;
+    /// The sign of this time minus the previous event's in the sorted list
+    /// (0 or 1), when sort_by_time asked it.
+    std::optional<int> after_previous;
 
     timed_site(time_fraction<NT> t, const contact_site& s, int w, std::optional<vertex_passage> p = std::nullopt)
         : time(std::move(t)), site(s), which(w), passage(p) {
@@ -303,21 +306,26 @@ int sign_of_time(const timed_site<NT>& e, Settle&& settle) {
 /// compares every two neighbours of its result, so the check asks no sign
 /// that sorting by NT alone would not, and asks n - 1 where the sort asks
 /// about n log n (each a product of two times in `certified` or exact
-/// rationals).
+/// rationals). The check keeps each sign it found (after_previous): the
+/// search asks it again when it passes the events of one time, and a tie a
+/// filtered NT cannot settle costs an exact test.
 template <class NT, class Settle>
 void sort_by_time(std::vector<timed_site<NT>>& events, Settle&& settle) {
     using tr = number_traits<NT>;
-    const auto before = [&](const timed_site<NT>& l, const timed_site<NT>& r) {
-        return compare_events(l, r, settle) < 0;
-    };
     if constexpr (tr::category != number_category::floating) {
         std::sort(events.begin(), events.end(),
                   [](const timed_site<NT>& l, const timed_site<NT>& r) { return l.estimate < r.estimate; });
         bool ordered = true;
-        for (std::size_t k = 1; k < events.size() && ordered; ++k) ordered = !before(events[k], events[k - 1]);
+        for (std::size_t k = 1; k < events.size() && ordered; ++k) {
+            const int sign = compare_events(events[k], events[k - 1], settle);
+            ordered = sign >= 0;
+            events[k].after_previous = sign;
+        }
         if (ordered) return;
+        for (timed_site<NT>& x : events) x.after_previous.reset();
     }
-    std::sort(events.begin(), events.end(), before);
+    std::sort(events.begin(), events.end(),
+              [&](const timed_site<NT>& l, const timed_site<NT>& r) { return compare_events(l, r, settle) < 0; });
 }
 
 /// The exit search of exit_distance (its pseudocode) for B posed by t and
@@ -392,11 +400,15 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
         // The other events at the exit so far (some may come at 0). (The
         // event taken as the exit is not compared with itself: a filtered
         // NT cannot tell a value from itself.)
+        // (Past the first event of a window, the exit's time is the previous
+        // event's: its sign against it, when sorting found it, is the one
+        // asked.)
         const time_fraction<NT>& last = exit ? exit->time : zero;
-        const auto at_last = [&](const timed_site<NT>& x) {
+        const auto at_last = [&](const timed_site<NT>& x, bool after_exit) {
+            if (after_exit && x.after_previous) return *x.after_previous <= 0;
             return (exit ? compare_events(x, *exit, settle) : sign_of_time(x, settle)) <= 0;
         };
-        for (; next < events.size() && at_last(events[next]); ++next)
+        for (; next < events.size() && at_last(events[next], exit && next > 0); ++next)
             if (touches(witness, events[next].site, a, b)) stale = true;
         while (next == events.size() && w < s_max) {
             w_low = w;

@@ -7,6 +7,7 @@
 /// of rings as read); the detectors decide in their number type instead
 /// (orientation.hpp, segments.hpp).
 
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <utility>
@@ -28,11 +29,20 @@ inline int exact_orientation(const point<double>& a, const point<double>& b, con
 
 /// The exact sign of the cross product (b - a) x (d - c) of the directions
 /// of two segments with finite double coordinates: 0 when they are parallel
-/// (or one has length 0). The eight products of its expansion, bx dy -
-/// bx cy - ax dy + ax cy - by dx + by cx + ay dx - ay cx, summed exactly
+/// (or one has length 0). In double when the rounded product exceeds its
+/// error bound: each of its two products has two factors that are rounded
+/// differences of doubles, as in the orientation determinant, whose bound
+/// (orientation_relative_bound, orientation_underflow) holds for it alike;
+/// else the eight products of its expansion, bx dy - bx cy - ax dy + ax cy
+/// - by dx + by cx + ay dx - ay cx, summed exactly
 /// (exact_sum::accumulator): no difference is rounded.
 inline int exact_cross_sign(const point<double>& a, const point<double>& b, const point<double>& c,
                             const point<double>& d) {
+    const double left = (b.x - a.x) * (d.y - c.y), right = (b.y - a.y) * (d.x - c.x);
+    const double det = left - right;
+    const double bound = orientation_relative_bound * (std::fabs(left) + std::fabs(right)) + orientation_underflow;
+    if (det > bound) return 1;
+    if (det < -bound) return -1;
     exact_sum::accumulator sum;
     sum.add_product(b.x, d.y);
     sum.add_product(-b.x, c.y);
@@ -56,7 +66,7 @@ inline bool exact_difference(const point<double>& x, const point<double>& y, poi
 /// with direction d (a point v of a polygon translated by t, moving by
 /// to - from). When the differences d, a - v and then a - v - t are
 /// doubles (exact_difference), the orientation of 0, d and that point
-/// (exact_sum::orientation_sign); else the twelve products of its
+/// (orientation_of_doubles); else the twelve products of its
 /// expansion summed exactly. The
 /// same sign is that of a against -d's line through v + t: a vertex of the
 /// still polygon moving by -d relative to the other.
@@ -64,7 +74,7 @@ inline int exact_translated_side(const point<double>& from, const point<double>&
                                  const point<double>& v, const point<double>& t) {
     point<double> d, av, w;
     if (exact_difference(to, from, d) && exact_difference(a, v, av) && exact_difference(av, t, w))
-        return exact_sum::orientation_sign(0, 0, d.x, d.y, w.x, w.y);  // d x w
+        return orientation_of_doubles(0, 0, d.x, d.y, w.x, w.y);  // d x w
     exact_sum::accumulator sum;
     for (const auto& [q, sign] : {std::pair<const point<double>*, double>{&a, 1}, {&v, -1}, {&t, -1}}) {
         sum.add_product(sign * to.x, q->y);
@@ -79,14 +89,14 @@ inline int exact_translated_side(const point<double>& from, const point<double>&
 /// finite doubles as given: 0 when the offsets a - v and a2 - v2 reach as
 /// far along d. When d, the offsets and their difference g are doubles
 /// (exact_difference), d . g as the orientation of 0, d and g turned a
-/// quarter (exact_sum::orientation_sign); else its sixteen products summed
+/// quarter (orientation_of_doubles); else its sixteen products summed
 /// exactly.
 inline int exact_offsets_along(const point<double>& from, const point<double>& to, const point<double>& a,
                                const point<double>& v, const point<double>& a2, const point<double>& v2) {
     point<double> d, o, o2, g;
     if (exact_difference(to, from, d) && exact_difference(a, v, o) && exact_difference(a2, v2, o2) &&
         exact_difference(o, o2, g))
-        return exact_sum::orientation_sign(0, 0, d.x, d.y, -g.y, g.x);  // d . g = d x (-g.y, g.x)
+        return orientation_of_doubles(0, 0, d.x, d.y, -g.y, g.x);  // d . g = d x (-g.y, g.x)
     exact_sum::accumulator sum;
     for (const auto& [q, sign] : {std::pair<const point<double>*, double>{&a, 1}, {&v, -1}, {&a2, -1}, {&v2, 1}}) {
         sum.add_product(sign * to.x, q->x);
