@@ -68,10 +68,17 @@ struct rotation_pose {
         if constexpr (tr::category != number_category::floating) {
             // A translation whose sums are doubles: the posed point is an
             // input double, which a filtered NT then knows exactly (its
-            // signs taken in double, orientation_of_doubles).
+            // signs taken in double, orientation_of_doubles). Any other
+            // translation: one sum per coordinate in NT (the products by 1
+            // and 0 are exact, and a filtered NT's bound then holds that
+            // sum's rounding alone).
             double x, y;
-            if (s == 0 && c == 1 && exact_sum::exact_double_sum(q.x, tx, x) && exact_sum::exact_double_sum(q.y, ty, y))
-                return point<NT>{tr::from_double(x), tr::from_double(y)};
+            if (s == 0 && c == 1) {
+                if (exact_sum::exact_double_sum(q.x, tx, x) && exact_sum::exact_double_sum(q.y, ty, y))
+                    return point<NT>{tr::from_double(x), tr::from_double(y)};
+                return point<NT>{tr::from_double(q.x) + tr::from_double(tx),
+                                 tr::from_double(q.y) + tr::from_double(ty)};
+            }
         }
         if constexpr (has_sum_of_products<NT>::value)
             return point<NT>{tr::sum_of_products(c, q.x, -s, q.y, tx), tr::sum_of_products(s, q.x, c, q.y, ty)};

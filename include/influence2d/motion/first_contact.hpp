@@ -154,7 +154,10 @@ contact_result<double> filtered_first_contact(const polygon& a, const polygon& b
     if (from.theta != to.theta) return filtered_turning_first_contact<Exact, Fine>(a, b, from, to, options);
     const motion m(from, to);
     contact_result<double> r;
-    const auto met = fallback<>::run([&] { return meeting_at_start<certified>(a, b, from, m.start); },
+    // A and B placed once in certified, for the meeting at the start and the
+    // search.
+    translation_frame<certified> fast(a, b, m.start, displacement<certified>(from, to));
+    const auto met = fallback<>::run([&] { return meeting_at_start<certified>(fast.a, fast.b, from); },
                                      [&] { return meeting_at_start<Exact>(a, b, from, m.start); });
     if (met) {
         r.contact = true;
@@ -162,7 +165,7 @@ contact_result<double> filtered_first_contact(const polygon& a, const polygon& b
         return r;
     }
     if (from.tx == to.tx && from.ty == to.ty) return r;  // B stays where it was
-    auto best = earliest_translation_event_filtered<Exact>(a, b, from, to, m.start);
+    auto best = earliest_translation_event_filtered<Exact>(a, b, from, to, m.start, fast);
     if (!best) return r;
     r.contact = true;
     std::tie(r.static_feature, r.moving_feature) = site_features(a, b, best->site);

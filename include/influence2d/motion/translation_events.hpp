@@ -115,17 +115,26 @@ std::pair<feature, feature> meeting_features(placed_polygon<NT>& a, placed_polyg
     }
 }
 
+/// The features of the meeting of A placed `pa` and of B placed `pb` at the
+/// motion's start `from`, decided in NT; none when they do not meet there
+/// (the one-shot query).
+template <class NT>
+std::optional<std::pair<feature, feature>> meeting_at_start(placed_polygon<NT>& pa, placed_polygon<NT>& pb,
+                                                            const pose& from) {
+    const meeting met = placed_meet(pa, pb,
+                                    placing_margin<NT>(coordinate_scale(pa.shape()) + coordinate_scale(pb.shape()) +
+                                                       std::fabs(from.tx) + std::fabs(from.ty)));
+    if (!met) return std::nullopt;
+    return meeting_features(pa, pb, met);
+}
+
 /// The features of the meeting of A and of B posed at the motion's start,
 /// decided in NT; none when they do not meet there (the one-shot query).
 template <class NT>
 std::optional<std::pair<feature, feature>> meeting_at_start(const polygon& a, const polygon& b, const pose& from,
                                                             const rotation_pose& start) {
     placed_polygon<NT> pa(a), pb(b, start);
-    const meeting met = placed_meet(
-        pa, pb,
-        placing_margin<NT>(coordinate_scale(a) + coordinate_scale(b) + std::fabs(from.tx) + std::fabs(from.ty)));
-    if (!met) return std::nullopt;
-    return meeting_features(pa, pb, met);
+    return meeting_at_start(pa, pb, from);
 }
 
 /// Calls visit(site) for both sites of every pair of A's edge i and B's
@@ -674,8 +683,8 @@ inline double estimated_time(const polygon& a, const polygon& b, const std::vect
 template <class Exact>
 std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const polygon& a, const polygon& b,
                                                                          const pose& from, const pose& to,
-                                                                         const rotation_pose& start) {
-    translation_frame<certified> fast(a, b, start, displacement<certified>(from, to));
+                                                                         const rotation_pose& start,
+                                                                         translation_frame<certified>& fast) {
     const bool unturned = start.c == 1 && start.s == 0;
     if (unturned) fast.given = given_translation{{start.tx, start.ty}, {from.tx, from.ty}, {to.tx, to.ty}};
     std::optional<point<Exact>> exact_d;
