@@ -129,6 +129,37 @@ TEST_CASE("one-shot: far from 1 in scale, exact modes stay exact", "[one_shot][r
     CHECK(t.collide < t.frames);
 }
 
+TEST_CASE("one-shot: a survey grid's neighbours moved along their shared lines by sums no double holds",
+          "[one_shot][reference]") {
+    // Rectangles of a grid far from the origin (a survey's metres), A and
+    // its neighbour B to the right, above, or at a corner: their sides lie
+    // on each other's lines. B translated along a shared line, or across it,
+    // by steps whose sums with the coordinates are no doubles (1e-3, 0.1,
+    // 1/3 of a side, and 1e-12, below half a unit in the last place of the
+    // coordinates near 4e5 and 6e6, whose sums round back onto the line),
+    // pushed in, out, or nudged across the line: the signs of touching are
+    // exactly 0 or a rounding away from it, which the posing's rounding
+    // hides from `certified`.
+    intersects_tally t;
+    const double x0 = 431234.5, y0 = 6178901.25, w = 20.5, h = 12.25;
+    const auto rectangle = [](double x, double y, double dx, double dy) {
+        return polygon({ring_input{{{x, y}, {x + dx, y}, {x + dx, y + dy}, {x, y + dy}}, ring_role::outer}});
+    };
+    const polygon a = rectangle(x0, y0, w, h);
+    for (const point<double> at : {point<double>{w, 0}, point<double>{0, h}, point<double>{w, h}}) {
+        const polygon b = rectangle(x0 + at.x, y0 + at.y, w, h);
+        for (const double step : {1e-3, 0.1, w / 3, 1e-12, -1e-3, -0.1, -w / 3, -1e-12})
+            for (const double across : {0.0, 1e-3, -1e-3, 0x1p-30, -0x1p-30, 1e-12, -1e-12}) {
+                // along x, then along y
+                check_intersects_frame(a, b, pose{step, across, 0}, t);
+                check_intersects_frame(a, b, pose{across, step, 0}, t);
+                check_intersects_frame(b, a, pose{-step, -across, 0}, t);
+            }
+    }
+    CHECK(t.collide > t.frames / 4);
+    CHECK(t.collide < t.frames);
+}
+
 TEST_CASE("one-shot: bad input is refused", "[one_shot]") {
     const polygon a({ring_input{{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, ring_role::outer}});
     CHECK_THROWS_AS(intersects<double>(a, polygon{}, pose{}), invalid_input);
