@@ -21,6 +21,7 @@
 #include "influence2d/core/pose.hpp"
 #include "influence2d/number/certified.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "influence2d/number/fallback.hpp"
 #include "influence2d/predicates/orientation.hpp"
 #include "support/number_chains.hpp"
 #include "support/random.hpp"
@@ -218,6 +219,34 @@ TEST_CASE("certified: uncertain signs throw", "[certified]") {
     CHECK_THROWS_AS(det.sign(), uncertain_sign);
     CHECK_THROWS_AS(orientation(a, b, c), uncertain_sign);
     CHECK_THROWS_AS(orientation(c, a, b), uncertain_sign);
+}
+
+TEST_CASE("certified: a doubt noted, not raised, while a doubt_noting lives", "[certified]") {
+    const certified p = certified(0.1) * certified(10.0);  // 1 rounded, not 1
+    const certified doubtful = p - certified(1.0), certain = certified(2.0) - certified(1.0);
+    {
+        const doubt_noting outer;
+        CHECK(certain.sign() == 1);
+        CHECK_FALSE(outer.noted());
+        {
+            const doubt_noting inner;
+            CHECK(doubtful.sign() == 0);  // taken as 0, noted in the innermost scope only
+            CHECK(inner.noted());
+            CHECK_FALSE(outer.noted());
+        }
+        CHECK(doubtful.sign() == 0);
+        CHECK(outer.noted());
+        int s = 5;
+        CHECK_FALSE(doubtful.try_sign(s));  // try_sign is unchanged
+    }
+    CHECK_THROWS_AS(doubtful.sign(), uncertain_sign);  // raised again once the scope ends
+
+    // noted_fallback: the fast answer without a doubt; the exact one after a
+    // noted doubt, or a raised one.
+    CHECK(noted_fallback::run([&] { return certain.sign(); }, [] { return 7; }) == 1);
+    CHECK(noted_fallback::run([&] { return doubtful.sign() + 10; }, [] { return 7; }) == 7);
+    CHECK(noted_fallback::run([]() -> int { throw uncertain_sign(); }, [] { return 7; }) == 7);
+    CHECK_THROWS_AS(doubtful.sign(), uncertain_sign);
 }
 
 TEST_CASE("certified: an exactly zero determinant of input doubles is 0", "[certified]") {

@@ -15,10 +15,11 @@
 namespace influence2d {
 
 /// The exact answer of intersects(a, pose_a, b, pose_b), both polygons posed
-/// in the world (query/both_posed.hpp), at nearly double's cost.
+/// in the world (query/both_posed.hpp), at nearly double's cost (its doubts
+/// noted, noted_fallback, as certified_intersects).
 inline bool certified_intersects(const polygon& a, const pose& pose_a, const polygon& b, const pose& pose_b) {
-    return fallback<>::run([&] { return intersects<certified>(a, pose_a, b, pose_b); },
-                           [&] { return intersects<exact_rational>(a, pose_a, b, pose_b); });
+    return noted_fallback::run([&] { return intersects<certified>(a, pose_a, b, pose_b); },
+                               [&] { return intersects<exact_rational>(a, pose_a, b, pose_b); });
 }
 
 }  // namespace influence2d

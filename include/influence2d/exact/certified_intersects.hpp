@@ -15,10 +15,13 @@
 namespace influence2d {
 
 /// The exact answer of intersects(a, b, q) (query/intersects.hpp) at nearly
-/// double's cost.
+/// double's cost: the query in `certified`, its doubts noted rather than
+/// raised (noted_fallback: the one-shot query's loops run over edges and
+/// rings, and it keeps nothing), and asked again in exact rationals when one
+/// was.
 inline bool certified_intersects(const polygon& a, const polygon& b, const pose& q) {
-    return fallback<>::run([&] { return intersects<certified>(a, b, q); },
-                           [&] { return intersects<exact_rational>(a, b, q); });
+    return noted_fallback::run([&] { return intersects<certified>(a, b, q); },
+                               [&] { return intersects<exact_rational>(a, b, q); });
 }
 
 }  // namespace influence2d

@@ -45,4 +45,22 @@ struct fallback<First, Rest...> {
     }
 };
 
+/// fallback<>::run for a fast computation that may run on through its doubts
+/// (doubt_noting's conditions: it ends whatever signs it is given and keeps
+/// no state): run with its doubts noted instead of raised, its answer kept
+/// when none was; else, or when it raised uncertain_sign all the same,
+/// `exact`'s. A doubt then costs no unwinding of the stack.
+struct noted_fallback {
+    /// fast(), or exact() when fast() noted or raised a doubt.
+    template <class Fast, class Exact>
+    static auto run(Fast&& fast, Exact&& exact) {
+        try {
+            const doubt_noting doubts;
+            auto answer = fast();
+            if (!doubts.noted()) return answer;
+        } catch (const uncertain_sign&) {}
+        return exact();
+    }
+};
+
 }  // namespace influence2d

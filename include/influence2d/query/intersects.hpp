@@ -19,7 +19,7 @@ namespace influence2d {
 /// counts; B inside a hole of A does not meet A): the question a detector
 /// answers for one frame with distance 0, without building one. Exact when NT
 /// is; a filtered NT may throw uncertain_sign (certified_intersects in
-/// exact/certified_detector.hpp answers exactly through it). Throws invalid_input
+/// exact/certified_intersects.hpp answers exactly through it). Throws invalid_input
 /// for an empty polygon, one beyond NT's range, or a pose with a NaN or
 /// infinite component.
 ///
