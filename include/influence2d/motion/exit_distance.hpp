@@ -351,12 +351,11 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
     const double e0 = placing_margin<NT>(scale);
     const time_fraction<NT> zero{NT(0), NT(1)};
     std::optional<timed_site<NT>> exit;
-    meeting witness;
-    try {
-        witness = placed_meet(f.a, f.b, e0);
-    } catch (const uncertain_sign&) {  // (a filtered NT's doubt)
-        witness = redo(static_cast<const timed_site<NT>*>(nullptr), static_cast<const timed_site<NT>*>(nullptr));
-    }
+    // (A filtered NT's doubt in a meeting test is noted, not raised, and
+    // the test redone: noted_fallback.)
+    meeting witness = noted_fallback::run(
+        [&] { return placed_meet(f.a, f.b, e0); },
+        [&] { return redo(static_cast<const timed_site<NT>*>(nullptr), static_cast<const timed_site<NT>*>(nullptr)); });
     if (!witness) return exit;
     const double s_max = exit_reach(a.bounds(), f.b.bounds(), dx, dy, e0);
     const double e = placing_margin<NT>(scale + s_max * reach);
@@ -419,11 +418,9 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
         if (next == events.size()) return exit;  // after the last event, apart
         timed_site<NT> following = events[next++];
         if (stale) {
-            try {
-                witness = witness_between(f, last, following.time, exit ? &exit->site : nullptr, scale, reach);
-            } catch (const uncertain_sign&) {  // (a filtered NT's doubt)
-                witness = redo(exit ? &*exit : nullptr, &following);
-            }
+            witness = noted_fallback::run(
+                [&] { return witness_between(f, last, following.time, exit ? &exit->site : nullptr, scale, reach); },
+                [&] { return redo(exit ? &*exit : nullptr, &following); });
             if (!witness) return exit;
         }
         stale = touches(witness, following.site, a, b);
@@ -564,17 +561,15 @@ double filtered_exit_distance(const polygon& a, const polygon& b, const pose& q,
             return std::pair<time_fraction<W>, time_fraction<W>>(event_time(tag, l, false),
                                                                  r ? event_time(tag, *r, false) : zero);
         };
-        return fallback<>::run(
+        const std::optional<int> in_words = noted_fallback::run(
             [&] {
                 const auto [x, y] = in(double_word{});
-                const std::optional<int> o = certain_time_order(x, y);
-                if (!o) throw uncertain_sign();
-                return *o;
+                return certain_time_order(x, y);
             },
-            [&] {
-                const auto [x, y] = in(Exact{});
-                return compare_times(x, y);
-            });
+            [] { return std::optional<int>(); });
+        if (in_words) return *in_words;
+        const auto [x, y] = in(Exact{});
+        return compare_times(x, y);
     };
     struct settler {
         const decltype(order_of)& order;

@@ -157,8 +157,8 @@ contact_result<double> filtered_first_contact(const polygon& a, const polygon& b
     // A and B placed once in certified, for the meeting at the start and the
     // search.
     translation_frame<certified> fast(a, b, m.start, displacement<certified>(from, to));
-    const auto met = fallback<>::run([&] { return meeting_at_start<certified>(fast.a, fast.b, from); },
-                                     [&] { return meeting_at_start<Exact>(a, b, from, m.start); });
+    const auto met = noted_fallback::run([&] { return meeting_at_start<certified>(fast.a, fast.b, from); },
+                                         [&] { return meeting_at_start<Exact>(a, b, from, m.start); });
     if (met) {
         r.contact = true;
         std::tie(r.static_feature, r.moving_feature) = *met;

@@ -415,8 +415,8 @@ std::optional<time_fraction<NT>> site_time(const polygon& a, const polygon& b, c
 /// computation takes the exact one's branches and names the same time.
 template <class Exact, class Time>
 double nearest_site_time(Time&& time) {
-    return fallback<>::run([&] { return nearest_double(time(double_word{})); },
-                           [&] { return nearest_double(time(Exact{})); });
+    return noted_fallback::run([&] { return nearest_double(time(double_word{})); },
+                               [&] { return nearest_double(time(Exact{})); });
 }
 
 /// The validated parts of a motion: its start and end as rotation poses
@@ -705,10 +705,18 @@ std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const p
             if (!site_may_meet(a, b, b_start, {0, 0}, {u * sweep.x, u * sweep.y}, e, s)) return;
         }
         filtered_event<Exact> c{s, std::nullopt, std::nullopt, std::nullopt};
-        try {
-            c.fast = fast.earliest(s, &c.passage);
-            if (!c.fast) return;
-        } catch (const uncertain_sign&) {
+        // (A doubt of the site's time in certified noted, not raised:
+        // noted_fallback.)
+        const bool certain = noted_fallback::run(
+            [&] {
+                c.fast = fast.earliest(s, &c.passage);
+                return true;
+            },
+            [] { return false; });
+        if (certain && !c.fast) return;
+        if (!certain) {
+            c.fast.reset();
+            c.passage.reset();
             std::optional<time_fraction<Exact>> t = exact_time(s);
             if (!t) return;
             c.set_exact(std::move(*t));

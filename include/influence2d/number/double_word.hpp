@@ -85,10 +85,12 @@ public:
         s = 0;
         return hi_ == 0 && error_ == 0;
     }
-    /// -1, 0 or +1 when certain; throws uncertain_sign otherwise.
+    /// -1, 0 or +1 when certain; otherwise 0 when a doubt_noting object
+    /// lives on this thread (which notes it), else throws uncertain_sign.
     int sign() const {
         int s;
         if (try_sign(s)) return s;
+        if (doubt_noting::note()) return 0;
         throw uncertain_sign();
     }
 
@@ -269,7 +271,7 @@ struct number_traits<double_word> {
     }
     /// The high word, within |lo| + error of the exact value.
     static double to_double(const double_word& x) { return x.hi(); }
-    /// The exact sign; throws uncertain_sign when the bound cannot settle it.
+    /// The exact sign; when the bound cannot settle it, as double_word::sign.
     static int sign(const double_word& x) { return x.sign(); }
     /// As for double: the filters widen only for their own rounding.
     static constexpr double filter_slack = 1e-9;
