@@ -541,6 +541,10 @@ double filtered_exit_distance(const polygon& a, const polygon& b, const pose& q,
         using wt = number_traits<W>;
         time_fraction<W> times[2];
         const int k = site_times(a, b, t, point<W>{wt::from_double(u.dx), wt::from_double(u.dy)}, e.site, false, times);
+        // (In double words the site may lack the time only after a doubt
+        // noted on the way, whose answer is dropped: raised then.)
+        if constexpr (wt::category != number_category::exact)
+            if (e.which >= k) throw uncertain_sign();
         INFLUENCE2D_ASSERT(e.which < k, "an event is not one of its site's times");
         if (scaled) times[e.which].num *= u.factor<W>();
         return std::move(times[e.which]);

@@ -182,6 +182,10 @@ contact_result<double> filtered_first_contact(const polygon& a, const polygon& b
     r.time = nearest_site_time<Exact>([&](auto tag) {
         using W = decltype(tag);
         std::optional<time_fraction<W>> t = site_time(a, b, m.start, displacement<W>(from, to), best->site);
+        // (In double words the site may lack the time only after a doubt
+        // noted on the way, whose answer is dropped: raised then.)
+        if constexpr (number_traits<W>::category != number_category::exact)
+            if (!t) throw uncertain_sign();
         INFLUENCE2D_ASSERT(t.has_value(), "the earliest event's site has no contact time");
         return std::move(*t);
     });

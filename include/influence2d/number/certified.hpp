@@ -23,15 +23,17 @@ public:
 };
 
 /// While an object of this class lives on a thread, a sign of `certified`
-/// that its bound cannot settle is noted (noted() turns true) and taken as 0,
-/// where it would raise uncertain_sign. Raising costs the unwinder's walk
+/// (or of a double word, number/double_word.hpp) that its bound cannot settle
+/// is noted (noted() turns true) and taken as 0, where it would raise
+/// uncertain_sign. Raising costs the unwinder's walk
 /// of the frames up to the handler, about 3 us (a one-shot query of two
 /// rectangles takes 70 ns in double), and polygons that touch exactly, moved
 /// by sums no double holds, put a doubt in most of their queries. Only for a
 /// computation that ends whatever signs it is given (no loop waits on a
-/// sign, no order is sorted by them), keeps no state past its answer, and
-/// whose answer is discarded when noted(): the signs after the first doubt
-/// need not be the exact ones. Scopes nest: the innermost notes.
+/// sign, no order is sorted by them, nothing is indexed or asserted on what
+/// exact signs alone guarantee), keeps no state past its answer, and whose
+/// answer is discarded when noted(): the signs after the first doubt need not
+/// be the exact ones. Scopes nest: the innermost notes.
 class doubt_noting {
 public:
     doubt_noting() : outer_(active_) { active_ = this; }
