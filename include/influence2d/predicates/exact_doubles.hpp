@@ -7,7 +7,6 @@
 /// of rings as read); the detectors decide in their number type instead
 /// (orientation.hpp, segments.hpp).
 
-#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <utility>
@@ -30,19 +29,14 @@ inline int exact_orientation(const point<double>& a, const point<double>& b, con
 /// The exact sign of the cross product (b - a) x (d - c) of the directions
 /// of two segments with finite double coordinates: 0 when they are parallel
 /// (or one has length 0). In double when the rounded product exceeds its
-/// error bound: each of its two products has two factors that are rounded
-/// differences of doubles, as in the orientation determinant, whose bound
-/// (orientation_relative_bound, orientation_underflow) holds for it alike;
-/// else the eight products of its expansion, bx dy - bx cy - ax dy + ax cy
-/// - by dx + by cx + ay dx - ay cx, summed exactly
-/// (exact_sum::accumulator): no difference is rounded.
+/// error bound (certain_products_sign: each of its two products has two
+/// factors that are rounded differences of doubles, as in the orientation
+/// determinant, whose bound holds for it alike); else the eight products of
+/// its expansion, bx dy - bx cy - ax dy + ax cy - by dx + by cx + ay dx -
+/// ay cx, summed exactly (exact_sum::accumulator): no difference is rounded.
 inline int exact_cross_sign(const point<double>& a, const point<double>& b, const point<double>& c,
                             const point<double>& d) {
-    const double left = (b.x - a.x) * (d.y - c.y), right = (b.y - a.y) * (d.x - c.x);
-    const double det = left - right;
-    const double bound = orientation_relative_bound * (std::fabs(left) + std::fabs(right)) + orientation_underflow;
-    if (det > bound) return 1;
-    if (det < -bound) return -1;
+    if (const int sign = certain_products_sign((b.x - a.x) * (d.y - c.y), (b.y - a.y) * (d.x - c.x))) return sign;
     exact_sum::accumulator sum;
     sum.add_product(b.x, d.y);
     sum.add_product(-b.x, c.y);

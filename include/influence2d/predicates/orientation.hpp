@@ -34,18 +34,27 @@ inline constexpr double orientation_relative_bound = (3 + 16 * 0x1p-53) * 0x1p-5
 /// takes twice their sum.
 inline constexpr double orientation_underflow = 0x1p-1072;
 
-/// The sign of the orientation determinant of three points given as
-/// doubles, exactly: in double when the rounded determinant exceeds its
-/// error bound (orientation_relative_bound), which settles nearly every
-/// call at the cost of a few multiplications; else 0 when two of the points
-/// are the same; else by the signs of the differences when one product has
-/// a zero factor; else by the exact sum (number/exact_sum.hpp).
-inline int orientation_of_doubles(double ax, double ay, double bx, double by, double cx, double cy) {
-    const double left = (bx - ax) * (cy - ay), right = (by - ay) * (cx - ax);
+/// The sign of left - right for two products, each of two factors that are
+/// rounded differences of doubles (the orientation determinant's form), when
+/// the rounded difference exceeds its error bound (orientation_relative_bound
+/// on the two products' magnitudes, orientation_underflow); 0 when it does
+/// not (the sign is then left to an exact evaluation).
+inline int certain_products_sign(double left, double right) {
     const double det = left - right;
     const double bound = orientation_relative_bound * (std::fabs(left) + std::fabs(right)) + orientation_underflow;
     if (det > bound) return 1;
     if (det < -bound) return -1;
+    return 0;
+}
+
+/// The sign of the orientation determinant of three points given as
+/// doubles, exactly: in double when the rounded determinant exceeds its
+/// error bound (certain_products_sign), which settles nearly every
+/// call at the cost of a few multiplications; else 0 when two of the points
+/// are the same; else by the signs of the differences when one product has
+/// a zero factor; else by the exact sum (number/exact_sum.hpp).
+inline int orientation_of_doubles(double ax, double ay, double bx, double by, double cx, double cy) {
+    if (const int sign = certain_products_sign((bx - ax) * (cy - ay), (by - ay) * (cx - ax))) return sign;
     // Two of the points the same (a vertex shared by two polygons, say):
     // collinear, without the sum.
     if ((ax == bx && ay == by) || (ax == cx && ay == cy) || (bx == cx && by == cy)) return 0;
