@@ -247,6 +247,69 @@ TEST_CASE("certified: a doubt noted, not raised, while a doubt_noting lives", "[
     CHECK(noted_fallback::run([&] { return doubtful.sign() + 10; }, [] { return 7; }) == 7);
     CHECK(noted_fallback::run([]() -> int { throw uncertain_sign(); }, [] { return 7; }) == 7);
     CHECK_THROWS_AS(doubtful.sign(), uncertain_sign);
+
+    // Within a doubt_noting, a doubt_raising raises again, and so does
+    // fallback<>::run's fast computation: a computation that catches its own
+    // doubts gets them, and the outer scope notes none of them.
+    {
+        const doubt_noting outer;
+        CHECK(fallback<>::run([&] { return doubtful.sign() + 10; }, [] { return 7; }) == 7);
+        CHECK(fallback<>::run([&] { return certain.sign() + 10; }, [] { return 7; }) == 11);
+        CHECK_FALSE(outer.noted());
+        {
+            const doubt_raising raising;
+            CHECK_THROWS_AS(doubtful.sign(), uncertain_sign);
+            const doubt_noting inner;  // notes again
+            CHECK(doubtful.sign() == 0);
+            CHECK(inner.noted());
+        }
+        CHECK_FALSE(outer.noted());
+        CHECK(doubtful.sign() == 0);  // the raising scope ended: noted again
+        CHECK(outer.noted());
+        // noted_fallback inside fallback<>::run's fast computation notes its
+        // own doubts and answers exactly.
+        CHECK(fallback<>::run([&] { return noted_fallback::run([&] { return doubtful.sign(); }, [] { return 3; }); },
+                              [] { return 7; }) == 3);
+    }
+}
+
+TEST_CASE("certified: a product by an exact zero is exactly zero", "[certified]") {
+    // A difference of equal coordinates (axis-parallel edges, shared
+    // vertices) is an exact zero; its product by any value, a bounded one
+    // too, is exactly zero, so that a determinant of points on one
+    // horizontal or vertical line is certainly 0 when only their other
+    // coordinates carry bounds.
+    const certified rounded = certified(0.1) * certified(10.0);  // 1 rounded, not 1
+    const certified zero = certified(67.35) - certified(67.35);
+    CHECK(zero.exact_zero());
+    CHECK_FALSE(rounded.exact_zero());
+    CHECK_FALSE((certified(1e-300) * certified(1e-300)).exact_zero());  // underflowed: not exact
+    for (const certified& p : {zero * rounded, rounded * zero, zero * certified(-3.5), -(zero * rounded)}) {
+        CHECK(p.value() == 0);
+        CHECK(p.error() == 0);
+        CHECK(p.sign() == 0);
+    }
+    // A factor that is NaN or infinite leaves the product's sign uncertain.
+    CHECK_THROWS_AS((zero * certified(std::numeric_limits<double>::infinity())).sign(), uncertain_sign);
+    CHECK_THROWS_AS((certified(std::numeric_limits<double>::quiet_NaN()) * zero).sign(), uncertain_sign);
+
+    // A rectangle's top edge and a vertex of its neighbour translated along
+    // that line by a step whose sum is no double: the translated abscissa
+    // carries a bound, the ordinate is the input double (rotation_pose
+    // sums each coordinate on its own), and the orientation is certainly 0.
+    const rotation_pose step(pose{-0.001, 0, 0});
+    const point<certified> c = step.apply<certified>({3.7649999999999997, 67.35000000000001});
+    CHECK(c.x.error() > 0);
+    CHECK(c.y.exact());
+    const point<certified> a = point_at<certified>(3.7649999999999997, 67.35000000000001),
+                           b = point_at<certified>(1.255, 67.35000000000001);
+    CHECK(orientation(a, b, c) == 0);
+    CHECK(orientation(c, a, b) == 0);
+    // The same along a vertical line.
+    const point<certified> up = rotation_pose(pose{0, 0.001, 0}).apply<certified>({5, 3});
+    CHECK(up.x.exact());
+    CHECK(up.y.error() > 0);
+    CHECK(orientation(point_at<certified>(5, 1.5), point_at<certified>(5, 7), up) == 0);
 }
 
 TEST_CASE("certified: an exactly zero determinant of input doubles is 0", "[certified]") {
@@ -301,12 +364,13 @@ TEST_CASE("certified: overflow and underflow leave the sign uncertain", "[certif
     CHECK_THROWS_AS((certified(0x1p-1074) * certified(0.5)).sign(), uncertain_sign);
     // ...and a sum of them is no better.
     CHECK_THROWS_AS((tiny + tiny).sign(), uncertain_sign);
-    // Every product carries the underflow allowance, even by an exact zero,
-    // and its bound is a normal double (no arithmetic on subnormals after
-    // it): on products of values of every magnitude, zeros and subnormals
-    // among them.
+    // Every product carries the underflow allowance but a product by an
+    // exact zero, which is exactly zero, and its bound is 0 or a normal
+    // double (no arithmetic on subnormals after it): on products of values
+    // of every magnitude, zeros and subnormals among them.
     CHECK((certified(0.0) * certified(1e300)).value() == 0);
-    CHECK((certified(0.0) * certified(1e300)).error() > 0);
+    CHECK((certified(0.0) * certified(1e300)).error() == 0);
+    CHECK((certified(1e-300) * certified(1e-300)).error() > 0);
     rng r(0x5b40a1ULL);
     std::size_t products = 0, subnormal_bounds = 0, by_zero = 0;
     for (int k = 0; k < 20000; ++k) {
@@ -318,7 +382,7 @@ TEST_CASE("certified: overflow and underflow leave the sign uncertain", "[certif
                 if (!std::isfinite(p.error())) continue;
                 ++products;
                 by_zero += p.value() == 0 ? 1 : 0;
-                subnormal_bounds += p.error() < std::numeric_limits<double>::min() ? 1 : 0;
+                subnormal_bounds += p.error() > 0 && p.error() < std::numeric_limits<double>::min() ? 1 : 0;
             }
     }
     CHECK(products > 100000);

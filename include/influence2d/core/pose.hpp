@@ -66,19 +66,15 @@ struct rotation_pose {
     point<NT> apply(const point<double>& q) const {
         using tr = number_traits<NT>;
         if constexpr (tr::category != number_category::floating) {
-            // A translation whose sums are doubles: the posed point is an
-            // input double, which a filtered NT then knows exactly (its
-            // signs taken in double, orientation_of_doubles). Any other
-            // translation: one sum per coordinate in NT (the products by 1
-            // and 0 are exact, and a filtered NT's bound then holds that
-            // sum's rounding alone).
-            double x, y;
-            if (s == 0 && c == 1) {
-                if (exact_sum::exact_double_sum(q.x, tx, x) && exact_sum::exact_double_sum(q.y, ty, y))
-                    return point<NT>{tr::from_double(x), tr::from_double(y)};
-                return point<NT>{tr::from_double(q.x) + tr::from_double(tx),
-                                 tr::from_double(q.y) + tr::from_double(ty)};
-            }
+            // A translation: each coordinate whose sum is a double is that
+            // double, which a filtered NT knows exactly (both coordinates
+            // so: an input point, its signs taken in double,
+            // orientation_of_doubles); any other, one sum in NT (the
+            // products by 1 and 0 are exact, and a filtered NT's bound then
+            // holds that sum's rounding alone). A step along one axis thus
+            // leaves the other coordinate exact: a point moved along a
+            // border parallel to that axis stays on its line.
+            if (s == 0 && c == 1) return point<NT>{translated<NT>(q.x, tx), translated<NT>(q.y, ty)};
         }
         if constexpr (has_sum_of_products<NT>::value)
             return point<NT>{tr::sum_of_products(c, q.x, -s, q.y, tx), tr::sum_of_products(s, q.x, c, q.y, ty)};
@@ -98,6 +94,15 @@ struct rotation_pose {
     }
 
 private:
+    // x + t in NT: the double x + t when it is one, else the sum in NT.
+    template <class NT>
+    static NT translated(double x, double t) {
+        using tr = number_traits<NT>;
+        double sum;
+        if (exact_sum::exact_double_sum(x, t, sum)) return tr::from_double(sum);
+        return tr::from_double(x) + tr::from_double(t);
+    }
+
     [[noreturn]] static void refuse(const pose& p) {
         const char* name = !std::isfinite(p.tx) ? "tx" : !std::isfinite(p.ty) ? "ty" : "theta";
         const double value = !std::isfinite(p.tx) ? p.tx : !std::isfinite(p.ty) ? p.ty : p.theta;

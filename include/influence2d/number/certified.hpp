@@ -53,9 +53,28 @@ public:
     }
 
 private:
+    friend class doubt_raising;
     doubt_noting* outer_;
     bool noted_ = false;
     static inline thread_local doubt_noting* active_ = nullptr;
+};
+
+/// While an object of this class lives on a thread, a sign in doubt raises
+/// uncertain_sign again, even within a doubt_noting's scope: for a
+/// computation that catches the doubt itself and takes another route
+/// (fallback<>::run's fast computation, a filter that answers "unknown"), or
+/// that builds what outlives the scope (a preparation), which a noted 0
+/// would send down the wrong route or leave wrong. A doubt_noting made
+/// inside it notes again. Scopes nest.
+class doubt_raising {
+public:
+    doubt_raising() : outer_(doubt_noting::active_) { doubt_noting::active_ = nullptr; }
+    ~doubt_raising() { doubt_noting::active_ = outer_; }
+    doubt_raising(const doubt_raising&) = delete;
+    doubt_raising& operator=(const doubt_raising&) = delete;
+
+private:
+    doubt_noting* outer_;
 };
 
 /// A value v with a bound e such that |exact - v| <= e, where `exact` is the
@@ -82,6 +101,9 @@ private:
 ///    (|a.v| + a.e) b.e + |b.v| a.e + u |v| + [underflow], the first term
 ///    being |a.v| b.e + a.e b.e in one product. The underflow allowance covers
 ///    the product v and the three products of the bound losing 2^-1075 each.
+///    A factor that is exactly 0 (exact_zero) makes the product exactly 0:
+///    bound 0 (a NaN or infinite other factor gives a NaN value, uncertain
+///    whatever its bound).
 ///    The bound's computation rounds at most five times along any of its
 ///    terms (relative 2^-53 each), well inside the widening by 2^-48.
 class certified {
@@ -103,6 +125,10 @@ public:
     /// Whether the value is known exactly (an input double, or an operation
     /// whose bound is still 0).
     bool exact() const { return e_ == 0; }
+    /// Whether the value is exactly 0: a product by it is exactly 0 too
+    /// (operator*), bound 0, whatever the other factor's bound (a NaN
+    /// factor aside: its product stays NaN, every sign uncertain).
+    bool exact_zero() const { return v_ == 0 && e_ == 0; }
 
     /// Stores the sign in `s` and returns true when it is certain (|v| > e,
     /// or v == e == 0); otherwise stores 0 and returns false.
@@ -134,7 +160,7 @@ public:
     friend certified operator*(const certified& a, const certified& b) {
         const double v = a.v_ * b.v_;
         const double e = (std::fabs(a.v_) + a.e_) * b.e_ + std::fabs(b.v_) * a.e_ + u * std::fabs(v) + eta;
-        return {v, widen(e)};
+        return {v, a.exact_zero() || b.exact_zero() ? 0.0 : widen(e)};
     }
     /// \name Compound assignments
     //@{
@@ -161,13 +187,15 @@ private:
     // Underflow: the product and the three error terms can each lose
     // 2^-1075, 2^-1073 in all. The allowance is the least normal double,
     // 2^-1022, which holds that and keeps the bound of every product normal
-    // (a sum of exact values keeps u |v|, subnormal only for |v| below
-    // 2^-969). With 2^-1072, a product by an exact zero (a difference of
-    // equal coordinates, as axis-parallel edges and shared vertices give)
-    // carried a subnormal bound, and the operations on it took an
-    // orientation from 6 to 46 ns (x86, where arithmetic on subnormals is
-    // microcoded). Only values within 2^-1022 of zero lose a sign that
-    // 2^-1073 would have left certain.
+    // or 0 (a sum of exact values keeps u |v|, subnormal only for |v| below
+    // 2^-969). With 2^-1072, a product of tiny values carried a subnormal
+    // bound, and the operations on it took an orientation from 6 to 46 ns
+    // (x86, where arithmetic on subnormals is microcoded). Only values
+    // within 2^-1022 of zero lose a sign that 2^-1073 would have left
+    // certain. A product by an exact zero (a difference of equal
+    // coordinates, as axis-parallel edges and shared vertices give) needs
+    // no allowance: it is exactly 0, and a determinant of points on one
+    // axis-parallel line is then certainly 0.
     static constexpr double eta = 0x1p-1022;
     // Only the bound's own rounding (relative 2^-53 per operation on it, at
     // most five of them along a term) needs covering; 2^-48 leaves room, and

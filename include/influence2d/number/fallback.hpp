@@ -14,6 +14,9 @@ namespace influence2d {
 /// Uncertain... (for number types whose comparisons raise their own), runs
 /// `exact` and returns its value instead. What `fast` did before it raised is
 /// discarded: it must leave no state that `exact` or a later call relies on.
+/// `fast` runs with its doubts raised (doubt_raising), whether or not a
+/// doubt_noting lives outside the call, which would otherwise take them as
+/// 0 and keep fast's answer.
 template <class... Uncertain>
 struct fallback;
 
@@ -24,6 +27,7 @@ struct fallback<> {
     template <class Fast, class Exact>
     static auto run(Fast&& fast, Exact&& exact) {
         try {
+            const doubt_raising raised;
             return fast();
         } catch (const uncertain_sign&) {
             return exact();
