@@ -23,6 +23,7 @@
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/number/double_word.hpp"
 #include "influence2d/predicates/certain_nearest.hpp"
+#include "influence2d/predicates/contact_time.hpp"
 #include "support/exact_regions.hpp"
 #include "support/number_chains.hpp"
 #include "support/random.hpp"
@@ -211,6 +212,25 @@ TEST_CASE("double_word: exact operations, the kept range, and rounding at a midp
     const double_word third = double_word(1.0) / double_word(3.0);
     CHECK(third.known());
     CHECK_FALSE((double_word(1.0) / (third * double_word(3.0) - double_word(1.0))).known());
+    // A product by an exact 0 is exactly 0, whatever the other factor's
+    // bound: a point on an axis-parallel line, moved along it by a sum no
+    // double holds, has a certain side of 0 against that line.
+    CHECK(third.error() > 0);
+    const double_word zero = double_word(67.35) - double_word(67.35);
+    CHECK(zero.exact_zero());
+    CHECK_FALSE(third.exact_zero());
+    for (const double_word& z : {zero * third, third * zero, zero * double_word(-0.0), double_word(-0.0) * third}) {
+        CHECK(z.error() == 0);
+        CHECK(z.sign() == 0);
+    }
+    CHECK_THROWS_AS((third - third).sign(), uncertain_sign);  // a zero in doubt is no exact zero
+    CHECK_THROWS_AS(((third - third) * third).sign(), uncertain_sign);
+    const point<double_word> v{double_word(3.765), double_word(64.05) + double_word(-0.001)},
+        d{double_word(-0.0), double_word(0.002)};
+    const point<double_word> a{double_word(3.765), double_word(64.05)}, b{double_word(3.765), double_word(67.35)};
+    CHECK(v.y.lo() != 0);
+    CHECK(cross_from(d, v, a).sign() == 0);
+    CHECK(cross_from(d, v, b).sign() == 0);
 }
 
 TEST_CASE("double_word: sum_of_products bounds a b + c d + t, with cancellation and at the kept range's ends",

@@ -72,6 +72,9 @@ public:
     bool known() const { return error_ <= std::numeric_limits<double>::max(); }
     /// Whether the value is the double hi exactly.
     bool exact_double() const { return error_ == 0 && lo_ == 0; }
+    /// Whether the value is exactly 0: a product by it is exactly 0 too,
+    /// bound 0, whatever the other factor's bound (operator*).
+    bool exact_zero() const { return hi_ == 0 && error_ == 0; }
 
     /// Stores the sign in `s` and returns true when it is certain: |hi| (1 -
     /// 2^-52) > error (|hi + lo| >= |hi| (1 - 2^-53), and the product rounds
@@ -120,7 +123,8 @@ public:
     /// (1 + 2^-52) + |b.hi| ea (1 + 2^-52), |a| <= |a.hi| (1 + 2^-53).
     [[gnu::always_inline]] friend double_word operator*(const double_word& a, const double_word& b) {
         if (!a.known() || !b.known()) return unknown();
-        if (a.hi_ == 0 || b.hi_ == 0) return settled(0, 0, product_error(a, b), 0);
+        if (a.hi_ == 0 || b.hi_ == 0)  // (by an exact zero: exactly 0, bound 0)
+            return settled(0, 0, a.exact_zero() || b.exact_zero() ? 0 : product_error(a, b), 0);
         double ch, cl;
         two_product(a.hi_, b.hi_, ch, cl);
         if (ch == 0) return unknown();  // (underflow)
