@@ -157,7 +157,7 @@ public:
         // (A polygon whose preparation in double words meets a sign in
         // doubt is answered in exact rationals alone.)
         try {
-            const doubt_raising raised;  // (doubts caught here, not noted)
+            const doubt_raising raised;  // (what is built here outlives any doubt_noting)
             fast_.emplace(prepare_static<double_word>(a_), prepare_moving<double_word>(b_));
         } catch (const uncertain_sign&) {
             fast_.reset();

@@ -109,7 +109,6 @@ std::optional<double> double_between(const time_fraction<NT>& s0, const time_fra
     const double x = lo + (hi - lo) / 2;
     if (!std::isfinite(x)) return std::nullopt;
     try {
-        const doubt_raising raised;  // (doubts caught here, not noted)
         const NT nx = tr::from_double(x);
         if (compare_values<NT>(s0.num, nx * s0.den) < 0 && compare_values<NT>(s1.num, nx * s1.den) > 0) return x;
     } catch (const uncertain_sign&) {}
@@ -379,7 +378,6 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
             if (!site_may_meet(a, b, f.b.approx(), from, to, e, site)) return;
             if constexpr (exact) {
                 try {
-                    const doubt_raising raised;  // (doubts caught here, not noted)
                     time_fraction<certified> none[2];
                     if (fast->times(site, false, none) == 0) return;
                 } catch (const uncertain_sign&) {}

@@ -224,7 +224,6 @@ std::pair<bernstein<Filter>, bernstein<Filter>> halves(const bernstein<Filter>& 
 template <class Filter>
 bool all_of_sign(const bernstein<Filter>& b, int sign) {
     try {
-        const doubt_raising raised;  // (doubts caught here, not noted)
         for (const Filter& x : b)
             if (number_traits<Filter>::sign(x) != sign) return false;
         return true;
@@ -349,7 +348,6 @@ struct piece_contact {
 template <class T>
 int single_sign_change(const bernstein<T>& b) {
     try {
-        const doubt_raising raised;  // (doubts caught here, not noted)
         std::array<int, 4> signs{};
         for (std::size_t i = 0; i < 4; ++i) signs[i] = number_traits<T>::sign(b[i]);
         return single_sign_change_of(signs);
@@ -418,8 +416,7 @@ void narrowed_for_rounding(const rational_piece& piece, const std::vector<polyno
             NT lo = tau_between<NT>(piece, std::nextafter(d, -HUGE_VAL), d),
                hi = tau_between<NT>(piece, d, std::nextafter(d, HUGE_VAL));
             try {
-                const doubt_raising raised;  // (doubts caught here, not noted)
-                int at_lo = 2, at_hi = 2;    // (2: not asked yet)
+                int at_lo = 2, at_hi = 2;  // (2: not asked yet)
                 for (int k = 0; k < rounding_tries; ++k) {
                     // (Within r, whose only root a change of sign there is.)
                     if (compare_values<NT>(lo, r.low) < 0 || compare_values<NT>(hi, r.high) > 0) break;

@@ -61,11 +61,14 @@ private:
 
 /// While an object of this class lives on a thread, a sign in doubt raises
 /// uncertain_sign again, even within a doubt_noting's scope: for a
-/// computation that catches the doubt itself and takes another route
-/// (fallback<>::run's fast computation, a filter that answers "unknown"), or
-/// that builds what outlives the scope (a preparation), which a noted 0
-/// would send down the wrong route or leave wrong. A doubt_noting made
-/// inside it notes again. Scopes nest.
+/// computation that catches the doubt itself and builds what outlives the
+/// scope (inner_radius, kept by a prepared polygon; certified_separation's
+/// preparation in double words), which a noted 0 would leave wrong, and for
+/// fallback<>::run's fast computation, whose answer would otherwise be kept.
+/// A filter that catches a doubt only to choose its route (a sign
+/// "unknown") needs none: within a doubt_noting the doubt is noted all the
+/// same, and the answer dropped. A doubt_noting made inside it notes again.
+/// Scopes nest.
 class doubt_raising {
 public:
     doubt_raising() : outer_(doubt_noting::active_) { doubt_noting::active_ = nullptr; }
@@ -160,7 +163,9 @@ public:
     friend certified operator*(const certified& a, const certified& b) {
         const double v = a.v_ * b.v_;
         const double e = (std::fabs(a.v_) + a.e_) * b.e_ + std::fabs(b.v_) * a.e_ + u * std::fabs(v) + eta;
-        return {v, a.exact_zero() || b.exact_zero() ? 0.0 : widen(e)};
+        // (v = 0 first: the test of the factors only where it can hold.)
+        if (v == 0 && (a.exact_zero() || b.exact_zero())) return {};
+        return {v, widen(e)};
     }
     /// \name Compound assignments
     //@{

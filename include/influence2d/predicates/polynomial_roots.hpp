@@ -213,7 +213,6 @@ struct isolated_root {
 template <class NT>
 int opposite_end_signs(const std::vector<polynomial<NT>>& s, const NT& low, const NT& high) {
     try {
-        const doubt_raising raised;  // (doubts caught here, not noted)
         const int at_low = s[0].sign_at(low);
         return at_low != 0 && at_low == -s[0].sign_at(high) ? at_low : 0;
     } catch (const uncertain_sign&) {

@@ -33,7 +33,7 @@ inline double inner_radius(const polygon& p) {
     if (p.size() == 0) return 0;
     const point<double> m = p.bounds().centre();
     try {
-        const doubt_raising raised;  // (doubts caught here, not noted)
+        const doubt_raising raised;  // (what is built here outlives any doubt_noting)
         std::vector<point<certified>> v;
         v.reserve(p.size());
         for (const point<double>& w : p.vertices()) v.push_back({certified(w.x), certified(w.y)});
