@@ -188,9 +188,9 @@ TEST_CASE("one-shot: a survey grid's neighbours stepped along one axis leave cer
                         const polygon &s = swapped ? b : a, &m = swapped ? a : b;
                         const pose p = swapped ? pose{-q.tx, -q.ty, 0} : q;
                         check_intersects_frame(s, m, p, t);
+                        if (std::fabs(step) < 1e-9) continue;
                         const doubt_noting doubts;
                         const bool fast = intersects<certified>(s, m, p);
-                        if (std::fabs(step) < 1e-9) continue;
                         if (doubts.noted()) {
                             ++doubtful;
                             UNSCOPED_INFO("doubt noted: " << describe_pose(s, m, p));
