@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <optional>
 #include <string>
 #include <vector>
@@ -68,11 +69,15 @@ void boxes_of(const std::vector<polygon>& layer, const char* which, double withi
 /// tests' cost.
 inline constexpr std::size_t join_grain = 16;
 
-/// The placings of a layer's polygons, by the polygon's index; in place in
-/// one vector (no allocation of its own per polygon), none for a polygon
-/// no candidate names.
+/// The placings of a layer's polygons, by the polygon's index, none for a
+/// polygon no candidate names; in place in a deque's blocks of a few
+/// hundred bytes (no allocation of its own per polygon). Not one vector: a
+/// block of 64 KiB or more freed at the end of a join makes glibc's free
+/// return the top of the heap to the system (M_TRIM_THRESHOLD, 128 KiB),
+/// and the next join faults all its working memory in again (as much time
+/// as the join's tests on a layer of a few hundred polygons).
 template <class NT>
-using placed_polygons = std::vector<std::optional<placed_polygon<NT>>>;
+using placed_polygons = std::deque<std::optional<placed_polygon<NT>>>;
 
 /// Each polygon of `layer` that some candidate names (`named`), placed where
 /// it stands once for all its pairs, with its run boxes (in parallel
