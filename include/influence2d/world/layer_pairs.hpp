@@ -9,7 +9,6 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,37 +68,47 @@ void boxes_of(const std::vector<polygon>& layer, const char* which, double withi
 /// tests' cost.
 inline constexpr std::size_t join_grain = 16;
 
-/// The placings of a layer's polygons, by the polygon's index, none for a
-/// polygon no candidate names; in place in a deque's blocks of a few
-/// hundred bytes (no allocation of its own per polygon). Not one vector: a
-/// block of 64 KiB or more freed at the end of a join makes glibc's free
-/// return the top of the heap to the system (M_TRIM_THRESHOLD, 128 KiB),
-/// and the next join faults all its working memory in again (as much time
-/// as the join's tests on a layer of a few hundred polygons).
+/// The placings of the polygons of a layer that some candidate names, each
+/// found by the polygon's index (4 bytes for a polygon no candidate names),
+/// in place in a deque's blocks of a few hundred bytes (no allocation of its
+/// own per polygon). Not one vector: a block of 64 KiB or more freed at the
+/// end of a join makes glibc's free return the top of the heap to the
+/// system (M_TRIM_THRESHOLD, 128 KiB), and the next join faults all its
+/// working memory in again (the 506 tracts of docs/world.md: 513 us a join
+/// with one vector, 295 us without, alone on this machine).
 template <class NT>
-using placed_polygons = std::deque<std::optional<placed_polygon<NT>>>;
+class placed_polygons {
+public:
+    /// Each polygon of `layer` that `named` names, placed where it stands,
+    /// with its run boxes and, for several rings, its ring boxes (in
+    /// parallel chunks); every vertex in NT made too when NT's placings keep
+    /// them and several threads will read them.
+    placed_polygons(const std::vector<polygon>& layer, const std::vector<char>& named, unsigned threads)
+        : slot_(layer.size(), 0) {
+        for (std::size_t k = 0; k < layer.size(); ++k)
+            if (named[k]) {
+                slot_[k] = static_cast<std::uint32_t>(placed_.size());
+                placed_.emplace_back(layer[k]);
+            }
+        run_in_chunks(placed_.size(), placed_.size() < 64 ? 1u : threads, join_grain,
+                      [&](std::size_t lo, std::size_t hi) {
+                          for (std::size_t k = lo; k < hi; ++k) {
+                              placed_polygon<NT>& p = placed_[k];
+                              p.make_run_bounds();
+                              p.make_ring_bounds();
+                              if constexpr (!placed_polygon<NT>::by_value)
+                                  if (threads != 1) p.all();
+                          }
+                      });
+    }
 
-/// Each polygon of `layer` that some candidate names (`named`), placed where
-/// it stands once for all its pairs, with its run boxes (in parallel
-/// chunks); every vertex in NT made too when NT's placings keep them and
-/// several threads will read them.
-template <class NT>
-placed_polygons<NT> placed_layer(const std::vector<polygon>& layer, const std::vector<char>& named, unsigned threads) {
-    std::vector<std::size_t> which;
-    for (std::size_t k = 0; k < layer.size(); ++k)
-        if (named[k]) which.push_back(k);
-    placed_polygons<NT> placed(layer.size());
-    run_in_chunks(which.size(), which.size() < 64 ? 1u : threads, join_grain, [&](std::size_t lo, std::size_t hi) {
-        for (std::size_t k = lo; k < hi; ++k) {
-            placed_polygon<NT>& p = placed[which[k]].emplace(layer[which[k]]);
-            p.make_run_bounds();
-            p.make_ring_bounds();
-            if constexpr (!placed_polygon<NT>::by_value)
-                if (threads != 1) p.all();
-        }
-    });
-    return placed;
-}
+    /// The placing of polygon k, which `named` named.
+    placed_polygon<NT>& operator[](std::size_t k) { return placed_[slot_[k]]; }
+
+private:
+    std::vector<std::uint32_t> slot_;        // polygon index -> index in placed_
+    std::deque<placed_polygon<NT>> placed_;  // the named polygons' placings, in index order
+};
 
 /// The candidates' answers (in parallel chunks) and the pairs within d;
 /// `same` when both layers are one. Counts into `statistics` when given.
@@ -113,16 +122,15 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::v
         named_first[c.first] = 1;
         (same ? named_first : named_second)[c.second] = 1;
     }
-    placed_polygons<NT> placed_first = placed_layer<NT>(first, named_first, pair_threads);
-    placed_polygons<NT> placed_second =
-        same ? placed_polygons<NT>{} : placed_layer<NT>(second, named_second, pair_threads);
+    placed_polygons<NT> placed_first(first, named_first, pair_threads);
+    placed_polygons<NT> placed_second(second, named_second, pair_threads);  // none named when same
     placed_polygons<NT>& second_placed = same ? placed_first : placed_second;
     std::vector<char> meets(candidates.size(), 0), in_exact(candidates.size(), 0);
     run_in_chunks(candidates.size(), pair_threads, join_grain, [&](std::size_t lo, std::size_t hi) {
         const rotation_pose here(pose{});
         for (std::size_t k = lo; k < hi; ++k) {
             const polygon &a = first[candidates[k].first], &b = second[candidates[k].second];
-            placed_polygon<NT>&pa = *placed_first[candidates[k].first], &pb = *second_placed[candidates[k].second];
+            placed_polygon<NT>&pa = placed_first[candidates[k].first], &pb = second_placed[candidates[k].second];
             const body_view<NT> va{&a, here, coordinate_scale(a), &pa}, vb{&b, here, coordinate_scale(b), &pb};
             bool exact = false;
             const meeting m =
@@ -190,7 +198,7 @@ inline std::vector<polygon> scaled_layer(const std::vector<polygon>& layer, int 
 ///     over them joined with itself (box_tree::self_join)
 ///   each polygon some candidate names placed where it stands, once for
 ///   all its pairs, with its run boxes and, for several rings, its ring
-///   boxes (placed_layer)
+///   boxes (placed_polygons)
 ///   each candidate, on `threads` threads (0: every hardware thread) taking
 ///   join_grain candidates at a time: bodies_within on the two placings
 ///
