@@ -915,6 +915,26 @@ TEST_CASE("layer_pairs: cells along long shared borders against the exact refere
     CHECK(meeting_pairs >= 20 * static_cast<std::size_t>(rounds));
 }
 
+TEST_CASE("layer_pairs: a layer whose candidates hold enough vertices for threads gives the serial answers",
+          "[world]") {
+    // Cells of 4 x 40 edges on a 7 x 7 grid: their candidates hold more
+    // than join_parallel_vertices vertices (checked below on the meeting
+    // pairs alone, a part of the candidates), so that two threads share
+    // the placings and the tests. Certified and double on two threads
+    // against the exact rationals on one, and double on one.
+    rng g(504);
+    const std::vector<polygon> layer = bordered_cells(g, 7, 40);
+    const std::vector<body_pair> want = layer_pairs<exact_rational>(layer);
+    std::size_t vertices = 0;
+    for (const body_pair& q : want) vertices += layer[q.first].size() + layer[q.second].size();
+    CHECK(vertices >= join_parallel_vertices);
+    CHECK(show_pairs(certified_layer_pairs(layer, 0, 2)) == show_pairs(want));
+    CHECK(show_pairs(layer_pairs<double>(layer, 0, 2)) == show_pairs(layer_pairs<double>(layer, 0, 1)));
+    const double within = test_scenes::grid / 2;
+    CHECK(show_pairs(certified_layer_pairs(layer, within, 2)) ==
+          show_pairs(layer_pairs<exact_rational>(layer, within)));
+}
+
 TEST_CASE("layer_pairs: a grid of rectangles whose shared sides are a unit in the last place apart", "[world]") {
     // Axis-parallel rectangles on a grid, as a field of plots is stored:
     // each side shared with a neighbour is written once as the grid line and

@@ -36,6 +36,19 @@ struct layer_statistics {
     bool swept = false;           ///< the candidates found by sorting the boxes along x (swept_pairs), not by box trees
 };
 
+/// A join's tests (and its placings) run on one thread when its candidates
+/// hold fewer vertices than this, both polygons of each counted: a
+/// parallel pass costs some tens of microseconds in waking the other
+/// threads and in their caches, which a small join does not repay.
+/// Measured on the real layers of docs/world.md (one thread against every
+/// thread with oneTBB, 101 joins each, taking turns, medians, alone):
+/// the wheat plots (about 15,000 vertices over their candidates) ran
+/// 0.92x to 0.97x as fast on two threads, the NC counties (14,000) 0.67x,
+/// the Boston tracts (55,000) 1.06x to 1.13x, the countries (90,000) 0.87x
+/// to 0.90x (a few large pairs hold most of their cost) and the Olinda
+/// blocks (106,000) 1.36x.
+inline constexpr std::size_t join_parallel_vertices = 32768;
+
 namespace layer_pairs_detail {
 
 /// The layer's boxes (each polygon's own box grown by half the distance,
@@ -116,7 +129,9 @@ template <class NT, class Exact>
 std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::vector<polygon>& second, bool same,
                                  const std::vector<body_pair>& candidates, double within, unsigned threads,
                                  layer_statistics* statistics) {
-    const unsigned pair_threads = candidates.size() < 128 ? 1u : threads;
+    std::size_t vertices = 0;
+    for (const body_pair& c : candidates) vertices += first[c.first].size() + second[c.second].size();
+    const unsigned pair_threads = vertices < join_parallel_vertices ? 1u : threads;
     std::vector<char> named_first(first.size(), 0), named_second(second.size(), 0);
     for (const body_pair& c : candidates) {
         named_first[c.first] = 1;
@@ -200,7 +215,9 @@ inline std::vector<polygon> scaled_layer(const std::vector<polygon>& layer, int 
 ///   all its pairs, with its run boxes and, for several rings, its ring
 ///   boxes (placed_polygons)
 ///   each candidate, on `threads` threads (0: every hardware thread) taking
-///   join_grain candidates at a time: bodies_within on the two placings
+///   join_grain candidates at a time, or on one when the candidates hold
+///   fewer than join_parallel_vertices vertices: bodies_within on the two
+///   placings
 ///
 /// `statistics`, when given, receives the number of candidates, of those
 /// answered again in Exact, and whether the sweep found them. Throws
