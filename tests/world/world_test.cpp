@@ -920,8 +920,8 @@ TEST_CASE("layer_pairs: a layer whose candidates hold enough vertices for thread
     // Cells of 4 x 40 edges on a 7 x 7 grid: their candidates hold more
     // than join_parallel_vertices vertices (checked below on the meeting
     // pairs alone, a part of the candidates), so that two threads share
-    // the placings and the tests. Certified and double on two threads
-    // against the exact rationals on one, and double on one.
+    // the tests. Certified and exact on two threads against the exact
+    // rationals on one, double on two against double on one.
     rng g(504);
     const std::vector<polygon> layer = bordered_cells(g, 7, 40);
     const std::vector<body_pair> want = layer_pairs<exact_rational>(layer);
@@ -929,6 +929,7 @@ TEST_CASE("layer_pairs: a layer whose candidates hold enough vertices for thread
     for (const body_pair& q : want) vertices += layer[q.first].size() + layer[q.second].size();
     CHECK(vertices >= join_parallel_vertices);
     CHECK(show_pairs(certified_layer_pairs(layer, 0, 2)) == show_pairs(want));
+    CHECK(show_pairs(layer_pairs<exact_rational>(layer, 0, 2)) == show_pairs(want));
     CHECK(show_pairs(layer_pairs<double>(layer, 0, 2)) == show_pairs(layer_pairs<double>(layer, 0, 1)));
     const double within = test_scenes::grid / 2;
     CHECK(show_pairs(certified_layer_pairs(layer, within, 2)) ==
@@ -1154,5 +1155,6 @@ TEST_CASE("layer_pairs: a crowded layer answered by two threads, exact vertices 
     REQUIRE(want.size() >= 128);
     CHECK(show_pairs(layer_pairs<exact_rational>(layer, 0, 2)) == show_pairs(want));
     CHECK(show_pairs(certified_layer_pairs(layer, 0, 2)) == show_pairs(want));
+    CHECK(show_pairs(layer_pairs<exact_rational>(layer, 0, 2)) == show_pairs(want));
     CHECK(show_pairs(layer_pairs<double>(layer, 0, 2)) == show_pairs(layer_pairs<double>(layer, 0, 1)));
 }

@@ -36,17 +36,17 @@ struct layer_statistics {
     bool swept = false;           ///< the candidates found by sorting the boxes along x (swept_pairs), not by box trees
 };
 
-/// A join's tests (and its placings) run on one thread when its candidates
-/// hold fewer vertices than this, both polygons of each counted: a
-/// parallel pass costs some tens of microseconds in waking the other
-/// threads and in their caches, which a small join does not repay.
-/// Measured on the real layers of docs/world.md (one thread against every
-/// thread with oneTBB, 101 joins each, taking turns, medians, alone):
-/// the wheat plots (about 15,000 vertices over their candidates) ran
-/// 0.92x to 0.97x as fast on two threads, the NC counties (14,000) 0.67x,
-/// the Boston tracts (55,000) 1.06x to 1.13x, the countries (90,000) 0.87x
-/// to 0.90x (a few large pairs hold most of their cost) and the Olinda
-/// blocks (106,000) 1.36x.
+/// A join's tests run on one thread when its candidates hold fewer
+/// vertices than this, both polygons of each counted: a parallel pass costs
+/// some tens of microseconds in waking the other threads and in their
+/// caches, which a small join does not repay. Measured on the real layers
+/// of docs/world.md (one thread against every thread with oneTBB, 101 joins
+/// each way, taking turns, medians, alone): with the tests on two threads
+/// whenever there were 128 candidates or more, the wheat plots' join (about
+/// 15,000 vertices over its candidates) ran 0.92x to 0.97x as fast as on
+/// one thread and the NC counties' (14,000) 0.67x; above this bound the
+/// Boston tracts (55,000) run 1.15x to 1.26x, the countries (90,000) 0.96x
+/// to 1.21x and the Olinda blocks (106,000) 1.33x to 1.52x.
 inline constexpr std::size_t join_parallel_vertices = 32768;
 
 namespace layer_pairs_detail {
@@ -93,26 +93,24 @@ template <class NT>
 class placed_polygons {
 public:
     /// Each polygon of `layer` that `named` names, placed where it stands,
-    /// with its run boxes and, for several rings, its ring boxes (in
-    /// parallel chunks); every vertex in NT made too when NT's placings keep
-    /// them and several threads will read them.
+    /// with its run boxes and, for several rings, its ring boxes; every
+    /// vertex in NT made too when NT's placings keep them and `threads`
+    /// (not 1) threads will read them. On the calling thread: placed on two
+    /// threads (the tests too), the countries' join (docs/world.md) ran 0.85x
+    /// and 0.86x as fast as on one thread, with the placings on one 0.92x to
+    /// 1.21x; the blocks' and tracts' joins gained nothing from placing on
+    /// two (101 joins each way, taking turns, medians, four runs).
     placed_polygons(const std::vector<polygon>& layer, const std::vector<char>& named, unsigned threads)
         : slot_(layer.size(), 0) {
-        for (std::size_t k = 0; k < layer.size(); ++k)
-            if (named[k]) {
-                slot_[k] = static_cast<std::uint32_t>(placed_.size());
-                placed_.emplace_back(layer[k]);
-            }
-        run_in_chunks(placed_.size(), placed_.size() < 64 ? 1u : threads, join_grain,
-                      [&](std::size_t lo, std::size_t hi) {
-                          for (std::size_t k = lo; k < hi; ++k) {
-                              placed_polygon<NT>& p = placed_[k];
-                              p.make_run_bounds();
-                              p.make_ring_bounds();
-                              if constexpr (!placed_polygon<NT>::by_value)
-                                  if (threads != 1) p.all();
-                          }
-                      });
+        for (std::size_t k = 0; k < layer.size(); ++k) {
+            if (!named[k]) continue;
+            slot_[k] = static_cast<std::uint32_t>(placed_.size());
+            placed_polygon<NT>& p = placed_.emplace_back(layer[k]);
+            p.make_run_bounds();
+            p.make_ring_bounds();
+            if constexpr (!placed_polygon<NT>::by_value)
+                if (threads != 1) p.all();
+        }
     }
 
     /// The placing of polygon k, which `named` named.
