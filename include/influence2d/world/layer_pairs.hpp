@@ -127,14 +127,14 @@ template <class NT, class Exact>
 std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::vector<polygon>& second, bool same,
                                  const std::vector<body_pair>& candidates, double within, unsigned threads,
                                  layer_statistics* statistics) {
-    std::size_t vertices = 0;
-    for (const body_pair& c : candidates) vertices += first[c.first].size() + second[c.second].size();
-    const unsigned pair_threads = vertices < join_parallel_vertices ? 1u : threads;
     std::vector<char> named_first(first.size(), 0), named_second(second.size(), 0);
+    std::size_t vertices = 0;
     for (const body_pair& c : candidates) {
         named_first[c.first] = 1;
         (same ? named_first : named_second)[c.second] = 1;
+        vertices += first[c.first].size() + second[c.second].size();
     }
+    const unsigned pair_threads = vertices < join_parallel_vertices ? 1u : threads;
     placed_polygons<NT> placed_first(first, named_first, pair_threads);
     placed_polygons<NT> placed_second(second, named_second, pair_threads);  // none named when same
     placed_polygons<NT>& second_placed = same ? placed_first : placed_second;
