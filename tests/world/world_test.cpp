@@ -97,6 +97,20 @@ std::string show_pairs(const std::vector<body_pair>& v) {
     return s.str();
 }
 
+/// The pairs of polygons, one of `first` and one of `second` (i < j when
+/// both are one layer), whose boxes' x-intervals overlap: the tests a sweep
+/// along x would make.
+std::size_t x_overlaps(const std::vector<polygon>& first, const std::vector<polygon>& second) {
+    const bool same = &first == &second;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < first.size(); ++i)
+        for (std::size_t j = same ? i + 1 : 0; j < second.size(); ++j) {
+            const box a = first[i].bounds(), b = second[j].bounds();
+            count += a.min_x <= b.max_x && b.min_x <= a.max_x ? 1 : 0;
+        }
+    return count;
+}
+
 /// Random shapes: multipolygons with holes and islands, and a few large
 /// swallowers that nest others.
 std::vector<polygon> random_shapes(rng& g, std::size_t count) {
@@ -1129,6 +1143,12 @@ TEST_CASE("layer_pairs: swept along x or by box trees, the pairs of the exact re
         INFO("round " << round << ": " << want.size() << " pairs in the layer, " << want2.size() << " across");
         CHECK(want.size() > 100);
         CHECK(want2.size() > 50);
+        // (The premise: as built, more x-overlaps than the sweep's budget,
+        // within the layer and across; mirrored, fewer.)
+        CHECK(x_overlaps(layer, layer) > sweep_tests_per_box * layer.size());
+        CHECK(x_overlaps(layer, other) > sweep_tests_per_box * (layer.size() + other.size()));
+        CHECK(x_overlaps(layer_m, layer_m) <= sweep_tests_per_box * layer.size());
+        CHECK(x_overlaps(layer_m, other_m) <= sweep_tests_per_box * (layer.size() + other.size()));
         for (const bool swap : {false, true}) {
             INFO((swap ? "mirrored: swept" : "as built: box trees"));
             layer_statistics one, two;
