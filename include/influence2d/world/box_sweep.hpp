@@ -16,18 +16,20 @@
 namespace influence2d {
 
 /// The x-interval overlaps a sweep may test per box before a join takes the
-/// box tree instead (world/box_tree.hpp). Measured on boxes of real and
-/// generated layers (docs/world.md, "Layers": medians of 5 to 50 joins of
-/// the boxes alone), the sweep costs 4 to 8 ns per overlap it tests (its
-/// sort and count included) and the tree's rebuild and self-join 77 to 212
-/// ns a box, so the two cost the same somewhere between 12 overlaps a box,
-/// where the sweep was the faster (the 177 countries of a world map, 12.5
-/// a box: 9.0 us against the tree's 13.7 us; 100 generated parcels, 12.2
-/// a box: 5.0 against 7.6 us), and 41, where the tree was (1,000 parcels:
-/// 127 us against the sweep's 310 us). 16 sweeps the first two. Compact
-/// boxes spread over a plane overlap along x about as many others as a
-/// column holds, which grows as the square root of their number.
-inline constexpr std::size_t sweep_tests_per_box = 16;
+/// box tree instead (world/box_tree.hpp). The sweep costs a few
+/// nanoseconds an overlap it tests (its sort and count included), the
+/// tree's rebuild and self-join 50 to 200 ns a box. Measured on whole joins
+/// (docs/world.md, "Layers": two budgets in one process, joins taking
+/// turns, so that the machine's slow spells fall on both): 32 against 16
+/// made the join of the wheat plots (500 polygons, 28.7 overlaps a box)
+/// 1.106x as fast and of 300 generated parcels (21.2) 1.057x, moved the
+/// Boston tracts (506, 31.8) 0.993x and the Olinda blocks (470, 24.2)
+/// 1.008x, and left the layers above it (1,000 parcels, 40.9) to the tree
+/// as before. Before, sweeps and trees timed apart from the joins put the
+/// two level between 12 and 41 overlaps a box. Compact boxes spread over a
+/// plane overlap along x about as many others as a column holds, which
+/// grows as the square root of their number.
+inline constexpr std::size_t sweep_tests_per_box = 32;
 
 /// The boxes (each finite, not empty) as edge_box entries whose `edge` is
 /// the box's index in `boxes`, sorted by min_x, then by index.
