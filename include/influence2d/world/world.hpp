@@ -767,37 +767,6 @@ private:
         return {hull_corners_.data() + b.hull_first, b.hull_count, b.pose, b.scale, b.round.centre};
     }
 
-    // What pass 1 reads for the pairs of tested[k, last) a few places ahead,
-    // asked for without waiting, each read once the read it depends on was
-    // asked for: the bodies of the pair 8 ahead, their shapes 4 ahead, and 2
-    // ahead their witness's vertices (an edge of each polygon) or hull
-    // corners (a separating edge). The second bodies of the sorted pairs
-    // lie anywhere in memory, and each read of a witness waits on a chain
-    // of them: the body, its shape, the shape's vertices. (1.013x to
-    // 1.031x as fast a step among 100,000 bodies, no change among 10,000:
-    // docs/world.md, "Narrow phase and coherence".)
-    void prefetch_witness_data(const std::vector<record>& tested, std::size_t k, std::size_t last) const {
-        if (k + 8 < last)
-            for (body_id i : {tested[k + 8].bodies.first, tested[k + 8].bodies.second}) {
-                prefetch(&bodies_[i]);
-                prefetch(reinterpret_cast<const char*>(&bodies_[i]) + 64);
-            }
-        if (k + 4 < last)
-            for (body_id i : {tested[k + 4].bodies.first, tested[k + 4].bodies.second})
-                prefetch(shapes_[bodies_[i].shape].get());
-        if (k + 2 < last) {
-            const record& ahead = tested[k + 2];
-            const body &a = bodies_[ahead.bodies.first], &b = bodies_[ahead.bodies.second];
-            if (ahead.apart) {
-                prefetch(hull_corners_.data() + a.hull_first);
-                prefetch(hull_corners_.data() + b.hull_first);
-            } else if (ahead.shown.how == meeting::kind::edges && ahead.shift == 0) {
-                prefetch(&shapes_[a.shape]->shape.vertex(ahead.shown.a_index));
-                prefetch(&shapes_[b.shape]->shape.vertex(ahead.shown.b_index));
-            }
-        }
-    }
-
     // Body i's polygon and pose, without its placing (pass 1).
     body_view<NT> posed(body_id i) const {
         const body& b = bodies_[i];
@@ -933,7 +902,6 @@ private:
         const unsigned threads = tested.size() < parallel_witness_tests ? 1u : options_.threads;
         run_in_chunks(tested.size(), threads, 256, [&](std::size_t first, std::size_t last) {
             for (std::size_t k = first; k < last; ++k) {
-                prefetch_witness_data(tested, k, last);
                 record& r = tested[k];
                 bool edge_failed = false;
                 if (r.apart) {
