@@ -13,6 +13,7 @@
 
 #include "support/effort.hpp"
 #include "support/exact_regions.hpp"
+#include "support/neighbours.hpp"
 #include "support/random_scenes.hpp"
 #include "support/shapes.hpp"
 
@@ -95,6 +96,24 @@ std::string show_pairs(const std::vector<body_pair>& v) {
     std::ostringstream s;
     for (const body_pair& p : v) s << '(' << p.first << ',' << p.second << ')';
     return s.str();
+}
+
+/// p mirrored across the diagonal (x and y swapped) when `mirrored`, then
+/// scaled by 2^scale: exact, each ring keeping its role.
+point<double> mapped_point(point<double> p, bool mirrored, int scale) {
+    if (mirrored) std::swap(p.x, p.y);
+    return {std::ldexp(p.x, scale), std::ldexp(p.y, scale)};
+}
+polygon mapped_polygon(const polygon& p, bool mirrored, int scale) {
+    std::vector<ring_input> rings;
+    for (std::size_t r = 0; r < p.ring_count(); ++r) {
+        ring_input ring;
+        ring.role = p.role(r);
+        for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
+            ring.vertices.push_back(mapped_point(p.vertex(i), mirrored, scale));
+        rings.push_back(ring);
+    }
+    return polygon(rings);
 }
 
 /// The pairs of polygons, one of `first` and one of `second` (i < j when
@@ -338,27 +357,15 @@ TEST_CASE("world: the contacts do not depend on the numbering, the shapes' order
         for (const variant& v : variants) {
             INFO("round " << round << ", reordered " << v.reordered << ", mirrored " << v.mirrored << ", scale 2^"
                           << v.scale);
-            const auto mapped_point = [&](point<double> p) {
-                if (v.mirrored) std::swap(p.x, p.y);
-                return point<double>{std::ldexp(p.x, v.scale), std::ldexp(p.y, v.scale)};
-            };
             const auto mapped_pose = [&](const pose& q) {
-                const point<double> t = mapped_point({q.tx, q.ty});
+                const point<double> t = mapped_point({q.tx, q.ty}, v.mirrored, v.scale);
                 return pose{t.x, t.y, v.mirrored ? -q.theta : q.theta};
             };
             certified_world w;
             std::vector<std::uint32_t> shape_id(shapes.size()), body_id(n);
             for (std::size_t k = 0; k < shapes.size(); ++k) {
                 const std::size_t s = v.reordered ? shapes.size() - 1 - k : k;
-                std::vector<ring_input> rings;
-                for (std::size_t r = 0; r < shapes[s].ring_count(); ++r) {
-                    ring_input ring;
-                    ring.role = shapes[s].role(r);
-                    for (std::size_t i = shapes[s].ring_begin(r); i < shapes[s].ring_end(r); ++i)
-                        ring.vertices.push_back(mapped_point(shapes[s].vertex(i)));
-                    rings.push_back(ring);
-                }
-                shape_id[s] = w.add_shape(polygon(rings));
+                shape_id[s] = w.add_shape(mapped_polygon(shapes[s], v.mirrored, v.scale));
             }
             for (std::size_t k = 0; k < n; ++k) {
                 const std::size_t i = v.reordered ? order[k] : k;
@@ -1251,6 +1258,47 @@ TEST_CASE("layer_pairs: swept along x or by box trees, the pairs of the exact re
             CHECK(show_pairs(layer_pairs<exact_rational>(swap ? layer_m : layer, 0, 2)) == show_pairs(want));
             CHECK(one.swept == swap);
             CHECK(two.swept == swap);
+        }
+    }
+}
+
+TEST_CASE("layer_pairs: North Carolina's counties mirrored, reordered or scaled by powers of two, the same pairs",
+          "[world]") {
+    // A real layer whose neighbours share their border vertices exactly,
+    // joined as given (held to the exact reference), then mirrored across
+    // the diagonal, listed in another order, scaled by 2^-40, 2^40, 2^-700
+    // or 2^600 (within scaled alike: the same question), on two threads:
+    // the same pairs, renamed back.
+    const std::vector<polygon> layer = test_data::real_layer("nc_counties.wkt");
+    REQUIRE(layer.size() == 100);
+    const std::size_t n = layer.size();
+    std::vector<std::size_t> at(n);  // where polygon i is listed when reordered
+    for (std::size_t i = 0; i < n; ++i) at[i] = (2 * n - 1 - i + n / 3) % n;
+    std::vector<body_state> as_given(n);
+    for (std::size_t i = 0; i < n; ++i) as_given[i].shape = i;
+    struct variant {
+        bool reordered, mirrored;
+        int scale;
+    };
+    const variant variants[] = {
+        {false, true, 0}, {true, false, -40}, {true, true, 40}, {false, false, -700}, {true, true, 600}};
+    for (const double within : {0.0, 1e-6, 0.01}) {
+        INFO("within " << within);
+        const std::vector<body_pair> want = certified_layer_pairs(layer, within, 1);
+        REQUIRE(show_pairs(want) == show_pairs(reference_contacts(layer, as_given, within)));
+        CHECK(want.size() >= 245);
+        for (const variant& v : variants) {
+            INFO("reordered " << v.reordered << ", mirrored " << v.mirrored << ", scale 2^" << v.scale);
+            std::vector<polygon> mapped(n, layer[0]);
+            for (std::size_t i = 0; i < n; ++i)
+                mapped[v.reordered ? at[i] : i] = mapped_polygon(layer[i], v.mirrored, v.scale);
+            std::vector<std::uint32_t> given(n);  // the polygon listed at each place
+            for (std::size_t i = 0; i < n; ++i) given[v.reordered ? at[i] : i] = static_cast<std::uint32_t>(i);
+            std::vector<body_pair> got;
+            for (const body_pair& p : certified_layer_pairs(mapped, std::ldexp(within, v.scale), 2))
+                got.push_back({std::min(given[p.first], given[p.second]), std::max(given[p.first], given[p.second])});
+            std::sort(got.begin(), got.end());
+            CHECK(show_pairs(got) == show_pairs(want));
         }
     }
 }
