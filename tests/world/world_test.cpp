@@ -1198,17 +1198,6 @@ TEST_CASE("layer_pairs: swept along x or by box trees, the pairs of the exact re
     // same layer mirrored across the diagonal (x and y swapped: the same
     // pairs) has bars across y instead, and is swept.
     rng g(520);
-    const auto mirrored = [](const polygon& p) {
-        std::vector<ring_input> rings;
-        for (std::size_t r = 0; r < p.ring_count(); ++r) {
-            ring_input ring;
-            ring.role = r == 0 ? ring_role::outer : ring_role::hole;
-            for (std::size_t k = p.ring_end(r); k-- > p.ring_begin(r);)
-                ring.vertices.push_back({p.vertex(k).y, p.vertex(k).x});
-            rings.push_back(ring);
-        }
-        return polygon(rings);
-    };
     for (int round = 0; round < test_effort::scaled(3); ++round) {
         std::vector<polygon> layer, other;
         for (int k = 0; k < 200; ++k) {
@@ -1226,8 +1215,8 @@ TEST_CASE("layer_pairs: swept along x or by box trees, the pairs of the exact re
                 into.push_back(polygon({test_shapes::ring({{x, y}, {x + 1, y + 0.5}, {x, y + 1}}, ring_role::outer)}));
         }
         std::vector<polygon> layer_m, other_m;
-        for (const polygon& p : layer) layer_m.push_back(mirrored(p));
-        for (const polygon& p : other) other_m.push_back(mirrored(p));
+        for (const polygon& p : layer) layer_m.push_back(mapped_polygon(p, true, 0));
+        for (const polygon& p : other) other_m.push_back(mapped_polygon(p, true, 0));
         std::vector<test_exact::placed_shape> exact_layer, exact_other;
         for (const polygon& p : layer) exact_layer.push_back(test_exact::place(p, pose{}));
         for (const polygon& p : other) exact_other.push_back(test_exact::place(p, pose{}));
