@@ -42,6 +42,7 @@
 #include "influence2d/number/exact_sum.hpp"
 #include "influence2d/number/fallback.hpp"
 #include "influence2d/number/traits.hpp"
+#include "influence2d/number/unit_roundoff.hpp"
 #include "influence2d/predicates/contact_time.hpp"
 #include "influence2d/predicates/distance.hpp"
 #include "influence2d/predicates/exact_doubles.hpp"

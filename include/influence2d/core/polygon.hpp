@@ -16,6 +16,7 @@
 #include "influence2d/core/invalid_input.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/number/exact_sum.hpp"
+#include "influence2d/number/unit_roundoff.hpp"
 
 namespace influence2d {
 
@@ -200,8 +201,10 @@ public:
     /// multiply-add rounds once where the model rounds twice: the bound holds.
     static double shoelace_bound(std::size_t n, double magnitude) {
         if (n > (std::size_t{1} << 40)) return HUGE_VAL;
+        // (Each of the 2n products' share of the underflow terms above.)
+        constexpr double underflow_per_product = 0x1p-1073;
         const double count = static_cast<double>(n);
-        return 4 * count * 0x1p-53 * magnitude + 2 * count * 0x1p-1073;
+        return 4 * count * unit_roundoff * magnitude + 2 * count * underflow_per_product;
     }
 
     /// The exact sign of the shoelace sum, by the fixed-point sum alone.

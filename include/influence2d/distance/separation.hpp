@@ -32,6 +32,7 @@
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/influence/edge_tree.hpp"
 #include "influence2d/number/double_word.hpp"
+#include "influence2d/number/unit_roundoff.hpp"
 #include "influence2d/predicates/distance.hpp"
 #include "influence2d/scene/posed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
@@ -213,7 +214,8 @@ inline constexpr long double squared_floor = 0x1p-1000L;
 template <class NT>
 double upper_distance(const NT& x) {
     if constexpr (std::is_same_v<NT, double_word>) {
-        return upper_sqrt((static_cast<long double>(x.hi()) + std::fabs(x.lo()) + x.error()) * (1 + 0x1p-52L) +
+        return upper_sqrt((static_cast<long double>(x.hi()) + std::fabs(x.lo()) + x.error()) *
+                              (1 + 2 * static_cast<long double>(unit_roundoff)) +
                           squared_floor);
     } else {
         const double d = number_traits<NT>::to_double(x);

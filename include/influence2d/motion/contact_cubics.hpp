@@ -15,6 +15,7 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/number/certified.hpp"
 #include "influence2d/number/traits.hpp"
+#include "influence2d/number/unit_roundoff.hpp"
 #include "influence2d/predicates/bernstein_signs.hpp"
 #include "influence2d/predicates/polynomial_roots.hpp"
 
@@ -143,12 +144,12 @@ inline bounded_cubics bounded_coefficients(const moving_point<certified>& m, con
     const double e2 = s2 * lv, term = wv * e2;
     const double e_e2 = (s2 * (squared_length_rounding * std::fabs(lv) + l.error()) + cubic_underflow) * bound_widening;
     const double e_term = (w2.error() * (std::fabs(e2) + e_e2) + std::fabs(wv) * e_e2 +
-                           0x1p-53 * std::fabs(wv) * std::fabs(e2) + cubic_underflow) *
+                           unit_roundoff * std::fabs(wv) * std::fabs(e2) + cubic_underflow) *
                           bound_widening;
     hi[0] = hi[0] + e2;
     hi[2] = hi[2] + term;
     const double sums = std::max(std::fabs(hi[0]), std::fabs(hi[2]));
-    const double e_hi = (e_f + std::max(e_e2, e_term) + 0x1p-53 * sums) * bound_widening;
+    const double e_hi = (e_f + std::max(e_e2, e_term) + unit_roundoff * sums) * bound_widening;
     out.e = {e_f, e_f, e_hi};
     for (double& e : out.e)
         if (std::isnan(e)) e = HUGE_VAL;

@@ -86,16 +86,16 @@ struct unit_direction {
 /// A double s_max such that B, its box `bb` (in double, within e of its
 /// place in NT) moved by s (dx, dy) for any s > s_max, lies beyond A's box
 /// `ab` on one axis: the least over the axes that move of the s at which
-/// B's box has crossed A's, with 4e of room and widened by 2^-40 relative
-/// (the few roundings of the quotient are below 2^-50 relative, and the
-/// difference of the box sides rounds by far less than e).
+/// B's box has crossed A's, with 4e of room and widened by
+/// quotient_widening relative (the difference of the box sides rounds by
+/// far less than e).
 inline double exit_reach(const box& ab, const box& bb, double dx, double dy, double e) {
     double s = std::numeric_limits<double>::infinity();
     if (dx > 0) s = std::min(s, (ab.max_x - bb.min_x + 4 * e) / dx);
     if (dx < 0) s = std::min(s, (ab.min_x - bb.max_x - 4 * e) / dx);
     if (dy > 0) s = std::min(s, (ab.max_y - bb.min_y + 4 * e) / dy);
     if (dy < 0) s = std::min(s, (ab.min_y - bb.max_y - 4 * e) / dy);
-    return std::max(0.0, s) * (1 + 0x1p-40) + std::numeric_limits<double>::min();
+    return std::max(0.0, s) * (1 + quotient_widening) + std::numeric_limits<double>::min();
 }
 
 /// A double x with s0 < x < s1, certainly (the comparisons exact, or

@@ -213,7 +213,7 @@ inline rational_progress rational_advance(const polygon& a, const polygon& b, co
                     return out;
                 }
             }
-            const double lower = g.lower - posing_spread * delta - 4 * v * 0x1p-52;
+            const double lower = g.lower - posing_spread * delta - 4 * v * time_rounding;
             const auto speed = [&] {
                 return std::min(v, approach_speed(g.axis, {shift.x * span, shift.y * span}, sweep, v));
             };

@@ -164,11 +164,25 @@ void candidate_sites(const polygon& a, const polygon& b, const std::vector<point
     });
 }
 
+/// The relative widening of a time or a reach along a motion computed in
+/// double as one quotient (box_entry, time_above, exit_reach): its numerator
+/// and denominator are within 2^-50 relative of the values meant (a
+/// difference of box sides with room for it, a double near an exact value),
+/// and the quotient rounds by 2^-53 more, below 2^-49 in all; 2^-40 leaves
+/// a factor of 500.
+inline constexpr double quotient_widening = 0x1p-40;
+
+/// The absolute widening of a time's upper bound (time_above): a quotient
+/// that underflows rounds by up to 2^-1075 absolutely, which no relative
+/// widening covers; 2^-1000 does, and adds nothing to a time of 2^-946 or
+/// more.
+inline constexpr double quotient_floor = 0x1p-1000;
+
 /// A lower bound, in double, of the first t >= 0 at which B's box `bb`
 /// (within e of its place in NT) moved by t `sweep` meets A's box `ab`:
 /// the latest of the axes' entry times, with 4e of room and shrunk by
-/// 2^-40 relative (the quotients' roundings are below 2^-50 relative);
-/// infinity when an axis that does not move keeps the boxes apart.
+/// quotient_widening relative; infinity when an axis that does not move
+/// keeps the boxes apart.
 inline double box_entry(const box& ab, const box& bb, point<double> sweep, double e) {
     double t = 0;
     const auto axis = [&](double a_min, double a_max, double b_min, double b_max, double d) {
@@ -182,7 +196,7 @@ inline double box_entry(const box& ab, const box& bb, point<double> sweep, doubl
     };
     axis(ab.min_x, ab.max_x, bb.min_x, bb.max_x, sweep.x);
     axis(ab.min_y, ab.max_y, bb.min_y, bb.max_y, sweep.y);
-    return t * (1 - 0x1p-40);
+    return t * (1 - quotient_widening);
 }
 
 /// The first window of a translation's search, as a fraction of the
@@ -230,12 +244,13 @@ void windowed_sites(const polygon& a, const polygon& b, const std::vector<point<
 }
 
 /// A double above the time num / den (exact or floating NT): the quotient of
-/// their nearest doubles (within 2^-50 relative) widened by 2^-40.
+/// their nearest doubles (within 2^-50 relative) widened by
+/// quotient_widening and quotient_floor.
 template <class NT>
 double time_above(const time_fraction<NT>& t) {
     using tr = number_traits<NT>;
     const double q = tr::to_double(t.num) / tr::to_double(t.den);
-    return std::isfinite(q) ? q * (1 + 0x1p-40) + 0x1p-1000 : std::numeric_limits<double>::infinity();
+    return std::isfinite(q) ? q * (1 + quotient_widening) + quotient_floor : std::numeric_limits<double>::infinity();
 }
 
 /// A contact at which a site's vertex passes exactly through a vertex of
@@ -564,12 +579,14 @@ struct filtered_event {
 
     /// A double above the time: from the exact time's neighbours, else from
     /// the certified time's bounds (num at most its value plus its error,
-    /// den at least its value minus its error), widened by 2^-40.
+    /// den at least its value minus its error), widened by quotient_widening
+    /// and quotient_floor.
     double time_above() const {
         if (exact) return above;
         const double num = fast->num.value() + fast->num.error(), den = fast->den.value() - fast->den.error();
         const double q = num / den;
-        return den > 0 && std::isfinite(q) ? q * (1 + 0x1p-40) + 0x1p-1000 : std::numeric_limits<double>::infinity();
+        return den > 0 && std::isfinite(q) ? q * (1 + quotient_widening) + quotient_floor
+                                           : std::numeric_limits<double>::infinity();
     }
 
     /// Sets the exact time, its nearest double and the doubles next to it.

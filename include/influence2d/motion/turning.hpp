@@ -83,6 +83,19 @@ inline constexpr double derivative_slack = 0x1p-48;
 /// four times that.
 inline constexpr double step_shrinking = 0x1p-48;
 
+/// The most by which a time of the motion moves when it is rounded to a
+/// double: a time in [0, 1] rounded to nearest moves by at most 2^-54, and
+/// rounded down (the advance's next time) by at most an ulp of 1, 2^-52.
+/// Times v, the speed bound, it bounds how far a point of B moves between
+/// the time a probe is taken at and the time meant.
+inline constexpr double time_rounding = 0x1p-52;
+
+/// The relative widening of the farthest distance at which a probe may stop
+/// the advance (advance_limits::stop_reach): undoing the probe's shrinking
+/// (distance_shrinking) asks 2^-49, and the bound's own two sums and product
+/// round by three units of 2^-53 more; 2^-48 covers both.
+inline constexpr double stop_reach_widening = 0x1p-48;
+
 /// The relative shrinking that turns a distance within one unit in the last
 /// place of the true one (distance_of in an exact NT, certified_separation)
 /// into a lower bound of it: 2^-50 > 2^-52, with room for the rounding of
@@ -161,7 +174,7 @@ struct advance_limits {
     double turn = 0;        ///< |theta1 - theta0|
     double v = 0;           ///< the speed bound |T1 - T0| + turn r, widened (speed_widening)
     double delta = 0;       ///< the rounding of the pose at t against the exact motion (motion_rounding)
-    double resolution = 0;  ///< 4 (delta + v 2^-52) + 2 error (the error of the probes that decide the stop)
+    double resolution = 0;  ///< 4 (delta + v time_rounding) + 2 error (the error of the probes that decide the stop)
     double tol = 0;         ///< the stopping distance: max(tolerance, resolution)
 
     /// The limits of the motion of B from `from` to `to`.
@@ -171,7 +184,7 @@ struct advance_limits {
           v((filter_length(to.tx - from.tx, to.ty - from.ty) + turn * r) * (1 + speed_widening)),
           delta(motion_rounding * (r * (std::fabs(from.theta) + std::fabs(to.theta) + 1) + std::fabs(from.tx) +
                                    std::fabs(from.ty) + std::fabs(to.tx) + std::fabs(to.ty))),
-          resolution(4 * (delta + v * 0x1p-52) + 2 * error),
+          resolution(4 * (delta + v * time_rounding) + 2 * error),
           tol(std::max(tolerance, resolution)) {}
 
     /// The lower bound of the exact motion's distance at a probe's time
@@ -188,9 +201,9 @@ struct advance_limits {
     /// stop the advance: its distance d (within an ulp of a value within
     /// error of the exact D) stops where d (1 - distance_shrinking) - error
     /// - delta <= tol, so D <= (tol + error + delta) (1 + 2^-49) + error;
-    /// (tol + 2 error + delta) (1 + 2^-48) covers that and its own
-    /// roundings.
-    double stop_reach(double error) const { return (tol + 2 * error + delta) * (1 + 0x1p-48); }
+    /// (tol + 2 error + delta) (1 + stop_reach_widening) covers that and its
+    /// own roundings.
+    double stop_reach(double error) const { return (tol + 2 * error + delta) * (1 + stop_reach_widening); }
 };
 
 /// Whether a coarse probe of type P bounds the step after its own probes

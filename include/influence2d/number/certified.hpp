@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "influence2d/number/traits.hpp"
+#include "influence2d/number/unit_roundoff.hpp"
 
 namespace influence2d {
 
@@ -188,7 +189,7 @@ public:
     //@}
 
 private:
-    static constexpr double u = 0x1p-53;
+    static constexpr double u = unit_roundoff;
     // Underflow: the product and the three error terms can each lose
     // 2^-1075, 2^-1073 in all. The allowance is the least normal double,
     // 2^-1022, which holds that and keeps the bound of every product normal
@@ -206,7 +207,8 @@ private:
     // most five of them along a term) needs covering; 2^-48 leaves room, and
     // the widening's own rounding cannot take it below e (it rounds e (1 +
     // 2^-48) >= e to nearest, and e is a double).
-    static double widen(double e) { return e * (1 + 0x1p-48); }
+    static constexpr double bound_widening = 0x1p-48;
+    static double widen(double e) { return e * (1 + bound_widening); }
     /// The result v of a sum or difference whose inputs' bounds add up to
     /// `propagated` (see the class comment).
     static certified sum(double v, double propagated) {

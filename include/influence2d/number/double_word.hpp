@@ -13,6 +13,7 @@
 
 #include "influence2d/number/certified.hpp"
 #include "influence2d/number/traits.hpp"
+#include "influence2d/number/unit_roundoff.hpp"
 
 namespace influence2d {
 
@@ -81,7 +82,7 @@ public:
     /// down by at most 2^-53 more), or hi = lo = error = 0. Otherwise stores
     /// 0 and returns false.
     bool try_sign(int& s) const {
-        if (std::fabs(hi_) * (1 - 0x1p-52) > error_) {  // false for a NaN bound
+        if (std::fabs(hi_) * (1 - 2 * unit_roundoff) > error_) {  // false for a NaN bound
             s = hi_ > 0 ? 1 : -1;
             return true;
         }
@@ -156,8 +157,8 @@ public:
         if (!r.known()) return unknown();
         const double correction = r.hi_ / b.hi_;
         const double e_n = std::fabs(r.lo_) + r.error_;
-        const double bound = (e_n + std::fabs(correction) * (1 + 0x1p-52) * e_d) / (std::fabs(b.hi_) - e_d) +
-                             0x1p-53 * std::fabs(correction) + underflow;
+        const double bound = (e_n + std::fabs(correction) * (1 + 2 * unit_roundoff) * e_d) / (std::fabs(b.hi_) - e_d) +
+                             unit_roundoff * std::fabs(correction) + underflow;
         double zh, zl;
         fast_two_sum(q, correction, zh, zl);
         return settled(zh, zl, 0, bound);
@@ -214,7 +215,8 @@ private:
     /// The propagated error of a product (see operator*), 0 for exact operands.
     static double product_error(const double_word& a, const double_word& b) {
         if (a.error_ == 0 && b.error_ == 0) return 0;
-        return ((std::fabs(a.hi_) + a.error_) * b.error_ + std::fabs(b.hi_) * a.error_) * (1 + 0x1p-52) + underflow;
+        return ((std::fabs(a.hi_) + a.error_) * b.error_ + std::fabs(b.hi_) * a.error_) * (1 + 2 * unit_roundoff) +
+               underflow;
     }
     void forget() {
         hi_ = lo_ = 0;

@@ -263,14 +263,26 @@ NT segment_squared_distance(const point<NT>& a, const point<NT>& b, const point<
 // Rounding an exact value to double
 // ---------------------------------------------------------------------------
 
+/// scaled_nearest's window for the double y: [1 / nearest_window,
+/// nearest_window], where y, its neighbours and half their gap are normal
+/// doubles.
+inline constexpr double nearest_window = 0x1p900;
+/// scaled_nearest's step towards that window, 2^nearest_step_bits, a power
+/// of two by which NT scales exactly: eight steps reach the window from any
+/// squared distance of doubles (2^-2148 to 2^2050), and a step from outside
+/// never overshoots it (2^600 is below the window's width, 2^1800).
+inline constexpr int nearest_step_bits = 600;
+inline constexpr double nearest_step = 0x1p600;
+
 /// A double and a power of two: the value y * 2^exponent.
 struct scaled_double {
-    double mantissa = 0;  ///< y, a double of magnitude in [2^-900, 2^900] (or 0)
-    int exponent = 0;     ///< an even power of two (a multiple of 600)
+    double mantissa = 0;  ///< y, a double of magnitude in [1 / nearest_window, nearest_window] (or 0)
+    int exponent = 0;     ///< an even power of two (a multiple of nearest_step_bits)
 };
 
-/// For x >= 0 in an exact NT: x = y 2^k, k a multiple of 600 (even), with y
-/// the double nearest to x 2^-k (ties to even), y in [2^-900, 2^900] or 0.
+/// For x >= 0 in an exact NT: x = y 2^k, k a multiple of nearest_step_bits
+/// (even), with y the double nearest to x 2^-k (ties to even), y in
+/// [1 / nearest_window, nearest_window] or 0.
 /// Scaling by powers of two is exact in NT, so the only rounding is the
 /// nearest one of a value in double's normal range, whatever the magnitude of
 /// x (a squared distance of doubles lies between 2^-2148 and 2^2050).
@@ -286,14 +298,14 @@ scaled_double scaled_nearest(const NT& x) {
     NT y = x;
     int k = 0;
     double d = tr::to_double(y);
-    for (int step = 0; step < 8 && !(d >= 0x1p-900); ++step) {
-        y = NT(y * tr::from_double(0x1p600));
-        k -= 600;
+    for (int step = 0; step < 8 && !(d >= 1 / nearest_window); ++step) {
+        y = NT(y * tr::from_double(nearest_step));
+        k -= nearest_step_bits;
         d = tr::to_double(y);
     }
-    for (int step = 0; step < 8 && !(d <= 0x1p900); ++step) {
-        y = NT(y * tr::from_double(0x1p-600));
-        k += 600;
+    for (int step = 0; step < 8 && !(d <= nearest_window); ++step) {
+        y = NT(y * tr::from_double(1 / nearest_step));
+        k += nearest_step_bits;
         d = tr::to_double(y);
     }
     const auto odd = [](double value) {
@@ -377,6 +389,11 @@ inline constexpr double posing_spread = 1.5;
 /// room left; an edge shorter than degenerate_edge_share of the largest
 /// difference is taken as its end a, adding its length |ab|_1 to the bound.
 inline constexpr double point_segment_rounding = 0x1p-47;
+/// See point_segment_rounding: differences whose largest magnitude lies
+/// outside [1 / point_segment_window, point_segment_window] are first scaled
+/// into it by a power of two, so that their squares and products stay far
+/// inside double's normal range.
+inline constexpr double point_segment_window = 0x1p200;
 /// See point_segment_rounding: below this share of the largest difference,
 /// |ab|^2 might underflow; the edge is taken as the point a.
 inline constexpr double degenerate_edge_share = 0x1p-100;
@@ -398,7 +415,7 @@ inline estimate point_segment_estimate(const point<double>& p, const point<doubl
     const double big = std::max({std::fabs(abx), std::fabs(aby), std::fabs(apx), std::fabs(apy)});
     if (big == 0) return {0, 0};  // (a difference of doubles is 0 only when they are equal)
     int e = 0;
-    if (!(big >= 0x1p-200 && big <= 0x1p200)) {
+    if (!(big >= 1 / point_segment_window && big <= point_segment_window)) {
         e = std::ilogb(big);
         abx = std::ldexp(abx, -e), aby = std::ldexp(aby, -e), apx = std::ldexp(apx, -e), apy = std::ldexp(apy, -e);
     }

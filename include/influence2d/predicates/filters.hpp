@@ -181,6 +181,14 @@ inline int certain_side_for(const point<double>& p, double dx, double dy, const 
 /// (pose_scale_widening).
 inline constexpr double disc_reach_share = 0.7;
 
+/// The relative widening of a distance, a sum of radii or a slack before it
+/// enters a short sum (a box grown by a margin and half a distance, a reach
+/// of d plus 2e, a slack less a disc's reach) that a comparison then holds
+/// to a conservative bound: each of the sum's roundings (at most four along
+/// any of these) moves it by at most unit_roundoff of the result, so the
+/// widening by 2^-50 = 8u covers them with room.
+inline constexpr double sum_widening = 0x1p-50;
+
 /// Whether some point of the closed disc of radius `radius` about c lies
 /// certainly strictly left of the line through p of direction (dx, dy), the
 /// points' doubles within ep (p, and the direction's ends) and er (c) of
@@ -192,15 +200,15 @@ inline constexpr double disc_reach_share = 0.7;
 /// point of the disc strictly left. |d*|_2 >= |d*|_1 / sqrt 2, and |d*|_1
 /// >= |dx| + |dy| - 4 ep less the differences' rounding: the reach
 /// disc_reach_share radius (|dx| + |dy| - 4 ep) is below radius |d*|_2.
-/// The slack is widened by 2^-50 for the final subtraction's rounding
-/// relative to it (the reach's share is in disc_reach_share). False for a
+/// The slack is widened by sum_widening for the final subtraction's
+/// rounding relative to it (the reach's share is in disc_reach_share). False for a
 /// NaN, and for a radius of 0 the test is certain_side_for's (c itself
 /// strictly left).
 inline bool disc_reaches_left(const point<double>& p, double dx, double dy, const point<double>& c, double radius,
                               double ep, double slack) {
     const double o = dx * (c.y - p.y) - dy * (c.x - p.x);
     const double reach = disc_reach_share * radius * std::max(std::fabs(dx) + std::fabs(dy) - 4 * ep, 0.0);
-    return o > slack * (1 + 0x1p-50) - reach;
+    return o > slack * (1 + sum_widening) - reach;
 }
 
 /// The widening of the room 2e that two boxes' gap must exceed

@@ -278,8 +278,9 @@ template <class NT>
 meeting placed_within(placed_polygon<NT>& a, placed_polygon<NT>& b, double e, double d, const NT& d2,
                       witness_preference prefer = witness_preference::cheapest) {
     if (!(d > 0)) return placed_meet(a, b, e, prefer);
-    // (d's own share widened by 2^-50: the sums below round relative to d.)
-    const double reach = d * (1 + 0x1p-50) + 2 * e;
+    // (d's own share widened by sum_widening: the sums below round relative
+    // to d.)
+    const double reach = d * (1 + sum_widening) + 2 * e;
     box b_window = b.bounds().inflated(reach), a_window = a.bounds().inflated(reach);
     if (!a.finite() || !b.finite()) {
         const double inf = std::numeric_limits<double>::infinity();

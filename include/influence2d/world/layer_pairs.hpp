@@ -66,8 +66,8 @@ void boxes_of(const std::vector<polygon>& layer, const char* which, double withi
             throw invalid_input(std::string("layer_pairs: polygon ") + std::to_string(k) + " of the " + which +
                                 " layer is empty (it has no ring)");
         accepted_polygon<NT>(layer[k], which);
-        boxes.push_back(
-            layer[k].bounds().inflated(placing_margin<NT>(coordinate_scale(layer[k])) + within / 2 * (1 + 0x1p-50)));
+        boxes.push_back(layer[k].bounds().inflated(placing_margin<NT>(coordinate_scale(layer[k])) +
+                                                   within / 2 * (1 + sum_widening)));
         ids.push_back(static_cast<std::uint32_t>(k));
     }
 }

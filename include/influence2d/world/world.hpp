@@ -425,7 +425,7 @@ private:
             out.max_x = std::min(out.max_x, round.max_x);
             out.max_y = std::min(out.max_y, round.max_y);
         }
-        out = out.inflated(2 * placing_margin<NT>(b.scale) + options_.within / 2 * (1 + 0x1p-50));
+        out = out.inflated(2 * placing_margin<NT>(b.scale) + options_.within / 2 * (1 + sum_widening));
         if (std::isnan(out.min_x) || std::isnan(out.min_y) || std::isnan(out.max_x) || std::isnan(out.max_y)) {
             const double inf = std::numeric_limits<double>::infinity();
             out = box{-inf, -inf, inf, inf};
@@ -687,9 +687,9 @@ private:
     bool discs_apart(const body& a, const body& b) const {
         const double e = std::max(placing_margin<NT>(a.scale), placing_margin<NT>(b.scale));
         // (The sum's two roundings, each below 2^-53 of it, are covered by
-        // the widening of 2^-50.)
+        // sum_widening.)
         return certainly_farther(a.round.centre, b.round.centre,
-                                 (a.round.radius + b.round.radius + options_.within) * (1 + 0x1p-50), e);
+                                 (a.round.radius + b.round.radius + options_.within) * (1 + sum_widening), e);
     }
 
     // The candidates among near_[first, last) appended to `out`, the carried
