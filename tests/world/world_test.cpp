@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "influence2d/exact/certified_intersects.hpp"
 #include "influence2d/exact/certified_world.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/query/both_posed.hpp"
@@ -1290,6 +1291,87 @@ TEST_CASE("layer_pairs: North Carolina's counties mirrored, reordered or scaled 
             CHECK(show_pairs(got) == show_pairs(want));
         }
     }
+}
+
+/// The rings of p with every vertex rounded to the nearest multiple of
+/// `cell` (a power of two, so the rounding is the only change), those with
+/// fewer than three distinct vertices left out (none may be left), and the
+/// number of vertices that came to repeat the one before them added to
+/// `repeats`.
+std::vector<ring_input> snapped_rings(const polygon& p, double cell, std::size_t& repeats) {
+    std::vector<ring_input> rings;
+    for (std::size_t r = 0; r < p.ring_count(); ++r) {
+        ring_input ring;
+        ring.role = p.role(r);
+        for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i) {
+            const point<double> v{std::round(p.vertex(i).x / cell) * cell, std::round(p.vertex(i).y / cell) * cell};
+            if (!ring.vertices.empty() && ring.vertices.back() == v) ++repeats;
+            ring.vertices.push_back(v);
+        }
+        std::vector<point<double>> distinct = ring.vertices;
+        std::sort(distinct.begin(), distinct.end(), [](const point<double>& l, const point<double>& r) {
+            return l.x < r.x || (l.x == r.x && l.y < r.y);
+        });
+        if (std::unique(distinct.begin(), distinct.end()) - distinct.begin() >= 3) rings.push_back(ring);
+    }
+    return rings;
+}
+
+TEST_CASE("layer_pairs: North Carolina's counties snapped to a quarter degree, repeated vertices and gaps of one cell",
+          "[world]") {
+    // Rounding a real layer's vertices to a grid of 1/4 degree makes what
+    // GIS data holds at its worst: runs of repeated vertices, collinear
+    // edges, spikes, rings touching themselves and their neighbours along
+    // whole edges, and polygons exactly one cell apart (a tie of "within
+    // one cell"). The joins at 0, half a cell and one cell, certified and in
+    // exact rationals, must be the exact reference's; so must the one-shot
+    // certified_intersects of its pairs, both roles, turned about the moving
+    // polygon's centroid or moved by half a cell.
+    const double cell = 0.25;
+    std::size_t repeats = 0;
+    std::vector<polygon> layer;
+    for (const polygon& p : test_data::real_layer("nc_counties.wkt"))
+        if (std::vector<ring_input> rings = snapped_rings(p, cell, repeats); !rings.empty())
+            layer.emplace_back(std::move(rings));
+    REQUIRE(layer.size() == 99);  // one county is narrower than a cell
+    CHECK(repeats >= 1000);       // premise: a degenerate layer
+    std::vector<body_state> as_given(layer.size());
+    for (std::size_t i = 0; i < layer.size(); ++i) as_given[i].shape = i;
+    std::vector<body_pair> meeting;
+    for (const double within : {0.0, cell / 2, cell}) {
+        INFO("within " << within);
+        const std::vector<body_pair> want = reference_contacts(layer, as_given, within);
+        CHECK(show_pairs(certified_layer_pairs(layer, within, 2)) == show_pairs(want));
+        CHECK(show_pairs(layer_pairs<exact_rational>(layer, within, 1)) == show_pairs(want));
+        if (within == 0) meeting = want;
+        if (within == cell) {
+            // Premise: some pairs are exactly one cell apart (within it, and
+            // not within less).
+            const std::vector<body_pair> closer = reference_contacts(layer, as_given, std::nextafter(cell, 0.0));
+            CHECK(want.size() >= closer.size() + 5);
+        }
+    }
+    REQUIRE(meeting.size() >= 250);
+    rng g(29);
+    std::size_t meets = 0;
+    for (std::size_t k = 0; k < meeting.size(); k += 2)
+        for (const bool swapped : {false, true})
+            for (int kind = 0; kind < 3; ++kind) {
+                const polygon& a = layer[swapped ? meeting[k].second : meeting[k].first];
+                const polygon& b = layer[swapped ? meeting[k].first : meeting[k].second];
+                const double theta = kind == 0 ? 0 : g.uniform(-1, 1) * (kind == 1 ? 1e-9 : 0.02);
+                const point<double> c = b.centroid();
+                const double co = std::cos(theta), si = std::sin(theta);
+                const double shift = kind == 0 ? cell / 2 * std::round(g.uniform(-1, 1)) : 0;
+                const pose q{c.x - (co * c.x - si * c.y) + shift, c.y - (si * c.x + co * c.y), theta};
+                const bool want = test_exact::regions_meet(test_exact::place(a, 0, 0, 0), test_exact::place(b, q));
+                INFO("pair " << meeting[k].first << ", " << meeting[k].second << (swapped ? " swapped" : "")
+                             << " theta " << theta << " shift " << shift);
+                CHECK(certified_intersects(a, b, q) == want);
+                meets += want;
+            }
+    CHECK(meets >= 300);  // premise: most poses meet, and not all
+    CHECK(meets < 3 * meeting.size());
 }
 
 TEST_CASE("layer_pairs: a crowded layer answered by two threads, exact vertices made before they share", "[world]") {
