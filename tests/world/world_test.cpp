@@ -1324,7 +1324,8 @@ TEST_CASE("layer_pairs: North Carolina's counties snapped to a quarter degree, r
     // edges, spikes, rings touching themselves and their neighbours along
     // whole edges, and polygons exactly one cell apart (a tie of "within
     // one cell"). The joins at 0, half a cell and one cell, certified and in
-    // exact rationals, must be the exact reference's; so must the one-shot
+    // exact rationals, must be the exact reference's, and so must those of
+    // the layer against itself moved by whole cells; so must the one-shot
     // certified_intersects of its pairs, both roles, turned about the moving
     // polygon's centroid or moved by half a cell.
     const double cell = 0.25;
@@ -1350,6 +1351,40 @@ TEST_CASE("layer_pairs: North Carolina's counties snapped to a quarter degree, r
             const std::vector<body_pair> closer = reference_contacts(layer, as_given, std::nextafter(cell, 0.0));
             CHECK(want.size() >= closer.size() + 5);
         }
+    }
+    // Two layers: the snapped counties against themselves moved by three
+    // cells right and one up (on the grid again, exactly), every pair.
+    std::vector<polygon> moved;
+    for (const polygon& p : layer) {
+        std::vector<ring_input> rings;
+        for (std::size_t r = 0; r < p.ring_count(); ++r) {
+            ring_input ring;
+            ring.role = p.role(r);
+            for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
+                ring.vertices.push_back({p.vertex(i).x + 3 * cell, p.vertex(i).y + cell});
+            rings.push_back(ring);
+        }
+        moved.emplace_back(rings);
+    }
+    std::vector<test_exact::placed_shape> exact_layer, exact_moved;
+    for (std::size_t i = 0; i < layer.size(); ++i) {
+        exact_layer.push_back(test_exact::place(layer[i], 0, 0, 0));
+        exact_moved.push_back(test_exact::place(moved[i], 0, 0, 0));
+    }
+    for (const double within : {0.0, cell}) {
+        INFO("two layers, within " << within);
+        std::vector<body_pair> want;
+        for (std::size_t i = 0; i < layer.size(); ++i)
+            for (std::size_t j = 0; j < moved.size(); ++j)
+                if (exact_within(exact_layer[i], exact_moved[j], within))
+                    want.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+        CHECK(want.size() >= 200);
+        CHECK(show_pairs(certified_layer_pairs(layer, moved, within, 2)) == show_pairs(want));
+        std::vector<body_pair> swapped;  // the roles swapped, in exact rationals
+        for (const body_pair& q : layer_pairs<exact_rational>(moved, layer, within, 1))
+            swapped.push_back({q.second, q.first});
+        std::sort(swapped.begin(), swapped.end());
+        CHECK(show_pairs(swapped) == show_pairs(want));
     }
     REQUIRE(meeting.size() >= 250);
     rng g(29);
