@@ -20,6 +20,7 @@ import influence2d.dask
 from conftest import star_polygon
 from test_audit import POLYGONS
 from test_pairs import layer_of
+from test_real_layers import layer as real_layer
 from test_world import steps_table
 
 distributed = pytest.importorskip("distributed")
@@ -177,6 +178,35 @@ def test_pairs_within_a_distance(client, rng, within):
     assert len(same_pairs(client, layer, within=within)) > len(same_pairs(client, layer))
     same_pairs(client, layer, [shapely.affinity.translate(g, 0.3, 0.1) for g in layer[:30]], within=within,
                number_type="double")
+
+
+def snapped(geometry, cell):
+    """The geometry with every vertex rounded to a multiple of ``cell`` (a
+    power of two: exact), its rings left with fewer than three distinct
+    vertices dropped; None when none is left."""
+    def ring(r):
+        points = [(round(x / cell) * cell, round(y / cell) * cell) for x, y in r.coords]
+        return points if len(set(points)) >= 3 else None
+    parts = []
+    for p in geometry.geoms if geometry.geom_type == "MultiPolygon" else [geometry]:
+        outer = ring(p.exterior)
+        if outer is not None:
+            parts.append(shapely.geometry.Polygon(outer, [h for h in map(ring, p.interiors) if h is not None]))
+    return None if not parts else parts[0] if len(parts) == 1 else shapely.geometry.MultiPolygon(parts)
+
+
+def test_pairs_of_a_snapped_real_layer_at_a_tie(client):
+    # North Carolina's counties rounded to a quarter-degree grid: repeated
+    # vertices, collinear runs, and counties exactly one cell apart, on
+    # partition borders wherever the cuts fall; alone and against the
+    # layer moved by whole cells.
+    cell = 0.25
+    layer = [g for g in (snapped(shapely.wkt.loads(t), cell) for t in real_layer("nc_counties.wkt")) if g is not None]
+    assert len(layer) == 99
+    at_a_tie = same_pairs(client, layer, within=cell)
+    assert len(at_a_tie) > len(influence2d.pairs(layer, within=np.nextafter(cell, 0))) + 5  # premise: ties
+    np.testing.assert_array_equal(influence2d.pairs(layer, within=cell, number_type="exact"), at_a_tie)
+    same_pairs(client, layer, [shapely.affinity.translate(g, 3 * cell, cell) for g in layer], within=cell)
 
 
 def test_pairs_of_few_polygons_and_of_none(client):
