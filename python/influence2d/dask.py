@@ -200,12 +200,23 @@ def _partitions(boxes, extent, count):
     return out
 
 
+# The room _reach adds to ``within``: 2^-40 of it and 2^-30 of the layers'
+# scale (their largest coordinate, plus within). For the exact and
+# certified types ``within`` alone would do: two polygons within it have
+# boxes within it on each axis, so do the partitions' boxes that hold them,
+# and a sum rounded to nearest cannot fall below a double that the exact
+# sum reaches. The room is for double's answers, whose coordinates and
+# distances round by a few units of 2^-53 of the scale, far inside 2^-30.
+_WITHIN_ROOM = 2.0 ** -40
+_SCALE_ROOM = 2.0 ** -30
+
+
 def _reach(boxes, within):
     """How far two partitions' boxes may be apart and still hold a pair:
-    ``within``, with room for the library's own box margins (joining more
+    ``within``, with room (_WITHIN_ROOM, _SCALE_ROOM; joining more
     partitions than needed costs time, never a different answer)."""
     scale = float(np.abs(boxes).max()) if len(boxes) else 0.0
-    return within * (1 + 2.0 ** -40) + (scale + within) * 2.0 ** -30
+    return within * (1 + _WITHIN_ROOM) + (scale + within) * _SCALE_ROOM
 
 
 def _boxes_meet(p, q, reach):
