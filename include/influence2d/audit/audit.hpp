@@ -534,6 +534,15 @@ inline void check_centroid_on_edge_lines(collector& c, const polygon& whole, con
         }
 }
 
+/// The magnitude above which (or below whose inverse) a nonzero coordinate
+/// is reported as beyond_double_products: products of up to four
+/// coordinates (a squared distance against a squared length times a
+/// squared bound, as the distance predicates compare them) then leave
+/// double's normal range, 2^-1022 to 2^1024 (2^2000 overflows, 2^-2000
+/// underflows), where a predicate evaluated in double without scaling
+/// loses its error bound.
+inline constexpr double double_products_limit = 0x1p500;
+
 /// Reports coordinates beyond float's range or inexact in float, and those whose products leave double's range.
 inline void check_number_ranges(collector& c, const ring_set& set) {
     const auto& rings = set.rings;
@@ -551,7 +560,7 @@ inline void check_number_ranges(collector& c, const ring_set& set) {
                      static_cast<double>(static_cast<float>(p.y)) != p.y)
                 c.add_at_vertex(finding_kind::inexact_in_float, k, v, p, "a coordinate is not exact in float",
                                 "float mode rounds it: its answers are for a moved vertex");
-            if (m > 0x1p500 || lo < 0x1p-500)
+            if (m > double_products_limit || lo < 1 / double_products_limit)
                 c.add_at_vertex(finding_kind::beyond_double_products, k, v, p,
                                 "products of coordinates leave double's normal range",
                                 "the library's filters scale; double's own predicates may be wrong there; exact, "
