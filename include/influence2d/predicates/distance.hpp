@@ -272,6 +272,7 @@ inline constexpr double nearest_window = 0x1p900;
 /// squared distance of doubles (2^-2148 to 2^2050), and a step from outside
 /// never overshoots it (2^600 is below the window's width, 2^1800).
 inline constexpr int nearest_step_bits = 600;
+/// The same step as a double: 2^nearest_step_bits.
 inline constexpr double nearest_step = 0x1p600;
 
 /// A double and a power of two: the value y * 2^exponent.
