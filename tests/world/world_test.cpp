@@ -100,18 +100,19 @@ std::string show_pairs(const std::vector<body_pair>& v) {
 }
 
 /// p mirrored across the diagonal (x and y swapped) when `mirrored`, then
-/// scaled by 2^scale: exact, each ring keeping its role.
-point<double> mapped_point(point<double> p, bool mirrored, int scale) {
+/// scaled by 2^scale, then moved by `shift` (exact when the sums are): each
+/// ring keeping its role.
+point<double> mapped_point(point<double> p, bool mirrored, int scale, point<double> shift = {0, 0}) {
     if (mirrored) std::swap(p.x, p.y);
-    return {std::ldexp(p.x, scale), std::ldexp(p.y, scale)};
+    return {std::ldexp(p.x, scale) + shift.x, std::ldexp(p.y, scale) + shift.y};
 }
-polygon mapped_polygon(const polygon& p, bool mirrored, int scale) {
+polygon mapped_polygon(const polygon& p, bool mirrored, int scale, point<double> shift = {0, 0}) {
     std::vector<ring_input> rings;
     for (std::size_t r = 0; r < p.ring_count(); ++r) {
         ring_input ring;
         ring.role = p.role(r);
         for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
-            ring.vertices.push_back(mapped_point(p.vertex(i), mirrored, scale));
+            ring.vertices.push_back(mapped_point(p.vertex(i), mirrored, scale, shift));
         rings.push_back(ring);
     }
     return polygon(rings);
@@ -1355,17 +1356,7 @@ TEST_CASE("layer_pairs: North Carolina's counties snapped to a quarter degree, r
     // Two layers: the snapped counties against themselves moved by three
     // cells right and one up (on the grid again, exactly), every pair.
     std::vector<polygon> moved;
-    for (const polygon& p : layer) {
-        std::vector<ring_input> rings;
-        for (std::size_t r = 0; r < p.ring_count(); ++r) {
-            ring_input ring;
-            ring.role = p.role(r);
-            for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
-                ring.vertices.push_back({p.vertex(i).x + 3 * cell, p.vertex(i).y + cell});
-            rings.push_back(ring);
-        }
-        moved.emplace_back(rings);
-    }
+    for (const polygon& p : layer) moved.push_back(mapped_polygon(p, false, 0, {3 * cell, cell}));
     std::vector<test_exact::placed_shape> exact_layer, exact_moved;
     for (std::size_t i = 0; i < layer.size(); ++i) {
         exact_layer.push_back(test_exact::place(layer[i], 0, 0, 0));
