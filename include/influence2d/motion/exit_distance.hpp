@@ -346,7 +346,7 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
     using tr = number_traits<NT>;
     translation_frame<NT> f(a, b, t, {tr::from_double(dx), tr::from_double(dy)});
     if (std::is_same_v<NT, certified> && t.c == 1 && t.s == 0)
-        f.given = given_translation{{t.tx, t.ty}, {0, 0}, {dx, dy}};
+        f.given = given_translation{{t.tx, t.ty}, {0, 0}, {dx, dy}, std::nullopt};
     const double reach = std::fabs(dx) + std::fabs(dy);
     const double e0 = placing_margin<NT>(scale);
     const time_fraction<NT> zero{NT(0), NT(1)};

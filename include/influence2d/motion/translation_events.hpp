@@ -269,6 +269,10 @@ struct given_translation {
     point<double> t;     ///< B's translation at the start
     point<double> from;  ///< the displacement's start: it is to - from
     point<double> to;    ///< the displacement's end
+    /// B's translation at the motion's end, t + (to - from), when a search
+    /// bounded by the end asks for it: the first contact's `to` (its t is
+    /// from); none for the exit search, which runs past any end.
+    std::optional<point<double>> end;
 };
 
 /// A translation in NT: A where it stands, B posed at the start, the
@@ -358,17 +362,18 @@ private:
         sides.sb = side(sides.beta, e1);
         // A time's numerator on the doubles as given (contact_times_on_sides'
         // formulas): the edge's ends u0, u1 and the vertex w as given, B's
-        // among them translated by t.
+        // among them translated by t, or at the motion's end by given->end.
         const point<double> u0 = (s.moving_vertex ? as : bs).vertex(s.edge),
                             u1 = (s.moving_vertex ? as : bs).vertex(e1),
                             w = (s.moving_vertex ? bs : as).vertex(s.vertex), origin{0, 0};
-        const auto numerator_sign = [&](int formula) {
+        const auto numerator_sign = [&](int formula, bool at_end) {
+            const point<double>& t = at_end ? given->end.value() : given->t;
             if (formula < 0)  // (u1 - u0) x (u0 - p)
-                return s.moving_vertex ? exact_translated_side(u0, u1, u0, w, given->t)
-                                       : -exact_translated_side(u0, u1, w, u0, given->t);
+                return s.moving_vertex ? exact_translated_side(u0, u1, u0, w, t)
+                                       : -exact_translated_side(u0, u1, w, u0, t);
             const point<double>& u = formula == 0 ? u0 : u1;  // dd . (u - p)
-            return s.moving_vertex ? exact_offsets_along(given->from, given->to, u, w, given->t, origin)
-                                   : exact_offsets_along(given->from, given->to, w, u, given->t, origin);
+            return s.moving_vertex ? exact_offsets_along(given->from, given->to, u, w, t, origin)
+                                   : exact_offsets_along(given->from, given->to, w, u, t, origin);
         };
         int ends[2] = {-1, -1};
         const int k = contact_times_on_sides(sides, p, dd, q0, q1, bounded, out, ends, numerator_sign);
@@ -703,7 +708,9 @@ std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const p
                                                                          const rotation_pose& start,
                                                                          translation_frame<certified>& fast) {
     const bool unturned = start.c == 1 && start.s == 0;
-    if (unturned) fast.given = given_translation{{start.tx, start.ty}, {from.tx, from.ty}, {to.tx, to.ty}};
+    if (unturned)
+        fast.given =
+            given_translation{{start.tx, start.ty}, {from.tx, from.ty}, {to.tx, to.ty}, point<double>{to.tx, to.ty}};
     std::optional<point<Exact>> exact_d;
     const auto exact_time = [&](const contact_site& s) {
         if (!exact_d) exact_d = displacement<Exact>(from, to);

@@ -102,11 +102,15 @@ time_fraction<NT> passing_time(const point<NT>& p, const point<NT>& d, const poi
 /// exactly). When `ends` is given, ends[k] says which end of the segment
 /// p passes through at out[k]: 0 for a, 1 for b, -1 for neither (it
 /// crosses the segment inside). When `numerator_sign` is given (an NT with
-/// try_sign), a numerator whose sign its bound leaves in doubt (a time of 0:
-/// p on the segment's line at the start) takes it from
-/// `numerator_sign(formula)`: the exact sign of (b - a) x (a - p) for
-/// formula -1, of d . (a - p) and d . (b - p) (the passing times) for 0 and
-/// 1, before the normalisation.
+/// try_sign), a sign its bound leaves in doubt is taken from
+/// `numerator_sign(formula, at_end)`, before the normalisation: with
+/// at_end false, the numerator's (a time of 0: p on the segment's line at
+/// the start), the exact sign of (b - a) x (a - p) for formula -1, of
+/// d . (a - p) and d . (b - p) (the passing times) for 0 and 1; with at_end
+/// true, the numerator minus the denominator's (a time of 1, when bounded:
+/// p + d on the line, or passing the end, as the motion ends), which is the
+/// same numerator with p + d for p: (b - a) x (a - (p + d)), since the
+/// denominator is (b - a) x d, and d . (a - (p + d)), since it is d . d.
 template <class NT, class NumeratorSign = std::nullptr_t>
 int contact_times_on_sides(const segment_sides<NT>& sides, const point<NT>& p, const point<NT>& d, const point<NT>& a,
                            const point<NT>& b, bool bounded, time_fraction<NT> out[2], int* ends = nullptr,
@@ -116,16 +120,21 @@ int contact_times_on_sides(const segment_sides<NT>& sides, const point<NT>& p, c
     int count = 0;
     // flip: -1 when the numerator was negated with the denominator.
     const auto keep = [&](time_fraction<NT>&& t, int end, int formula, int flip) {
-        int sign = 0;
+        int sign = 0, past_end = 0;
         if constexpr (!std::is_same_v<NumeratorSign, std::nullptr_t>) {
             if (!tr::try_sign(t.num, sign)) {
-                sign = flip * numerator_sign(formula);
+                sign = flip * numerator_sign(formula, false);
                 if (sign == 0) t.num = NT(0);  // (then known exactly: a time of 0)
+            }
+            if (sign >= 0 && bounded && !tr::try_sign(t.num - t.den, past_end)) {
+                past_end = flip * numerator_sign(formula, true);
+                if (past_end == 0) t.num = t.den;  // (then known exactly: a time of 1)
             }
         } else {
             sign = tr::sign(t.num);
+            if (sign >= 0 && bounded) past_end = compare_values(t.num, t.den);
         }
-        if (sign < 0 || (bounded && compare_values(t.num, t.den) > 0)) return;
+        if (sign < 0 || past_end > 0) return;
         if (ends != nullptr) ends[count] = end;
         out[count++] = std::move(t);
     };
