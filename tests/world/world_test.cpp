@@ -1310,8 +1310,8 @@ std::vector<ring_input> snapped_rings(const polygon& p, double cell, std::size_t
             ring.vertices.push_back(v);
         }
         std::vector<point<double>> distinct = ring.vertices;
-        std::sort(distinct.begin(), distinct.end(), [](const point<double>& l, const point<double>& r) {
-            return l.x < r.x || (l.x == r.x && l.y < r.y);
+        std::sort(distinct.begin(), distinct.end(), [](const point<double>& l, const point<double>& h) {
+            return l.x < h.x || (l.x == h.x && l.y < h.y);
         });
         if (std::unique(distinct.begin(), distinct.end()) - distinct.begin() >= 3) rings.push_back(ring);
     }
