@@ -122,8 +122,10 @@ contact_result<NT> first_contact(const polygon& a, const polygon& b, const pose&
 /// start is decided in `certified` with the one-shot query's exact
 /// fallback; each event is computed and compared in `certified`, and again
 /// in Exact only when its signs are not certain; the earliest
-/// time is rounded from its site's three vertices in double words, or in
-/// Exact when their bound leaves the rounding in doubt (nearest_site_time). For
+/// time is rounded as the quotient of its doubles when `certified` holds
+/// it without error (a time of 1, at the motion's end), else from its
+/// site's three vertices in double words, or in Exact when their bound
+/// leaves the rounding in doubt (nearest_site_time). For
 /// a motion that turns: the answer of first_contact<Exact> (the same
 /// steps, the stop decided on separation<Exact>'s exact distance;
 /// docs/sweep.md); in the rational model rational_first_contact<Exact>,
@@ -175,6 +177,14 @@ contact_result<double> filtered_first_contact(const polygon& a, const polygon& b
     // the site's contact_times), exactly when their bound cannot tell.
     if (best->exact) {
         r.time = best->rounded;
+        return r;
+    }
+    // A time whose numerator and denominator `certified` holds without
+    // error (a time of 1 decided on the doubles as given: num = den = 1)
+    // rounds as their quotient in double, IEEE 754's division being
+    // correctly rounded, ties to even, as nearest_double.
+    if (best->fast && best->fast->num.exact() && best->fast->den.exact()) {
+        r.time = best->fast->num.value() / best->fast->den.value();
         return r;
     }
     if (certain_nearest(site_reaching_time(a, b, m.start, displacement<double_word>(from, to), best->site), r.time))

@@ -128,7 +128,7 @@ int contact_times_on_sides(const segment_sides<NT>& sides, const point<NT>& p, c
             }
             if (sign >= 0 && bounded && !tr::try_sign(t.num - t.den, past_end)) {
                 past_end = flip * numerator_sign(formula, true);
-                if (past_end == 0) t.num = t.den;  // (then known exactly: a time of 1)
+                if (past_end == 0) t.num = t.den = NT(1);  // (then known exactly: a time of 1)
             }
         } else {
             sign = tr::sign(t.num);
