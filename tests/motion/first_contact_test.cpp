@@ -123,9 +123,10 @@ constexpr double double_time_error = 1e-9;
 /// the exact time and the same features, double the same contact within
 /// double_time_error (near-misses in double excepted: counted), or none
 /// when `double_may_miss` (a contact exactly as the motion ends, which
-/// double's rounded events may place just past it).
-void check_translation(const polygon& a, const polygon& b, const pose& from, const pose& to, contact_tally& t,
-                       bool double_may_miss = false) {
+/// double's rounded events may place just past it). Returns the certified
+/// answer.
+contact_result<double> check_translation(const polygon& a, const polygon& b, const pose& from, const pose& to,
+                                         contact_tally& t, bool double_may_miss = false) {
     INFO(describe_motion(a, b, from, to));
     const exact_scene s(a, b, from, to);
     const std::optional<FT> expected = test_exact::first_contact(s.a, s.b0, s.d);
@@ -138,7 +139,7 @@ void check_translation(const polygon& a, const polygon& b, const pose& from, con
     if (!expected) {
         ++t.none;
         CHECK_FALSE(db.contact);
-        return;
+        return ce;
     }
     CHECK(ex.time == *expected);
     (ex.time == 0 ? t.at_start : t.later) += 1;
@@ -161,6 +162,7 @@ void check_translation(const polygon& a, const polygon& b, const pose& from, con
         t.worst_double = std::max(t.worst_double, err);
         CHECK(err <= double_time_error);
     }
+    return ce;
 }
 
 /// A translation of B from beyond A's reach through a random point near A
@@ -413,8 +415,7 @@ TEST_CASE("sweep: real neighbours translated back to their place, touching as th
             const pose from{out.x - aside * out.y, out.y + aside * out.x, 0}, place{0, 0, 0};
             for (const auto& [s, m, f] : {std::tuple{&a, &b, from}, std::tuple{&b, &a, pose{-from.tx, -from.ty, 0}}}) {
                 // (Double's rounded events may fall just past the end.)
-                check_translation(*s, *m, f, place, t, true);
-                at_end += certified_first_contact(*s, *m, f, place).time == 1;
+                at_end += check_translation(*s, *m, f, place, t, true).time == 1;
             }
         }
     });
