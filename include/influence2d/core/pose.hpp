@@ -45,8 +45,7 @@ struct rotation_pose {
     explicit rotation_pose(const pose& p) : tx(p.tx), ty(p.ty) {
         check(p);
         if (p.theta != 0) {
-            c = std::cos(p.theta);
-            s = std::sin(p.theta);
+            cosine_and_sine(p.theta);
         } else {
             s = p.theta;  // (c keeps its 1)
         }
@@ -94,6 +93,22 @@ struct rotation_pose {
     }
 
 private:
+    // c = std::cos(theta) and s = std::sin(theta). With the GNU C library
+    // both come from one call of its sincos, which reduces the argument once
+    // and then runs the same kernels as its sin and cos: the same doubles
+    // (tests/core/pose_test.cpp compares them bit for bit on millions of
+    // angles) in about 10 ns, where the two calls take 17 ns. g++ 12 at -O2
+    // makes that one call of the two on its own; clang 14 does not.
+    // Elsewhere the two calls.
+    void cosine_and_sine(double theta) {
+#if defined(__GLIBC__) && defined(_GNU_SOURCE)
+        ::sincos(theta, &s, &c);
+#else
+        c = std::cos(theta);
+        s = std::sin(theta);
+#endif
+    }
+
     // x + t in NT: the double x + t when it is one, else the sum in NT.
     template <class NT>
     static NT translated(double x, double t) {
