@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -108,10 +109,20 @@ std::optional<double> double_between(const time_fraction<NT>& s0, const time_fra
     const double hi = tr::to_double(s1.num) / tr::to_double(s1.den);
     const double x = lo + (hi - lo) / 2;
     if (!std::isfinite(x)) return std::nullopt;
-    try {
-        const NT nx = tr::from_double(x);
-        if (compare_values<NT>(s0.num, nx * s0.den) < 0 && compare_values<NT>(s1.num, nx * s1.den) > 0) return x;
-    } catch (const uncertain_sign&) {}
+    const NT nx = tr::from_double(x);
+    if constexpr (has_try_sign<NT>::value) {
+        // (A sign the bound leaves in doubt only leaves the other route:
+        // asked with try_sign, which notes no doubt, so that a meeting test
+        // in a doubt_noting scope is not dropped for it.)
+        int below = 0, above = 0;
+        if (tr::try_sign(s0.num - nx * s0.den, below) && below < 0 && tr::try_sign(s1.num - nx * s1.den, above) &&
+            above > 0)
+            return x;
+    } else {
+        try {
+            if (compare_values<NT>(s0.num, nx * s0.den) < 0 && compare_values<NT>(s1.num, nx * s1.den) > 0) return x;
+        } catch (const uncertain_sign&) {}
+    }
     return std::nullopt;
 }
 
@@ -506,7 +517,8 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
 /// reaching parallel lines together, same_reaching_time). Two events it
 /// cannot order otherwise are ordered on their sites' times in double
 /// words, else in Exact (`settle`); a meeting test it leaves in doubt is
-/// done again in Exact at the events' exact times (`redo`). Any other sign
+/// done again in double words at the events' times in double words, else in
+/// Exact at their exact times (`redo`). Any other sign
 /// that `certified` cannot settle (coordinates far from 1 in scale, say)
 /// sends the query to exit_search<Exact> whole. Throws as exit_distance.
 /// `*by_filter`, when given, says whether the search in `certified`
@@ -516,8 +528,8 @@ NT exit_distance(const polygon& a, const polygon& b, const pose& q, double dx, d
 ///
 ///   (exit, event) <- exit_search<certified> (B not turned: the doubles as
 ///                    given decide the sides, numerators and ties above;
-///                    other doubtful orders in double words or Exact, doubtful
-///                    meeting tests in Exact), or on uncertain_sign
+///                    other doubtful orders and meeting tests in double
+///                    words or Exact), or on uncertain_sign
 ///                    exit_search<Exact>
 ///   no event:                      0
 ///   the event's time times 2^shift, rounded to the nearest double: in
@@ -549,6 +561,20 @@ double filtered_exit_distance(const polygon& a, const polygon& b, const pose& q,
         if (scaled) times[e.which].num *= u.factor<W>();
         return std::move(times[e.which]);
     };
+    // An event's time in double words, kept once computed with no sign in
+    // doubt (events a few units in the last place apart are each compared
+    // with several others while their window is sorted, and bound the
+    // meeting tests between them); none when the bound leaves one in doubt.
+    using event_key = std::tuple<bool, std::uint32_t, std::uint32_t, int>;
+    std::map<event_key, time_fraction<double_word>> word_times;
+    const auto word_time = [&](const timed_site<certified>& e) -> const time_fraction<double_word>* {
+        const event_key key{e.site.moving_vertex, e.site.vertex, e.site.edge, e.which};
+        if (const auto kept = word_times.find(key); kept != word_times.end()) return &kept->second;
+        std::optional<time_fraction<double_word>> x = noted_fallback::run(
+            [&] { return std::optional<time_fraction<double_word>>(event_time(double_word{}, e, false)); },
+            [] { return std::optional<time_fraction<double_word>>(); });
+        return x ? &word_times.emplace(key, std::move(*x)).first->second : nullptr;
+    };
     const bool unturned = t.c == 1 && t.s == 0;
     const pose along{u.dx, u.dy, 0};
     // Two events that certified cannot order: one time when the doubles as
@@ -559,37 +585,54 @@ double filtered_exit_distance(const polygon& a, const polygon& b, const pose& q,
             (l.passage && r->passage ? same_passage_time(a, b, {0, 0}, {u.dx, u.dy}, *l.passage, *r->passage)
                                      : same_reaching_time(a, b, pose{}, along, l.site, r->site)))
             return 0;
-        const auto in = [&](auto tag) {
-            using W = decltype(tag);
-            const time_fraction<W> zero{W(0), W(1)};
-            return std::pair<time_fraction<W>, time_fraction<W>>(event_time(tag, l, false),
-                                                                 r ? event_time(tag, *r, false) : zero);
-        };
-        const std::optional<int> in_words = noted_fallback::run(
-            [&] {
-                const auto [x, y] = in(double_word{});
-                return certain_time_order(x, y);
-            },
-            [] { return std::optional<int>(); });
-        if (in_words) return *in_words;
-        const auto [x, y] = in(Exact{});
-        return compare_times(x, y);
+        const time_fraction<double_word> zero{double_word(0), double_word(1)};
+        const time_fraction<double_word>*x = word_time(l), *y = r ? word_time(*r) : &zero;
+        if (x != nullptr && y != nullptr)
+            if (const std::optional<int> o = certain_time_order(*x, *y)) return *o;
+        const time_fraction<Exact> exact_zero{Exact(0), Exact(1)};
+        return compare_times(event_time(Exact{}, l, false), r ? event_time(Exact{}, *r, false) : exact_zero);
     };
     struct settler {
         const decltype(order_of)& order;
         int operator()(const timed_site<certified>& l, const timed_site<certified>& r) const { return order(l, &r); }
         int operator()(const timed_site<certified>& e) const { return order(e, nullptr); }
     } settle{order_of};
-    // The witness between two events where certified leaves a meeting test
-    // in doubt: the same tests in Exact, at the events' exact times.
+    // The witness between two events (last none: 0), or at 0 (both none),
+    // in W: A and B placed in W once (`frame`), the events' times in W.
+    const auto witness_in = [&](auto tag, auto& frame, const timed_site<certified>* last,
+                                const timed_site<certified>* following) {
+        using W = decltype(tag);
+        using wt = number_traits<W>;
+        if (!frame) frame.emplace(a, b, t, point<W>{wt::from_double(u.dx), wt::from_double(u.dy)});
+        if (following == nullptr) return placed_meet(frame->a, frame->b, placing_margin<W>(scale));
+        // (In double words the kept times; one missing is a doubt, raised.)
+        const auto time_of = [&](const timed_site<certified>& e) {
+            if constexpr (std::is_same_v<W, double_word>) {
+                const time_fraction<double_word>* x = word_time(e);
+                if (x == nullptr) throw uncertain_sign();
+                return *x;
+            } else {
+                return event_time(tag, e, false);
+            }
+        };
+        const time_fraction<W> s0 = last ? time_of(*last) : time_fraction<W>{W(0), W(1)};
+        return witness_between(*frame, s0, time_of(*following), last ? &last->site : nullptr, scale,
+                               std::fabs(u.dx) + std::fabs(u.dy));
+    };
+    // Where certified leaves a meeting test in doubt (B between two events
+    // a few units in the last place apart, within rounding of touching A):
+    // the same tests in double words, else in Exact. (A frame placed in a
+    // test whose doubt was noted is dropped with its answer.)
+    std::optional<translation_frame<double_word>> word_frame;
     std::optional<translation_frame<Exact>> exact_frame;
     const auto redo = [&](const timed_site<certified>* last, const timed_site<certified>* following) {
-        if (!exact_frame) exact_frame.emplace(a, b, t, point<Exact>{Exact(u.dx), Exact(u.dy)});
-        if (following == nullptr) return placed_meet(exact_frame->a, exact_frame->b, placing_margin<Exact>(scale));
-        const time_fraction<Exact> s0 =
-            last ? event_time(Exact{}, *last, false) : time_fraction<Exact>{Exact(0), Exact(1)};
-        return witness_between(*exact_frame, s0, event_time(Exact{}, *following, false), last ? &last->site : nullptr,
-                               scale, std::fabs(u.dx) + std::fabs(u.dy));
+        const std::optional<meeting> in_words = noted_fallback::run(
+            [&] { return std::optional<meeting>(witness_in(double_word{}, word_frame, last, following)); },
+            [&] {
+                word_frame.reset();
+                return std::optional<meeting>();
+            });
+        return in_words ? *in_words : witness_in(Exact{}, exact_frame, last, following);
     };
     return fallback<>::run(
         [&] {
