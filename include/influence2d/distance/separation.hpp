@@ -423,7 +423,7 @@ chosen_pair<NT> settled_choice(const search_input& in, Approx& approx, const sea
         if (!settled) return best;
         pair = std::make_pair(settled->static_edge, settled->moving_edge);
     }
-    const auto [e, f] = *pair;
+    const std::uint32_t e = pair->first, f = pair->second;
     const std::size_t e2 = in.a.next(e), f2 = in.b.next(f);
     ++evaluated;
     if (!settled) {
