@@ -427,6 +427,28 @@ TEST_CASE("sweep: real neighbours translated back to their place, touching as th
     CHECK(at_end * 2 > t.motions);
 }
 
+TEST_CASE("sweep: real neighbours translated back past their place, passing within rounding of it",
+          "[sweep][reference][real]") {
+    // As above, but B goes on past its place to -0.37 of the push (straight
+    // or from aside by 0.3): no time of the motion puts B exactly where it
+    // stands in the layer, its shared vertices passing within rounding of
+    // their twins at events a few units in the last place apart that no
+    // tie on the doubles as given shows. `certified` cannot order them; they
+    // are ordered in double words, else in exact rationals. The roles
+    // swapped too.
+    contact_tally t;
+    const std::size_t wanted = static_cast<std::size_t>(test_effort::scaled(6));
+    const std::size_t pairs = pushed_neighbours(6, wanted, [&](const polygon& a, const polygon& b, point<double> out) {
+        for (const double aside : {0.0, 0.3}) {
+            const pose from{out.x - aside * out.y, out.y + aside * out.x, 0}, past{-0.37 * out.x, -0.37 * out.y, 0};
+            check_translation(a, b, from, past, t);
+            check_translation(b, a, pose{-from.tx, -from.ty, 0}, pose{-past.tx, -past.ty, 0}, t);
+        }
+    });
+    CHECK(pairs == wanted);
+    CHECK(t.none == 0);
+}
+
 TEST_CASE("sweep: events a unit in the last place apart are not taken as one time", "[sweep][reference]") {
     // B falls onto A from 2^20 above: two of its vertices, one a unit in the
     // last place higher (2^-32) and first in site order, over A's flat top;

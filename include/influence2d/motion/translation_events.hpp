@@ -578,9 +578,13 @@ struct filtered_event {
     std::optional<time_fraction<certified>> fast;  ///< the time in certified, when certain
     std::optional<vertex_passage> passage;         ///< the vertices it passes through, when the frame names them
     std::optional<time_fraction<Exact>> exact;     ///< the exact time, once asked
-    double rounded = 0;                            ///< the exact time's nearest double, with exact
-    double below = 0;                              ///< a double at most the exact time, with exact
-    double above = 0;                              ///< a double at least the exact time, with exact
+    /// The time in double words, once asked with no sign in doubt (none
+    /// when one was, or not yet asked: `words_asked`).
+    std::optional<time_fraction<double_word>> words;
+    bool words_asked = false;  ///< whether `words` was asked
+    double rounded = 0;        ///< the exact time's nearest double, with exact
+    double below = 0;          ///< a double at most the exact time, with exact
+    double above = 0;          ///< a double at least the exact time, with exact
 
     /// A double above the time: from the exact time's neighbours, else from
     /// the certified time's bounds (num at most its value plus its error,
@@ -653,10 +657,13 @@ inline bool same_passage_time(const polygon& a, const polygon& b, point<double> 
 /// The sign of c's time minus e's: in certified when both have one and the
 /// bound settles it; else 0 when `same_time(c, e)` shows them
 /// equal; else c's certified time against the doubles around e's exact
-/// time; else exactly (`exact_time` computes a site's exact time: it
-/// exists, both events having one).
-template <class Exact, class SameTime, class ExactTime>
-int order(filtered_event<Exact>& c, filtered_event<Exact>& e, SameTime&& same_time, ExactTime&& exact_time) {
+/// time; else in double words when their bound settles it (`word_time`
+/// computes a site's time in double words, none when a sign is in doubt;
+/// each event's kept); else exactly (`exact_time` computes a site's exact
+/// time: it exists, both events having one).
+template <class Exact, class SameTime, class WordTime, class ExactTime>
+int order(filtered_event<Exact>& c, filtered_event<Exact>& e, SameTime&& same_time, WordTime&& word_time,
+          ExactTime&& exact_time) {
     if (c.fast && e.fast)
         if (const std::optional<int> o = certain_time_order(*c.fast, *e.fast)) return *o;
     if (same_time(c, e)) return 0;
@@ -665,6 +672,15 @@ int order(filtered_event<Exact>& c, filtered_event<Exact>& e, SameTime&& same_ti
         if (above && *above > 0) return 1;
         const std::optional<int> below = compare_time_with(*c.fast, e.below);
         if (below && *below < 0) return -1;
+    }
+    if (!c.exact || !e.exact) {
+        for (filtered_event<Exact>* x : {&c, &e})
+            if (!x->words_asked) {
+                x->words = word_time(x->site);
+                x->words_asked = true;
+            }
+        if (c.words && e.words)
+            if (const std::optional<int> o = certain_time_order(*c.words, *e.words)) return *o;
     }
     for (filtered_event<Exact>* x : {&c, &e})
         if (!x->exact) x->set_exact(*exact_time(x->site));
@@ -697,7 +713,8 @@ inline double estimated_time(const polygon& a, const polygon& b, const std::vect
 ///       else its time in `certified`, in the exact field Exact when its
 ///       signs are not certain; compared with the best in certified, or
 ///       when the bound cannot settle the order, equal when B is not turned
-///       and same_reaching_time shows it, else exactly (order)
+///       and same_reaching_time shows it, else in double words, else
+///       exactly (order)
 ///
 /// The double times order the sites so that the earliest is met first and
 /// most others are then skipped by their paths alone; neither the order
@@ -716,6 +733,12 @@ std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const p
         if (!exact_d) exact_d = displacement<Exact>(from, to);
         return site_time(a, b, start, *exact_d, s);
     };
+    // (A doubt in double words noted, not raised: the time is then none.)
+    const point<double_word> word_d = displacement<double_word>(from, to);
+    const auto word_time = [&](const contact_site& s) {
+        return noted_fallback::run([&] { return site_time(a, b, start, word_d, s); },
+                                   [] { return std::optional<time_fraction<double_word>>(); });
+    };
     std::optional<filtered_event<Exact>> best;
     const std::vector<point<double>>& b_start = fast.b.approx();
     const point<double> sweep{to.tx - from.tx, to.ty - from.ty};
@@ -728,7 +751,8 @@ std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const p
             const double u = std::min(1.0, best->time_above());
             if (!site_may_meet(a, b, b_start, {0, 0}, {u * sweep.x, u * sweep.y}, e, s)) return;
         }
-        filtered_event<Exact> c{s, std::nullopt, std::nullopt, std::nullopt};
+        filtered_event<Exact> c{};
+        c.site = s;
         // (A doubt of the site's time in certified noted, not raised:
         // noted_fallback.)
         const bool certain = noted_fallback::run(
@@ -754,7 +778,7 @@ std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const p
                         return same_passage_time(a, b, {from.tx, from.ty}, {to.tx, to.ty}, *l.passage, *r.passage);
                     return same_reaching_time(a, b, from, to, l.site, r.site);
                 },
-                exact_time);
+                word_time, exact_time);
             if (o > 0 || (o == 0 && !site_before(s, best->site))) return;
         }
         best = std::move(c);

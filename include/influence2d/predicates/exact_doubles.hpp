@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "influence2d/core/point.hpp"
+#include "influence2d/number/double_word.hpp"
 #include "influence2d/number/exact_sum.hpp"
 #include "influence2d/predicates/orientation.hpp"
 
@@ -60,8 +61,10 @@ inline bool exact_difference(const point<double>& x, const point<double>& y, poi
 /// with direction d (a point v of a polygon translated by t, moving by
 /// to - from). When the differences d, a - v and then a - v - t are
 /// doubles (exact_difference), the orientation of 0, d and that point
-/// (orientation_of_doubles); else the twelve products of its
-/// expansion summed exactly. The
+/// (orientation_of_doubles); else in double words when their bound settles
+/// it (a point that passes within rounding of a vertex, not through it: a
+/// side of about 2^-53 of the coordinates' products, which the words' 2^-100
+/// settle); else the twelve products of its expansion summed exactly. The
 /// same sign is that of a against -d's line through v + t: a vertex of the
 /// still polygon moving by -d relative to the other.
 inline int exact_translated_side(const point<double>& from, const point<double>& to, const point<double>& a,
@@ -69,6 +72,10 @@ inline int exact_translated_side(const point<double>& from, const point<double>&
     point<double> d, av, w;
     if (exact_difference(to, from, d) && exact_difference(a, v, av) && exact_difference(av, t, w))
         return orientation_of_doubles(0, 0, d.x, d.y, w.x, w.y);  // d x w
+    const double_word dx = double_word(to.x) - double_word(from.x), dy = double_word(to.y) - double_word(from.y);
+    const double_word wx = double_word(a.x) - double_word(v.x) - double_word(t.x),
+                      wy = double_word(a.y) - double_word(v.y) - double_word(t.y);
+    if (int sign = 0; (dx * wy - dy * wx).try_sign(sign)) return sign;
     exact_sum::accumulator sum;
     for (const auto& [q, sign] : {std::pair<const point<double>*, double>{&a, 1}, {&v, -1}, {&t, -1}}) {
         sum.add_product(sign * to.x, q->y);
@@ -83,14 +90,18 @@ inline int exact_translated_side(const point<double>& from, const point<double>&
 /// finite doubles as given: 0 when the offsets a - v and a2 - v2 reach as
 /// far along d. When d, the offsets and their difference g are doubles
 /// (exact_difference), d . g as the orientation of 0, d and g turned a
-/// quarter (orientation_of_doubles); else its sixteen products summed
-/// exactly.
+/// quarter (orientation_of_doubles); else in double words when their bound
+/// settles it; else its sixteen products summed exactly.
 inline int exact_offsets_along(const point<double>& from, const point<double>& to, const point<double>& a,
                                const point<double>& v, const point<double>& a2, const point<double>& v2) {
     point<double> d, o, o2, g;
     if (exact_difference(to, from, d) && exact_difference(a, v, o) && exact_difference(a2, v2, o2) &&
         exact_difference(o, o2, g))
         return orientation_of_doubles(0, 0, d.x, d.y, -g.y, g.x);  // d . g = d x (-g.y, g.x)
+    const double_word dx = double_word(to.x) - double_word(from.x), dy = double_word(to.y) - double_word(from.y);
+    const double_word gx = (double_word(a.x) - double_word(v.x)) - (double_word(a2.x) - double_word(v2.x)),
+                      gy = (double_word(a.y) - double_word(v.y)) - (double_word(a2.y) - double_word(v2.y));
+    if (int sign = 0; (dx * gx + dy * gy).try_sign(sign)) return sign;
     exact_sum::accumulator sum;
     for (const auto& [q, sign] : {std::pair<const point<double>*, double>{&a, 1}, {&v, -1}, {&a2, -1}, {&v2, 1}}) {
         sum.add_product(sign * to.x, q->x);
