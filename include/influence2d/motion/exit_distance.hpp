@@ -561,19 +561,25 @@ double filtered_exit_distance(const polygon& a, const polygon& b, const pose& q,
         if (scaled) times[e.which].num *= u.factor<W>();
         return std::move(times[e.which]);
     };
-    // An event's time in double words, kept once computed with no sign in
-    // doubt (events a few units in the last place apart are each compared
-    // with several others while their window is sorted, and bound the
-    // meeting tests between them); none when the bound leaves one in doubt.
+    // An event's time in double words, kept once computed (events a few
+    // units in the last place apart are each compared with several others
+    // while their window is sorted, and bound the meeting tests between
+    // them); none when the bound leaves a sign in doubt, kept as none too.
     using event_key = std::tuple<bool, std::uint32_t, std::uint32_t, int>;
-    std::map<event_key, time_fraction<double_word>> word_times;
+    std::map<event_key, std::optional<time_fraction<double_word>>> word_times;
     const auto word_time = [&](const timed_site<certified>& e) -> const time_fraction<double_word>* {
         const event_key key{e.site.moving_vertex, e.site.vertex, e.site.edge, e.which};
-        if (const auto kept = word_times.find(key); kept != word_times.end()) return &kept->second;
-        std::optional<time_fraction<double_word>> x = noted_fallback::run(
-            [&] { return std::optional<time_fraction<double_word>>(event_time(double_word{}, e, false)); },
-            [] { return std::optional<time_fraction<double_word>>(); });
-        return x ? &word_times.emplace(key, std::move(*x)).first->second : nullptr;
+        auto kept = word_times.find(key);
+        if (kept == word_times.end())
+            kept = word_times
+                       .emplace(key, noted_fallback::run(
+                                         [&] {
+                                             return std::optional<time_fraction<double_word>>(
+                                                 event_time(double_word{}, e, false));
+                                         },
+                                         [] { return std::optional<time_fraction<double_word>>(); }))
+                       .first;
+        return kept->second ? &*kept->second : nullptr;
     };
     const bool unturned = t.c == 1 && t.s == 0;
     const pose along{u.dx, u.dy, 0};
