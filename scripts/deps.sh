@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: BSL-1.0
 # Installs the Debian packages the build needs, only those missing.
 set -euo pipefail
-packages=(g++ cmake make clang-format libcgal-dev libgmp-dev libmpfr-dev libboost-dev catch2 libcli11-dev nlohmann-json3-dev gnuplot-nox
+packages=(g++ cmake make clang clang-format libcgal-dev libgmp-dev libmpfr-dev libboost-dev catch2 libcli11-dev nlohmann-json3-dev gnuplot-nox
     libgeos-dev libbox2d-dev doxygen libtbb-dev
     pybind11-dev python3-dev python3-numpy python3-shapely python3-pandas python3-dask python3-distributed python3-pytest
     python3-geopandas)
