@@ -122,3 +122,43 @@ TEST_CASE("edge tree frames: two small polygons test every pair's boxes, as the 
                   {"irregular_8", "convex_8"}},
                  test_effort::scaled(60), 241);
 }
+
+TEST_CASE("edge tree frames: a B of more than 2,048 edges takes the trees on small steps, as the reference",
+          "[detect][tree]") {
+    // B's chunks alone exceed the candidates' bound: each frame, small steps
+    // of a trajectory included, goes to the trees without gathering
+    // candidates (candidates_can_pay), and answers as brute force.
+    std::mt19937_64 rng(2049);
+    std::uniform_real_distribution<double> radius(0.6, 1.0);
+    const std::size_t n = 2600;
+    std::vector<point<double>> star(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const double phi = 2 * std::acos(-1.0) * static_cast<double>(k) / static_cast<double>(n), r = 40 * radius(rng);
+        star[k] = {r * std::cos(phi), r * std::sin(phi)};
+    }
+    const polygon b(std::vector<ring_input>{{star, ring_role::outer}});
+    const polygon a = family_polygon("irregular_64");
+    const std::vector<pose> line = linear_trajectory(a, b, 9000);
+    const std::size_t count = static_cast<std::size_t>(test_effort::scaled(400));
+    const std::vector<pose> poses(line.end() - static_cast<std::ptrdiff_t>(count), line.end());
+    for (double d : {0.0, 0.5}) {
+        detector_options o;
+        o.witness = true;
+        o.distance = d;
+        detector<double> det(a, b, o);
+        brute_force_detector<double> ref(a, b, o);
+        std::size_t collisions = 0;
+        for (std::size_t k = 0; k < poses.size(); ++k) {
+            const frame_result want = ref.collide(poses[k]);
+            const frame_result got = det.collide(poses[k]);
+            INFO("d " << d << " frame " << k);
+            REQUIRE(got.collides == want.collides);
+            REQUIRE(got.pairs == want.pairs);
+            collisions += want.collides;
+        }
+        CHECK(collisions > 0);
+        CHECK(collisions < poses.size());
+        CHECK(det.statistics().candidate_rebuilds == 0);
+        CHECK(det.statistics().jump_frames > 0);
+    }
+}

@@ -122,7 +122,8 @@ struct distance_state {
 ///   pair that met last (features::coherence) meets again by the pair tests
 ///   (last_pair_meets):                                          they meet
 ///   p jumped (a random pose, a first frame far from the last, or no
-///   features::coherence: coherent_step):
+///   features::coherence: coherent_step), or B has more chunks than the
+///   candidates' bound allows with any candidate (candidates_can_pay):
 ///       A and B convex, their inner discs certainly overlap
 ///           (inner_discs_overlap):                              they meet
 ///           (with witnesses: the pairs below, no containment)
@@ -378,7 +379,7 @@ private:
             tally(&detector_statistics::last_pair_frames);
             return {true, {}};
         }
-        if (!coherent_step(f)) {
+        if (!candidates_can_pay() || !coherent_step(f)) {
             if (!convex_route_ && inner_discs_overlap(f))
                 return witnessing() ? convex_pairs(f) : frame_result{true, {}};
             return every_pair_pays() ? every_pair(f) : pairs_through_trees(f);
@@ -631,6 +632,12 @@ private:
     /// border) would pay for the whole boundary within reach at every frame,
     /// where the trees traversed together pay for the edges that meet.
     bool candidates_pay() const { return candidate_estimate_ * chunks_.size() <= candidate_chunk_limit; }
+    /// Whether candidates_pay can hold for any frame that finds one: not when
+    /// B's chunks alone exceed its bound (a B of more than
+    /// candidate_chunk_limit * chunk_edges edges). Such a B takes the trees
+    /// at once: gathering the candidates and testing B's chunks against A's
+    /// circle first would cost more than the trees' frame they lead to.
+    bool candidates_can_pay() const { return chunks_.size() <= candidate_chunk_limit; }
 
     /// When B's edges keep off A's bounding circle: no boundary pair.
     /// B's vertices lie outside A's circle, so outside A; A lies wholly in
