@@ -25,7 +25,6 @@
 #include <functional>
 #include <iostream>
 #include <memory>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -46,11 +45,9 @@ namespace influence2d::cli {
 
 namespace {
 
-using verification::named_polygon;
-using verification::pushed_apart;
+using verification::pose_orders;
 using verification::real_pair;
 using verification::study_pairs;
-using verification::walk;
 using clock_type = std::chrono::steady_clock;
 
 /// A method: built for the pair (outside the time), then asked every pose of
@@ -214,15 +211,9 @@ void run(const bench_options& o) {
     for (const real_pair& p : study_pairs()) {
         const polygon a = named_polygon(o.layers, p.layer, p.a), b = named_polygon(o.layers, p.layer, p.b);
         const std::string name = p.a + " x " + p.b;
-        std::vector<pose> poses = walk(p, o.poses, o.seed);
         std::cerr << "real bench: " << name << "\n";
-        for (const row& r : run_order(name, "walk", a, b, poses, o.runs, o.budget)) rows.push_back(r);
-        std::vector<pose> apart = pushed_apart(p, a, b, poses);
-        std::shuffle(poses.begin(), poses.end(), std::mt19937_64(o.seed + 1));
-        for (const row& r : run_order(name, "shuffled", a, b, poses, o.runs, o.budget)) rows.push_back(r);
-        for (const row& r : run_order(name, "apart, walk", a, b, apart, o.runs, o.budget)) rows.push_back(r);
-        std::shuffle(apart.begin(), apart.end(), std::mt19937_64(o.seed + 2));
-        for (const row& r : run_order(name, "apart, shuffled", a, b, apart, o.runs, o.budget)) rows.push_back(r);
+        for (const auto& [order, poses] : pose_orders(p, a, b, o.poses, o.seed))
+            for (const row& r : run_order(name, order, a, b, poses, o.runs, o.budget)) rows.push_back(r);
     }
     const std::string text = table(rows);
     std::cout << text;

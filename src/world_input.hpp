@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -74,6 +75,26 @@ inline polygon_lines read_polygon_lines(const std::string& path) {
     if (out.polygons.empty())
         throw invalid_input(shown + ": no polygon: expected one POLYGON or MULTIPOLYGON per line");
     return out;
+}
+
+/// The polygon named `name` in DIR/LAYER.wkt (read_polygon_lines): the one
+/// whose index is that of the line `name` in DIR/LAYER.names
+/// (scripts/real_layers.sh writes both). Throws std::invalid_argument for a
+/// names file that cannot be read or lacks the name, or a WKT file of fewer
+/// polygons; invalid_input as read_polygon_lines does.
+inline polygon named_polygon(const std::string& dir, const std::string& layer, const std::string& name) {
+    const std::string names_path = dir + "/" + layer + ".names";
+    std::ifstream names(names_path);
+    if (!names) throw std::invalid_argument(names_path + ": cannot be read (make it with scripts/real_layers.sh)");
+    std::string line;
+    std::size_t index = 0;
+    for (; std::getline(names, line); ++index)
+        if (line == name) break;
+    if (line != name) throw std::invalid_argument(names_path + ": no polygon named '" + name + "'");
+    const polygon_lines all = read_polygon_lines(dir + "/" + layer + ".wkt");
+    if (index >= all.polygons.size())
+        throw std::invalid_argument(dir + "/" + layer + ".wkt: fewer polygons than names in " + names_path);
+    return all.polygons[index];
 }
 
 /// Throws invalid_input naming the file and line of the first polygon that

@@ -2,23 +2,23 @@
 #pragma once
 // The pairs of real polygons of the time study on real layers
 // (src/real_bench.cpp, scripts/profile/real_frames.cpp): which polygons of
-// which layer (scripts/real_layers.sh), the range of their poses, the random
-// walk through it and the walk's poses pushed just clear of the static
-// polygon. Made from a seed alone; no method sees them before its timed loop.
+// which layer (scripts/real_layers.sh; src/world_input.hpp's named_polygon
+// reads them), the range of their poses, the random walk through it, the
+// walk's poses pushed just clear of the static polygon, and the four orders
+// the study asks them in. Made from a seed alone; no method sees them before
+// its timed loop.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
 #include <random>
-#include <sstream>
-#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/exact/certified_detector.hpp"
-#include "influence2d/io/wkt.hpp"
 
 namespace influence2d::verification {
 
@@ -50,30 +50,6 @@ inline const std::vector<real_pair>& study_pairs() {
         {"counties", "Jones", "Craven", 0.05, 0.0005},
     };
     return pairs;
-}
-
-/// The polygon named `name` in DIR/LAYER.wkt: the one on the non-blank line
-/// whose index is that of the line `name` in DIR/LAYER.names
-/// (scripts/real_layers.sh writes both). Throws std::invalid_argument for a
-/// names file that cannot be read or lacks the name, invalid_input (naming
-/// the file and line) for a WKT file that cannot be read or a bad line.
-inline polygon named_polygon(const std::string& dir, const std::string& layer, const std::string& name) {
-    const std::string names_path = dir + "/" + layer + ".names", wkt_path = dir + "/" + layer + ".wkt";
-    std::ifstream names(names_path);
-    if (!names) throw std::invalid_argument(names_path + ": cannot be read (make it with scripts/real_layers.sh)");
-    std::string line;
-    std::size_t index = 0;
-    for (; std::getline(names, line); ++index)
-        if (line == name) break;
-    if (line != name) throw std::invalid_argument(names_path + ": no polygon named '" + name + "'");
-    std::istringstream text(read_wkt_text_file(wkt_path));
-    std::size_t line_no = 0, seen = 0;
-    while (std::getline(text, line)) {
-        ++line_no;
-        if (line.find_first_not_of(" \t\r\f\v") == std::string::npos) continue;
-        if (seen++ == index) return read_wkt(line, wkt_path + ": line " + std::to_string(line_no));
-    }
-    throw std::invalid_argument(wkt_path + ": fewer polygons than names in " + names_path);
 }
 
 /// `count` poses of a random walk within the pair's range: each step moves
@@ -121,6 +97,23 @@ inline std::vector<pose> pushed_apart(const real_pair& p, const polygon& a, cons
         out.push_back(at(apart));
     }
     return out;
+}
+
+/// The study's four orders of one pair's poses, each named: the walk of
+/// `count` poses from `seed`, the same poses shuffled (seed + 1), the walk's
+/// poses pushed apart, and those shuffled (seed + 2).
+inline std::vector<std::pair<std::string, std::vector<pose>>> pose_orders(const real_pair& p, const polygon& a,
+                                                                          const polygon& b, std::size_t count,
+                                                                          std::uint64_t seed) {
+    std::vector<pose> poses = walk(p, count, seed);
+    std::vector<pose> apart = pushed_apart(p, a, b, poses);
+    std::vector<pose> shuffled = poses, apart_shuffled = apart;
+    std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937_64(seed + 1));
+    std::shuffle(apart_shuffled.begin(), apart_shuffled.end(), std::mt19937_64(seed + 2));
+    return {{"walk", std::move(poses)},
+            {"shuffled", std::move(shuffled)},
+            {"apart, walk", std::move(apart)},
+            {"apart, shuffled", std::move(apart_shuffled)}};
 }
 
 }  // namespace influence2d::verification

@@ -11,20 +11,20 @@
 // candidate edges, segment tests), tab-separated.
 //   real_frames LAYERS_DIR [POSES]
 
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <random>
 #include <string>
 #include <vector>
 
 #include <valgrind/callgrind.h>
 
 #include "influence2d/detect/detector.hpp"
+#include "src/world_input.hpp"
 #include "verification/real_pairs.hpp"
 
 using namespace influence2d;
 using namespace influence2d::verification;
+using influence2d::cli::named_polygon;
 
 int main(int argc, char** argv) {
     if (argc < 2) {
@@ -37,28 +37,20 @@ int main(int argc, char** argv) {
     int sink = 0;
     for (const real_pair& p : study_pairs()) {
         const polygon a = named_polygon(layers, p.layer, p.a), b = named_polygon(layers, p.layer, p.b);
-        std::vector<pose> poses = walk(p, count, seed);
-        std::vector<pose> apart = pushed_apart(p, a, b, poses);
-        std::vector<pose> shuffled = poses, apart_shuffled = apart;
-        // (The bench's shuffles: the same seeds.)
-        std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937_64(seed + 1));
-        std::shuffle(apart_shuffled.begin(), apart_shuffled.end(), std::mt19937_64(seed + 2));
-        const std::pair<const char*, const std::vector<pose>*> orders[] = {
-            {"walk", &poses}, {"shuffled", &shuffled}, {"apart, walk", &apart}, {"apart, shuffled", &apart_shuffled}};
-        for (const auto& [order, list] : orders) {
+        for (const auto& [order, list] : pose_orders(p, a, b, count, seed)) {
             detector<double> d(a, b);
             d.build_structures();
-            sink += d.collide(list->front()).collides;
+            sink += d.collide(list.front()).collides;
             const detector_statistics before = d.statistics();
             CALLGRIND_ZERO_STATS;
             CALLGRIND_START_INSTRUMENTATION;
-            for (const pose& q : *list) sink += d.collide(q).collides;
+            for (const pose& q : list) sink += d.collide(q).collides;
             CALLGRIND_STOP_INSTRUMENTATION;
             static std::string name;  // the dump keeps the pointer
             name = p.a + " x " + p.b + " / " + order;
             CALLGRIND_DUMP_STATS_AT(name.c_str());
             const detector_statistics& s = d.statistics();
-            std::printf("%s\t%zu\t%zu\t%zu\t%zu\t%zu\n", name.c_str(), list->size(), s.jump_frames - before.jump_frames,
+            std::printf("%s\t%zu\t%zu\t%zu\t%zu\t%zu\n", name.c_str(), list.size(), s.jump_frames - before.jump_frames,
                         s.candidate_rebuilds - before.candidate_rebuilds, s.candidate_edges - before.candidate_edges,
                         s.segment_tests - before.segment_tests);
         }

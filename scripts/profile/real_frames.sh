@@ -8,7 +8,7 @@
 # detector's counters. Writes the markdown table to standard output.
 #   bash scripts/profile/real_frames.sh LAYERS_DIR [POSES]
 # LAYERS_DIR from scripts/real_layers.sh. Needs valgrind and a C++17
-# compiler; about ten minutes at the default 600 poses.
+# compiler; about six minutes at the default 600 poses.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 if [ $# -lt 1 ]; then

@@ -570,15 +570,12 @@ double filtered_exit_distance(const polygon& a, const polygon& b, const pose& q,
     const auto word_time = [&](const timed_site<certified>& e) -> const time_fraction<double_word>* {
         const event_key key{e.site.moving_vertex, e.site.vertex, e.site.edge, e.which};
         auto kept = word_times.find(key);
-        if (kept == word_times.end())
-            kept = word_times
-                       .emplace(key, noted_fallback::run(
-                                         [&] {
-                                             return std::optional<time_fraction<double_word>>(
-                                                 event_time(double_word{}, e, false));
-                                         },
-                                         [] { return std::optional<time_fraction<double_word>>(); }))
-                       .first;
+        if (kept == word_times.end()) {
+            std::optional<time_fraction<double_word>> x = noted_fallback::run(
+                [&] { return std::optional<time_fraction<double_word>>(event_time(double_word{}, e, false)); },
+                [] { return std::optional<time_fraction<double_word>>(); });
+            kept = word_times.emplace(key, std::move(x)).first;
+        }
         return kept->second ? &*kept->second : nullptr;
     };
     const bool unturned = t.c == 1 && t.s == 0;
