@@ -127,13 +127,14 @@ TEST_CASE("containment cells: rings dropped by a vertex deep outside answer as t
                     tree_located += run.exact_counters.containment_tree_locates;
                 }
     }
-    // Both answers occur, the cells drop many rings, and the edge trees
-    // locate others (every answer above checked).
+    // Both answers occur, the cells drop many rings (those off B's turned
+    // box dropped before them), and the edge trees locate others (every
+    // answer above checked).
     INFO(met << " of " << frames << " frames met, " << excluded << " rings excluded, " << tree_located
              << " located through a tree");
     CHECK(met * 5 > frames);
     CHECK((frames - met) * 5 > frames);
-    CHECK(excluded > frames);
+    CHECK(excluded * 2 > frames);
     CHECK(tree_located > 0);
 }
 
@@ -165,4 +166,52 @@ TEST_CASE("containment cells: real neighbours pushed just apart answer as the ex
     CHECK((frames - met) * 2 >= frames);
     CHECK(excluded * 2 > frames);
     CHECK(tree_located > 0);
+}
+
+TEST_CASE("containment cells: an island by a corner of a long polygon turned a little answers as the exact reference",
+          "[detect][exact]") {
+    // B: a strip 100 long and 4 wide (its long sides in 100 edges each, so
+    // that the frames take the edge trees) and an island of it far above,
+    // which makes B's bounding circle far wider than its turned box. A: an
+    // island near a random corner of the strip (inside it or just off its
+    // end), one between the strip and B's island and one past the strip's
+    // end; B turned by up to 0.03 rad about its box's centre, which moves the
+    // strip's ends by up to about 1.6 across: the corner island ends inside
+    // B, outside it or across its border, and a turned box too narrow for
+    // the turn drops it as outside while it lies in B.
+    std::vector<point<double>> strip;
+    for (int k = 0; k <= 100; ++k) strip.push_back({static_cast<double>(k), 0});
+    for (int k = 100; k >= 0; --k) strip.push_back({static_cast<double>(k), 4});
+    const polygon b({test_shapes::ring(strip), test_shapes::square_ring(48, 40, 4)});
+    const point<double> cb = b.bounds().centre();
+    rng g(2633);
+    std::size_t frames = 0, met = 0, excluded = 0;
+    const int rounds = test_effort::scaled(16);
+    for (int round = 0; round < rounds; ++round) {
+        const bool right = round % 2 == 1, top = round % 4 >= 2;
+        const double x = right ? g.uniform(98.6, 100.4) : g.uniform(-0.9, 0.9);
+        const double y = top ? g.uniform(2.6, 3.4) : g.uniform(0.1, 0.9);
+        const polygon a({test_shapes::square_ring(x, y, 0.5), test_shapes::square_ring(30, 20, 1),
+                         test_shapes::square_ring(right ? -3 : 103, 1.5, 0.5)});
+        std::vector<pose> poses;
+        for (int k = 0; k < 12; ++k) {
+            const double theta = g.uniform(-0.03, 0.03), c = std::cos(theta), s = std::sin(theta);
+            poses.push_back({cb.x - (c * cb.x - s * cb.y) + g.uniform(-0.3, 0.3),
+                             cb.y - (s * cb.x + c * cb.y) + g.uniform(-0.3, 0.3), theta});
+        }
+        for (const bool swapped : {false, true})
+            for (const double d : {0.0, 0.05}) {
+                INFO("round " << round << " swapped " << swapped << " island at " << x << ", " << y);
+                const test_frames::reference_run run = swapped
+                                                           ? test_frames::run_against_reference(b, a, poses, d, true)
+                                                           : test_frames::run_against_reference(a, b, poses, d, true);
+                frames += poses.size();
+                met += run.met;
+                excluded += run.exact_counters.containment_rings_excluded;
+            }
+    }
+    // Both answers occur (every answer above checked).
+    INFO(met << " of " << frames << " frames met, " << excluded << " rings excluded");
+    CHECK(met * 5 > frames);
+    CHECK((frames - met) * 5 > frames);
 }

@@ -716,12 +716,17 @@ private:
         }
         if (meet_known) return {true, {}};
         tally(&detector_statistics::containment_tests);
-        // B's box from its posed root circle, as the traversal saw it.
+        // B's box as the traversal saw it: the box of its posed root circle,
+        // cut to its root box turned about the posed centre (far narrower
+        // for a long B turned little: a ring of A outside it is outside B
+        // without a look-up).
         const point<double> c = f.t.template apply<double>(b_tree().root_center());
         const double r = b_tree().root_radius() * (1 + pose_scale_widening) + 2 * f.margin;
+        const box turned = b_tree().placed_box([&](const point<double>& q) { return f.t.template apply<double>(q); },
+                                               turn, b_tree().root_radius() * pose_scale_widening + 2 * f.margin);
         box bb;
-        bb.add({c.x - r, c.y - r});
-        bb.add({c.x + r, c.y + r});
+        bb.add({std::max(c.x - r, turned.min_x), std::max(c.y - r, turned.min_y)});
+        bb.add({std::min(c.x + r, turned.max_x), std::min(c.y + r, turned.max_y)});
         const bool finite =
             std::isfinite(bb.min_x) && std::isfinite(bb.min_y) && std::isfinite(bb.max_x) && std::isfinite(bb.max_y);
         return {contains_within(bb, finite, f.n, f.margin, true, [&](std::size_t j) { return b_.approximate_now(j); }),
