@@ -27,8 +27,10 @@
 #include "influence2d/motion/rational_apart.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/predicates/convexity.hpp"
+#include "influence2d/world/layer_pairs.hpp"
 #include "support/effort.hpp"
 #include "support/exact_regions.hpp"
+#include "support/neighbours.hpp"
 #include "support/random_scenes.hpp"
 #include "support/shapes.hpp"
 
@@ -529,4 +531,33 @@ TEST_CASE("rational turning: convex pairs far from 1 in scale, every route alike
     WARN("convex pairs far in scale: " << at_start << " meeting at the start, " << later << " later");
     CHECK(at_start > 0);
     CHECK(later > 0);
+}
+
+TEST_CASE("rational turning: real neighbours turned back to their place, touching at the same times",
+          "[rational_turn][real]") {
+    // North Carolina's counties share their border vertices exactly. B,
+    // pushed off its neighbour A by 1e-3 of A's size along the line between
+    // their centroids and turned by 1e-3 rad about the origin, turns and
+    // slides back to its place: its shared vertices come back onto their
+    // twins, pairs of features touching within rounding of each other, so
+    // that double words cannot order their times and the search orders
+    // those two in exact rationals. The times are checked against CGAL's
+    // regions; the features of contacts that close are the search's own
+    // order of their exact roots, which the search in exact rationals shares.
+    const std::vector<polygon> layer = test_data::real_layer("nc_counties.wkt");
+    const std::vector<body_pair> pairs = layer_pairs<double>(layer);
+    const std::size_t count = static_cast<std::size_t>(test_effort::scaled(24));
+    REQUIRE(pairs.size() >= count);
+    turn_tally n;
+    for (std::size_t k = 0; k < count; ++k) {
+        const polygon &a = layer[pairs[k].first], &b = layer[pairs[k].second];
+        const point<double> ca = a.centroid(), cb = b.centroid();
+        const double size = std::max(a.bounds().max_x - a.bounds().min_x, a.bounds().max_y - a.bounds().min_y);
+        const double dx = cb.x - ca.x, dy = cb.y - ca.y, length = std::hypot(dx, dy);
+        INFO("counties " << pairs[k].first << " and " << pairs[k].second);
+        check_turn_motion(a, b, {1e-3 * size * dx / length, 1e-3 * size * dy / length, 1e-3}, {0, 0, 0}, 8, n);
+    }
+    INFO("motions " << n.motions << ", contacts " << n.contacts << " (at the start " << n.at_start << "), free "
+                    << n.free);
+    CHECK(n.contacts > n.at_start);
 }

@@ -605,40 +605,71 @@ double rounded_time(const rational_piece& piece, const std::vector<polynomial<NT
     }
 }
 
+/// earliest_kept_contact's settle where no exact type orders its doubts.
+struct no_settle {};
+
+/// The contact of kept pair c in R: its cubic's earliest root after its
+/// `after` at which lo and hi are >= 0 (earliest_root), with the pair's
+/// site; none when it has no such root. `end` and `open_end` as for
+/// earliest_root; t, one, base and w2 the piece's translation and cubics'
+/// factors in R (translation_of, cubics_of).
+template <class R>
+std::optional<piece_contact<R>> kept_contact(const polygon& a, const polygon& b, const rational_piece& piece,
+                                             const piece_translation<R>& t, const R& one, const R& base, const R& w2,
+                                             const kept_pair& c, double end, bool open_end) {
+    const moving_point<R> m = c.site.moving_vertex ? moving_vertex<R>(piece, t, b.vertex(c.site.vertex))
+                                                   : moving_static_vertex<R>(piece, t, a.vertex(c.site.vertex));
+    const polygon& edges = c.site.moving_vertex ? a : b;
+    auto found = earliest_root(piece,
+                               cubics_of(m, w2, c.site.moving_vertex ? one : base, edges.vertex(c.site.edge),
+                                         edges.vertex(edges.next(c.site.edge)), !c.lo_positive || !c.hi_positive),
+                               c, end, open_end);
+    if (!found) return std::nullopt;
+    return piece_contact<R>{c.site, std::move(found->first), found->second};
+}
+
 /// The first contact among a piece's kept pairs, in R (sorted by `after`):
 /// the pair whose cubic f has the earliest root after its `after`, at or
 /// before `end` (before it when the piece is not the last and end is 1),
 /// at which lo and hi are >= 0 (earliest_root; ties: site_before), with
 /// that time rounded to the nearest double (rounded_time); none when no
 /// pair has one. The pairs whose `after` lies beyond the best root found
-/// are left.
-template <class R>
-std::optional<std::pair<sweep::contact_site, double>> earliest_kept_contact(const polygon& a, const polygon& b,
-                                                                            const pose& from, const pose& to,
-                                                                            const rational_piece& piece, bool last,
-                                                                            double end,
-                                                                            const std::vector<kept_pair>& kept) {
+/// are left. Two roots whose order R leaves in doubt (compare_roots raises
+/// uncertain_sign: two pairs that touch at the same time, as the vertices
+/// of a shared border do when a motion ends where a polygon stood) are
+/// ordered by settle(x, y), the sign of x's root less y's for the kept
+/// pairs x and y in an exact type; without it (R exact, or no settle) the
+/// doubt goes on to the caller.
+template <class R, class Settle>
+std::optional<std::pair<sweep::contact_site, double>> earliest_kept_contact(
+    const polygon& a, const polygon& b, const pose& from, const pose& to, const rational_piece& piece, bool last,
+    double end, const std::vector<kept_pair>& kept, Settle&& settle) {
     const piece_translation<R> t = translation_of<R>(piece, from, to);
     // The factor l of cubics_of: 1 in A's frame, c^2 + s^2 in B's.
     const R one = num<R>(1), base = R(num<R>(piece.c) * num<R>(piece.c) + num<R>(piece.s) * num<R>(piece.s));
     const R w2 = R(num<R>(piece.w) * num<R>(piece.w));
     std::optional<piece_contact<R>> best;
+    const kept_pair* best_kept = nullptr;
     for (const kept_pair& c : kept) {
         if (best && compare_values<R>(num<R>(c.after), best->root.high) > 0) break;
-        const moving_point<R> m = c.site.moving_vertex ? moving_vertex<R>(piece, t, b.vertex(c.site.vertex))
-                                                       : moving_static_vertex<R>(piece, t, a.vertex(c.site.vertex));
-        const polygon& edges = c.site.moving_vertex ? a : b;
-        auto found = earliest_root(piece,
-                                   cubics_of(m, w2, c.site.moving_vertex ? one : base, edges.vertex(c.site.edge),
-                                             edges.vertex(edges.next(c.site.edge)), !c.lo_positive || !c.hi_positive),
-                                   c, end, !last && end == 1);
-        if (!found) continue;
-        piece_contact<R> contact{c.site, std::move(found->first), found->second};
+        std::optional<piece_contact<R>> contact =
+            kept_contact(a, b, piece, t, one, base, w2, c, end, !last && end == 1);
+        if (!contact) continue;
         if (best) {
-            const int order = compare_roots(contact.sequence, contact.root, best->sequence, best->root);
+            int order;
+            if constexpr (std::is_invocable_r_v<int, Settle, const kept_pair&, const kept_pair&>) {
+                try {
+                    order = compare_roots(contact->sequence, contact->root, best->sequence, best->root);
+                } catch (const uncertain_sign&) {
+                    order = settle(c, *best_kept);
+                }
+            } else {
+                order = compare_roots(contact->sequence, contact->root, best->sequence, best->root);
+            }
             if (order > 0 || (order == 0 && !sweep::site_before(c.site, best->site))) continue;
         }
         best = std::move(contact);
+        best_kept = &c;
     }
     if (!best) return std::nullopt;
     return std::pair{best->site, rounded_time(piece, best->sequence, best->root)};
@@ -735,12 +766,37 @@ std::optional<std::pair<sweep::contact_site, double>> contact_within(const polyg
     std::sort(kept.begin(), kept.end(), [](const kept_pair& x, const kept_pair& y) {
         return x.after != y.after ? x.after < y.after : sweep::site_before(x.site, y.site);
     });
+    const no_settle none;
     if constexpr (number_traits<NT>::category == number_category::exact) {
+        // Two roots that double words cannot order are ordered in NT, each
+        // pair's contact made there once (the order of two roots only: the
+        // rest of the search stays in double words).
+        std::vector<std::optional<piece_contact<NT>>> exact(kept.size());
+        std::optional<std::tuple<piece_translation<NT>, NT, NT, NT>> factors;
+        const auto exact_contact = [&](const kept_pair& c) -> piece_contact<NT>& {
+            std::optional<piece_contact<NT>>& made = exact[static_cast<std::size_t>(&c - kept.data())];
+            if (!made) {
+                if (!factors) {
+                    const NT c2 = NT(num<NT>(piece.c) * num<NT>(piece.c)), s2 = NT(num<NT>(piece.s) * num<NT>(piece.s));
+                    factors.emplace(translation_of<NT>(piece, from, to), num<NT>(1), NT(c2 + s2),
+                                    NT(num<NT>(piece.w) * num<NT>(piece.w)));
+                }
+                const auto& [t, one, base, w2] = *factors;
+                made = kept_contact(a, b, piece, t, one, base, w2, c, window_to, !last && window_to == 1);
+                // (Found in double words, whose signs were exact: found here.)
+                if (!made) throw uncertain_sign();
+            }
+            return *made;
+        };
+        const auto settle = [&](const kept_pair& x, const kept_pair& y) {
+            piece_contact<NT>&cx = exact_contact(x), &cy = exact_contact(y);
+            return compare_roots(cx.sequence, cx.root, cy.sequence, cy.root);
+        };
         return fallback<>::run(
-            [&] { return earliest_kept_contact<double_word>(a, b, from, to, piece, last, window_to, kept); },
-            [&] { return earliest_kept_contact<NT>(a, b, from, to, piece, last, window_to, kept); });
+            [&] { return earliest_kept_contact<double_word>(a, b, from, to, piece, last, window_to, kept, settle); },
+            [&] { return earliest_kept_contact<NT>(a, b, from, to, piece, last, window_to, kept, none); });
     } else {
-        return earliest_kept_contact<NT>(a, b, from, to, piece, last, window_to, kept);
+        return earliest_kept_contact<NT>(a, b, from, to, piece, last, window_to, kept, none);
     }
 }
 
@@ -783,7 +839,9 @@ std::optional<std::pair<sweep::contact_site, double>> contact_within(const polyg
 ///       earlier (ties: site_before)
 ///     a best root:          the first contact, its time rounded (rounded_time)
 ///   (the roots, the comparisons and the rounding in double words first when
-///   NT is an exact field, all of them again in NT when a sign is in doubt)
+///   NT is an exact field; two roots whose order is in doubt there ordered
+///   in NT, those two pairs' contacts made in NT; all of them again in NT
+///   when another sign is in doubt)
 ///   none
 ///
 /// NT needs division (exact_rational, or a floating type). Throws
