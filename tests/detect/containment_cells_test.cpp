@@ -158,13 +158,13 @@ TEST_CASE("containment cells: real neighbours pushed just apart answer as the ex
         }
     }
     // Half the poses just apart; most of the others just meeting (a start
-    // already apart gives two poses apart); the cells drop rings, the edge
-    // trees locate others.
+    // already apart gives two poses apart); the cells drop rings (those off
+    // B's turned box dropped before them), the edge trees locate others.
     INFO(met << " of " << frames << " frames met, " << excluded << " rings excluded, " << tree_located
              << " located through a tree");
     CHECK(met * 4 > frames);
     CHECK((frames - met) * 2 >= frames);
-    CHECK(excluded * 2 > frames);
+    CHECK(excluded * 4 > frames);
     CHECK(tree_located > 0);
 }
 
