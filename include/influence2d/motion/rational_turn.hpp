@@ -608,20 +608,35 @@ double rounded_time(const rational_piece& piece, const std::vector<polynomial<NT
 /// earliest_kept_contact's settle where no exact type orders its doubts.
 struct no_settle {};
 
+/// What the kept pairs' cubics share over a piece, in R: B's translation
+/// (translation_of), the factor l of cubics_of (1 in A's frame, c^2 + s^2
+/// in B's) and w^2.
+template <class R>
+struct piece_factors {
+    piece_translation<R> t;
+    R one, base, w2;
+};
+
+/// The piece's piece_factors in R.
+template <class R>
+piece_factors<R> factors_of(const rational_piece& piece, const pose& from, const pose& to) {
+    return {translation_of<R>(piece, from, to), num<R>(1),
+            R(num<R>(piece.c) * num<R>(piece.c) + num<R>(piece.s) * num<R>(piece.s)),
+            R(num<R>(piece.w) * num<R>(piece.w))};
+}
+
 /// The contact of kept pair c in R: its cubic's earliest root after its
 /// `after` at which lo and hi are >= 0 (earliest_root), with the pair's
 /// site; none when it has no such root. `end` and `open_end` as for
-/// earliest_root; t, one, base and w2 the piece's translation and cubics'
-/// factors in R (translation_of, cubics_of).
+/// earliest_root; k the piece's factors in R.
 template <class R>
 std::optional<piece_contact<R>> kept_contact(const polygon& a, const polygon& b, const rational_piece& piece,
-                                             const piece_translation<R>& t, const R& one, const R& base, const R& w2,
-                                             const kept_pair& c, double end, bool open_end) {
-    const moving_point<R> m = c.site.moving_vertex ? moving_vertex<R>(piece, t, b.vertex(c.site.vertex))
-                                                   : moving_static_vertex<R>(piece, t, a.vertex(c.site.vertex));
+                                             const piece_factors<R>& k, const kept_pair& c, double end, bool open_end) {
+    const moving_point<R> m = c.site.moving_vertex ? moving_vertex<R>(piece, k.t, b.vertex(c.site.vertex))
+                                                   : moving_static_vertex<R>(piece, k.t, a.vertex(c.site.vertex));
     const polygon& edges = c.site.moving_vertex ? a : b;
     auto found = earliest_root(piece,
-                               cubics_of(m, w2, c.site.moving_vertex ? one : base, edges.vertex(c.site.edge),
+                               cubics_of(m, k.w2, c.site.moving_vertex ? k.one : k.base, edges.vertex(c.site.edge),
                                          edges.vertex(edges.next(c.site.edge)), !c.lo_positive || !c.hi_positive),
                                c, end, open_end);
     if (!found) return std::nullopt;
@@ -644,16 +659,12 @@ template <class R, class Settle>
 std::optional<std::pair<sweep::contact_site, double>> earliest_kept_contact(
     const polygon& a, const polygon& b, const pose& from, const pose& to, const rational_piece& piece, bool last,
     double end, const std::vector<kept_pair>& kept, Settle&& settle) {
-    const piece_translation<R> t = translation_of<R>(piece, from, to);
-    // The factor l of cubics_of: 1 in A's frame, c^2 + s^2 in B's.
-    const R one = num<R>(1), base = R(num<R>(piece.c) * num<R>(piece.c) + num<R>(piece.s) * num<R>(piece.s));
-    const R w2 = R(num<R>(piece.w) * num<R>(piece.w));
+    const piece_factors<R> k = factors_of<R>(piece, from, to);
     std::optional<piece_contact<R>> best;
     const kept_pair* best_kept = nullptr;
     for (const kept_pair& c : kept) {
         if (best && compare_values<R>(num<R>(c.after), best->root.high) > 0) break;
-        std::optional<piece_contact<R>> contact =
-            kept_contact(a, b, piece, t, one, base, w2, c, end, !last && end == 1);
+        std::optional<piece_contact<R>> contact = kept_contact(a, b, piece, k, c, end, !last && end == 1);
         if (!contact) continue;
         if (best) {
             int order;
@@ -772,17 +783,12 @@ std::optional<std::pair<sweep::contact_site, double>> contact_within(const polyg
         // pair's contact made there once (the order of two roots only: the
         // rest of the search stays in double words).
         std::vector<std::optional<piece_contact<NT>>> exact(kept.size());
-        std::optional<std::tuple<piece_translation<NT>, NT, NT, NT>> factors;
+        std::optional<piece_factors<NT>> factors;
         const auto exact_contact = [&](const kept_pair& c) -> piece_contact<NT>& {
             std::optional<piece_contact<NT>>& made = exact[static_cast<std::size_t>(&c - kept.data())];
             if (!made) {
-                if (!factors) {
-                    const NT c2 = NT(num<NT>(piece.c) * num<NT>(piece.c)), s2 = NT(num<NT>(piece.s) * num<NT>(piece.s));
-                    factors.emplace(translation_of<NT>(piece, from, to), num<NT>(1), NT(c2 + s2),
-                                    NT(num<NT>(piece.w) * num<NT>(piece.w)));
-                }
-                const auto& [t, one, base, w2] = *factors;
-                made = kept_contact(a, b, piece, t, one, base, w2, c, window_to, !last && window_to == 1);
+                if (!factors) factors = factors_of<NT>(piece, from, to);
+                made = kept_contact(a, b, piece, *factors, c, window_to, !last && window_to == 1);
                 // (Found in double words, whose signs were exact: found here.)
                 if (!made) throw uncertain_sign();
             }

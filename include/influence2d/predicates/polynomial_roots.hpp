@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -534,14 +535,19 @@ int compare_roots(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r, co
     };
     if (below(r, u)) return -1;
     if (below(u, r)) return 1;
-    if constexpr (is_exact_v<NT> && !signs_may_be_in_doubt<NT>::value) {
-        for (int k = 0; k < parting_halvings; ++k) {
+    // Both brackets halved up to `times` times (while may_halve allows):
+    // -1 or +1 once they part, 0 when they did not.
+    const auto parted = [&](int times) {
+        for (int k = 0; k < times && may_halve<NT>(k); ++k) {
             const bool moved = halve(s, r);
             if (!halve(t, u) && !moved) break;
             if (below(r, u)) return -1;
             if (below(u, r)) return 1;
         }
-    }
+        return 0;
+    };
+    if constexpr (is_exact_v<NT> && !signs_may_be_in_doubt<NT>::value)
+        if (const int order = parted(parting_halvings)) return order;
     const polynomial<NT> g = common_divisor(s[0], t[0]);
     if (g.degree() >= 1) {
         // A shared root in the overlap of the brackets is both roots.
@@ -557,13 +563,7 @@ int compare_roots(const std::vector<polynomial<NT>>& s, isolated_root<NT>& r, co
             }
         }
     }
-    for (int k = 0; may_halve<NT>(k); ++k) {
-        const bool moved = halve(s, r);
-        if (!halve(t, u) && !moved) break;
-        if (below(r, u)) return -1;
-        if (below(u, r)) return 1;
-    }
-    return 0;  // (rounded: the brackets stopped parting)
+    return parted(std::numeric_limits<int>::max());  // 0: rounded, the brackets stopped parting
 }
 
 }  // namespace influence2d
