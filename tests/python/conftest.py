@@ -90,3 +90,71 @@ def tool_frames(tool, directory, a, b, poses, *options):
     run_tool(tool, "collide", "--static", directory / "a.wkt", "--moving", directory / "b.wkt", "--poses",
              directory / "poses.csv", *options, "--out", directory / "frames.csv")
     return [line.split(",") for line in (directory / "frames.csv").read_text().splitlines()[1:]]
+
+
+def tiling_layer(rng, nx, ny, q=64):
+    """A layer cut from a jittered grid of nx x ny cells whose neighbours
+    share their borders to the bit (corners on multiples of 1/q, up to two
+    points between corners, shared by both cells); some cells have a
+    square hole, left empty, filled exactly by an island, or holding an
+    island that touches it at a corner, lies inside it, or lies 1/64 or
+    1/32 inside its sides (the grid's step: exact distances); some are
+    joined with a cell far away into a multipolygon; some get a sliver
+    touching them at a corner."""
+    corner = {}
+    for i in range(nx + 1):
+        for j in range(ny + 1):
+            jx = 0 if i in (0, nx) else rng.randint(-q // 4, q // 4) / q
+            jy = 0 if j in (0, ny) else rng.randint(-q // 4, q // 4) / q
+            corner[(i, j)] = (i + jx, j + jy)
+    between = {}
+
+    def inner_points(a, b):
+        key = (min(a, b), max(a, b))
+        if key not in between:
+            (x0, y0), (x1, y1) = corner[key[0]], corner[key[1]]
+            k = rng.choice([0, 0, 1, 2])
+            between[key] = [(x0 + (x1 - x0) * t / (k + 1) + rng.randint(-q // 8, q // 8) / q,
+                             y0 + (y1 - y0) * t / (k + 1) + rng.randint(-q // 8, q // 8) / q) for t in range(1, k + 1)]
+        pts = between[key]
+        return pts if key[0] == a else pts[::-1]
+
+    cells = {}
+    for i in range(nx):
+        for j in range(ny):
+            c = [(i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1)]
+            cells[(i, j)] = [p for k in range(4) for p in [corner[c[k]]] + inner_points(c[k], c[(k + 1) % 4])]
+    layer, used = [], set()
+    for key in sorted(cells, key=lambda _: rng.random()):
+        if key in used:
+            continue
+        used.add(key)
+        shell, r = cells[key], rng.random()
+        far = [k for k in cells if k not in used and abs(k[0] - key[0]) + abs(k[1] - key[1]) > 2]
+        if r < 0.15 and far:
+            other = rng.choice(far)
+            used.add(other)
+            layer.append(shapely.geometry.MultiPolygon([shapely.geometry.Polygon(shell),
+                                                       shapely.geometry.Polygon(cells[other])]))
+        elif r < 0.4:
+            cx, cy, h = key[0] + 0.5, key[1] + 0.5, rng.choice([0.125, 0.25])
+            hole = [(cx - h, cy - h), (cx + h, cy - h), (cx + h, cy + h), (cx - h, cy + h)]
+            layer.append(shapely.geometry.Polygon(shell, [hole]))
+            s = rng.random()
+            if s < 0.2:
+                layer.append(shapely.geometry.Polygon([(cx - h, cy - h), (cx, cy - h / 2), (cx - h / 2, cy)]))
+            elif s < 0.4:
+                layer.append(shapely.geometry.Polygon(hole))
+            elif s < 0.5:
+                layer.append(shapely.geometry.Polygon([(cx - h / 2, cy - h / 2), (cx + h / 2, cy - h / 2), (cx, cy)]))
+            else:
+                # An island one or two grid steps inside the hole's sides.
+                g = rng.choice([1, 2]) / q
+                layer.append(shapely.geometry.box(cx - h + g, cy - h + g, cx + h - g, cy + h - g))
+        else:
+            layer.append(shapely.geometry.Polygon(shell))
+            if r < 0.5:
+                x, y = shell[0]
+                layer.append(shapely.geometry.Polygon([(x, y), (x - 0.1, y - 0.3), (x - 0.3, y - 0.1)]))
+    return layer
+

@@ -9,7 +9,7 @@ import shapely.geometry
 
 import influence2d
 import exact_reference
-from conftest import run_tool, star_polygon
+from conftest import run_tool, star_polygon, tiling_layer
 
 
 def layer_of(rng, count, spread=6.0):
@@ -129,3 +129,39 @@ def test_matches_the_tool(tool, tmp_path, rng, two):
     want = np.loadtxt(tmp_path / "pairs.csv", delimiter=",", skiprows=1, dtype=np.int64, ndmin=2).tolist()
     got = influence2d.pairs(first, second if two else None).tolist()
     assert got == want
+
+
+def reference_within(first, second, within):
+    """The pairs (i, j) (i < j in one layer) whose exact squared distance is
+    at most within**2, both layers at their own coordinates."""
+    one = second is None
+    second = first if one else second
+    out = []
+    for i, a in enumerate(first):
+        for j, b in enumerate(second):
+            if one and j <= i:
+                continue
+            if exact_reference.squared_distance(a, b, (0.0, 0.0, 0.0), within) is not None:
+                out.append((i, j))
+    return out
+
+
+@pytest.mark.parametrize("number_type", ["certified", "exact"])
+def test_tilings_with_shared_borders_holes_and_islands_against_the_exact_reference(rng, number_type):
+    # Neighbours that share their borders to the bit, islands that fill a
+    # hole exactly or touch it at a corner, and islands exactly 1/64 (the
+    # grid's step) inside a hole: the certified and exact joins are the
+    # exact answer at every tie, within 0 and 1/64, one layer and two (each
+    # role).
+    for _ in range(3):
+        layer = tiling_layer(rng, rng.randint(3, 5), rng.randint(3, 5))
+        for within in [0.0, 1 / 64]:
+            want = reference_within(layer, None, within)
+            got = influence2d.pairs(layer, within=within, number_type=number_type)
+            assert [tuple(p) for p in got.tolist()] == want
+        first, second = layer[0::2], layer[1::2]
+        want = reference_within(first, second, 1 / 64)
+        assert [tuple(p) for p in influence2d.pairs(first, second, within=1 / 64,
+                                                    number_type=number_type).tolist()] == want
+        swapped = influence2d.pairs(second, first, within=1 / 64, number_type=number_type).tolist()
+        assert sorted((j, i) for i, j in swapped) == want
