@@ -508,8 +508,11 @@ def test_a_tiling_slid_apart_and_back_matches_the_exact_reference(rng, number_ty
                         continue
                     (xi, yi), (xj, yj) = poses[i], poses[j]
                     a, b = boxes[i], boxes[j]
-                    if (a[0] + xi > b[2] + xj + within or b[0] + xj > a[2] + xi + within
-                            or a[1] + yi > b[3] + yj + within or b[1] + yj > a[3] + yi + within):
+                    # (Boxes farther apart than the distance, with room for
+                    # these sums' rounding, hold bodies farther apart.)
+                    reach = within + 1e-9
+                    if (a[0] + xi > b[2] + xj + reach or b[0] + xj > a[2] + xi + reach
+                            or a[1] + yi > b[3] + yj + reach or b[1] + yj > a[3] + yi + reach):
                         continue
                     if exact_reference.squared_distance(shapes[i], shapes[j], (xj, yj, 0.0), within,
                                                         a_pose=(xi, yi, 0.0)) is not None:
