@@ -13,44 +13,19 @@
 #include <cstdlib>
 #include <vector>
 
+#include "fuzz_input.hpp"
 #include "influence2d/detect/brute_force.hpp"
 #include "influence2d/detect/detector.hpp"
 #include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "verification/cgal_reference.hpp"
 
-namespace {
-
-struct bytes {
-    const std::uint8_t* data;
-    std::size_t size, at = 0;
-    std::uint8_t next() { return at < size ? data[at++] : 0; }
-    double signed_over(double d) { return static_cast<std::int8_t>(next()) / d; }
-};
-
-influence2d::polygon make(bytes& in, int e) {
-    std::vector<influence2d::ring_input> rings(1 + in.next() % 3);
-    for (std::size_t r = 0; r < rings.size(); ++r) {
-        const bool hole = in.next() % 3 == 0 && r > 0;
-        rings[r].role = hole ? influence2d::ring_role::hole : influence2d::ring_role::outer;
-        const std::size_t n = 3 + in.next() % 6;
-        const double ox = in.signed_over(4), oy = in.signed_over(4);
-        for (std::size_t k = 0; k < n; ++k) {
-            const double x = in.signed_over(16) + ox, y = in.signed_over(16) + oy;
-            rings[r].vertices.push_back({std::ldexp(x, e), std::ldexp(y, e)});
-        }
-    }
-    return influence2d::polygon(std::move(rings));
-}
-
-}  // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace influence2d;
-    bytes in{data, size};
+    fuzz_input::bytes in{data, size};
     const int e = static_cast<std::int8_t>(in.next()) % 64;  // a scale of 2^e, |e| < 64
     try {
-        const polygon a = make(in, e), b = make(in, e);
+        const polygon a = fuzz_input::polygon(in, e), b = fuzz_input::polygon(in, e);
         const pose p{std::ldexp(in.signed_over(4), e), std::ldexp(in.signed_over(4), e), in.signed_over(32)};
         detector_options o;
         o.witness = true;

@@ -20,9 +20,9 @@ done
 build="$root/build-fuzz"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
     -DINFLUENCE2D_BUILD_FUZZERS=ON -DINFLUENCE2D_BUILD_TESTS=OFF -DINFLUENCE2D_BUILD_CLI=OFF >/dev/null
-cmake --build "$build" -j "$(nproc)" --target wkt_fuzz csv_fuzz detector_fuzz >/dev/null
+cmake --build "$build" -j "$(nproc)" --target wkt_fuzz csv_fuzz detector_fuzz world_fuzz queries_fuzz >/dev/null
 mkdir -p "$build/crashes"
-for target in wkt csv detector; do
+for target in wkt csv detector world queries; do
     corpus="$build/corpus/$target"
     mkdir -p "$corpus"
     cp -n "$root/data/fuzz/$target/"* "$corpus/" 2>/dev/null || true
