@@ -170,3 +170,59 @@ TEST_CASE("exact doubles: the cross sign of two directions, nearly parallel, aga
     CHECK(zeros > 200);
     CHECK(rounded_wrong > 200);
 }
+
+TEST_CASE("exact doubles: closed segments meet, points and collinear overlaps included, against exact rationals",
+          "[exact_doubles]") {
+    // Ends on a small grid scaled by 1/3 rounded (collinear points seldom
+    // axis-aligned, their doubles seldom on one exact line), or a third of
+    // the time c and d on the line of a and b (a and b on a grid of
+    // quarters, c and d at half-integer multiples of b - a from a: exact);
+    // a quarter of the segments of length 0. So crossings, touching ends,
+    // collinear overlaps and gaps, points on and off segments. The
+    // reference: orientations and extents in exact rationals.
+    test_random::rng g(0x5e6);
+    const auto grid = [&g](double unit) {
+        return point<double>{static_cast<double>(g.index(7)) / unit, static_cast<double>(g.index(7)) / unit};
+    };
+    const auto orient = [](point<double> a, point<double> b, point<double> c) {
+        return static_cast<int>(
+            CGAL::sign((q(b.x) - q(a.x)) * (q(c.y) - q(a.y)) - (q(b.y) - q(a.y)) * (q(c.x) - q(a.x))));
+    };
+    // Whether c lies on the closed segment [a, b] (a == b: the point a).
+    const auto on = [&](point<double> c, point<double> a, point<double> b) {
+        return orient(a, b, c) == 0 && std::min(a.x, b.x) <= c.x && c.x <= std::max(a.x, b.x) &&
+               std::min(a.y, b.y) <= c.y && c.y <= std::max(a.y, b.y);
+    };
+    int met = 0, points = 0, collinear = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const bool along = trial % 3 == 0;
+        const point<double> a = grid(along ? 4 : 3), b = g.chance(0.25) ? a : grid(along ? 4 : 3);
+        const auto on_line = [&] {
+            const double k = (static_cast<double>(g.index(9)) - 2) / 2;
+            return point<double>{a.x + k * (b.x - a.x), a.y + k * (b.y - a.y)};
+        };
+        const point<double> c = along ? on_line() : grid(3);
+        const point<double> d = g.chance(0.25) ? c : along ? on_line() : grid(3);
+        bool want;
+        if (a == b || c == d) {
+            want = a == b ? on(a, c, d) : on(c, a, b);
+            ++points;
+        } else {
+            const int oc = orient(a, b, c), od = orient(a, b, d), oa = orient(c, d, a), ob = orient(c, d, b);
+            if (oc == 0 && od == 0) {
+                want = on(c, a, b) || on(d, a, b) || on(a, c, d) || on(b, c, d);
+                ++collinear;
+            } else {
+                want = oc * od <= 0 && oa * ob <= 0;
+            }
+        }
+        INFO("trial " << trial);
+        CHECK(influence2d::segments_meet_exactly(a, b, c, d) == want);
+        CHECK(influence2d::segments_meet_exactly(c, d, b, a) == want);
+        met += want;
+    }
+    INFO(met << " meeting, " << points << " with a point, " << collinear << " collinear");
+    CHECK(met > 4000);
+    CHECK(points > 4000);
+    CHECK(collinear > 500);
+}

@@ -42,6 +42,13 @@ using test_world::body_state;
 using test_world::exact_within;
 using test_world::reference_contacts;
 
+/// The shapes and the bodies added to world w.
+template <class World>
+void add_to(World& w, const std::vector<polygon>& shapes, const std::vector<body_state>& bodies) {
+    for (const polygon& p : shapes) w.add_shape(p);
+    for (const body_state& b : bodies) w.add_body(static_cast<std::uint32_t>(b.shape), b.where, b.fixed);
+}
+
 /// The box of p posed by q, in double (for laying out a test scene).
 box placed_box(const polygon& p, const pose& q) {
     const rotation_pose t(q);
@@ -500,6 +507,70 @@ TEST_CASE("world: squares sharing edges and corners touch exactly", "[world]") {
     CHECK(w.events().empty());
 }
 
+TEST_CASE("world: cells slid on a grid, their witness edges decided on the doubles, as the reference", "[world]") {
+    // The cells of a jittered grid (shared borders at every slope; every
+    // third cell with a repeated vertex, an edge of length 0), each a body
+    // at its cell's place by a translation. At each step some cells slide by
+    // a multiple of 1/64 along an axis, or back to their place: every posed
+    // vertex a double, so that the witness edges and their neighbours are
+    // tested again on those doubles (translated_exactly), the contacts
+    // touching exactly along the borders or overlapping by a few 1/64. The
+    // certified world and the world in exact rationals, each step against
+    // the exact reference.
+    rng g(20261206);
+    const int n = 5;
+    std::vector<std::vector<point<double>>> corner(n + 1, std::vector<point<double>>(n + 1));
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j)
+            corner[i][j] = {i + static_cast<double>(g.index(33)) / 64 - 0.25,
+                            j + static_cast<double>(g.index(33)) / 64 - 0.25};
+    std::vector<polygon> shapes;
+    std::vector<body_state> bodies;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            ring_input ring;
+            for (const point<double>& c : {corner[i][j], corner[i + 1][j], corner[i + 1][j + 1], corner[i][j + 1]})
+                ring.vertices.push_back({c.x - i, c.y - j});  // about the cell's own origin
+            if (shapes.size() % 3 == 0) ring.vertices.insert(ring.vertices.begin() + 1, ring.vertices[1]);
+            shapes.push_back(polygon({ring}));
+            bodies.push_back({shapes.size() - 1, {static_cast<double>(i), static_cast<double>(j), 0}, false});
+        }
+    certified_world certified;
+    world<exact_rational> exact;
+    add_to(certified, shapes, bodies);
+    add_to(exact, shapes, bodies);
+    std::size_t touching_steps = 0;
+    for (int step = 0; step < 16; ++step) {
+        if (step > 0)
+            for (std::size_t k = 0; k < bodies.size(); ++k) {
+                pose& q = bodies[k].where;
+                if (g.chance(0.3)) {
+                    (g.chance(0.5) ? q.tx : q.ty) += static_cast<double>(static_cast<int>(g.index(17)) - 8) / 64;
+                } else if (g.chance(0.3)) {
+                    q = {static_cast<double>(k / n), static_cast<double>(k % n), 0};  // back to its place
+                } else {
+                    continue;
+                }
+                certified.move(static_cast<std::uint32_t>(k), q);
+                exact.move(static_cast<std::uint32_t>(k), q);
+            }
+        const std::vector<body_pair> want = reference_contacts(shapes, bodies, 0);
+        INFO("step " << step);
+        REQUIRE(show_pairs(certified.step()) == show_pairs(want));
+        REQUIRE(show_pairs(exact.step()) == show_pairs(want));
+        touching_steps += want.size() >= 40 ? 1 : 0;
+    }
+    // The 40 pairs that share a border (and the 32 that share a corner)
+    // touch at the start and again whenever their cells came back;
+    // witnesses and their neighbours were tried.
+    CHECK(touching_steps >= 2);
+    for (const world_statistics& st : {certified.statistics(), exact.statistics()}) {
+        INFO("witness hits " << st.witness_hits << ", by nearby edges " << st.nearby_edges);
+        CHECK(st.witness_hits > 100);
+        CHECK(st.nearby_edges > 0);
+    }
+}
+
 TEST_CASE("world: pairs kept apart by a hull edge, until they touch exactly", "[world]") {
     // Bodies of every kind (a square, a square with a hole, a C, random
     // multipolygons with holes and islands, a swallower) in pairs: the
@@ -758,14 +829,8 @@ TEST_CASE("world: turned bodies touching at the edge of their bounding discs", "
     }
     certified_world certified;
     world<exact_rational> exact;
-    for (const polygon& p : shapes) {
-        certified.add_shape(p);
-        exact.add_shape(p);
-    }
-    for (const body_state& b : bodies) {
-        certified.add_body(static_cast<std::uint32_t>(b.shape), b.where, b.fixed);
-        exact.add_body(static_cast<std::uint32_t>(b.shape), b.where, b.fixed);
-    }
+    add_to(certified, shapes, bodies);
+    add_to(exact, shapes, bodies);
     const std::vector<body_pair> want = reference_contacts(shapes, bodies, 0);
     CHECK(show_pairs(certified.step()) == show_pairs(want));
     CHECK(show_pairs(exact.step()) == show_pairs(want));

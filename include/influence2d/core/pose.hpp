@@ -82,6 +82,16 @@ struct rotation_pose {
         return point<NT>{cx * qx - sx * qy + tr::from_double(tx), sx * qx + cx * qy + tr::from_double(ty)};
     }
 
+    /// For a pose that is a translation (c = 1, s = 0): whether q posed is a
+    /// point of doubles, each sum q + t a double (exact_double_sum), then
+    /// that point in `out`; false for a pose that turns, or a sum that
+    /// rounds. An exact or filtered type then decides on those doubles
+    /// exactly (predicates/exact_doubles.hpp) without making the point.
+    bool translates_exactly(const point<double>& q, point<double>& out) const {
+        return s == 0 && c == 1 && exact_sum::exact_double_sum(q.x, tx, out.x) &&
+               exact_sum::exact_double_sum(q.y, ty, out.y);
+    }
+
     /// A point of the posed frame taken back to the unposed one in double:
     /// the transposed rotation applied to q - t, `x = c*(qx - tx) +
     /// s*(qy - ty)`, `y = c*(qy - ty) - s*(qx - tx)`. The inverse of the

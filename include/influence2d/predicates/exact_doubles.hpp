@@ -133,10 +133,12 @@ inline bool on_segment_exactly(const point<double>& q, const point<double>& a, c
     return exact_orientation(a, b, q) == 0 && within_collinear_segment(q, a, b);
 }
 
-/// Whether the closed segments [a, b] and [c, d] (each of non-zero length)
-/// meet (exact).
+/// Whether the closed segments [a, b] and [c, d] meet (exact); a segment of
+/// length 0 is its point.
 inline bool segments_meet_exactly(const point<double>& a, const point<double>& b, const point<double>& c,
                                   const point<double>& d) {
+    if (a == b) return on_segment_exactly(a, c, d);
+    if (c == d) return on_segment_exactly(c, a, b);
     const int oc = exact_orientation(a, b, c), od = exact_orientation(a, b, d);
     if (oc == 0 && od == 0)
         return within_collinear_segment(c, a, b) || within_collinear_segment(d, a, b) ||

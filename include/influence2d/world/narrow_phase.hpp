@@ -15,6 +15,7 @@
 #include "influence2d/covering/inclusion.hpp"
 #include "influence2d/number/fallback.hpp"
 #include "influence2d/number/traits.hpp"
+#include "influence2d/predicates/exact_doubles.hpp"
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/predicates/segments.hpp"
 #include "influence2d/query/placed_meet.hpp"
@@ -85,18 +86,46 @@ bool vertex_in(placed_polygon<NT>& host, placed_polygon<NT>& guest, std::size_t 
            locate_placed(host, guest.approx()[j], guest[j], e) != location::outside;
 }
 
+/// Vertices `which[0..count)` of a body of `shape` posed by `pose`, into
+/// `out`, when the pose is a translation whose sums are doubles
+/// (rotation_pose::translates_exactly): an exact or filtered NT then decides
+/// on those doubles exactly (predicates/exact_doubles.hpp, by
+/// orientation_of_doubles at about double's cost), as it would on the same
+/// values in its own arithmetic. False, `out` unspecified, when NT is a
+/// floating type (which decides on its own rounding), the pose turns, or a
+/// sum is not a double.
+template <class NT>
+bool translated_exactly(const rotation_pose& pose, const polygon& shape, const std::size_t* which, std::size_t count,
+                        point<double>* out) {
+    if constexpr (number_traits<NT>::category == number_category::floating) {
+        return false;
+    } else {
+        for (std::size_t k = 0; k < count; ++k)
+            if (!pose.translates_exactly(shape.vertex(which[k]), out[k])) return false;
+        return true;
+    }
+}
+
 /// Whether what showed bodies a and b within d at the last step (`last`,
 /// stored numbering) still does at their present poses, decided exactly in
 /// NT: for two edges, the exact segment test (d = 0) or distance test on the
 /// four vertices posed in NT, in a type other than double after a filter in
-/// double (edges that certainly cross); for a located vertex, its location
-/// in the other polygon.
+/// double (edges that certainly cross), and for bodies translated by sums
+/// that are doubles on those doubles (translated_exactly); for a
+/// located vertex, its location in the other polygon.
 template <class NT>
 bool witness_holds(const meeting& last, const body_view<NT>& a, const body_view<NT>& b, double d, const NT& d2) {
     const polygon &as = *a.shape, &bs = *b.shape;
     switch (last.how) {
     case meeting::kind::edges: {
         const std::size_t i = last.a_index, j = last.b_index;
+        // (Bodies translated by sums that are doubles, as parcels that touch
+        // exactly: the four vertices are doubles, the test exact on them.)
+        const std::size_t ends_a[2] = {i, as.next(i)}, ends_b[2] = {j, bs.next(j)};
+        point<double> ta[2], tb[2];
+        if (d == 0 && translated_exactly<NT>(a.pose, as, ends_a, 2, ta) &&
+            translated_exactly<NT>(b.pose, bs, ends_b, 2, tb))
+            return segments_meet_exactly(ta[0], ta[1], tb[0], tb[1]);
         if constexpr (!std::is_same_v<NT, double>) {
             // Two edges that still cross clearly are settled in double, the
             // four vertices posed in double within the posing's margin of
@@ -140,7 +169,8 @@ bool edge_witness_holds(const meeting& last, const body_view<NT>& a, const body_
 /// i and the edges before and after it on its ring, against edge j and
 /// its two, (i, j) first and only `with_last` (the caller may have found it
 /// failing); their eight vertices posed in NT once, each pair tested
-/// exactly as witness_holds tests two edges. Bodies that slide or turn a
+/// exactly as witness_holds tests two edges (for bodies translated by sums
+/// that are doubles, on those doubles: translated_exactly). Bodies that slide or turn a
 /// little along each other most often meet by such a pair. With Exact not
 /// void, none when NT cannot settle a sign (the pair is then answered by
 /// bodies_within).
@@ -154,24 +184,35 @@ meeting nearby_edges_meet(const meeting& last, bool with_last, const body_view<N
         const std::size_t i = last.a_index, j = last.b_index;
         const std::size_t ia[4] = {as.previous(i), i, as.next(i), as.next(as.next(i))};
         const std::size_t jb[4] = {bs.previous(j), j, bs.next(j), bs.next(bs.next(j))};
+        // Edge x of A's three against edge y of B's, (i, j) = (1, 1)
+        // first, then the pairs keeping one of i and j, then the others.
+        static constexpr int order[9][2] = {{1, 1}, {1, 0}, {1, 2}, {0, 1}, {2, 1}, {0, 0}, {0, 2}, {2, 0}, {2, 2}};
+        const auto found = [&](int x, int y) {
+            meeting m;
+            m.how = meeting::kind::edges;
+            m.a_index = ia[x];
+            m.b_index = jb[y];
+            return m;
+        };
+        // (Bodies translated by sums that are doubles: decided exactly on
+        // the doubles, as witness_holds.)
+        point<double> ta[4], tb[4];
+        if (d == 0 && translated_exactly<NT>(a.pose, as, ia, 4, ta) && translated_exactly<NT>(b.pose, bs, jb, 4, tb)) {
+            for (int n = with_last ? 0 : 1; n < 9; ++n) {
+                const int x = order[n][0], y = order[n][1];
+                if (segments_meet_exactly(ta[x], ta[x + 1], tb[y], tb[y + 1])) return found(x, y);
+            }
+            return meeting{};
+        }
         point<NT> pa[4], pb[4];
         for (int k = 0; k < 4; ++k) {
             pa[k] = a.pose.template apply<NT>(as.vertex(ia[k]));
             pb[k] = b.pose.template apply<NT>(bs.vertex(jb[k]));
         }
         const NT d2 = squared_distance<NT>(d);
-        // Edge x of A's three against edge y of B's, (i, j) = (1, 1)
-        // first, then the pairs keeping one of i and j, then the others.
-        static constexpr int order[9][2] = {{1, 1}, {1, 0}, {1, 2}, {0, 1}, {2, 1}, {0, 0}, {0, 2}, {2, 0}, {2, 2}};
         for (int n = with_last ? 0 : 1; n < 9; ++n) {
             const int x = order[n][0], y = order[n][1];
-            if (edges_within(pa[x], pa[x + 1], pb[y], pb[y + 1], d, d2)) {
-                meeting m;
-                m.how = meeting::kind::edges;
-                m.a_index = ia[x];
-                m.b_index = jb[y];
-                return m;
-            }
+            if (edges_within(pa[x], pa[x + 1], pb[y], pb[y + 1], d, d2)) return found(x, y);
         }
         return meeting{};
     };
