@@ -25,6 +25,7 @@
 #include "influence2d/exact/certified_world.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/world/world.hpp"
+#include "support/shapes.hpp"
 #include "support/world_reference.hpp"
 
 namespace {
@@ -65,19 +66,6 @@ bool same_step(World& w, const std::vector<influence2d::body_pair>& want,
     return true;
 }
 
-// Polygon p translated by (tx, ty) in double.
-influence2d::polygon translated(const influence2d::polygon& p, double tx, double ty) {
-    std::vector<influence2d::ring_input> rings;
-    for (std::size_t r = 0; r < p.ring_count(); ++r) {
-        influence2d::ring_input ring;
-        ring.role = p.role(r);
-        for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
-            ring.vertices.push_back({p.vertex(i).x + tx, p.vertex(i).y + ty});
-        rings.push_back(ring);
-    }
-    return influence2d::polygon(std::move(rings));
-}
-
 // The unturned live bodies as a layer at their places: its join, one layer
 // and two, against the reference on the same bodies (none fixed).
 bool same_layer(const std::vector<influence2d::polygon>& shapes, const std::vector<test_world::body_state>& bodies,
@@ -86,7 +74,7 @@ bool same_layer(const std::vector<influence2d::polygon>& shapes, const std::vect
     std::vector<test_world::body_state> as_bodies;
     for (const test_world::body_state& b : bodies)
         if (b.alive && b.where.theta == 0) {
-            layer.push_back(translated(shapes[b.shape], b.where.tx, b.where.ty));
+            layer.push_back(test_shapes::translated(shapes[b.shape], b.where.tx, b.where.ty));
             as_bodies.push_back({b.shape, b.where, false, true});
         }
     const std::vector<influence2d::body_pair> want = test_world::reference_contacts(shapes, as_bodies, within);
