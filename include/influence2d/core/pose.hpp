@@ -44,10 +44,17 @@ struct rotation_pose {
     /// three are finite.
     explicit rotation_pose(const pose& p) : tx(p.tx), ty(p.ty) {
         check(p);
-        if (p.theta != 0) {
-            cosine_and_sine(p.theta);
+        turn_to(p.theta);
+    }
+
+    /// The pose turned to angle `theta` (finite, not checked), its
+    /// translation kept: c and s the constructor's values for theta.
+    void turn_to(double theta) {
+        if (theta != 0) {
+            cosine_and_sine(theta);
         } else {
-            s = p.theta;  // (c keeps its 1)
+            c = 1;
+            s = theta;
         }
     }
 

@@ -164,7 +164,8 @@ struct world_statistics {
 ///       (free bodies; fixed ones too for a free body)
 ///     candidates <- the near pairs with a moved body whose boxes meet
 ///       and whose posed bounding discs are not certainly farther apart
-///       than `within` (in parallel blocks for many near pairs). The
+///       than `within` (the discs not asked of a contact of the last step)
+///       (in parallel blocks for many near pairs). The
 ///       contacts of the last step whose bodies both stayed keep their
 ///       answer. In float, double and long double a pair whose coordinates
 ///       lie far from 1 in scale is answered on its two bodies scaled by a
@@ -522,7 +523,7 @@ private:
         }
         const point<double> was = b.bounds.centre();
         if (b.turned) {
-            b.pose = rotation_pose(pose{b.pose.tx, b.pose.ty, b.theta});
+            b.pose.turn_to(b.theta);  // (theta checked by move())
             b.turned = false;
         }
         b.scale = shapes_[b.shape]->scale + std::fabs(b.pose.tx) + std::fabs(b.pose.ty);
@@ -715,7 +716,9 @@ private:
                 if (had) kept.push_back(last_[k]);
                 continue;
             }
-            if (!boxes_overlap(a.bounds, b.bounds) || discs_apart(a, b)) continue;
+            // (A pair in contact at the last step is seldom apart by its
+            // discs now, and its witness or its test answers it anyway.)
+            if (!boxes_overlap(a.bounds, b.bounds) || (!(had && last_[k].shown) && discs_apart(a, b))) continue;
             record r;
             r.bodies = p;
             r.shift = static_cast<std::int16_t>(pair_shift(a, b));
