@@ -60,17 +60,19 @@ inline bool exact_difference(const point<double>& x, const point<double>& y, poi
 /// doubles as given: the side of the point a against the line through v + t
 /// with direction d (a point v of a polygon translated by t, moving by
 /// to - from). When the differences d, a - v and then a - v - t are
-/// doubles (exact_difference), the orientation of 0, d and that point
-/// (orientation_of_doubles); else in double words when their bound settles
-/// it (a point that passes within rounding of a vertex, not through it: a
-/// side of about 2^-53 of the coordinates' products, which the words' 2^-100
-/// settle); else the twelve products of its expansion summed exactly. The
-/// same sign is that of a against -d's line through v + t: a vertex of the
-/// still polygon moving by -d relative to the other.
+/// doubles (exact_difference; for a = v, a vertex two polygons share, a - v
+/// is 0 and a - v - t is -t, without the two), the orientation of 0, d and
+/// that point (orientation_of_doubles); else in double words when their
+/// bound settles it (a point that passes within rounding of a vertex, not
+/// through it: a side of about 2^-53 of the coordinates' products, which the
+/// words' 2^-100 settle); else the twelve products of its expansion summed
+/// exactly. The same sign is that of a against -d's line through v + t: a
+/// vertex of the still polygon moving by -d relative to the other.
 inline int exact_translated_side(const point<double>& from, const point<double>& to, const point<double>& a,
                                  const point<double>& v, const point<double>& t) {
-    point<double> d, av, w;
-    if (exact_difference(to, from, d) && exact_difference(a, v, av) && exact_difference(av, t, w))
+    point<double> d, av, w{-t.x, -t.y};
+    const bool shared = a.x == v.x && a.y == v.y;
+    if (exact_difference(to, from, d) && (shared || (exact_difference(a, v, av) && exact_difference(av, t, w))))
         return orientation_of_doubles(0, 0, d.x, d.y, w.x, w.y);  // d x w
     const double_word dx = double_word(to.x) - double_word(from.x), dy = double_word(to.y) - double_word(from.y);
     const double_word wx = double_word(a.x) - double_word(v.x) - double_word(t.x),
@@ -88,12 +90,14 @@ inline int exact_translated_side(const point<double>& from, const point<double>&
 
 /// The exact sign of d . ((a - v) - (a2 - v2)) for d = to - from, all
 /// finite doubles as given: 0 when the offsets a - v and a2 - v2 reach as
-/// far along d. When d, the offsets and their difference g are doubles
+/// far along d. Two shared vertices (a = v and a2 = v2: both offsets 0)
+/// give 0 at once. When d, the offsets and their difference g are doubles
 /// (exact_difference), d . g as the orientation of 0, d and g turned a
 /// quarter (orientation_of_doubles); else in double words when their bound
 /// settles it; else its sixteen products summed exactly.
 inline int exact_offsets_along(const point<double>& from, const point<double>& to, const point<double>& a,
                                const point<double>& v, const point<double>& a2, const point<double>& v2) {
+    if (a.x == v.x && a.y == v.y && a2.x == v2.x && a2.y == v2.y) return 0;
     point<double> d, o, o2, g;
     if (exact_difference(to, from, d) && exact_difference(a, v, o) && exact_difference(a2, v2, o2) &&
         exact_difference(o, o2, g))
