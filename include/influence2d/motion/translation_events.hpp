@@ -748,8 +748,10 @@ std::optional<filtered_event<Exact>> earliest_translation_event_filtered(const p
             // A site met again in a later window has the time it had: the
             // filter cannot tell a time from itself, so it is not compared.
             if (same_site(s, best->site)) return;
+            // (u = 1: the whole motion's path, which the site passed to be
+            // pending.)
             const double u = std::min(1.0, best->time_above());
-            if (!site_may_meet(a, b, b_start, {0, 0}, {u * sweep.x, u * sweep.y}, e, s)) return;
+            if (u < 1 && !site_may_meet(a, b, b_start, {0, 0}, {u * sweep.x, u * sweep.y}, e, s)) return;
         }
         filtered_event<Exact> c{};
         c.site = s;
