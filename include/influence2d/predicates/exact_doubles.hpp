@@ -71,8 +71,7 @@ inline bool exact_difference(const point<double>& x, const point<double>& y, poi
 inline int exact_translated_side(const point<double>& from, const point<double>& to, const point<double>& a,
                                  const point<double>& v, const point<double>& t) {
     point<double> d, av, w{-t.x, -t.y};
-    const bool shared = a.x == v.x && a.y == v.y;
-    if (exact_difference(to, from, d) && (shared || (exact_difference(a, v, av) && exact_difference(av, t, w))))
+    if (exact_difference(to, from, d) && (a == v || (exact_difference(a, v, av) && exact_difference(av, t, w))))
         return orientation_of_doubles(0, 0, d.x, d.y, w.x, w.y);  // d x w
     const double_word dx = double_word(to.x) - double_word(from.x), dy = double_word(to.y) - double_word(from.y);
     const double_word wx = double_word(a.x) - double_word(v.x) - double_word(t.x),
@@ -97,7 +96,7 @@ inline int exact_translated_side(const point<double>& from, const point<double>&
 /// settles it; else its sixteen products summed exactly.
 inline int exact_offsets_along(const point<double>& from, const point<double>& to, const point<double>& a,
                                const point<double>& v, const point<double>& a2, const point<double>& v2) {
-    if (a.x == v.x && a.y == v.y && a2.x == v2.x && a2.y == v2.y) return 0;
+    if (a == v && a2 == v2) return 0;
     point<double> d, o, o2, g;
     if (exact_difference(to, from, d) && exact_difference(a, v, o) && exact_difference(a2, v2, o2) &&
         exact_difference(o, o2, g))
