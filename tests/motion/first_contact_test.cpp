@@ -427,6 +427,37 @@ TEST_CASE("sweep: real neighbours translated back to their place, touching as th
     CHECK(at_end * 2 > t.motions);
 }
 
+TEST_CASE("sweep: a time of 1 held exactly against an event a few units in the last place before it",
+          "[sweep][reference]") {
+    // Two plots of 2.51 by 3.3 side by side, as in a survey grid of wheat
+    // plots (r-cran-spdata's, whose neighbours overlap so): the right one's
+    // left side a unit in the last place short of the left one's right
+    // side, the two overlapping by that much. B, pushed off to the right
+    // and up (aside), translates back to its place. Its left corners reach
+    // A's right side's line 2.2e-12 before the end; A's right corners reach
+    // B's bottom and top lines exactly as the motion ends (a time of 1
+    // settled on the doubles as given, held exactly in `certified`). The
+    // certified bound cannot order the two times; the time of 1 is then its
+    // own double words, which settle it against the other's. The roles
+    // swapped too, along a row of such pairs.
+    contact_tally t;
+    for (const double left : {36.394999999999996, 41.415, 48.945}) {
+        const double middle = left + 2.51, right = middle + 2.51;
+        const double shy = std::nextafter(middle, 0.0);
+        const polygon a =
+            outer_polygon({{left, 64.05}, {middle, 64.05}, {middle, 67.35000000000001}, {left, 67.35000000000001}});
+        const polygon b =
+            outer_polygon({{shy, 64.05}, {right, 64.05}, {right, 67.35000000000001}, {shy, 67.35000000000001}});
+        const pose from{0.0033000000000000113, 0.00099000000000000325, 0}, place{0, 0, 0};
+        const contact_result<double> r = check_translation(a, b, from, place, t, true);
+        CHECK(r.contact);
+        CHECK(r.time < 1);
+        check_translation(b, a, pose{-from.tx, -from.ty, 0}, place, t, true);
+    }
+    CHECK(t.motions == 6);
+    CHECK(t.later == 6);
+}
+
 TEST_CASE("sweep: real neighbours translated back past their place, passing within rounding of it",
           "[sweep][reference][real]") {
     // As above, but B goes on past its place to -0.37 of the push (straight

@@ -578,8 +578,9 @@ struct filtered_event {
     std::optional<time_fraction<certified>> fast;  ///< the time in certified, when certain
     std::optional<vertex_passage> passage;         ///< the vertices it passes through, when the frame names them
     std::optional<time_fraction<Exact>> exact;     ///< the exact time, once asked
-    /// The time in double words, once asked with no sign in doubt (none
-    /// when one was, or not yet asked: `words_asked`).
+    /// The time in double words, once asked with no sign in doubt, or the
+    /// time in certified when it is held exactly (none when a sign was in
+    /// doubt, or not yet asked: `words_asked`).
     std::optional<time_fraction<double_word>> words;
     bool words_asked = false;  ///< whether `words` was asked
     double rounded = 0;        ///< the exact time's nearest double, with exact
@@ -596,6 +597,16 @@ struct filtered_event {
         const double q = num / den;
         return den > 0 && std::isfinite(q) ? q * (1 + quotient_widening) + quotient_floor
                                            : std::numeric_limits<double>::infinity();
+    }
+
+    /// Whether the time in certified holds its exact value (num and den
+    /// without error: a time of 1 settled on the doubles as given, which
+    /// the same time in double words leaves in doubt against the end).
+    bool held_exactly() const { return fast && fast->num.exact() && fast->den.exact(); }
+
+    /// The time in certified, held exactly, as double words (exact too).
+    time_fraction<double_word> fast_as_words() const {
+        return {double_word(fast->num.value()), double_word(fast->den.value())};
     }
 
     /// Sets the exact time, its nearest double and the doubles next to it.
@@ -659,7 +670,8 @@ inline bool same_passage_time(const polygon& a, const polygon& b, point<double> 
 /// equal; else c's certified time against the doubles around e's exact
 /// time; else in double words when their bound settles it (`word_time`
 /// computes a site's time in double words, none when a sign is in doubt;
-/// each event's kept); else exactly (`exact_time` computes a site's exact
+/// a certified time held exactly is its own; each event's kept); else
+/// exactly (`exact_time` computes a site's exact
 /// time: it exists, both events having one).
 template <class Exact, class SameTime, class WordTime, class ExactTime>
 int order(filtered_event<Exact>& c, filtered_event<Exact>& e, SameTime&& same_time, WordTime&& word_time,
@@ -676,7 +688,7 @@ int order(filtered_event<Exact>& c, filtered_event<Exact>& e, SameTime&& same_ti
     if (!c.exact || !e.exact) {
         for (filtered_event<Exact>* x : {&c, &e})
             if (!x->words_asked) {
-                x->words = word_time(x->site);
+                x->words = x->held_exactly() ? x->fast_as_words() : word_time(x->site);
                 x->words_asked = true;
             }
         if (c.words && e.words)
