@@ -238,6 +238,25 @@ inline bool touches(const meeting& w, const contact_site& s, const polygon& a, c
     }
 }
 
+/// What shows the meeting at an s strictly between `last` and the window's
+/// end w, after the window's last event (witness_between; none of the
+/// window's events comes on (last, w], so the answer holds on all of it):
+/// none when `last` is not certainly before w, or the test's bound leaves a
+/// sign in doubt (noted_fallback); then the search loads the next window as
+/// if it had not been asked.
+template <class NT, class Exit>
+std::optional<meeting> meeting_before_window_end(translation_frame<NT>& f, const time_fraction<NT>& last, double w,
+                                                 const std::optional<Exit>& exit, double scale, double reach) {
+    using tr = number_traits<NT>;
+    const time_fraction<NT> end{tr::from_double(w), NT(1)};
+    return noted_fallback::run(
+        [&]() -> std::optional<meeting> {
+            if (compare_times(last, end) >= 0) return std::nullopt;
+            return witness_between(f, last, end, exit ? &exit->site : nullptr, scale, reach);
+        },
+        [] { return std::optional<meeting>(); });
+}
+
 /// An event of the exit search: its time, its site, and which of the site's
 /// contact times it is (translation_frame::times' order, the same in every
 /// NT whose signs are exact).
@@ -339,6 +358,15 @@ void sort_by_time(std::vector<timed_site<NT>>& events, Settle&& settle) {
               [&](const timed_site<NT>& l, const timed_site<NT>& r) { return compare_events(l, r, settle) < 0; });
 }
 
+/// The sweep, in placing margins of the inputs' scale, up to which the exit
+/// search takes B's whole reach s_max as one window: B's box then overlaps
+/// A's by at most a few dozen margins along the direction (neighbours that
+/// share a border, or overlap by rounding). Windows pay where B sweeps far
+/// (each holds few of the sites); over so short a sweep every window holds
+/// the same sites, and a meeting test inside one, in a filtered type, is in
+/// doubt. 64 margins: four of exit_reach's own room, sixteen times over.
+inline constexpr double short_sweep = 64;
+
 /// The exit search of exit_distance (its pseudocode) for B posed by t and
 /// translated by s (dx, dy), the direction's largest component in [1, 2);
 /// `scale` bounds the magnitudes of the polygons and of t's translation.
@@ -402,7 +430,7 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
         });
         sort_by_time(events, settle);
     };
-    double w_low = -1, w = std::min(s_max, s_max * first_window);
+    double w_low = -1, w = s_max * reach <= short_sweep * e0 ? s_max : std::min(s_max, s_max * first_window);
     load(w_low, w);
     std::size_t next = 0;
     bool stale = false;  // an event at the exit so far touches the witness
@@ -421,6 +449,14 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
         for (; next < events.size() && at_last(events[next], exit && next > 0); ++next)
             if (touches(witness, events[next].site, a, b)) stale = true;
         while (next == events.size() && w < s_max) {
+            // (No event comes on (last, w]: a stale witness is asked there
+            // before the next window is loaded.)
+            if (stale)
+                if (const std::optional<meeting> m = meeting_before_window_end(f, last, w, exit, scale, reach)) {
+                    if (!*m) return exit;
+                    witness = *m;
+                    stale = false;
+                }
             w_low = w;
             w = std::min(s_max, 2 * w);
             load(w_low, w);
@@ -452,7 +488,8 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
 ///   s_max <- beyond it B's box has left A's box along d (double, widened)
 ///   the events (every time s >= 0 a vertex starts or stops lying on an
 ///   edge: contact_times, both ends of a sliding contact), gathered by
-///   windows (0, s_max / 64], then doubled, from the sites whose boxes
+///   windows (0, s_max / 64], then doubled (one window (0, s_max] when
+///   B sweeps within short_sweep margins), from the sites whose boxes
 ///   overlap, B's swept over the window, and whose vertex's path over it
 ///   may meet the edge (site_may_meet); sorted (sort_by_time: by their
 ///   doubles, the order checked in NT): s_1 < s_2 < ... < s_K
@@ -466,6 +503,9 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
 ///           that meets (witness_near), else the meeting there (the
 ///           one-shot query's steps)
 ///           apart there:                              last
+///           (the window's events all passed while w is stale: w <- at
+///           a double between `last` and the window's end, as above; apart
+///           there: last; a doubt there: the next window loaded as before)
 ///       no next event:                                last (then apart)
 ///       last <- the next event
 ///
