@@ -1165,6 +1165,104 @@ TEST_CASE("layer_pairs: a grid of rectangles whose shared sides are a unit in th
     CHECK(apart_by_a_hair > 50);
 }
 
+TEST_CASE("layer_pairs: convex triangles and quadrilaterals sharing their sides exactly, against the exact reference",
+          "[world]") {
+    // A jittered lattice (random doubles, not snapped), each cell a convex
+    // quadrilateral or its two triangles, so that neighbours share their
+    // sides and corners exactly; some cells with a corner moved by a unit
+    // in the last place, into or out of their neighbours; and small random
+    // triangles turned anyhow among them. Small convex pairs take the
+    // separating-edge test on their doubles (join_convex_limit), the others
+    // bodies_within. The reference: every pair whose boxes meet, its
+    // regions placed in exact rationals (CGAL), both layer forms, roles
+    // swapped. In double too: every pair here is a convex pair, decided
+    // exactly on its doubles (bodies_within in double misses some of the
+    // touching ones).
+    rng g(509);
+    std::size_t touching = 0;
+    for (int round = 0; round < test_effort::scaled(4); ++round) {
+        const int n = 8;
+        const double step = round % 2 == 0 ? 1.0 : 0.37, origin = round >= 2 ? 4096.5 : 0.0;
+        std::vector<std::vector<point<double>>> lattice(n + 1, std::vector<point<double>>(n + 1));
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= n; ++j)
+                lattice[i][j] = {origin + step * (i + 0.2 * g.signed_unit()),
+                                 origin + step * (j + 0.2 * g.signed_unit())};
+        std::vector<polygon> layer;
+        const auto add = [&](std::vector<point<double>> ring) {
+            if (g.index(6) == 0) {  // a corner nudged by a unit in the last place
+                point<double>& c = ring[g.index(ring.size())];
+                c.x = std::nextafter(c.x, g.index(2) ? HUGE_VAL : -HUGE_VAL);
+            }
+            layer.push_back(polygon({ring_input{ring}}));
+        };
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) {
+                const point<double>&a = lattice[i][j], &b = lattice[i + 1][j], &c = lattice[i + 1][j + 1],
+                      &d = lattice[i][j + 1];
+                if (g.index(2) == 0) {
+                    add({a, b, c, d});
+                } else {
+                    add({a, b, c});
+                    add({a, c, d});
+                }
+            }
+        for (int k = 0; k < 20; ++k) {
+            const point<double> at{origin + step * g.uniform(0, n), origin + step * g.uniform(0, n)};
+            const double r = step * g.uniform(0.1, 0.6), t = g.uniform(0, 6.28);
+            add({{at.x + r * std::cos(t), at.y + r * std::sin(t)},
+                 {at.x + r * std::cos(t + 2.1), at.y + r * std::sin(t + 2.1)},
+                 {at.x + r * std::cos(t + 4.2), at.y + r * std::sin(t + 4.2)}});
+        }
+        std::vector<test_exact::placed_shape> exact;
+        for (const polygon& p : layer) exact.push_back(test_exact::place(p, 0, 0, 0));
+        std::vector<body_pair> want;
+        for (std::size_t i = 0; i < layer.size(); ++i)
+            for (std::size_t j = i + 1; j < layer.size(); ++j) {
+                const box a = layer[i].bounds(), b = layer[j].bounds();
+                if (a.max_x < b.min_x || b.max_x < a.min_x || a.max_y < b.min_y || b.max_y < a.min_y) continue;
+                if (!test_exact::regions_meet(exact[i], exact[j])) continue;
+                want.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+                // (Neighbours of the lattice: a shared corner at least.)
+                for (std::size_t u = 0; u < layer[i].size(); ++u)
+                    for (std::size_t v = 0; v < layer[j].size(); ++v)
+                        if (layer[i].vertex(u) == layer[j].vertex(v)) {
+                            ++touching;
+                            u = layer[i].size();
+                            break;
+                        }
+            }
+        INFO("round " << round);
+        CHECK(show_pairs(certified_layer_pairs(layer)) == show_pairs(want));
+        CHECK(show_pairs(layer_pairs<double>(layer)) == show_pairs(want));
+        CHECK(show_pairs(layer_pairs<exact_rational>(layer)) == show_pairs(want));
+        // Two layers: the cells of even index against the others, both ways.
+        std::vector<polygon> even, odd;
+        std::vector<std::uint32_t> even_id, odd_id;
+        for (std::size_t k = 0; k < layer.size(); ++k) {
+            (k % 2 ? odd : even).push_back(layer[k]);
+            (k % 2 ? odd_id : even_id).push_back(static_cast<std::uint32_t>(k));
+        }
+        std::vector<body_pair> want_eo, want_oe;
+        for (const body_pair& p : want)
+            if (p.first % 2 != p.second % 2) {
+                const std::uint32_t e = p.first % 2 ? p.second : p.first, o = p.first % 2 ? p.first : p.second;
+                want_eo.push_back({e / 2, o / 2});
+                want_oe.push_back({o / 2, e / 2});
+            }
+        std::sort(want_eo.begin(), want_eo.end(), [](const body_pair& l, const body_pair& r) {
+            return std::pair(l.first, l.second) < std::pair(r.first, r.second);
+        });
+        std::sort(want_oe.begin(), want_oe.end(), [](const body_pair& l, const body_pair& r) {
+            return std::pair(l.first, l.second) < std::pair(r.first, r.second);
+        });
+        CHECK(show_pairs(certified_layer_pairs(even, odd)) == show_pairs(want_eo));
+        CHECK(show_pairs(layer_pairs<double>(odd, even)) == show_pairs(want_oe));
+    }
+    // Not vacuous: many pairs meet only along a shared side or corner.
+    CHECK(touching > 200);
+}
+
 TEST_CASE("layer_pairs: the candidates and those answered again in exact rationals are counted", "[world]") {
     // Unit squares in a row, 0.5 apart exactly, and a far one. Within 0.5,
     // each neighbour lies exactly at the distance: a sign the certified

@@ -1375,12 +1375,6 @@ private:
         }
     };
     probe_odds interior_odds_;
-    /// Two convex polygons take the separating-edge test when the product of
-    /// their sizes is at most this (convex_pair_pays). Measured on random
-    /// poses near contact (the time study's convex family, double and
-    /// certified): 8 x 8 to 16 x 16 frames cost 10-25% less by it, 8 x 32
-    /// ones 20% more.
-    static constexpr std::size_t convex_pair_limit = 256;
     bool convex_route_ = false;  ///< A and B convex and small, d == 0
     /// A and B both convex: their inner discs lie deep enough in them to
     /// answer many frames (inner_discs_overlap). Measured on the time study's

@@ -16,7 +16,9 @@
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/core/range_scaling.hpp"
+#include "influence2d/detect/convex_pair.hpp"
 #include "influence2d/influence/bounds.hpp"
+#include "influence2d/predicates/convexity.hpp"
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/query/batch.hpp"
 #include "influence2d/scene/placed_polygon.hpp"
@@ -31,7 +33,7 @@ namespace influence2d {
 /// What a join did besides its answer, for audits and precision studies
 /// (layer_pairs' `statistics`).
 struct layer_statistics {
-    std::size_t candidates = 0;   ///< pairs whose grown boxes meet: each tested by bodies_within
+    std::size_t candidates = 0;   ///< pairs whose grown boxes meet: each tested (layer_pairs' pseudocode)
     std::size_t exact_pairs = 0;  ///< candidates answered again in the Exact type (a sign NT could not settle)
     bool swept = false;           ///< the candidates found by sorting the boxes along x (swept_pairs), not by box trees
 };
@@ -81,6 +83,18 @@ void boxes_of(const std::vector<polygon>& layer, const char* which, double withi
 /// tests' cost.
 inline constexpr std::size_t join_grain = 16;
 
+/// Two convex polygons whose sizes' product is at most this take the
+/// separating-edge test on their doubles as given in a join (d = 0), where
+/// bodies_within would place them. On the real layers of docs/world.md
+/// (callgrind, one join each): the wheat plots, rectangles of four
+/// vertices whose neighbours touch or overlap by a unit in the last place,
+/// 1.97 -> 1.77 million instructions in double and 2.54 -> 1.74 certified;
+/// allowing larger pairs (up to 256, the detector's convex_pair_limit) cost
+/// the Olinda blocks, the Boston tracts and the NC counties 1% to 2% more
+/// than bodies_within (touching neighbours: the test refutes every edge of
+/// both, where bodies_within finds a shared vertex on the other's boundary).
+inline constexpr std::size_t join_convex_limit = 16;
+
 /// The placings of the polygons of a layer that some candidate names, each
 /// found by the polygon's index (4 bytes for a polygon no candidate names),
 /// in place in a deque's blocks of a few hundred bytes (no allocation of its
@@ -121,18 +135,38 @@ private:
     std::deque<placed_polygon<NT>> placed_;  // the named polygons' placings, in index order
 };
 
+/// Whether polygon k of `layer` is convex (is_convex_polygon), decided
+/// once: `known[k]` holds the answer (-1 until asked).
+inline bool convex_as_known(const std::vector<polygon>& layer, std::vector<signed char>& known, std::size_t k) {
+    if (known[k] < 0) known[k] = is_convex_polygon(layer[k]) ? 1 : 0;
+    return known[k] == 1;
+}
+
 /// The candidates' answers (in parallel chunks) and the pairs within d;
 /// `same` when both layers are one. Counts into `statistics` when given.
 template <class NT, class Exact>
 std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::vector<polygon>& second, bool same,
                                  const std::vector<body_pair>& candidates, double within, unsigned threads,
                                  layer_statistics* statistics) {
+    // Two convex polygons of join_convex_limit at most, for d = 0, are a
+    // convex pair: neither placed for it.
+    std::vector<signed char> convex_first(within == 0 ? first.size() : 0, -1),
+        convex_second(within == 0 && !same ? second.size() : 0, -1);
+    std::vector<signed char>& second_convex = same ? convex_first : convex_second;
+    std::vector<char> convex_pair(candidates.size(), 0);
     std::vector<char> named_first(first.size(), 0), named_second(second.size(), 0);
     std::size_t vertices = 0;
-    for (const body_pair& c : candidates) {
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+        const body_pair& c = candidates[k];
+        const std::size_t na = first[c.first].size(), nb = second[c.second].size();
+        if (within == 0 && na * nb <= join_convex_limit && convex_as_known(first, convex_first, c.first) &&
+            convex_as_known(second, second_convex, c.second)) {
+            convex_pair[k] = 1;
+            continue;
+        }
         named_first[c.first] = 1;
         (same ? named_first : named_second)[c.second] = 1;
-        vertices += first[c.first].size() + second[c.second].size();
+        vertices += na + nb;
     }
     const unsigned pair_threads = vertices < join_parallel_vertices ? 1u : threads;
     placed_polygons<NT> placed_first(first, named_first, pair_threads);
@@ -143,6 +177,10 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::v
         const rotation_pose here(pose{});
         for (std::size_t k = lo; k < hi; ++k) {
             const polygon &a = first[candidates[k].first], &b = second[candidates[k].second];
+            if (convex_pair[k]) {
+                meets[k] = convex_polygons_meet_as_given(a, b) ? 1 : 0;
+                continue;
+            }
             placed_polygon<NT>&pa = placed_first[candidates[k].first], &pb = second_placed[candidates[k].second];
             const body_view<NT> va{&a, here, coordinate_scale(a), &pa}, vb{&b, here, coordinate_scale(b), &pb};
             bool exact = false;
@@ -209,13 +247,17 @@ inline std::vector<polygon> scaled_layer(const std::vector<polygon>& layer, int 
 ///     by sorting the boxes along x and sweeping (swept_pairs) when that
 ///     tests at most sweep_tests_per_box pairs a box; else by a box tree
 ///     over them joined with itself (box_tree::self_join)
-///   each polygon some candidate names placed where it stands, once for
-///   all its pairs, with its run boxes and, for several rings, its ring
+///   for d = 0, two convex polygons (is_convex_polygon) whose sizes'
+///   product is at most join_convex_limit are a convex pair
+///   each polygon some other candidate names placed where it stands, once
+///   for all its pairs, with its run boxes and, for several rings, its ring
 ///   boxes (placed_polygons)
 ///   each candidate, on `threads` threads (0: every hardware thread) taking
-///   join_grain candidates at a time, or on one when the candidates hold
-///   fewer than join_parallel_vertices vertices: bodies_within on the two
-///   placings
+///   join_grain candidates at a time, or on one when the other candidates
+///   hold fewer than join_parallel_vertices vertices: a convex pair by the
+///   separating-edge test on its doubles as given
+///   (convex_polygons_meet_as_given), the others by bodies_within on the
+///   two placings
 ///
 /// `statistics`, when given, receives the number of candidates, of those
 /// answered again in Exact, and whether the sweep found them. Throws
