@@ -239,20 +239,21 @@ inline bool touches(const meeting& w, const contact_site& s, const polygon& a, c
 }
 
 /// What shows the meeting at an s strictly between `last` and the window's
-/// end w, after the window's last event (witness_between; none of the
-/// window's events comes on (last, w], so the answer holds on all of it):
-/// none when `last` is not certainly before w, or the test's bound leaves a
-/// sign in doubt (noted_fallback); then the search loads the next window as
-/// if it had not been asked.
-template <class NT, class Exit>
+/// end w, after the window's last event (witness_between, tried first on
+/// the edges next to `last_site`, that event's site, when given; none of
+/// the window's events comes on (last, w], so the answer holds on all of
+/// it): none when `last` is not certainly before w, or the test's bound
+/// leaves a sign in doubt (noted_fallback); then the search loads the next
+/// window as if it had not been asked.
+template <class NT>
 std::optional<meeting> meeting_before_window_end(translation_frame<NT>& f, const time_fraction<NT>& last, double w,
-                                                 const std::optional<Exit>& exit, double scale, double reach) {
+                                                 const contact_site* last_site, double scale, double reach) {
     using tr = number_traits<NT>;
     const time_fraction<NT> end{tr::from_double(w), NT(1)};
     return noted_fallback::run(
         [&]() -> std::optional<meeting> {
             if (compare_times(last, end) >= 0) return std::nullopt;
-            return witness_between(f, last, end, exit ? &exit->site : nullptr, scale, reach);
+            return witness_between(f, last, end, last_site, scale, reach);
         },
         [] { return std::optional<meeting>(); });
 }
@@ -452,7 +453,8 @@ std::optional<timed_site<NT>> exit_search(const polygon& a, const polygon& b, co
             // (No event comes on (last, w]: a stale witness is asked there
             // before the next window is loaded.)
             if (stale)
-                if (const std::optional<meeting> m = meeting_before_window_end(f, last, w, exit, scale, reach)) {
+                if (const std::optional<meeting> m =
+                        meeting_before_window_end(f, last, w, exit ? &exit->site : nullptr, scale, reach)) {
                     if (!*m) return exit;
                     witness = *m;
                     stale = false;
