@@ -69,6 +69,33 @@ TEST_CASE("convexity: one convex ring, decided exactly", "[convexity]") {
     CHECK_FALSE(is_convex_polygon(one_ring({{0, 0}, {1, 1}, {2, 2}})));
 }
 
+TEST_CASE("convexity: a polygon that is its own box, decided exactly", "[convexity]") {
+    // Every start corner, both ways round.
+    const std::vector<point<double>> corners = {{1, 2}, {5, 2}, {5, 3}, {1, 3}};
+    for (std::size_t start = 0; start < 4; ++start)
+        for (const bool reversed : {false, true}) {
+            std::vector<point<double>> v;
+            for (std::size_t k = 0; k < 4; ++k) v.push_back(corners[(start + (reversed ? 4 - k : k)) % 4]);
+            INFO("start " << start << (reversed ? ", clockwise" : ""));
+            CHECK(fills_its_box(one_ring(v)));
+        }
+    // A corner a unit in the last place off its box's corner: a
+    // quadrilateral whose region is not its box.
+    CHECK_FALSE(fills_its_box(one_ring({{1, 2}, {5, 2}, {5, 3}, {std::nextafter(1.0, 2.0), 3}})));
+    CHECK_FALSE(fills_its_box(one_ring({{1, 2}, {5, 2}, {5, std::nextafter(3.0, 4.0)}, {1, 3}})));
+    // The corners in a crossing order (a bow tie), a spike back along a side,
+    // a repeated corner, a flat box, a straight vertex on a side, a turned
+    // square, a triangle, a hole.
+    CHECK_FALSE(fills_its_box(one_ring({{1, 2}, {5, 3}, {5, 2}, {1, 3}})));
+    CHECK_FALSE(fills_its_box(one_ring({{1, 2}, {5, 2}, {5, 3}, {5, 2}})));
+    CHECK_FALSE(fills_its_box(one_ring({{1, 2}, {5, 2}, {5, 2}, {5, 3}})));
+    CHECK_FALSE(fills_its_box(one_ring({{1, 2}, {3, 2}, {5, 2}, {4, 2}})));
+    CHECK_FALSE(fills_its_box(one_ring({{1, 2}, {3, 2}, {5, 2}, {5, 3}, {1, 3}})));
+    CHECK_FALSE(fills_its_box(one_ring({{0, -1}, {1, 0}, {0, 1}, {-1, 0}})));
+    CHECK_FALSE(fills_its_box(one_ring({{1, 2}, {5, 2}, {5, 3}})));
+    CHECK_FALSE(fills_its_box(test_shapes::square_with_hole()));
+}
+
 TEST_CASE("convex pairs: the separating-edge route equals the CGAL reference", "[convexity][detector]") {
     test_random::rng r(20261126);
     verdicts v;

@@ -30,6 +30,7 @@
 #include "influence2d/exact/certified_intersects.hpp"
 #include "influence2d/exact/certified_world.hpp"
 #include "influence2d/number/cgal.hpp"
+#include "influence2d/predicates/convexity.hpp"
 #include "influence2d/query/both_posed.hpp"
 #include "influence2d/world/layer_pairs.hpp"
 #include "influence2d/world/world.hpp"
@@ -232,6 +233,50 @@ world_statistics check_world_scene(std::uint64_t seed, point<double> origin, dou
     CHECK(contacts > 0);  // the scene has contacts to compare
     CHECK(ends > 0);      // and some of them end
     return w.statistics();
+}
+
+/// The pairs (i, j), i < j, of a layer at its own coordinates whose closed
+/// regions meet: every pair whose boxes meet, both placed in exact
+/// rationals (CGAL, test_exact::regions_meet).
+std::vector<body_pair> exact_layer_pairs(const std::vector<polygon>& layer) {
+    std::vector<test_exact::placed_shape> exact;
+    for (const polygon& p : layer) exact.push_back(test_exact::place(p, 0, 0, 0));
+    std::vector<body_pair> want;
+    for (std::size_t i = 0; i < layer.size(); ++i)
+        for (std::size_t j = i + 1; j < layer.size(); ++j) {
+            const box a = layer[i].bounds(), b = layer[j].bounds();
+            if (a.max_x < b.min_x || b.max_x < a.min_x || a.max_y < b.min_y || b.max_y < a.min_y) continue;
+            if (test_exact::regions_meet(exact[i], exact[j]))
+                want.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
+        }
+    return want;
+}
+
+/// A layer's polygons of even index and those of odd index, as two layers.
+std::pair<std::vector<polygon>, std::vector<polygon>> even_and_odd(const std::vector<polygon>& layer) {
+    std::pair<std::vector<polygon>, std::vector<polygon>> out;
+    for (std::size_t k = 0; k < layer.size(); ++k) (k % 2 ? out.second : out.first).push_back(layer[k]);
+    return out;
+}
+
+/// The pairs of a one-layer answer between a polygon of even index and one
+/// of odd index, as the answers of the two layers of even_and_odd: the
+/// even ones against the odd ones, and the odd ones against the even ones
+/// (each sorted).
+std::pair<std::vector<body_pair>, std::vector<body_pair>> even_odd_pairs(const std::vector<body_pair>& pairs) {
+    std::pair<std::vector<body_pair>, std::vector<body_pair>> out;
+    for (const body_pair& p : pairs)
+        if (p.first % 2 != p.second % 2) {
+            const std::uint32_t e = p.first % 2 ? p.second : p.first, o = p.first % 2 ? p.first : p.second;
+            out.first.push_back({e / 2, o / 2});
+            out.second.push_back({o / 2, e / 2});
+        }
+    const auto by_pair = [](const body_pair& l, const body_pair& r) {
+        return std::pair(l.first, l.second) < std::pair(r.first, r.second);
+    };
+    std::sort(out.first.begin(), out.first.end(), by_pair);
+    std::sort(out.second.begin(), out.second.end(), by_pair);
+    return out;
 }
 
 }  // namespace
@@ -1214,52 +1259,101 @@ TEST_CASE("layer_pairs: convex triangles and quadrilaterals sharing their sides 
                  {at.x + r * std::cos(t + 2.1), at.y + r * std::sin(t + 2.1)},
                  {at.x + r * std::cos(t + 4.2), at.y + r * std::sin(t + 4.2)}});
         }
-        std::vector<test_exact::placed_shape> exact;
-        for (const polygon& p : layer) exact.push_back(test_exact::place(p, 0, 0, 0));
-        std::vector<body_pair> want;
-        for (std::size_t i = 0; i < layer.size(); ++i)
-            for (std::size_t j = i + 1; j < layer.size(); ++j) {
-                const box a = layer[i].bounds(), b = layer[j].bounds();
-                if (a.max_x < b.min_x || b.max_x < a.min_x || a.max_y < b.min_y || b.max_y < a.min_y) continue;
-                if (!test_exact::regions_meet(exact[i], exact[j])) continue;
-                want.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
-                // (Neighbours of the lattice: a shared corner at least.)
-                for (std::size_t u = 0; u < layer[i].size(); ++u)
-                    for (std::size_t v = 0; v < layer[j].size(); ++v)
-                        if (layer[i].vertex(u) == layer[j].vertex(v)) {
-                            ++touching;
-                            u = layer[i].size();
-                            break;
-                        }
-            }
+        const std::vector<body_pair> want = exact_layer_pairs(layer);
+        // (Neighbours of the lattice: a shared corner at least.)
+        for (const body_pair& p : want) {
+            const polygon &a = layer[p.first], &b = layer[p.second];
+            bool shared = false;
+            for (std::size_t u = 0; u < a.size() && !shared; ++u)
+                for (std::size_t v = 0; v < b.size() && !shared; ++v) shared = a.vertex(u) == b.vertex(v);
+            touching += shared ? 1 : 0;
+        }
         INFO("round " << round);
         CHECK(show_pairs(certified_layer_pairs(layer)) == show_pairs(want));
         CHECK(show_pairs(layer_pairs<double>(layer)) == show_pairs(want));
         CHECK(show_pairs(layer_pairs<exact_rational>(layer)) == show_pairs(want));
         // Two layers: the cells of even index against the others, both ways.
-        std::vector<polygon> even, odd;
-        std::vector<std::uint32_t> even_id, odd_id;
-        for (std::size_t k = 0; k < layer.size(); ++k) {
-            (k % 2 ? odd : even).push_back(layer[k]);
-            (k % 2 ? odd_id : even_id).push_back(static_cast<std::uint32_t>(k));
-        }
-        std::vector<body_pair> want_eo, want_oe;
-        for (const body_pair& p : want)
-            if (p.first % 2 != p.second % 2) {
-                const std::uint32_t e = p.first % 2 ? p.second : p.first, o = p.first % 2 ? p.first : p.second;
-                want_eo.push_back({e / 2, o / 2});
-                want_oe.push_back({o / 2, e / 2});
-            }
-        std::sort(want_eo.begin(), want_eo.end(), [](const body_pair& l, const body_pair& r) {
-            return std::pair(l.first, l.second) < std::pair(r.first, r.second);
-        });
-        std::sort(want_oe.begin(), want_oe.end(), [](const body_pair& l, const body_pair& r) {
-            return std::pair(l.first, l.second) < std::pair(r.first, r.second);
-        });
+        const auto [even, odd] = even_and_odd(layer);
+        const auto [want_eo, want_oe] = even_odd_pairs(want);
         CHECK(show_pairs(certified_layer_pairs(even, odd)) == show_pairs(want_eo));
         CHECK(show_pairs(layer_pairs<double>(odd, even)) == show_pairs(want_oe));
     }
     // Not vacuous: many pairs meet only along a shared side or corner.
+    CHECK(touching > 200);
+}
+
+TEST_CASE("layer_pairs: axis-parallel rectangles among quadrilaterals that nearly are, against the exact reference",
+          "[world]") {
+    // Rectangles on a jittered grid (random doubles as grid lines, so that
+    // neighbours share their sides exactly), each ring starting at a random
+    // corner and going either way round; some with a corner moved by a unit
+    // in the last place along x or y (a quadrilateral that is no longer its
+    // own box, convex or not); rectangles spanning a few cells from grid
+    // line to grid line, overlapping and touching the others; some with a
+    // straight vertex on a side (five vertices), some squares turned by
+    // 45 degrees. Two polygons that fill their boxes are answered by the
+    // boxes (fills_its_box), the other small convex pairs by the
+    // separating-edge test. The reference: every pair whose boxes meet, its
+    // regions placed in exact rationals (CGAL), in one layer and two,
+    // roles swapped.
+    rng g(613);
+    std::size_t touching = 0, boxes_meeting = 0;
+    for (int round = 0; round < test_effort::scaled(4); ++round) {
+        const int n = 9;
+        const double step = round % 2 == 0 ? 1.0 : 0.013, origin = round >= 2 ? -7.0e5 : 0.0;
+        std::vector<double> xs(n + 1), ys(n + 1);
+        for (int k = 0; k <= n; ++k) {
+            xs[k] = origin + step * (k + 0.3 * g.signed_unit());
+            ys[k] = origin + step * (k + 0.3 * g.signed_unit());
+        }
+        std::vector<polygon> layer;
+        const auto add_box = [&](double x0, double y0, double x1, double y1) {
+            std::vector<point<double>> c = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+            if (g.index(5) == 0) {
+                point<double>& v = c[g.index(4)];
+                double& w = g.index(2) ? v.x : v.y;
+                w = std::nextafter(w, g.index(2) ? HUGE_VAL : -HUGE_VAL);
+            }
+            if (g.index(8) == 0) c.insert(c.begin() + 1, point<double>{x0 + (x1 - x0) * 0.5, y0});
+            std::rotate(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(g.index(c.size())), c.end());
+            if (g.index(2)) std::reverse(c.begin(), c.end());
+            layer.push_back(polygon({ring_input{c}}));
+        };
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j)
+                if (g.index(4) != 0) add_box(xs[i], ys[j], xs[i + 1], ys[j + 1]);
+        for (int k = 0; k < 12; ++k) {
+            const std::size_t i = g.index(n - 1), j = g.index(n - 1);
+            const std::size_t w = 1 + g.index(3), h = 1 + g.index(3);
+            add_box(xs[i], ys[j], xs[std::min<std::size_t>(i + w, n)], ys[std::min<std::size_t>(j + h, n)]);
+        }
+        for (int k = 0; k < 6; ++k) {
+            const double x = xs[g.index(n + 1)], y = ys[g.index(n + 1)], r = step * g.uniform(0.2, 0.8);
+            layer.push_back(polygon({ring_input{{{x + r, y}, {x, y + r}, {x - r, y}, {x, y - r}}}}));
+        }
+        for (std::size_t i = 0; i < layer.size(); ++i)
+            for (std::size_t j = i + 1; j < layer.size(); ++j)
+                if (boxes_overlap(layer[i].bounds(), layer[j].bounds()) && fills_its_box(layer[i]) &&
+                    fills_its_box(layer[j]))
+                    ++boxes_meeting;
+        const std::vector<body_pair> want = exact_layer_pairs(layer);
+        for (const body_pair& p : want) {
+            const box &a = layer[p.first].bounds(), &b = layer[p.second].bounds();
+            if (a.max_x == b.min_x || b.max_x == a.min_x || a.max_y == b.min_y || b.max_y == a.min_y) ++touching;
+        }
+        INFO("round " << round);
+        CHECK(show_pairs(certified_layer_pairs(layer)) == show_pairs(want));
+        CHECK(show_pairs(layer_pairs<exact_rational>(layer)) == show_pairs(want));
+        // Two layers: the polygons of even index against the others, both ways.
+        const auto [even, odd] = even_and_odd(layer);
+        const auto [want_eo, want_oe] = even_odd_pairs(want);
+        CHECK(show_pairs(certified_layer_pairs(even, odd)) == show_pairs(want_eo));
+        CHECK(show_pairs(certified_layer_pairs(odd, even)) == show_pairs(want_oe));
+        CHECK(show_pairs(layer_pairs<exact_rational>(odd, even)) == show_pairs(want_oe));
+    }
+    // Not vacuous: many pairs of boxes, and many pairs that meet only along
+    // a side or at a corner.
+    CHECK(boxes_meeting > 400);
     CHECK(touching > 200);
 }
 

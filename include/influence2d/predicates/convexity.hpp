@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSL-1.0
 #pragma once
 /// \file
-/// Whether a polygon is one convex ring, decided exactly on its doubles.
+/// Whether a polygon is one convex ring, or one ring that is its own box,
+/// decided exactly on its doubles.
 
 #include <cstddef>
 
@@ -50,6 +51,27 @@ inline bool is_convex_polygon(const polygon& p) {
         if (!direction_in_upper_half(a, b) && direction_in_upper_half(b, c)) ++upward_passes;
     }
     return some_left_turn && upward_passes == 1;
+}
+
+/// Whether p's closed region is its closed box: one ring of four vertices
+/// whose edges are parallel to the axes in turn (consecutive vertices
+/// differ in exactly one coordinate, and not in the one the edge before
+/// changed). Then the vertices are (x0, y0), (x1, y0), (x1, y1), (x0, y1)
+/// from some vertex on, or those taken along y first, with x0 != x1 and
+/// y0 != y1: the four corners of p's box, joined along its sides, whichever
+/// corner the ring starts at and whichever way round it goes. Exact
+/// (comparisons of the doubles as given). Two such polygons meet exactly
+/// where their closed boxes share a point (boxes_overlap), the test a join
+/// asks of them.
+inline bool fills_its_box(const polygon& p) {
+    if (p.ring_count() != 1 || p.size() != 4) return false;
+    bool along_x[4];
+    for (std::size_t i = 0; i < 4; ++i) {
+        const point<double>&v = p.vertex(i), &w = p.vertex(p.next(i));
+        along_x[i] = v.y == w.y;
+        if (along_x[i] == (v.x == w.x)) return false;
+    }
+    return along_x[0] != along_x[1] && along_x[1] != along_x[2] && along_x[2] != along_x[3];
 }
 
 }  // namespace influence2d

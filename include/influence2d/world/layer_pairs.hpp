@@ -135,12 +135,24 @@ private:
     std::deque<placed_polygon<NT>> placed_;  // the named polygons' placings, in index order
 };
 
-/// Whether polygon k of `layer` is convex (is_convex_polygon), decided
-/// once: `known[k]` holds the answer (-1 until asked).
-inline bool convex_as_known(const std::vector<polygon>& layer, std::vector<signed char>& known, std::size_t k) {
-    if (known[k] < 0) known[k] = is_convex_polygon(layer[k]) ? 1 : 0;
-    return known[k] == 1;
+/// What a join knows of a polygon's shape, for the routes of its pairs:
+/// not asked yet, neither of the two below, convex (is_convex_polygon), or
+/// its own box (fills_its_box; convex too).
+enum class join_shape : signed char { unknown, other, convex, box };
+
+/// The shape of polygon k of `layer`, decided once: `known[k]` holds it.
+inline join_shape shape_as_known(const std::vector<polygon>& layer, std::vector<join_shape>& known, std::size_t k) {
+    if (known[k] == join_shape::unknown)
+        known[k] = fills_its_box(layer[k])       ? join_shape::box
+                   : is_convex_polygon(layer[k]) ? join_shape::convex
+                                                 : join_shape::other;
+    return known[k];
 }
+
+/// The route a join's candidate takes: bodies_within on the two placings,
+/// the separating-edge test on the doubles as given (a convex pair), or the
+/// two closed boxes (two polygons that fill their boxes).
+enum class join_route : char { placed, convex, boxes };
 
 /// The candidates' answers (in parallel chunks) and the pairs within d;
 /// `same` when both layers are one. Counts into `statistics` when given.
@@ -148,21 +160,29 @@ template <class NT, class Exact>
 std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::vector<polygon>& second, bool same,
                                  const std::vector<body_pair>& candidates, double within, unsigned threads,
                                  layer_statistics* statistics) {
-    // Two convex polygons of join_convex_limit at most, for d = 0, are a
-    // convex pair: neither placed for it.
-    std::vector<signed char> convex_first(within == 0 ? first.size() : 0, -1),
-        convex_second(within == 0 && !same ? second.size() : 0, -1);
-    std::vector<signed char>& second_convex = same ? convex_first : convex_second;
-    std::vector<char> convex_pair(candidates.size(), 0);
+    // For d = 0: two polygons that fill their boxes are answered by the
+    // boxes, two convex polygons of join_convex_limit at most by the
+    // separating-edge test; neither placed for it.
+    std::vector<join_shape> shape_first(within == 0 ? first.size() : 0, join_shape::unknown),
+        shape_second(within == 0 && !same ? second.size() : 0, join_shape::unknown);
+    std::vector<join_shape>& second_shape = same ? shape_first : shape_second;
+    std::vector<join_route> route(candidates.size(), join_route::placed);
     std::vector<char> named_first(first.size(), 0), named_second(second.size(), 0);
     std::size_t vertices = 0;
     for (std::size_t k = 0; k < candidates.size(); ++k) {
         const body_pair& c = candidates[k];
         const std::size_t na = first[c.first].size(), nb = second[c.second].size();
-        if (within == 0 && na * nb <= join_convex_limit && convex_as_known(first, convex_first, c.first) &&
-            convex_as_known(second, second_convex, c.second)) {
-            convex_pair[k] = 1;
-            continue;
+        if (within == 0 && na * nb <= join_convex_limit) {
+            const join_shape sa = shape_as_known(first, shape_first, c.first);
+            const join_shape sb = sa == join_shape::other ? sa : shape_as_known(second, second_shape, c.second);
+            if (sa == join_shape::box && sb == join_shape::box) {
+                route[k] = join_route::boxes;
+                continue;
+            }
+            if (sa != join_shape::other && sb != join_shape::other) {
+                route[k] = join_route::convex;
+                continue;
+            }
         }
         named_first[c.first] = 1;
         (same ? named_first : named_second)[c.second] = 1;
@@ -177,7 +197,11 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::v
         const rotation_pose here(pose{});
         for (std::size_t k = lo; k < hi; ++k) {
             const polygon &a = first[candidates[k].first], &b = second[candidates[k].second];
-            if (convex_pair[k]) {
+            if (route[k] == join_route::boxes) {
+                meets[k] = boxes_overlap(a.bounds(), b.bounds()) ? 1 : 0;
+                continue;
+            }
+            if (route[k] == join_route::convex) {
                 meets[k] = convex_polygons_meet_as_given(a, b) ? 1 : 0;
                 continue;
             }
@@ -247,15 +271,17 @@ inline std::vector<polygon> scaled_layer(const std::vector<polygon>& layer, int 
 ///     by sorting the boxes along x and sweeping (swept_pairs) when that
 ///     tests at most sweep_tests_per_box pairs a box; else by a box tree
 ///     over them joined with itself (box_tree::self_join)
-///   for d = 0, two convex polygons (is_convex_polygon) whose sizes'
-///   product is at most join_convex_limit are a convex pair
+///   for d = 0, of two polygons whose sizes' product is at most
+///   join_convex_limit: two that fill their boxes (fills_its_box) are a
+///   pair of boxes, else two convex ones (is_convex_polygon) a convex pair
 ///   each polygon some other candidate names placed where it stands, once
 ///   for all its pairs, with its run boxes and, for several rings, its ring
 ///   boxes (placed_polygons)
 ///   each candidate, on `threads` threads (0: every hardware thread) taking
 ///   join_grain candidates at a time, or on one when the other candidates
-///   hold fewer than join_parallel_vertices vertices: a convex pair by the
-///   separating-edge test on its doubles as given
+///   hold fewer than join_parallel_vertices vertices: a pair of boxes by
+///   whether the closed boxes share a point (boxes_overlap), a convex pair
+///   by the separating-edge test on its doubles as given
 ///   (convex_polygons_meet_as_given), the others by bodies_within on the
 ///   two placings
 ///
