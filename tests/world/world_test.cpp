@@ -243,12 +243,9 @@ std::vector<body_pair> exact_layer_pairs(const std::vector<polygon>& layer) {
     for (const polygon& p : layer) exact.push_back(test_exact::place(p, 0, 0, 0));
     std::vector<body_pair> want;
     for (std::size_t i = 0; i < layer.size(); ++i)
-        for (std::size_t j = i + 1; j < layer.size(); ++j) {
-            const box a = layer[i].bounds(), b = layer[j].bounds();
-            if (a.max_x < b.min_x || b.max_x < a.min_x || a.max_y < b.min_y || b.max_y < a.min_y) continue;
-            if (test_exact::regions_meet(exact[i], exact[j]))
+        for (std::size_t j = i + 1; j < layer.size(); ++j)
+            if (boxes_overlap(layer[i].bounds(), layer[j].bounds()) && test_exact::regions_meet(exact[i], exact[j]))
                 want.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
-        }
     return want;
 }
 
