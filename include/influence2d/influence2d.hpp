@@ -51,6 +51,7 @@
 #include "influence2d/predicates/orientation.hpp"
 #include "influence2d/predicates/polynomial_roots.hpp"
 #include "influence2d/predicates/segments.hpp"
+#include "influence2d/predicates/shared_vertex.hpp"
 #include "influence2d/query/batch.hpp"
 #include "influence2d/query/both_posed.hpp"
 #include "influence2d/query/intersects.hpp"

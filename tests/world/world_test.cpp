@@ -31,6 +31,7 @@
 #include "influence2d/exact/certified_world.hpp"
 #include "influence2d/number/cgal.hpp"
 #include "influence2d/predicates/convexity.hpp"
+#include "influence2d/predicates/shared_vertex.hpp"
 #include "influence2d/query/both_posed.hpp"
 #include "influence2d/world/layer_pairs.hpp"
 #include "influence2d/world/world.hpp"
@@ -274,6 +275,23 @@ std::pair<std::vector<body_pair>, std::vector<body_pair>> even_odd_pairs(const s
     std::sort(out.first.begin(), out.first.end(), by_pair);
     std::sort(out.second.begin(), out.second.end(), by_pair);
     return out;
+}
+
+/// Checks the joins of `layer` (certified, in exact rationals and in
+/// double: at their own coordinates the layers of these tests are decided
+/// exactly in double too) and of its polygons of even and of odd index as
+/// two layers, both ways, against `want`, the one layer's pairs by the
+/// exact reference.
+void check_joins(const std::vector<polygon>& layer, const std::vector<body_pair>& want) {
+    CHECK(show_pairs(certified_layer_pairs(layer)) == show_pairs(want));
+    CHECK(show_pairs(layer_pairs<exact_rational>(layer)) == show_pairs(want));
+    CHECK(show_pairs(layer_pairs<double>(layer)) == show_pairs(want));
+    const auto [even, odd] = even_and_odd(layer);
+    const auto [want_eo, want_oe] = even_odd_pairs(want);
+    CHECK(show_pairs(certified_layer_pairs(even, odd)) == show_pairs(want_eo));
+    CHECK(show_pairs(certified_layer_pairs(odd, even)) == show_pairs(want_oe));
+    CHECK(show_pairs(layer_pairs<exact_rational>(odd, even)) == show_pairs(want_oe));
+    CHECK(show_pairs(layer_pairs<double>(odd, even)) == show_pairs(want_oe));
 }
 
 }  // namespace
@@ -1266,14 +1284,7 @@ TEST_CASE("layer_pairs: convex triangles and quadrilaterals sharing their sides 
             touching += shared ? 1 : 0;
         }
         INFO("round " << round);
-        CHECK(show_pairs(certified_layer_pairs(layer)) == show_pairs(want));
-        CHECK(show_pairs(layer_pairs<double>(layer)) == show_pairs(want));
-        CHECK(show_pairs(layer_pairs<exact_rational>(layer)) == show_pairs(want));
-        // Two layers: the cells of even index against the others, both ways.
-        const auto [even, odd] = even_and_odd(layer);
-        const auto [want_eo, want_oe] = even_odd_pairs(want);
-        CHECK(show_pairs(certified_layer_pairs(even, odd)) == show_pairs(want_eo));
-        CHECK(show_pairs(layer_pairs<double>(odd, even)) == show_pairs(want_oe));
+        check_joins(layer, want);
     }
     // Not vacuous: many pairs meet only along a shared side or corner.
     CHECK(touching > 200);
@@ -1340,19 +1351,88 @@ TEST_CASE("layer_pairs: axis-parallel rectangles among quadrilaterals that nearl
             if (a.max_x == b.min_x || b.max_x == a.min_x || a.max_y == b.min_y || b.max_y == a.min_y) ++touching;
         }
         INFO("round " << round);
-        CHECK(show_pairs(certified_layer_pairs(layer)) == show_pairs(want));
-        CHECK(show_pairs(layer_pairs<exact_rational>(layer)) == show_pairs(want));
-        // Two layers: the polygons of even index against the others, both ways.
-        const auto [even, odd] = even_and_odd(layer);
-        const auto [want_eo, want_oe] = even_odd_pairs(want);
-        CHECK(show_pairs(certified_layer_pairs(even, odd)) == show_pairs(want_eo));
-        CHECK(show_pairs(certified_layer_pairs(odd, even)) == show_pairs(want_oe));
-        CHECK(show_pairs(layer_pairs<exact_rational>(odd, even)) == show_pairs(want_oe));
+        check_joins(layer, want);
     }
     // Not vacuous: in each round, many pairs of boxes, and many pairs that
     // meet only along a side or at a corner.
     CHECK(boxes_meeting > 100 * static_cast<std::size_t>(rounds));
     CHECK(touching > 150 * static_cast<std::size_t>(rounds));
+}
+
+TEST_CASE(
+    "layer_pairs: neighbours that share vertices or miss them by a unit in the last place, against the exact "
+    "reference",
+    "[world]") {
+    // Cells with wavy shared borders (bordered_cells: neighbours repeat the
+    // same vertices, so that most meeting pairs share one: share_a_vertex),
+    // then some cells moved a unit in the last place along x or y, every
+    // vertex (apart from one neighbour by that unit, overlapping another),
+    // and some with one vertex moved so: such a pair shares no vertex, or
+    // fewer, and the placed route answers it. The reference: every pair
+    // whose boxes meet, its regions placed in exact rationals (CGAL); one
+    // layer and two, roles swapped; within a distance too.
+    rng g(1206);
+    // Whether a vertex of a is a unit in the last place from one of b's,
+    // along x or y.
+    const auto a_unit_from = [](const polygon& a, const polygon& b) {
+        for (const point<double>& v : a.vertices())
+            for (const point<double>& w : b.vertices())
+                if ((v.x == w.x && v.y != w.y && std::nextafter(v.y, w.y) == w.y) ||
+                    (v.y == w.y && v.x != w.x && std::nextafter(v.x, w.x) == w.x))
+                    return true;
+        return false;
+    };
+    std::size_t sharing = 0, a_unit_apart = 0;
+    const int rounds = test_effort::scaled(4);
+    for (int round = 0; round < rounds; ++round) {
+        std::vector<polygon> layer = bordered_cells(g, 7, 4 + 3 * static_cast<std::size_t>(round));
+        for (polygon& p : layer) {
+            const std::size_t how = g.index(4);  // 0, 1: as they are; 2: every vertex moved; 3: one vertex
+            if (how < 2) continue;
+            const bool along_x = g.chance(0.5);
+            const double toward = g.chance(0.5) ? HUGE_VAL : -HUGE_VAL;
+            const std::size_t only = how == 3 ? g.index(p.size()) : p.size();
+            std::vector<ring_input> rings;
+            for (std::size_t r = 0; r < p.ring_count(); ++r) {
+                ring_input ring{{}, p.role(r)};
+                for (std::size_t k = p.ring_begin(r); k < p.ring_end(r); ++k) {
+                    point<double> v = p.vertex(k);
+                    if (how == 2 || k == only) (along_x ? v.x : v.y) = std::nextafter(along_x ? v.x : v.y, toward);
+                    ring.vertices.push_back(v);
+                }
+                rings.push_back(ring);
+            }
+            p = polygon(rings);
+        }
+        const std::vector<body_pair> want = exact_layer_pairs(layer);
+        for (std::size_t i = 0; i < layer.size(); ++i)
+            for (std::size_t j = i + 1; j < layer.size(); ++j)
+                if (boxes_overlap(layer[i].bounds(), layer[j].bounds())) {
+                    const bool meets =
+                        std::binary_search(want.begin(), want.end(),
+                                           body_pair{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)},
+                                           [](const body_pair& l, const body_pair& r) {
+                                               return std::pair(l.first, l.second) < std::pair(r.first, r.second);
+                                           });
+                    if (share_a_vertex(layer[i], layer[j])) {
+                        ++sharing;
+                        CHECK(meets);
+                    } else if (!meets && a_unit_from(layer[i], layer[j])) {
+                        ++a_unit_apart;
+                    }
+                }
+        INFO("round " << round << ", " << layer.size() << " polygons");
+        check_joins(layer, want);
+        // Within a distance below the unit's reach: the same pairs as
+        // meeting, plus those a unit apart.
+        const std::vector<body_pair> near = certified_layer_pairs(layer, 1e-9);
+        CHECK(near.size() >= want.size());
+        for (const body_pair& q : want) CHECK(std::find(near.begin(), near.end(), q) != near.end());
+    }
+    // Not vacuous: in each round, pairs that share a vertex and pairs that
+    // miss by a unit in the last place.
+    CHECK(sharing > 40 * static_cast<std::size_t>(rounds));
+    CHECK(a_unit_apart > 5 * static_cast<std::size_t>(rounds));
 }
 
 TEST_CASE("layer_pairs: the candidates and those answered again in exact rationals are counted", "[world]") {

@@ -20,6 +20,7 @@
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/predicates/convexity.hpp"
 #include "influence2d/predicates/filters.hpp"
+#include "influence2d/predicates/shared_vertex.hpp"
 #include "influence2d/query/batch.hpp"
 #include "influence2d/scene/placed_polygon.hpp"
 #include "influence2d/scene/prepared.hpp"
@@ -95,6 +96,18 @@ inline constexpr std::size_t join_grain = 16;
 /// both, where bodies_within finds a shared vertex on the other's boundary).
 inline constexpr std::size_t join_convex_limit = 16;
 
+/// A join's candidate whose two polygons have at most this many vertices
+/// each is first asked whether they share a vertex (share_a_vertex: then
+/// they meet, and neither is placed for it). Past it, the scan of a large
+/// polygon's vertices costs more than the one-shot test it may spare. On the
+/// real layers of docs/world.md (callgrind, three joins each, double): with
+/// the bound at 64, 256, 1,024 and none, the countries' join took 1.77,
+/// 1.77, 1.99 and 1.99 million instructions (1.87 without the question),
+/// the blocks' 3.76, 3.69, 3.69 and 3.69 (4.61), the tracts' 2.52, 2.51,
+/// 2.51 and 2.51 (3.46), the boroughs' (thousands of vertices each) 3.02,
+/// 3.02, 3.02 and 3.06 (3.02).
+inline constexpr std::size_t join_shared_vertex_limit = 256;
+
 /// The placings of the polygons of a layer that some candidate names, each
 /// found by the polygon's index (4 bytes for a polygon no candidate names),
 /// in place in a deque's blocks of a few hundred bytes (no allocation of its
@@ -150,9 +163,10 @@ inline join_shape shape_as_known(const std::vector<polygon>& layer, std::vector<
 }
 
 /// The route a join's candidate takes: bodies_within on the two placings,
-/// the separating-edge test on the doubles as given (a convex pair), or the
-/// two closed boxes (two polygons that fill their boxes).
-enum class join_route : char { placed, convex, boxes };
+/// the separating-edge test on the doubles as given (a convex pair), the
+/// two closed boxes (two polygons that fill their boxes), or a vertex the
+/// two share (they meet; neither placed for it).
+enum class join_route : char { placed, convex, boxes, shared_vertex };
 
 /// The candidates' answers (in parallel chunks) and the pairs within d;
 /// `same` when both layers are one. Counts into `statistics` when given.
@@ -162,7 +176,8 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::v
                                  layer_statistics* statistics) {
     // For d = 0: two polygons that fill their boxes are answered by the
     // boxes, two convex polygons of join_convex_limit at most by the
-    // separating-edge test; neither placed for it.
+    // separating-edge test; for any d, two that share a vertex meet;
+    // neither placed for it.
     std::vector<join_shape> shape_first(within == 0 ? first.size() : 0, join_shape::unknown),
         shape_second(within == 0 && !same ? second.size() : 0, join_shape::unknown);
     std::vector<join_shape>& second_shape = same ? shape_first : shape_second;
@@ -171,7 +186,8 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::v
     std::size_t vertices = 0;
     for (std::size_t k = 0; k < candidates.size(); ++k) {
         const body_pair& c = candidates[k];
-        const std::size_t na = first[c.first].size(), nb = second[c.second].size();
+        const polygon &a = first[c.first], &b = second[c.second];
+        const std::size_t na = a.size(), nb = b.size();
         if (within == 0 && na * nb <= join_convex_limit) {
             const join_shape sa = shape_as_known(first, shape_first, c.first);
             const join_shape sb = sa == join_shape::other ? sa : shape_as_known(second, second_shape, c.second);
@@ -183,6 +199,10 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::v
                 route[k] = join_route::convex;
                 continue;
             }
+        }
+        if (na <= join_shared_vertex_limit && nb <= join_shared_vertex_limit && share_a_vertex(a, b)) {
+            route[k] = join_route::shared_vertex;
+            continue;
         }
         named_first[c.first] = 1;
         (same ? named_first : named_second)[c.second] = 1;
@@ -197,6 +217,10 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::v
         const rotation_pose here(pose{});
         for (std::size_t k = lo; k < hi; ++k) {
             const polygon &a = first[candidates[k].first], &b = second[candidates[k].second];
+            if (route[k] == join_route::shared_vertex) {
+                meets[k] = 1;
+                continue;
+            }
             if (route[k] == join_route::boxes) {
                 meets[k] = boxes_overlap(a.bounds(), b.bounds()) ? 1 : 0;
                 continue;
@@ -274,6 +298,9 @@ inline std::vector<polygon> scaled_layer(const std::vector<polygon>& layer, int 
 ///   for d = 0, of two polygons whose sizes' product is at most
 ///   join_convex_limit: two that fill their boxes (fills_its_box) are a
 ///   pair of boxes, else two convex ones (is_convex_polygon) a convex pair
+///   of the other candidates, two polygons of at most
+///   join_shared_vertex_limit vertices each that share a vertex
+///   (share_a_vertex) meet: within any d
 ///   each polygon some other candidate names placed where it stands, once
 ///   for all its pairs, with its run boxes and, for several rings, its ring
 ///   boxes (placed_polygons)
