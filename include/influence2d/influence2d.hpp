@@ -65,4 +65,5 @@
 #include "influence2d/world/box_tree.hpp"
 #include "influence2d/world/layer_pairs.hpp"
 #include "influence2d/world/narrow_phase.hpp"
+#include "influence2d/world/projections_apart.hpp"
 #include "influence2d/world/world.hpp"

@@ -500,4 +500,33 @@ double placing_margin(double scale) {
         return posing_margin<NT>(scale);
 }
 
+/// The relative rounding bound of projections_certainly_apart. A point p
+/// with |px|, |py| <= r projects onto v as vx px + vy py: two rounded
+/// products and a rounded sum, within gamma_2 (|vx px| + |vy py|) <=
+/// gamma_2 (|vx| + |vy|) r of its value (gamma_2 = 2u / (1 - 2u), u =
+/// 2^-53); the least projection of one set and the greatest of the other
+/// together within gamma_2 (|vx| + |vy|) (r_a + r_b). The bound itself takes
+/// five rounded operations on non-negative terms (the floor's sum among
+/// them) and the difference lo - hi one more: 2^-50 = 8u, and
+/// 8u (1 - u)^5 / (1 + u) > gamma_2 with a factor of nearly four to spare.
+inline constexpr double projection_rounding = 0x1p-50;
+
+/// The absolute floor of projections_certainly_apart's bound: a product
+/// below double's normal range rounds by up to 2^-1075 in absolute terms,
+/// four of them (two a projection) at most 2^-1073.
+inline constexpr double projection_floor = 0x1p-1060;
+
+/// Whether every point of a set A lies strictly beyond every point of a set
+/// B along the direction v = (vx, vy), given lo, the least of the
+/// projections vx ax + vy ay over A's points as computed in double, hi, the
+/// greatest of B's, and `reach`, the sum of the two sets' largest
+/// coordinate magnitudes: lo - hi above the projections' rounding
+/// (projection_rounding). True only when certain; false when undecided or
+/// when a value is not finite. Then the two sets' convex hulls are apart,
+/// and any regions inside them.
+inline bool projections_certainly_apart(double lo, double hi, double vx, double vy, double reach) {
+    if (!std::isfinite(lo) || !std::isfinite(hi)) return false;
+    return lo - hi > projection_rounding * ((std::fabs(vx) + std::fabs(vy)) * reach) + projection_floor;
+}
+
 }  // namespace influence2d
