@@ -18,12 +18,15 @@
 
 namespace influence2d {
 
-/// The slots of share_a_vertex's table (a power of two), and the vertices
-/// it holds at most: half, so that an open-addressed probe stays short (a
-/// few slots) whatever the coordinates. 128 vertices of the smaller polygon
-/// within the two boxes' overlap cover every neighbour pair of the blocks,
-/// tracts and counties of docs/world.md; a pair with more is not tried.
+/// The slots of share_a_vertex's table (a power of two).
 inline constexpr std::size_t shared_vertex_slots = 256;
+
+/// The vertices share_a_vertex's table holds at most: half its slots, so
+/// that an open-addressed probe stays short (a few slots) whatever the
+/// coordinates. The candidates of the real layers of docs/world.md whose
+/// polygons have at most 256 vertices each hold at most 23 (counties), 59
+/// (blocks), 43 (tracts) and 90 (countries) such vertices of the smaller
+/// polygon within the two boxes' overlap; a pair with more is not tried.
 inline constexpr std::size_t shared_vertex_most = shared_vertex_slots / 2;
 
 namespace shared_vertex_detail {
