@@ -269,11 +269,8 @@ std::pair<std::vector<body_pair>, std::vector<body_pair>> even_odd_pairs(const s
             out.first.push_back({e / 2, o / 2});
             out.second.push_back({o / 2, e / 2});
         }
-    const auto by_pair = [](const body_pair& l, const body_pair& r) {
-        return std::pair(l.first, l.second) < std::pair(r.first, r.second);
-    };
-    std::sort(out.first.begin(), out.first.end(), by_pair);
-    std::sort(out.second.begin(), out.second.end(), by_pair);
+    std::sort(out.first.begin(), out.first.end());
+    std::sort(out.second.begin(), out.second.end());
     return out;
 }
 
@@ -1410,10 +1407,7 @@ TEST_CASE(
                 if (boxes_overlap(layer[i].bounds(), layer[j].bounds())) {
                     const bool meets =
                         std::binary_search(want.begin(), want.end(),
-                                           body_pair{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)},
-                                           [](const body_pair& l, const body_pair& r) {
-                                               return std::pair(l.first, l.second) < std::pair(r.first, r.second);
-                                           });
+                                           body_pair{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
                     if (share_a_vertex(layer[i], layer[j])) {
                         ++sharing;
                         CHECK(meets);

@@ -179,8 +179,9 @@ inline join_shape shape_as_known(const std::vector<polygon>& layer, std::vector<
 
 /// The route a join's candidate takes: bodies_within on the two placings,
 /// the separating-edge test on the doubles as given (a convex pair), the
-/// two closed boxes (two polygons that fill their boxes), or a vertex the
-/// two share (they meet; neither placed for it).
+/// two closed boxes (two polygons that fill their boxes), a vertex the two
+/// share (they meet), or a direction that certainly separates their
+/// vertices (they do not); neither placed for the last two.
 enum class join_route : char { placed, convex, boxes, shared_vertex, apart };
 
 /// The candidates' answers (in parallel chunks) and the pairs within d;
@@ -239,10 +240,11 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::v
         const rotation_pose here(pose{});
         for (std::size_t k = lo; k < hi; ++k) {
             const polygon &a = first[candidates[k].first], &b = second[candidates[k].second];
-            if (route[k] == join_route::shared_vertex || route[k] == join_route::apart) {
-                meets[k] = route[k] == join_route::shared_vertex ? 1 : 0;
+            if (route[k] == join_route::shared_vertex) {
+                meets[k] = 1;
                 continue;
             }
+            if (route[k] == join_route::apart) continue;  // (meets[k] stays 0)
             if (route[k] == join_route::boxes) {
                 meets[k] = boxes_overlap(a.bounds(), b.bounds()) ? 1 : 0;
                 continue;

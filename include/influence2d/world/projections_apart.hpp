@@ -6,13 +6,13 @@
 /// polygons whose boxes overlap do not meet, before either is placed.
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <vector>
 
 #include "influence2d/core/box.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
+#include "influence2d/core/range_scaling.hpp"
 #include "influence2d/predicates/filters.hpp"
 
 namespace influence2d {
@@ -44,11 +44,6 @@ inline support farthest_along(const std::vector<point<double>>& v, double dx, do
     return s;
 }
 
-/// The largest magnitude of a coordinate in the box.
-inline double reach_of(const box& b) {
-    return std::max({std::fabs(b.min_x), std::fabs(b.max_x), std::fabs(b.min_y), std::fabs(b.max_y)});
-}
-
 }  // namespace projections_apart_detail
 
 /// Whether every vertex of a lies strictly beyond every vertex of b along
@@ -77,8 +72,7 @@ inline bool projections_apart(const polygon& a, const polygon& b) {
     if (av.empty() || bv.empty()) return false;
     const point<double> ca = a.bounds().centre(), cb = b.bounds().centre();
     double vx = ca.x - cb.x, vy = ca.y - cb.y;
-    const double reach =
-        projections_apart_detail::reach_of(a.bounds()) + projections_apart_detail::reach_of(b.bounds());
+    const double reach = largest_coordinate(a) + largest_coordinate(b);
     for (int step = 0;; ++step) {
         const auto sa = farthest_along(av, -vx, -vy), sb = farthest_along(bv, vx, vy);
         const double lo = -sa.projection, hi = sb.projection;
