@@ -2,7 +2,8 @@
 // The box of a range of points (box::add over [first, last), taken on four
 // interleaved boxes) against the box that adding each point in turn makes,
 // on random ranges of every length up to 40 with NaN, infinite, signed-zero
-// and repeated coordinates mixed in.
+// and repeated coordinates mixed in; and box_membership against
+// box::contains.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -69,4 +70,29 @@ TEST_CASE("box: a range whose every coordinate is NaN leaves the box as it was",
     b.add({1, 2});
     b.add(v.data(), v.data() + v.size());
     CHECK((b.min_x == 1 && b.max_x == 1 && b.min_y == 2 && b.max_y == 2));
+}
+
+TEST_CASE("box: box_membership answers as box::contains", "[box]") {
+    // Boxes and points drawn from a few values, so that sides are hit
+    // exactly; NaN, infinite and signed-zero coordinates and bounds mixed in,
+    // empty and inverted boxes too.
+    std::mt19937_64 rng(20261207);
+    const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+    const double values[] = {nan, inf, -inf, 0.0, -0.0, -1, 1, 2, 0x1p-1074, 1e300, 1.5, std::nextafter(1.0, 2.0)};
+    std::uniform_int_distribution<std::size_t> pick(0, std::size(values) - 1);
+    std::size_t inside = 0, outside = 0, differing = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const box b{values[pick(rng)], values[pick(rng)], values[pick(rng)], values[pick(rng)]};
+        const box_membership m(b);
+        for (int k = 0; k < 8; ++k) {
+            const point<double> p{values[pick(rng)], values[pick(rng)]};
+            const bool want = b.contains(p);
+            (want ? inside : outside) += 1;
+            differing += m.contains(p) != want;
+        }
+    }
+    CHECK(differing == 0);
+    // Not vacuous: both answers often.
+    CHECK(inside > 2000);
+    CHECK(outside > 10000);
 }

@@ -92,6 +92,42 @@ struct box {
     }
 };
 
+/// A closed box made ready to test many points against it: the answers of
+/// box::contains (false for NaN), with SSE2 both coordinates of a point
+/// compared at once and no branch but the answer's (half the instructions
+/// of the four comparisons in turn, where a scan over a polygon's vertices
+/// spends most of its time).
+class box_membership {
+public:
+    /// Ready for b.
+    explicit box_membership(const box& b)
+#if defined(__SSE2__)
+        : lo_(_mm_set_pd(b.min_y, b.min_x)),
+          hi_(_mm_set_pd(b.max_y, b.max_x))
+#else
+        : b_(b)
+#endif
+    {
+    }
+
+    /// Whether p lies in the closed box (on a side counts); false for NaN.
+    bool contains(const point<double>& p) const {
+#if defined(__SSE2__)
+        const __m128d v = _mm_loadu_pd(&p.x);  // (x, y)
+        return _mm_movemask_pd(_mm_and_pd(_mm_cmpge_pd(v, lo_), _mm_cmple_pd(v, hi_))) == 3;
+#else
+        return b_.contains(p);
+#endif
+    }
+
+private:
+#if defined(__SSE2__)
+    __m128d lo_, hi_;  // (min_x, min_y), (max_x, max_y)
+#else
+    box b_;
+#endif
+};
+
 /// Whether two closed boxes share a point (false when either is empty or
 /// has a NaN side).
 inline bool boxes_overlap(const box& l, const box& r) {

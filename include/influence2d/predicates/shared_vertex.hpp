@@ -65,9 +65,7 @@ inline bool share_a_vertex(const polygon& a, const polygon& b) {
     const double min_x = std::max(ba.min_x, bb.min_x), max_x = std::min(ba.max_x, bb.max_x),
                  min_y = std::max(ba.min_y, bb.min_y), max_y = std::min(ba.max_y, bb.max_y);
     if (min_x > max_x || min_y > max_y) return false;
-    const auto in_w = [&](const point<double>& v) {
-        return v.x >= min_x && v.x <= max_x && v.y >= min_y && v.y <= max_y;
-    };
+    const box_membership w(box{min_x, min_y, max_x, max_y});
     const polygon &small = a.size() <= b.size() ? a : b, &large = a.size() <= b.size() ? b : a;
     struct entry {
         double x, y;  // (no initialisation: only the slots marked used are read)
@@ -77,7 +75,7 @@ inline bool share_a_vertex(const polygon& a, const polygon& b) {
     const std::size_t mask = shared_vertex_slots - 1;
     std::size_t count = 0;
     for (const point<double>& v : small.vertices()) {
-        if (!in_w(v)) continue;
+        if (!w.contains(v)) continue;
         if (++count > shared_vertex_most) return false;
         std::size_t s = slot_of(v, bits);
         while (used[s] && !(table[s].x == v.x && table[s].y == v.y)) s = (s + 1) & mask;
@@ -86,7 +84,7 @@ inline bool share_a_vertex(const polygon& a, const polygon& b) {
     }
     if (count == 0) return false;
     for (const point<double>& v : large.vertices()) {
-        if (!in_w(v)) continue;
+        if (!w.contains(v)) continue;
         for (std::size_t s = slot_of(v, bits); used[s]; s = (s + 1) & mask)
             if (table[s].x == v.x && table[s].y == v.y) return true;
     }
