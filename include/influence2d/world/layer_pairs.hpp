@@ -41,16 +41,18 @@ struct layer_statistics {
 };
 
 /// A join's tests run on one thread when its candidates hold fewer
-/// vertices than this, both polygons of each counted: a parallel pass costs
-/// some tens of microseconds in waking the other threads and in their
-/// caches, which a small join does not repay. Measured on the real layers
-/// of docs/world.md (one thread against every thread with oneTBB, 101 joins
-/// each way, taking turns, medians, alone): with the tests on two threads
-/// whenever there were 128 candidates or more, the wheat plots' join (about
-/// 15,000 vertices over its candidates) ran 0.92x to 0.97x as fast as on
-/// one thread and the NC counties' (14,000) 0.67x; above this bound the
-/// Boston tracts (55,000) run 1.15x to 1.26x, the countries (90,000) 0.96x
-/// to 1.21x and the Olinda blocks (106,000) 1.33x to 1.52x.
+/// vertices than this, both polygons of each counted (and its questions of
+/// shared vertices and separating directions when the candidates asked them
+/// do): a parallel pass costs some tens of microseconds in waking the
+/// other threads and in their caches, which a small join does not repay.
+/// Measured on the real layers of docs/world.md (one thread against every
+/// thread with oneTBB, 101 joins each way, taking turns, medians, alone):
+/// with the tests on two threads whenever there were 128 candidates or
+/// more, the wheat plots' join (about 15,000 vertices over its candidates)
+/// ran 0.92x to 0.97x as fast as on one thread and the NC counties'
+/// (14,000) 0.67x; above this bound the Boston tracts (55,000) run 1.15x to
+/// 1.26x, the countries (90,000) 0.96x to 1.21x and the Olinda blocks
+/// (106,000) 1.33x to 1.52x.
 inline constexpr std::size_t join_parallel_vertices = 32768;
 
 namespace layer_pairs_detail {
@@ -199,12 +201,13 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::v
         shape_second(within == 0 && !same ? second.size() : 0, join_shape::unknown);
     std::vector<join_shape>& second_shape = same ? shape_first : shape_second;
     std::vector<join_route> route(candidates.size(), join_route::placed);
-    std::vector<char> named_first(first.size(), 0), named_second(second.size(), 0);
-    std::size_t vertices = 0;
+    // The routes by shape (one thread: each polygon's shape decided once),
+    // then those by vertices (on threads when their scans are long: each
+    // candidate's route its own).
+    std::size_t scanned = 0;  // (the vertices the routes by vertices scan at most)
     for (std::size_t k = 0; k < candidates.size(); ++k) {
         const body_pair& c = candidates[k];
-        const polygon &a = first[c.first], &b = second[c.second];
-        const std::size_t na = a.size(), nb = b.size();
+        const std::size_t na = first[c.first].size(), nb = second[c.second].size();
         if (within == 0 && na * nb <= join_convex_limit) {
             const join_shape sa = shape_as_known(first, shape_first, c.first);
             const join_shape sb = sa == join_shape::other ? sa : shape_as_known(second, second_shape, c.second);
@@ -217,19 +220,29 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const std::v
                 continue;
             }
         }
-        if (na <= join_shared_vertex_limit && nb <= join_shared_vertex_limit) {
-            if (share_a_vertex(a, b)) {
-                route[k] = join_route::shared_vertex;
-                continue;
-            }
-            if (within == 0 && na + nb <= join_apart_limit && projections_apart(a, b)) {
-                route[k] = join_route::apart;
-                continue;
-            }
-        }
+        if (na <= join_shared_vertex_limit && nb <= join_shared_vertex_limit) scanned += na + nb;
+    }
+    run_in_chunks(candidates.size(), scanned < join_parallel_vertices ? 1u : threads, join_grain,
+                  [&](std::size_t lo, std::size_t hi) {
+                      for (std::size_t k = lo; k < hi; ++k) {
+                          if (route[k] != join_route::placed) continue;
+                          const polygon &a = first[candidates[k].first], &b = second[candidates[k].second];
+                          const std::size_t na = a.size(), nb = b.size();
+                          if (na > join_shared_vertex_limit || nb > join_shared_vertex_limit) continue;
+                          if (share_a_vertex(a, b))
+                              route[k] = join_route::shared_vertex;
+                          else if (within == 0 && na + nb <= join_apart_limit && projections_apart(a, b))
+                              route[k] = join_route::apart;
+                      }
+                  });
+    std::vector<char> named_first(first.size(), 0), named_second(second.size(), 0);
+    std::size_t vertices = 0;
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+        if (route[k] != join_route::placed) continue;
+        const body_pair& c = candidates[k];
         named_first[c.first] = 1;
         (same ? named_first : named_second)[c.second] = 1;
-        vertices += na + nb;
+        vertices += first[c.first].size() + second[c.second].size();
     }
     const unsigned pair_threads = vertices < join_parallel_vertices ? 1u : threads;
     placed_polygons<NT> placed_first(first, named_first, pair_threads);
@@ -322,11 +335,13 @@ inline std::vector<polygon> scaled_layer(const std::vector<polygon>& layer, int 
 ///   for d = 0, of two polygons whose sizes' product is at most
 ///   join_convex_limit: two that fill their boxes (fills_its_box) are a
 ///   pair of boxes, else two convex ones (is_convex_polygon) a convex pair
-///   of the other candidates, two polygons of at most
-///   join_shared_vertex_limit vertices each that share a vertex
-///   (share_a_vertex) meet: within any d; else for d = 0, two of at most
-///   join_apart_limit vertices together whose vertices a direction
-///   certainly separates (projections_apart) do not meet
+///   of the other candidates, on `threads` threads taking join_grain
+///   candidates at a time when those of at most join_shared_vertex_limit
+///   vertices each hold join_parallel_vertices vertices or more, else on
+///   one: two polygons of at most join_shared_vertex_limit vertices each
+///   that share a vertex (share_a_vertex) meet: within any d; else for
+///   d = 0, two of at most join_apart_limit vertices together whose vertices
+///   a direction certainly separates (projections_apart) do not meet
 ///   each polygon some other candidate names placed where it stands, once
 ///   for all its pairs, with its run boxes and, for several rings, its ring
 ///   boxes (placed_polygons)
