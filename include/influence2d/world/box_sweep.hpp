@@ -63,6 +63,13 @@ inline std::size_t first_from(const std::vector<edge_box>& sorted, double x) {
         sorted.begin());
 }
 
+/// 1 when the closed y-intervals of two boxes overlap, else 0 (finite
+/// bounds): both comparisons made, with no branch between them, so that a
+/// sweep adds the answer where it would branch on it.
+inline std::size_t y_intervals_meet(const edge_box& l, const edge_box& r) {
+    return static_cast<std::size_t>((r.min_y <= l.max_y) & (l.min_y <= r.max_y));
+}
+
 /// Calls found(i, j), i < j, for every pair of boxes of `boxes` that meet
 /// (closed: touching counts), in no particular order, and returns true; or,
 /// when the sweep would test more than `budget` pairs, calls nothing and
@@ -107,7 +114,7 @@ bool swept_pairs(const std::vector<box>& boxes, std::size_t budget, Found&& foun
         start[a] = static_cast<std::uint32_t>(count);
         for (std::size_t b = a + 1; b < end[a]; ++b) {
             kept[count] = static_cast<std::uint32_t>(b);
-            count += static_cast<std::size_t>((sorted[b].min_y <= l.max_y) & (l.min_y <= sorted[b].max_y));
+            count += y_intervals_meet(l, sorted[b]);
         }
     }
     start[sorted.size()] = static_cast<std::uint32_t>(count);
@@ -124,30 +131,57 @@ bool swept_pairs(const std::vector<box>& boxes, std::size_t budget, Found&& foun
 /// Calls found(i, j) for every box i of `first` and box j of `second` that
 /// meet, in no particular order, and returns true; or, when the sweep would
 /// test more than `budget` pairs, calls nothing and returns false. As the
-/// one-set form, the two sets sorted apart and merged (sweep_along_x): a
-/// pair is tested from the box that starts first, from `first`'s on a tie.
+/// one-set form, the two sets sorted apart: a pair is tested from the box
+/// that starts first, from `first`'s on a tie.
 ///
 ///   a, b <- each set sorted by min_x (sorted_along_x)
-///   tests <- for each box of a, the boxes of b starting in [its min_x,
-///            its max_x]; for each of b, those of a starting in (its min_x,
-///            its max_x] (binary searches: starting_by, first_from)
-///   tests > budget: false
-///   sweep_along_x(a, b): found for each pair whose boxes overlap
+///   row(l) <- for each box l of a, the boxes of b starting in [its min_x,
+///             its max_x]; row(r) <- for each box r of b, those of a
+///             starting in (its min_x, its max_x] (binary searches:
+///             starting_by, first_from)
+///   more than budget in all: false
+///   for each box, each box of its row: their y-intervals overlap: the
+///   pair kept
+///   found for each pair kept
+///
+/// As the one-set form, each pair tested is written and kept by moving
+/// past it, without a branch on the test.
 template <class Found>
 bool swept_pairs(const std::vector<box>& first, const std::vector<box>& second, std::size_t budget, Found&& found) {
     const std::vector<edge_box> a = sorted_along_x(first), b = sorted_along_x(second);
+    // Each box's row [from, to) in the other set.
+    std::vector<std::uint32_t> a_from(a.size()), a_to(a.size()), b_from(b.size()), b_to(b.size());
     std::size_t tests = 0;
-    for (const edge_box& l : a)
-        if (tests <= budget) tests += starting_by(b, first_from(b, l.min_x), l.max_x);
-    for (const edge_box& r : b)
-        if (tests <= budget) tests += starting_by(a, starting_by(a, 0, r.min_x), r.max_x);
+    for (std::size_t k = 0; k < a.size() && tests <= budget; ++k) {
+        const std::size_t from = first_from(b, a[k].min_x), to = from + starting_by(b, from, a[k].max_x);
+        a_from[k] = static_cast<std::uint32_t>(from);
+        a_to[k] = static_cast<std::uint32_t>(to);
+        tests += to - from;
+    }
+    for (std::size_t k = 0; k < b.size() && tests <= budget; ++k) {
+        const std::size_t from = starting_by(a, 0, b[k].min_x), to = from + starting_by(a, from, b[k].max_x);
+        b_from[k] = static_cast<std::uint32_t>(from);
+        b_to[k] = static_cast<std::uint32_t>(to);
+        tests += to - from;
+    }
     if (tests > budget) return false;
-    sweep_along_x(
-        a, 0, a.size(), b, 0, b.size(), [](const edge_box& e) -> const edge_box& { return e; },
-        [&](std::size_t i, std::size_t j) {
-            found(a[i].edge, b[j].edge);
-            return false;
-        });
+    // The positions in a and in b of the pairs kept; room for every test,
+    // left uninitialised.
+    const std::unique_ptr<std::uint32_t[]> kept_a(new std::uint32_t[tests]), kept_b(new std::uint32_t[tests]);
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < a.size(); ++k)
+        for (std::size_t j = a_from[k]; j < a_to[k]; ++j) {
+            kept_a[count] = static_cast<std::uint32_t>(k);
+            kept_b[count] = static_cast<std::uint32_t>(j);
+            count += y_intervals_meet(a[k], b[j]);
+        }
+    for (std::size_t k = 0; k < b.size(); ++k)
+        for (std::size_t i = b_from[k]; i < b_to[k]; ++i) {
+            kept_a[count] = static_cast<std::uint32_t>(i);
+            kept_b[count] = static_cast<std::uint32_t>(k);
+            count += y_intervals_meet(a[i], b[k]);
+        }
+    for (std::size_t k = 0; k < count; ++k) found(a[kept_a[k]].edge, b[kept_b[k]].edge);
     return true;
 }
 
