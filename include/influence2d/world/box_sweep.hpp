@@ -65,7 +65,11 @@ inline std::size_t first_from(const std::vector<edge_box>& sorted, double x) {
 
 /// 1 when the closed y-intervals of two boxes overlap, else 0 (finite
 /// bounds): both comparisons made, with no branch between them, so that a
-/// sweep adds the answer where it would branch on it.
+/// sweep adds the answer where it would branch on it. overlap_along_y
+/// (scene/edge_boxes.hpp) gives the same answer for finite bounds, true for
+/// a NaN one, as the edge sweeps need; its form written without a branch,
+/// !((a < b) | (c < d)), made the joins of docs/world.md 1.03x to 1.08x
+/// slower than this one (blocks, tracts, plots).
 inline std::size_t y_intervals_meet(const edge_box& l, const edge_box& r) {
     return static_cast<std::size_t>((r.min_y <= l.max_y) & (l.min_y <= r.max_y));
 }
