@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -38,6 +39,23 @@ std::vector<pose> walk_border(std::size_t count, std::uint64_t seed) {
         out.push_back({0.3 * u, 0.3 * v, 0.002 * w});
     }
     return out;
+}
+
+/// The border moved to x = 2^40, where the polygons' deep cells are too
+/// small against the coordinates' rounding to be built.
+std::vector<point<double>> moved_far(std::vector<point<double>> border) {
+    for (point<double>& v : border) v.x += 0x1p40;
+    return border;
+}
+
+/// The poses, each turning about (2^40, 0) instead of the origin when far.
+std::vector<pose> posed_about(std::vector<pose> poses, bool far) {
+    if (far)
+        for (pose& p : poses) {
+            p.tx += 0x1p40 - std::cos(p.theta) * 0x1p40;
+            p.ty -= std::sin(p.theta) * 0x1p40;
+        }
+    return poses;
 }
 
 }  // namespace
@@ -89,9 +107,7 @@ TEST_CASE("shared border: the edge pair that met last answers the frames after i
     // the last pair then has none to answer; both sides moved to x = 2^40,
     // where their cells are too small against the coordinates' rounding to
     // be built, the last pair answers them.
-    const std::vector<point<double>> near = test_shapes::wiggly_border(400);
-    std::vector<point<double>> moved = near;
-    for (point<double>& v : moved) v.x += 0x1p40;
+    const std::vector<point<double>> near = test_shapes::wiggly_border(400), moved = moved_far(near);
     std::vector<pose> poses = walk_border(150, 11);
     for (pose& p : poses) p.ty -= 0.25;
     // Two jumps among the steps: the pair kept from before a jump is not
@@ -102,13 +118,7 @@ TEST_CASE("shared border: the edge pair that met last answers the frames after i
         for (const double d : {0.0, 0.05}) {
             const polygon below = test_shapes::border_side(far ? moved : near, -1),
                           above = test_shapes::border_side(far ? moved : near, 1);
-            // Far away, each pose turns about (2^40, 0) instead of the origin.
-            std::vector<pose> posed = poses;
-            if (far)
-                for (pose& p : posed) {
-                    p.tx += 0x1p40 - std::cos(p.theta) * 0x1p40;
-                    p.ty -= std::sin(p.theta) * 0x1p40;
-                }
+            const std::vector<pose> posed = posed_about(poses, far);
             INFO("far " << far);
             const verification::cgal_reference ref(below, above, d);
             detector_options yes_no, no_coherence, witnesses;
@@ -151,4 +161,50 @@ TEST_CASE("shared border: the edge pair that met last answers the frames after i
             // 160,000 pairs).
             CHECK(witnessed.statistics().candidate_edges < poses.size() * 4 * below.size());
         }
+}
+
+TEST_CASE("shared border: poses shuffled about the border are answered by the pairs that met last, as the reference",
+          "[detect][coherence]") {
+    // The walk of the test above, shuffled: each pose within the skin of the
+    // last, but crossing the border at other edges than the last frame's.
+    // The detector tries the pair that met last, then the pairs that met
+    // before it (recent_met_pairs), latest first; each answer against CGAL's exact
+    // one, and in double against the brute-force detector. Far from the
+    // origin (no deep cells: the pairs alone answer what the search would).
+    const std::vector<point<double>> near = test_shapes::wiggly_border(400), moved = moved_far(near);
+    std::vector<pose> poses = walk_border(150, 13);
+    for (pose& p : poses) p.ty -= 0.25;
+    std::shuffle(poses.begin(), poses.end(), std::mt19937_64(5));
+    for (const bool far : {false, true}) {
+        const polygon below = test_shapes::border_side(far ? moved : near, -1),
+                      above = test_shapes::border_side(far ? moved : near, 1);
+        const std::vector<pose> posed = posed_about(poses, far);
+        for (const bool swapped : {false, true}) {
+            const polygon& a = swapped ? above : below;
+            const polygon& m = swapped ? below : above;
+            INFO("far " << far << " roles swapped " << swapped);
+            const verification::cgal_reference ref(a, m, 0);
+            detector<exact_rational> exact(a, m);
+            detector<double> fast(a, m);
+            brute_force_detector<double> fast_ref(a, m);
+            certified_detector<detector> certified(a, m);
+            std::size_t met = 0;
+            for (std::size_t k = 0; k < posed.size(); ++k) {
+                // (Swapped, the upper side is static and the lower one is
+                // moved up by as much.)
+                const pose q{posed[k].tx, swapped ? posed[k].ty + 0.5 : posed[k].ty, posed[k].theta};
+                INFO("frame " << k << " pose " << q.tx << ", " << q.ty << ", " << q.theta);
+                const bool want = ref.collide(q).collides;
+                met += want;
+                REQUIRE(exact.collide(q).collides == want);
+                REQUIRE(certified.collide(q).collides == want);
+                REQUIRE(fast.collide(q).collides == fast_ref.collide(q).collides);
+            }
+            CHECK(met * 10 >= posed.size() * 9);
+            const detector_statistics& st = exact.statistics();
+            UNSCOPED_INFO("met " << met << " last pairs " << st.last_pair_frames << " deep " << st.interior_frames);
+            CHECK((far ? st.last_pair_frames : st.last_pair_frames + st.interior_frames) * 10 >= met * 9);
+            if (far) CHECK(st.interior_frames == 0);
+        }
+    }
 }

@@ -48,7 +48,7 @@ struct detector_statistics {
     std::size_t jump_frames = 0;         ///< frames with no coherence to use (both edge trees, or every pair)
     std::size_t convex_frames = 0;       ///< frames answered by the separating-edge test of two convex polygons
     std::size_t disc_frames = 0;         ///< frames of two convex polygons answered by their inner discs overlapping
-    std::size_t last_pair_frames = 0;    ///< frames answered by the edge pair that met last (last_pair_meets)
+    std::size_t last_pair_frames = 0;    ///< frames answered by an edge pair that met last (last_pair_meets)
     std::size_t interior_frames = 0;     ///< jumps answered by a vertex deep in the other region (vertices_deep_inside)
     std::size_t containment_rings_excluded = 0;  ///< rings containment found outside the other polygon by its cells
     std::size_t containment_tree_locates = 0;    ///< rings containment located through the other polygon's edge tree
@@ -66,6 +66,27 @@ struct feature_state {
 template <class T, int Tag>
 struct feature_state<T, false, Tag> {};
 
+/// The edge pairs that met which a frame of small steps may try
+/// (detector::last_pair_meets): the one that met last, then up to seven
+/// that met before it and no longer met when last tried. Poses that wander
+/// within a small range (shuffled poses along a shared border, a body that
+/// jitters) cross at a few pairs in turn, each most often again within a
+/// few frames; a pair test costs a hundred instructions or so, a search
+/// of the candidates or the trees thousands. Measured on the real pairs of
+/// docs/bench/real_profile.md (callgrind, the loop of
+/// scripts/profile/real_frames.cpp over 200 poses of each order, double),
+/// against the last pair alone: NC's Northampton x Halifax 5,075 -> 1,475
+/// instructions a frame on its shuffled poses (4 pairs in all: 2,312; 16:
+/// 1,475, as 8),
+/// Jones x Craven 3,786 -> 1,539, Chile x Argentina 3,006 -> 1,364, Russia
+/// x Kazakhstan 2,810 -> 998, Canada x United States 3,653 -> 1,847; their
+/// walks 0.59x to 0.95x; the frames apart and the boroughs' unchanged.
+/// The time study's families (75 cells: convex, starred, irregular,
+/// contour and hole; circular, linear and random; the first 9,000 frames
+/// of each):
+/// 0.983x to 1.018x, 1.001x in the geometric mean.
+inline constexpr std::size_t recent_met_pairs = 8;
+
 /// What temporal coherence keeps between frames: where the cached candidates
 /// were gathered, and the location of that point when there were none.
 struct coherence_state {
@@ -80,6 +101,24 @@ struct coherence_state {
     std::uint32_t met_a = 0;       ///< A's edge of the pair that last met (test_pair)
     std::uint32_t met_b = 0;       ///< B's edge of that pair
     bool has_met = false;          ///< whether a pair has met since the detector was made
+    /// Pairs that met before and no longer met when last tried
+    /// (detector::last_pair_meets), the latest first, each once:
+    /// `earlier_count` of them.
+    std::array<std::pair<std::uint32_t, std::uint32_t>, recent_met_pairs> earlier{};
+    std::size_t earlier_count = 0;
+
+    /// Keeps (e, j) as the latest of the earlier pairs: moved to the front
+    /// when kept already, else in front of the others, the oldest dropped
+    /// when all places are taken.
+    void keep_earlier(std::uint32_t e, std::uint32_t j) {
+        const std::pair<std::uint32_t, std::uint32_t> pair(e, j);
+        std::size_t k = 0;
+        while (k < earlier_count && earlier[k] != pair) ++k;
+        if (k == earlier_count && earlier_count < earlier.size()) ++earlier_count;
+        if (k == earlier.size()) --k;
+        for (; k > 0; --k) earlier[k] = earlier[k - 1];
+        earlier[0] = pair;
+    }
 
     /// Whether p lies within the skin of `from` (a filter in double; a
     /// distance that is not a number counts as within).
@@ -119,7 +158,8 @@ struct distance_state {
 ///   (else the pairs are sought as for any polygons: the edge pairs are
 ///   the answer, and their search shows the meeting too)
 ///   no witnesses asked, p within the skin of the last frame's, and the edge
-///   pair that met last (features::coherence) meets again by the pair tests
+///   pair that met last (features::coherence) meets again by the pair tests,
+///   or, while they pay, one of the recent_met_pairs that met before it
 ///   (last_pair_meets):                                          they meet
 ///   p jumped (a random pose, a first frame far from the last, or no
 ///   features::coherence: coherent_step), or B has more chunks than the
@@ -463,7 +503,9 @@ private:
     }
 
     /// Whether the edge pair that met last (kept by test_pair with
-    /// features::coherence) still meets, by the pair tests: asked first
+    /// features::coherence), or one of the pairs that met before it
+    /// (recent_met_pairs, while recent_pairs_odds_ finds them worth
+    /// asking), still meets, by the pair tests: asked first
     /// when no witness is (a frame then needs one meeting pair, not all)
     /// and p moved at most the skin since the last frame. Along a
     /// trajectory two overlapping polygons most often keep crossing at the
@@ -472,14 +514,40 @@ private:
     /// first. A pair that no longer meets costs one test, and the frame
     /// goes on as before; one that meets counts as the small step it was
     /// for the next frame's coherent_step.
-    bool last_pair_meets(const frame& f) {
+    [[gnu::always_inline]] bool last_pair_meets(const frame& f) {
         if constexpr (with_coherence) {
-            detector_detail::coherence_state& c = coherence_state::value;
+            const detector_detail::coherence_state& c = coherence_state::value;
             if (!options_.temporal_coherence || !c.has_met || witnessing() || !c.has_last ||
                 !c.within_skin(c.last, f.p))
                 return false;
-            const std::size_t j = c.met_b;
-            if (!test_pair(c.met_a, j, b_.approximate_now(j), b_.approximate_now(next_b(j)), f.margin)) return false;
+            return pairs_that_met_meet(f);
+        } else {
+            (void)f;
+            return false;
+        }
+    }
+
+    /// last_pair_meets past its conditions: the pair tests.
+    bool pairs_that_met_meet(const frame& f) {
+        if constexpr (with_coherence) {
+            detector_detail::coherence_state& c = coherence_state::value;
+            // The latest; failing, it joins the earlier pairs, which are
+            // tried next when the frame before was a small step too (poses
+            // wandering within a small range, not a random pose landing
+            // near the last one by chance) and while they pay
+            // (recent_pairs_odds_). (A pair that meets becomes the latest
+            // in test_pair, which writes nothing else.)
+            const auto meets = [&](std::uint32_t e, std::uint32_t j) {
+                return test_pair(e, j, b_.approximate_now(j), b_.approximate_now(next_b(j)), f.margin);
+            };
+            if (!meets(c.met_a, c.met_b)) {
+                c.keep_earlier(c.met_a, c.met_b);
+                if (c.earlier_count == 1 || !c.last_step_small || !recent_pairs_odds_.worth_asking()) return false;
+                std::size_t k = 1;
+                while (k < c.earlier_count && !meets(c.earlier[k].first, c.earlier[k].second)) ++k;
+                recent_pairs_odds_.record(k < c.earlier_count);
+                if (k == c.earlier_count) return false;
+            }
             c.last = f.p;
             c.last_step_small = true;
             return true;
@@ -1375,6 +1443,12 @@ private:
         }
     };
     probe_odds interior_odds_;
+    /// The same odds for the pairs that met before the last one
+    /// (last_pair_meets): they answer frames whose poses wander about a
+    /// border, and seldom a trajectory that has left its contact or random
+    /// poses that land near the last one by chance, where each of them
+    /// would cost a pair test at every frame.
+    probe_odds recent_pairs_odds_;
     bool convex_route_ = false;  ///< A and B convex and small, d == 0
     /// A and B both convex: their inner discs lie deep enough in them to
     /// answer many frames (inner_discs_overlap). Measured on the time study's
