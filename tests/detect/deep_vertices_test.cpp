@@ -46,7 +46,7 @@ std::vector<pose> scattered(rng& g, std::size_t count, double shift, double turn
 
 TEST_CASE("deep vertices: jumps of overlapping polygons answer as the exact reference", "[detect][exact]") {
     rng g(2612);
-    std::size_t deep = 0, frames = 0;
+    std::size_t deep = 0, frames = 0, by_pairs = 0;
     const int rounds = test_effort::scaled(16);
     for (int round = 0; round < rounds; ++round) {
         polygon a, b;
@@ -92,16 +92,22 @@ TEST_CASE("deep vertices: jumps of overlapping polygons answer as the exact refe
             for (const double d : {0.0, 0.05}) {
                 INFO("round " << round << " swapped " << swapped);
                 const bool built = d == 0;
-                deep += (swapped ? test_frames::run_against_reference(b, a, poses, d, built)
-                                 : test_frames::run_against_reference(a, b, poses, d, built))
-                            .exact_counters.interior_frames;
+                const detector_statistics counted =
+                    (swapped ? test_frames::run_against_reference(b, a, poses, d, built)
+                             : test_frames::run_against_reference(a, b, poses, d, built))
+                        .exact_counters;
+                deep += counted.interior_frames;
+                by_pairs += counted.last_pair_frames;
                 frames += poses.size();
             }
         }
     }
-    // The route answers a good share of the frames.
-    INFO(deep << " of " << frames << " frames answered by a deep vertex");
-    CHECK(deep * 5 > frames);
+    // The route answers a good share of the frames that the pairs which met
+    // lately (asked first, last_pair_meets) leave to the search: 888 of the
+    // 3,733 left (and 186 of 942 at a quarter of the effort, the sanitizer
+    // run's), where a route that never answered would give none.
+    INFO(deep << " of " << frames << " frames answered by a deep vertex, " << by_pairs << " by pairs that met lately");
+    CHECK(deep * 6 > frames - by_pairs);
 }
 
 TEST_CASE("deep vertices: not asked with witnesses, which need edge pairs", "[detect]") {
