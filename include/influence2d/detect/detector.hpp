@@ -77,14 +77,12 @@ struct feature_state<T, false, Tag> {};
 /// scripts/profile/real_frames.cpp over 200 poses of each order, double),
 /// against the last pair alone: NC's Northampton x Halifax 5,075 -> 1,475
 /// instructions a frame on its shuffled poses (4 pairs in all: 2,312; 16:
-/// 1,475, as 8),
-/// Jones x Craven 3,786 -> 1,539, Chile x Argentina 3,006 -> 1,364, Russia
-/// x Kazakhstan 2,810 -> 998, Canada x United States 3,653 -> 1,847; their
-/// walks 0.59x to 0.95x; the frames apart and the boroughs' unchanged.
-/// The time study's families (75 cells: convex, starred, irregular,
-/// contour and hole; circular, linear and random; the first 9,000 frames
-/// of each):
-/// 0.983x to 1.018x, 1.001x in the geometric mean.
+/// 1,475, as 8), Jones x Craven 3,786 -> 1,539, Chile x Argentina 3,006 ->
+/// 1,364, Russia x Kazakhstan 2,810 -> 998, Canada x United States 3,653 ->
+/// 1,847; their walks 0.59x to 0.95x; the frames apart and the boroughs'
+/// unchanged. The time study's families (75 cells: convex, starred,
+/// irregular, contour and hole; circular, linear and random; the first
+/// 9,000 frames of each): 0.983x to 1.018x, 1.001x in the geometric mean.
 inline constexpr std::size_t recent_met_pairs = 8;
 
 /// What temporal coherence keeps between frames: where the cached candidates
