@@ -30,6 +30,17 @@
 
 namespace influence2d {
 
+/// Whether NT is a floating type whose largest value is below double's
+/// (float): the vertices of a polygon NT takes are then checked against
+/// its range (accepted_polygon).
+template <class NT>
+inline constexpr bool range_below_double_v = [] {
+    if constexpr (std::is_floating_point_v<NT>)
+        return static_cast<double>(std::numeric_limits<NT>::max()) < std::numeric_limits<double>::max();
+    else
+        return false;
+}();
+
 /// The polygon p, checked to be one a detector in NT can take: not empty (a
 /// default-constructed polygon has no ring), and within the range of a
 /// floating NT narrower than double (float). Throws invalid_input saying
@@ -38,15 +49,12 @@ namespace influence2d {
 template <class NT>
 const polygon& accepted_polygon(const polygon& p, const char* which) {
     if (p.size() == 0) throw invalid_input(std::string("the ") + which + " polygon is empty (it has no ring)");
-    if constexpr (std::is_floating_point_v<NT> && std::numeric_limits<NT>::is_specialized) {
+    if constexpr (range_below_double_v<NT>) {
         constexpr double top = static_cast<double>(std::numeric_limits<NT>::max());
-        if constexpr (top < std::numeric_limits<double>::max()) {
-            for (const point<double>& v : p.vertices())
-                if (std::fabs(v.x) > top || std::fabs(v.y) > top)
-                    throw invalid_input(std::string("the ") + which + " polygon's vertex (" + std::to_string(v.x) +
-                                        ", " + std::to_string(v.y) + ") is beyond the range of " +
-                                        number_traits<NT>::name);
-        }
+        for (const point<double>& v : p.vertices())
+            if (std::fabs(v.x) > top || std::fabs(v.y) > top)
+                throw invalid_input(std::string("the ") + which + " polygon's vertex (" + std::to_string(v.x) + ", " +
+                                    std::to_string(v.y) + ") is beyond the range of " + number_traits<NT>::name);
     }
     return p;
 }
