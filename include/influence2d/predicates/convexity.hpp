@@ -65,9 +65,11 @@ inline bool is_convex_polygon(const polygon& p) {
 /// asks of them.
 inline bool fills_its_box(const polygon& p) {
     if (p.ring_count() != 1 || p.size() != 4) return false;
+    // (One ring of four: the edge from vertex i goes to vertex i + 1, the
+    // last back to the first; so without reading the polygon's links.)
     bool along_x[4];
     for (std::size_t i = 0; i < 4; ++i) {
-        const point<double>&v = p.vertex(i), &w = p.vertex(p.next(i));
+        const point<double>&v = p.vertex(i), &w = p.vertex((i + 1) % 4);
         along_x[i] = v.y == w.y;
         if (along_x[i] == (v.x == w.x)) return false;
     }
