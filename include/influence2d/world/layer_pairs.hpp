@@ -318,6 +318,7 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const layer_
     std::vector<body_pair> out;
     for (std::size_t k = 0; k < candidates.size(); ++k)
         if (meets[k]) out.push_back(candidates[k]);
+    sort_body_pairs(out, std::max(first.size(), second.size()));
     if (statistics != nullptr) {
         statistics->candidates = candidates.size();
         statistics->exact_pairs = static_cast<std::size_t>(std::count(in_exact.begin(), in_exact.end(), 1));
@@ -366,7 +367,7 @@ inline std::vector<polygon> scaled_layer(const std::vector<polygon>& layer, int 
 ///   same answer)
 ///   boxes <- each polygon's box, grown by within / 2 (and the filters'
 ///            margin)
-///   candidates <- the pairs whose boxes meet, sorted (sort_body_pairs):
+///   candidates <- the pairs whose boxes meet, in the order found:
 ///     by sorting the boxes along x and sweeping (swept_pairs) when that
 ///     tests at most sweep_tests_per_box pairs a box; else by a box tree
 ///     over them joined with itself (box_tree::self_join)
@@ -390,6 +391,7 @@ inline std::vector<polygon> scaled_layer(const std::vector<polygon>& layer, int 
 ///   by the separating-edge test on its doubles as given
 ///   (convex_polygons_meet_as_given), the others by bodies_within on the
 ///   two placings
+///   the candidates that meet, sorted (sort_body_pairs)
 ///
 /// `statistics`, when given, receives the number of candidates, of those
 /// answered again in Exact, and whether the sweep found them. Throws
@@ -417,7 +419,6 @@ std::vector<body_pair> layer_pairs(const std::vector<polygon>& layer, double wit
             candidates.push_back({std::min(i, j), std::max(i, j)});
         });
     }
-    sort_body_pairs(candidates, layer.size());
     if (statistics != nullptr) statistics->swept = swept;
     return layer_pairs_detail::within_of<NT, Exact>(layer, summary, layer, summary, true, candidates, within, threads,
                                                     statistics);
@@ -454,7 +455,6 @@ std::vector<body_pair> layer_pairs(const std::vector<polygon>& first, const std:
         a_tree.join(b_tree, candidate);
     }
     if (statistics != nullptr) statistics->swept = swept;
-    sort_body_pairs(candidates, std::max(first.size(), second.size()));
     return layer_pairs_detail::within_of<NT, Exact>(first, first_summary, second, second_summary, false, candidates,
                                                     within, threads, statistics);
 }
