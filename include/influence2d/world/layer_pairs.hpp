@@ -239,10 +239,14 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const layer_
         shape_second(within == 0 && !same ? second.size() : 0, join_shape::unknown);
     std::vector<join_shape>& second_shape = same ? shape_first : shape_second;
     std::vector<join_route> route(candidates.size(), join_route::placed);
-    // The routes by shape (one thread: each polygon's shape decided once),
-    // then those by vertices (on threads when their scans are long: each
-    // candidate's route its own).
+    std::vector<char> meets(candidates.size(), 0), in_exact(candidates.size(), 0);
+    // The routes by shape (one thread: each polygon's shape decided once; a
+    // pair of boxes answered at once), then those by vertices (on threads
+    // when their scans are long: each candidate's route its own). A layer
+    // of rectangles (the wheat plots of docs/world.md) is done after the
+    // first pass.
     std::size_t scanned = 0;  // (the vertices the routes by vertices scan at most)
+    std::size_t left = 0;     // (the candidates the first pass leaves)
     for (std::size_t k = 0; k < candidates.size(); ++k) {
         const body_pair& c = candidates[k];
         const std::size_t na = first_summary.sizes[c.first], nb = second_summary.sizes[c.second];
@@ -251,70 +255,71 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const layer_
             const join_shape sb = sa == join_shape::other ? sa : shape_as_known(second, second_shape, c.second);
             if (sa == join_shape::box && sb == join_shape::box) {
                 route[k] = join_route::boxes;
+                meets[k] = boxes_overlap(first_summary.bounds[c.first], second_summary.bounds[c.second]) ? 1 : 0;
                 continue;
             }
+            ++left;
             if (sa != join_shape::other && sb != join_shape::other) {
                 route[k] = join_route::convex;
                 continue;
             }
+        } else {
+            ++left;
         }
         if (na <= join_shared_vertex_limit && nb <= join_shared_vertex_limit) scanned += na + nb;
     }
-    run_in_chunks(candidates.size(), scanned < join_parallel_vertices ? 1u : threads, join_grain,
-                  [&](std::size_t lo, std::size_t hi) {
-                      for (std::size_t k = lo; k < hi; ++k) {
-                          if (route[k] != join_route::placed) continue;
-                          const polygon &a = first[candidates[k].first], &b = second[candidates[k].second];
-                          const std::size_t na = a.size(), nb = b.size();
-                          if (na > join_shared_vertex_limit || nb > join_shared_vertex_limit) continue;
-                          if (share_a_vertex(a, b))
-                              route[k] = join_route::shared_vertex;
-                          else if (within == 0 && na + nb <= join_apart_limit && projections_apart(a, b))
-                              route[k] = join_route::apart;
-                      }
-                  });
-    std::vector<char> named_first(first.size(), 0), named_second(second.size(), 0);
-    std::size_t vertices = 0;
-    for (std::size_t k = 0; k < candidates.size(); ++k) {
-        if (route[k] != join_route::placed) continue;
-        const body_pair& c = candidates[k];
-        named_first[c.first] = 1;
-        (same ? named_first : named_second)[c.second] = 1;
-        vertices += first_summary.sizes[c.first] + second_summary.sizes[c.second];
-    }
-    const unsigned pair_threads = vertices < join_parallel_vertices ? 1u : threads;
-    placed_polygons<NT> placed_first(first, named_first, pair_threads);
-    placed_polygons<NT> placed_second(second, named_second, pair_threads);  // none named when same
-    placed_polygons<NT>& second_placed = same ? placed_first : placed_second;
-    std::vector<char> meets(candidates.size(), 0), in_exact(candidates.size(), 0);
-    run_in_chunks(candidates.size(), pair_threads, join_grain, [&](std::size_t lo, std::size_t hi) {
-        const rotation_pose here(pose{});
-        for (std::size_t k = lo; k < hi; ++k) {
+    if (left > 0) {
+        run_in_chunks(candidates.size(), scanned < join_parallel_vertices ? 1u : threads, join_grain,
+                      [&](std::size_t lo, std::size_t hi) {
+                          for (std::size_t k = lo; k < hi; ++k) {
+                              if (route[k] != join_route::placed) continue;
+                              const polygon &a = first[candidates[k].first], &b = second[candidates[k].second];
+                              const std::size_t na = a.size(), nb = b.size();
+                              if (na > join_shared_vertex_limit || nb > join_shared_vertex_limit) continue;
+                              if (share_a_vertex(a, b))
+                                  route[k] = join_route::shared_vertex;
+                              else if (within == 0 && na + nb <= join_apart_limit && projections_apart(a, b))
+                                  route[k] = join_route::apart;
+                          }
+                      });
+        std::vector<char> named_first(first.size(), 0), named_second(second.size(), 0);
+        std::size_t vertices = 0;
+        for (std::size_t k = 0; k < candidates.size(); ++k) {
+            if (route[k] != join_route::placed) continue;
             const body_pair& c = candidates[k];
-            if (route[k] == join_route::shared_vertex) {
-                meets[k] = 1;
-                continue;
-            }
-            if (route[k] == join_route::apart) continue;  // (meets[k] stays 0)
-            if (route[k] == join_route::boxes) {
-                meets[k] = boxes_overlap(first_summary.bounds[c.first], second_summary.bounds[c.second]) ? 1 : 0;
-                continue;
-            }
-            const polygon &a = first[c.first], &b = second[c.second];
-            if (route[k] == join_route::convex) {
-                meets[k] = convex_polygons_meet_as_given(a, b) ? 1 : 0;
-                continue;
-            }
-            placed_polygon<NT>&pa = placed_first[c.first], &pb = second_placed[c.second];
-            const body_view<NT> va{&a, here, coordinate_scale(first_summary.bounds[c.first]), &pa},
-                vb{&b, here, coordinate_scale(second_summary.bounds[c.second]), &pb};
-            bool exact = false;
-            const meeting m =
-                bodies_within<NT, Exact>(meeting{}, va, vb, within, nullptr, witness_preference::cheapest, &exact);
-            meets[k] = m ? 1 : 0;
-            in_exact[k] = exact ? 1 : 0;
+            named_first[c.first] = 1;
+            (same ? named_first : named_second)[c.second] = 1;
+            vertices += first_summary.sizes[c.first] + second_summary.sizes[c.second];
         }
-    });
+        const unsigned pair_threads = vertices < join_parallel_vertices ? 1u : threads;
+        placed_polygons<NT> placed_first(first, named_first, pair_threads);
+        placed_polygons<NT> placed_second(second, named_second, pair_threads);  // none named when same
+        placed_polygons<NT>& second_placed = same ? placed_first : placed_second;
+        run_in_chunks(candidates.size(), pair_threads, join_grain, [&](std::size_t lo, std::size_t hi) {
+            const rotation_pose here(pose{});
+            for (std::size_t k = lo; k < hi; ++k) {
+                const body_pair& c = candidates[k];
+                if (route[k] == join_route::shared_vertex) {
+                    meets[k] = 1;
+                    continue;
+                }
+                if (route[k] == join_route::apart || route[k] == join_route::boxes) continue;  // (answered)
+                const polygon &a = first[c.first], &b = second[c.second];
+                if (route[k] == join_route::convex) {
+                    meets[k] = convex_polygons_meet_as_given(a, b) ? 1 : 0;
+                    continue;
+                }
+                placed_polygon<NT>&pa = placed_first[c.first], &pb = second_placed[c.second];
+                const body_view<NT> va{&a, here, coordinate_scale(first_summary.bounds[c.first]), &pa},
+                    vb{&b, here, coordinate_scale(second_summary.bounds[c.second]), &pb};
+                bool exact = false;
+                const meeting m =
+                    bodies_within<NT, Exact>(meeting{}, va, vb, within, nullptr, witness_preference::cheapest, &exact);
+                meets[k] = m ? 1 : 0;
+                in_exact[k] = exact ? 1 : 0;
+            }
+        });
+    }
     std::vector<body_pair> out;
     for (std::size_t k = 0; k < candidates.size(); ++k)
         if (meets[k]) out.push_back(candidates[k]);
@@ -373,7 +378,10 @@ inline std::vector<polygon> scaled_layer(const std::vector<polygon>& layer, int 
 ///     over them joined with itself (box_tree::self_join)
 ///   for d = 0, of two polygons whose sizes' product is at most
 ///   join_convex_limit: two that fill their boxes (fills_its_box) are a
-///   pair of boxes, else two convex ones (is_convex_polygon) a convex pair
+///   pair of boxes, answered by whether the closed boxes share a point
+///   (boxes_overlap); else two convex ones (is_convex_polygon) a convex pair
+///   every candidate a pair of boxes (a layer of rectangles): the pairs that
+///   meet, sorted (sort_body_pairs), returned
 ///   of the other candidates, on `threads` threads taking join_grain
 ///   candidates at a time when those of at most join_shared_vertex_limit
 ///   vertices each hold join_parallel_vertices vertices or more, else on
@@ -384,13 +392,12 @@ inline std::vector<polygon> scaled_layer(const std::vector<polygon>& layer, int 
 ///   each polygon some other candidate names placed where it stands, once
 ///   for all its pairs, with its run boxes and, for several rings, its ring
 ///   boxes (placed_polygons)
-///   each candidate, on `threads` threads (0: every hardware thread) taking
-///   join_grain candidates at a time, or on one when the other candidates
-///   hold fewer than join_parallel_vertices vertices: a pair of boxes by
-///   whether the closed boxes share a point (boxes_overlap), a convex pair
-///   by the separating-edge test on its doubles as given
-///   (convex_polygons_meet_as_given), the others by bodies_within on the
-///   two placings
+///   each candidate not a pair of boxes, on `threads` threads (0: every
+///   hardware thread) taking join_grain candidates at a time, or on one
+///   when the other candidates hold fewer than join_parallel_vertices
+///   vertices: a convex pair by the separating-edge test on its doubles as
+///   given (convex_polygons_meet_as_given), the others by bodies_within on
+///   the two placings
 ///   the candidates that meet, sorted (sort_body_pairs)
 ///
 /// `statistics`, when given, receives the number of candidates, of those
