@@ -32,10 +32,12 @@ namespace influence2d {
 
 /// Whether NT is a floating type whose largest value is below double's
 /// (float): the vertices of a polygon NT takes are then checked against
-/// its range (accepted_polygon).
+/// its range (accepted_polygon). A floating type that std::numeric_limits
+/// does not describe (GCC's __float128 in its GNU mode, whose limits are
+/// all 0) is not.
 template <class NT>
 inline constexpr bool range_below_double_v = [] {
-    if constexpr (std::is_floating_point_v<NT>)
+    if constexpr (std::is_floating_point_v<NT> && std::numeric_limits<NT>::is_specialized)
         return static_cast<double>(std::numeric_limits<NT>::max()) < std::numeric_limits<double>::max();
     else
         return false;
