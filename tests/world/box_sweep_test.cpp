@@ -71,29 +71,29 @@ TEST_CASE("swept_pairs: every meeting pair once, the pairs tested counted exactl
 
         INFO("round " << round << ", " << n << " and " << m << " boxes");
         std::vector<index_pair> got;
-        const auto keep = [&](std::uint32_t i, std::uint32_t j) { got.push_back({i, j}); };
-        REQUIRE(swept_pairs(a, x_self, keep));
+        REQUIRE(swept_pairs(a, x_self, got));
         std::sort(got.begin(), got.end());
         CHECK(got == want_self);
         for (const index_pair& p : got) CHECK(p.first < p.second);
         if (x_self > 0) {
             got.clear();
-            CHECK_FALSE(swept_pairs(a, x_self - 1, keep));
+            CHECK_FALSE(swept_pairs(a, x_self - 1, got));
             CHECK(got.empty());
         }
 
         got.clear();
-        REQUIRE(swept_pairs(a, b, x_cross, keep));
+        REQUIRE(swept_pairs(a, b, x_cross, got));
         std::sort(got.begin(), got.end());
         CHECK(got == want_cross);
         if (x_cross > 0) {
             got.clear();
-            CHECK_FALSE(swept_pairs(a, b, x_cross - 1, keep));
+            CHECK_FALSE(swept_pairs(a, b, x_cross - 1, got));
             CHECK(got.empty());
         }
         // The roles swapped: the same pairs, each reversed.
         got.clear();
-        REQUIRE(swept_pairs(b, a, x_cross, [&](std::uint32_t j, std::uint32_t i) { got.push_back({i, j}); }));
+        REQUIRE(swept_pairs(b, a, x_cross, got));
+        for (index_pair& p : got) std::swap(p.first, p.second);
         std::sort(got.begin(), got.end());
         CHECK(got == want_cross);
     }
@@ -103,21 +103,22 @@ TEST_CASE("swept_pairs: every meeting pair once, the pairs tested counted exactl
     CHECK(touching > static_cast<std::size_t>(rounds));
 }
 
-TEST_CASE("swept_pairs: no boxes, and one box, have no pairs", "[box_sweep]") {
+TEST_CASE("swept_pairs: no boxes, and one box, have no pairs; pairs are appended", "[box_sweep]") {
     const std::vector<box> none, one = {box{0, 0, 1, 1}};
-    std::size_t calls = 0;
-    const auto count = [&](std::uint32_t, std::uint32_t) { ++calls; };
-    CHECK(swept_pairs(none, 0, count));
-    CHECK(swept_pairs(one, 0, count));
-    CHECK(swept_pairs(one, none, 0, count));
-    CHECK(swept_pairs(none, one, 0, count));
-    CHECK(calls == 0);
+    std::vector<index_pair> found;
+    CHECK(swept_pairs(none, 0, found));
+    CHECK(swept_pairs(one, 0, found));
+    CHECK(swept_pairs(one, none, 0, found));
+    CHECK(swept_pairs(none, one, 0, found));
+    CHECK(found.empty());
     // The same box twice: one pair, tested once.
     const std::vector<box> twice = {box{0, 0, 1, 1}, box{0, 0, 1, 1}};
-    CHECK_FALSE(swept_pairs(twice, 0, count));
-    CHECK(calls == 0);
-    CHECK(swept_pairs(twice, 1, count));
-    CHECK(calls == 1);
-    CHECK(swept_pairs(one, one, 1, count));
-    CHECK(calls == 2);
+    CHECK_FALSE(swept_pairs(twice, 0, found));
+    CHECK(found.empty());
+    CHECK(swept_pairs(twice, 1, found));
+    CHECK(found == std::vector<index_pair>{{0, 1}});
+    CHECK(swept_pairs(one, twice, 2, found));  // (after the pair already there)
+    REQUIRE(found.size() == 3);
+    std::sort(found.begin() + 1, found.end());
+    CHECK(found == std::vector<index_pair>{{0, 1}, {0, 0}, {0, 1}});
 }

@@ -245,17 +245,26 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const layer_
     // when their scans are long: each candidate's route its own). A layer
     // of rectangles (the wheat plots of docs/world.md) is done after the
     // first pass.
+    // (The counts, sizes and boxes read through locals: the stores of the
+    // answers, chars, may alias anything, and the vectors' own fields would
+    // be read again after each.)
     std::size_t scanned = 0;  // (the vertices the routes by vertices scan at most)
     std::size_t left = 0;     // (the candidates the first pass leaves)
-    for (std::size_t k = 0; k < candidates.size(); ++k) {
-        const body_pair& c = candidates[k];
-        const std::size_t na = first_summary.sizes[c.first], nb = second_summary.sizes[c.second];
+    const std::size_t count = candidates.size();
+    const body_pair* const pairs = candidates.data();
+    const std::uint32_t *const first_sizes = first_summary.sizes.data(), *const second_sizes =
+                                                                             second_summary.sizes.data();
+    const box *const first_bounds = first_summary.bounds.data(), *const second_bounds = second_summary.bounds.data();
+    char* const answer = meets.data();
+    for (std::size_t k = 0; k < count; ++k) {
+        const body_pair c = pairs[k];
+        const std::size_t na = first_sizes[c.first], nb = second_sizes[c.second];
         if (within == 0 && na * nb <= join_convex_limit) {
             const join_shape sa = shape_as_known(first, shape_first, c.first);
             const join_shape sb = sa == join_shape::other ? sa : shape_as_known(second, second_shape, c.second);
             if (sa == join_shape::box && sb == join_shape::box) {
                 route[k] = join_route::boxes;
-                meets[k] = boxes_overlap(first_summary.bounds[c.first], second_summary.bounds[c.second]) ? 1 : 0;
+                answer[k] = boxes_overlap(first_bounds[c.first], second_bounds[c.second]) ? 1 : 0;
                 continue;
             }
             ++left;
@@ -320,9 +329,15 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const layer_
             }
         });
     }
-    std::vector<body_pair> out;
-    for (std::size_t k = 0; k < candidates.size(); ++k)
-        if (meets[k]) out.push_back(candidates[k]);
+    // Each candidate written, kept by moving past it (no branch on its
+    // answer); room for one more.
+    const std::size_t kept = static_cast<std::size_t>(std::count(meets.begin(), meets.end(), 1));
+    std::vector<body_pair> out(kept + 1);
+    for (std::size_t k = 0, at = 0; k < count; ++k) {
+        out[at] = pairs[k];
+        at += static_cast<std::size_t>(answer[k]);
+    }
+    out.pop_back();
     sort_body_pairs(out, std::max(first.size(), second.size()));
     if (statistics != nullptr) {
         statistics->candidates = candidates.size();
@@ -417,8 +432,7 @@ std::vector<body_pair> layer_pairs(const std::vector<polygon>& layer, double wit
     std::vector<std::uint32_t> ids;
     layer_pairs_detail::boxes_of<NT>(summary, within, boxes, ids);
     std::vector<body_pair> candidates;
-    const auto candidate = [&](std::uint32_t i, std::uint32_t j) { candidates.push_back({i, j}); };
-    const bool swept = swept_pairs(boxes, sweep_tests_per_box * boxes.size(), candidate);
+    const bool swept = swept_pairs(boxes, sweep_tests_per_box * boxes.size(), candidates);
     if (!swept) {
         box_tree tree;
         tree.rebuild(boxes, ids);
@@ -452,14 +466,13 @@ std::vector<body_pair> layer_pairs(const std::vector<polygon>& first, const std:
     layer_pairs_detail::boxes_of<NT>(first_summary, within, a_boxes, a_ids);
     layer_pairs_detail::boxes_of<NT>(second_summary, within, b_boxes, b_ids);
     std::vector<body_pair> candidates;
-    const auto candidate = [&](std::uint32_t i, std::uint32_t j) { candidates.push_back({i, j}); };
     const bool swept =
-        swept_pairs(a_boxes, b_boxes, sweep_tests_per_box * (a_boxes.size() + b_boxes.size()), candidate);
+        swept_pairs(a_boxes, b_boxes, sweep_tests_per_box * (a_boxes.size() + b_boxes.size()), candidates);
     if (!swept) {
         box_tree a_tree, b_tree;
         a_tree.rebuild(a_boxes, a_ids);
         b_tree.rebuild(b_boxes, b_ids);
-        a_tree.join(b_tree, candidate);
+        a_tree.join(b_tree, [&](std::uint32_t i, std::uint32_t j) { candidates.push_back({i, j}); });
     }
     if (statistics != nullptr) statistics->swept = swept;
     return layer_pairs_detail::within_of<NT, Exact>(first, first_summary, second, second_summary, false, candidates,
