@@ -103,7 +103,7 @@ TEST_CASE("swept_pairs: every meeting pair once, the pairs tested counted exactl
     CHECK(touching > static_cast<std::size_t>(rounds));
 }
 
-TEST_CASE("swept_pairs: no boxes, and one box, have no pairs; pairs are appended", "[box_sweep]") {
+TEST_CASE("swept_pairs: no boxes, and one box, have no pairs, and pairs are appended", "[box_sweep]") {
     const std::vector<box> none, one = {box{0, 0, 1, 1}};
     std::vector<index_pair> found;
     CHECK(swept_pairs(none, 0, found));
