@@ -4,6 +4,7 @@
 /// Axis-aligned boxes in double coordinates, used only by conservative filters.
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #if defined(__SSE2__)
@@ -127,6 +128,12 @@ private:
     box b_;
 #endif
 };
+
+/// The largest magnitude of a box's coordinates: for a polygon's box, the
+/// scale its coordinates' rounding errors are relative to.
+inline double largest_coordinate(const box& b) {
+    return std::max(std::max(std::fabs(b.min_x), std::fabs(b.max_x)), std::max(std::fabs(b.min_y), std::fabs(b.max_y)));
+}
 
 /// Whether two closed boxes share a point (false when either is empty or
 /// has a NaN side).

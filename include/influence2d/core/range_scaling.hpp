@@ -38,6 +38,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "influence2d/core/box.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 
@@ -57,10 +58,7 @@ constexpr int unscaled_exponent_limit() {
 }
 
 /// The largest magnitude of a polygon's coordinates (from its box).
-inline double largest_coordinate(const polygon& p) {
-    const box& b = p.bounds();
-    return std::max(std::max(std::fabs(b.min_x), std::fabs(b.max_x)), std::max(std::fabs(b.min_y), std::fabs(b.max_y)));
-}
+inline double largest_coordinate(const polygon& p) { return largest_coordinate(p.bounds()); }
 
 /// The largest magnitude of a pose's translation.
 inline double largest_coordinate(const pose& q) { return std::max(std::fabs(q.tx), std::fabs(q.ty)); }

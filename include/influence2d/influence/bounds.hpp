@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "influence2d/core/box.hpp"
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/predicates/filters.hpp"
@@ -30,13 +31,8 @@ inline double bounding_radius(const polygon& shape, const point<double>& center)
     return upper_sqrt(r2);
 }
 
-/// The largest absolute coordinate of a box.
-inline double coordinate_scale(const box& b) {
-    return std::max({std::fabs(b.min_x), std::fabs(b.max_x), std::fabs(b.min_y), std::fabs(b.max_y)});
-}
-
 /// The largest absolute coordinate of the polygon: the scale that rounding
 /// errors of its coordinates are relative to.
-inline double coordinate_scale(const polygon& shape) { return coordinate_scale(shape.bounds()); }
+inline double coordinate_scale(const polygon& shape) { return largest_coordinate(shape.bounds()); }
 
 }  // namespace influence2d

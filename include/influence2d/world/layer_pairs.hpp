@@ -85,7 +85,7 @@ inline layer_summary summary_of(const std::vector<polygon>& layer, const char* w
                                 " layer is empty (it has no ring)");
         out.bounds.push_back(layer[k].bounds());
         out.sizes.push_back(static_cast<std::uint32_t>(layer[k].size()));
-        out.largest = std::max(out.largest, coordinate_scale(out.bounds.back()));
+        out.largest = std::max(out.largest, largest_coordinate(out.bounds.back()));
     }
     return out;
 }
@@ -99,7 +99,7 @@ void boxes_of(const layer_summary& layer, double within, std::vector<box>& boxes
     ids.reserve(layer.bounds.size());
     for (std::size_t k = 0; k < layer.bounds.size(); ++k) {
         const box& b = layer.bounds[k];
-        boxes.push_back(b.inflated(placing_margin<NT>(coordinate_scale(b)) + within / 2 * (1 + sum_widening)));
+        boxes.push_back(b.inflated(placing_margin<NT>(largest_coordinate(b)) + within / 2 * (1 + sum_widening)));
         ids.push_back(static_cast<std::uint32_t>(k));
     }
 }
@@ -319,8 +319,8 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const layer_
                     continue;
                 }
                 placed_polygon<NT>&pa = placed_first[c.first], &pb = second_placed[c.second];
-                const body_view<NT> va{&a, here, coordinate_scale(first_summary.bounds[c.first]), &pa},
-                    vb{&b, here, coordinate_scale(second_summary.bounds[c.second]), &pb};
+                const body_view<NT> va{&a, here, largest_coordinate(first_summary.bounds[c.first]), &pa},
+                    vb{&b, here, largest_coordinate(second_summary.bounds[c.second]), &pb};
                 bool exact = false;
                 const meeting m =
                     bodies_within<NT, Exact>(meeting{}, va, vb, within, nullptr, witness_preference::cheapest, &exact);
