@@ -114,8 +114,9 @@ inline std::size_t intervals_meet(double lo, double hi, double other_lo, double 
 /// joins of docs/world.md took the wheat plots 658,900 -> 618,600
 /// instructions, the Boston tracts 1,811,400 -> 1,765,900, the Olinda
 /// blocks 3,101,900 -> 3,070,400 (callgrind, three joins); the plots'
-/// tests alone 13.2 to 14.0 us -> 9.3 us (a scratch harness, medians of
-/// 201 sweeps).
+/// tests alone, both ways in each run, 13.2 to 22.5 us one at a time and
+/// 9.2 to 14.9 us two at a time, 0.58x to 0.71x (a scratch harness, six
+/// runs, medians of 201 sweeps each).
 inline std::size_t kept_meeting(double lo, double hi, const double* min_y, const double* max_y, std::size_t from,
                                 std::size_t to, std::uint32_t* out) {
     std::size_t count = 0, p = from;
