@@ -12,12 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "influence2d/core/box.hpp"
 #include "influence2d/core/invalid_input.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/core/range_scaling.hpp"
 #include "influence2d/detect/convex_pair.hpp"
-#include "influence2d/influence/bounds.hpp"
 #include "influence2d/predicates/convexity.hpp"
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/predicates/shared_vertex.hpp"
