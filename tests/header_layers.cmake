@@ -7,7 +7,7 @@
 # its own directory:
 #    0  assert.hpp, version.hpp
 #    1  number/       number types, their traits, the filter's fallback
-#    2  core/         point, box, polygon, pose, feature, invalid_input, prefetch
+#    2  core/         point, box, polygon, pose, feature, invalid_input, prefetch, shortest_decimal
 #    3  predicates/   every sign decision
 #    4  covering/     triangle covering, point location
 #    5  influence/    influence areas, extended areas, bounds, edge grid and tree

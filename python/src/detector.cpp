@@ -14,6 +14,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "influence2d/core/shortest_decimal.hpp"
 #include "influence2d/detect/detector.hpp"
 #include "influence2d/exact/certified_detector.hpp"
 #include "influence2d/number/cgal.hpp"
@@ -62,7 +63,7 @@ public:
     py_detector(const py_polygon& a, const py_polygon& b, const std::string& number_type, bool witness, double within)
         : kind_(number_kind_of(number_type)), a_(a.shape), b_(b.shape) {
         if (!(within >= 0) || !std::isfinite(within))
-            throw invalid_input("within is " + format_coordinate(within) + ": expected a finite number >= 0");
+            throw invalid_input("within is " + shortest_decimal(within) + ": expected a finite number >= 0");
         options_.distance = within;
         options_.witness = witness;
         py::gil_scoped_release release;

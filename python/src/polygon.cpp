@@ -86,7 +86,7 @@ py_polygon from_coords(const py::array& coords,
                 const point<double> q{at(i, 0), at(i, 1)};
                 if (!std::isfinite(q.x) || !std::isfinite(q.y))
                     throw invalid_input("coords[" + std::to_string(i) + ", " + (std::isfinite(q.x) ? "1" : "0") +
-                                        "] is " + format_coordinate(std::isfinite(q.x) ? q.y : q.x) + " (ring " +
+                                        "] is " + shortest_decimal(std::isfinite(q.x) ? q.y : q.x) + " (ring " +
                                         std::to_string(out.size()) + ", vertex " + std::to_string(i - rings[r]) +
                                         "): not a finite number");
                 ring.points.push_back(q);

@@ -8,7 +8,7 @@
 
 #include "bindings.hpp"
 #include "influence2d/core/invalid_input.hpp"
-#include "influence2d/io/wkt.hpp"
+#include "influence2d/core/shortest_decimal.hpp"
 
 namespace influence2d::python {
 
@@ -53,7 +53,7 @@ pose_rows pose_rows_of(const py::array& poses, const char* what) {
         for (int c = 0; c < 3; ++c)
             if (!std::isfinite(v[c]))
                 throw invalid_input(std::string(what) + "[" + std::to_string(k) + ", " + std::to_string(c) + "] (" +
-                                    names[c] + ") is " + format_coordinate(v[c]) + ": not a finite number");
+                                    names[c] + ") is " + shortest_decimal(v[c]) + ": not a finite number");
     }
     return r;
 }

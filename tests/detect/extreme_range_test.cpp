@@ -68,6 +68,14 @@ TEST_CASE("extreme range: float detectors refuse polygons beyond float's range",
     CHECK_THROWS_WITH(detector<float>(huge, small), Catch::Contains("static polygon") && Catch::Contains("float"));
     CHECK_THROWS_WITH(detector<float>(small, huge), Catch::Contains("moving polygon") && Catch::Contains("float"));
     CHECK_THROWS_AS(brute_force_detector<float>(huge, small), invalid_input);
+    // The vertex named as the file has it, in the fewest digits that read
+    // back to it (not a fixed six decimals: 40 digits for 1e39, and 0.000000
+    // for a tiny coordinate).
+    CHECK_THROWS_WITH(detector<float>(huge, small), Catch::Contains("vertex (1e+39, 0)"));
+    const polygon tiny_and_huge = read_wkt("POLYGON((1e-30 0, 1e39 0, 0 1e39, 1e-30 0))");
+    CHECK_THROWS_WITH(detector<float>(tiny_and_huge, small), Catch::Contains("vertex (1e+39, 0)"));
+    CHECK_THROWS_WITH(detector<float>(read_wkt("POLYGON((1e-30 -3e39, 1 0, 0 1, 1e-30 -3e39))"), small),
+                      Catch::Contains("vertex (1e-30, -3e+39)"));
     // double and exact take them; a translation beyond float's range poses B
     // at infinity in float, defined behaviour.
     CHECK_FALSE(detector<double>(huge, small).collide({2e39, 0, 0}).collides);

@@ -180,7 +180,7 @@ TEST_CASE("wkt: numbers read as boost::lexical_cast<double> reads them", "[io][w
             if (!std::isfinite(x)) continue;
             char buffer[40];
             std::snprintf(buffer, sizeof buffer, "%.17g", x);
-            number = k % 4 == 1 ? format_coordinate(x) : std::string(buffer);
+            number = k % 4 == 1 ? shortest_decimal(x) : std::string(buffer);
             REQUIRE(read_x(number) == x);
         }
         INFO(number);

@@ -636,6 +636,8 @@ TEST_CASE("sweep: bad input is refused", "[sweep]") {
     CHECK_THROWS_AS(first_contact<double>(a, a, {nan, 0, 0}, {1, 0, 0}), invalid_input);
     CHECK_THROWS_AS(first_contact<exact_rational>(a, a, {0, 0, 0}, {1, HUGE_VAL, 0}), invalid_input);
     CHECK_THROWS_AS(certified_first_contact(a, a, {0, 0, 0}, {0, 0, nan}), invalid_input);
+    CHECK_THROWS_WITH(first_contact<double>(a, a, {0, 0, 0}, {1, 0, 0}, sweep_options{-1e-9}),
+                      "sweep_options: tolerance is -1e-09, not a finite number >= 0");
     // The motions that turn, which pose B by their own formulas, name the
     // pose and its component as translations do, in both models.
     for (const turning_model model : {turning_model::rational, turning_model::angle_linear}) {

@@ -939,6 +939,10 @@ TEST_CASE("world: bad input is refused with invalid_input", "[world]") {
     CHECK_THROWS_AS(world<double>(o), invalid_input);
     o.within = std::nan("");
     CHECK_THROWS_AS(world<double>(o), invalid_input);
+    o.within = -1e-20;  // named as given, not as a fixed six decimals (-0.000000)
+    CHECK_THROWS_WITH(world<double>(o), "world: the distance -1e-20 is not a finite number >= 0");
+    CHECK_THROWS_WITH(layer_pairs<double>(std::vector<polygon>{test_shapes::square(0, 0, 1)}, -2.5e-300),
+                      "layer_pairs: the distance -2.5e-300 is not a finite number >= 0");
     world<double> w;
     CHECK_THROWS_AS(w.add_shape(polygon{}), invalid_input);
     const auto s = w.add_shape(test_shapes::square(0, 0, 1));

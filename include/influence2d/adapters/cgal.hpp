@@ -15,6 +15,7 @@
 #include <CGAL/number_utils.h>
 
 #include "influence2d/adapters/traits.hpp"
+#include "influence2d/core/shortest_decimal.hpp"
 
 namespace influence2d {
 
@@ -46,7 +47,7 @@ double cgal_coordinate_to_double(const FT& v) {
         const double d = CGAL::to_double(e);
         if (!std::isfinite(d)) throw invalid_input("value is beyond the range of double");
         if (ET(d) != e)
-            throw invalid_input("value is not exactly a double (the nearest is about " + std::to_string(d) + ")");
+            throw invalid_input("value is not exactly a double (the nearest is about " + shortest_decimal(d) + ")");
         return d;
     }
 }

@@ -211,7 +211,7 @@ void meeting_edges(const std::vector<std::vector<point<double>>>& rings, Visit v
 }
 
 inline std::string coordinates(const point<double>& p) {
-    return "(" + format_coordinate(p.x) + " " + format_coordinate(p.y) + ")";
+    return "(" + shortest_decimal(p.x) + " " + shortest_decimal(p.y) + ")";
 }
 
 /// The report being written: adds findings, counting each kind and listing at
@@ -334,7 +334,7 @@ inline void check_vertices(collector& c, std::size_t k, const std::vector<point<
         } else if (std::max(std::fabs(p.x - q.x), std::fabs(p.y - q.y)) <= near) {
             c.add_at_vertex(finding_kind::near_repeated_vertex, k, v, p,
                             "edge " + std::to_string(v) + " is shorter than " +
-                                format_coordinate(c.options.relative_tolerance) +
+                                shortest_decimal(c.options.relative_tolerance) +
                                 " of the polygon's extent (the longer side of its bounding box)",
                             "kept as it is; exact and certified modes decide on it exactly, float and double may "
                             "not");

@@ -22,6 +22,7 @@
 
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/core/shortest_decimal.hpp"
 #include "influence2d/detect/result.hpp"
 
 namespace influence2d {
@@ -73,12 +74,6 @@ inline std::string parse_number(std::string_view field, double& value) {
     if (res.ec != std::errc() || res.ptr != last) return quoted(field) + " is not a number";
     if (!std::isfinite(value)) return quoted(field) + " is not a finite number";
     return {};
-}
-
-inline std::string format_number(double x) {
-    std::array<char, 32> buf{};
-    const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), x);
-    return std::string(buf.data(), res.ptr);
 }
 
 }  // namespace csv_detail
@@ -182,10 +177,9 @@ inline std::vector<pose> read_poses_csv(const std::string& path) {
 /// written as they are (inf, nan), which the reader refuses. Stream errors
 /// are left in the stream's state.
 inline void write_poses_csv(std::ostream& out, const std::vector<pose>& poses) {
-    using csv_detail::format_number;
     out << "tx,ty,theta\n";
     for (const auto& p : poses)
-        out << format_number(p.tx) << ',' << format_number(p.ty) << ',' << format_number(p.theta) << '\n';
+        out << shortest_decimal(p.tx) << ',' << shortest_decimal(p.ty) << ',' << shortest_decimal(p.theta) << '\n';
 }
 
 /// Writes poses to a file; throws invalid_input when it cannot be written.

@@ -32,6 +32,7 @@
 
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
+#include "influence2d/core/shortest_decimal.hpp"
 
 namespace influence2d {
 
@@ -45,13 +46,6 @@ struct wkt_ring {
     std::vector<point<double>> points;  ///< in text order; may be empty or hold non-finite values
     ring_role role = ring_role::outer;  ///< outer for an exterior ring, hole for an interior one
 };
-
-/// x written in the fewest digits that read back to it (std::to_chars).
-inline std::string format_coordinate(double x) {
-    std::array<char, 32> buf{};
-    const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), x);
-    return std::string(buf.data(), res.ptr);
-}
 
 /// Whether ring `index` of the text is an empty exterior ring followed by
 /// its holes: holes without a part, which the reader refuses (any other empty
@@ -247,9 +241,9 @@ inline void append_ring(std::string_view source, const std::vector<wkt_ring>& re
     const point<double>& a = pts.front();
     const point<double>& b = pts.back();
     if (a.x != b.x || a.y != b.y)
-        fail(source, ring_place(index) + " is not closed: first point (" + format_coordinate(a.x) + " " +
-                         format_coordinate(a.y) + ") differs from last point (" + format_coordinate(b.x) + " " +
-                         format_coordinate(b.y) + ")");
+        fail(source, ring_place(index) + " is not closed: first point (" + shortest_decimal(a.x) + " " +
+                         shortest_decimal(a.y) + ") differs from last point (" + shortest_decimal(b.x) + " " +
+                         shortest_decimal(b.y) + ")");
     ring_input in;
     in.role = r.role;
     in.vertices = pts;
@@ -397,15 +391,15 @@ inline std::string to_wkt(const polygon& poly) {
     auto write_ring = [&](std::size_t r) {
         out += '(';
         for (std::size_t i = poly.ring_begin(r); i < poly.ring_end(r); ++i) {
-            out += format_coordinate(poly.vertex(i).x);
+            out += shortest_decimal(poly.vertex(i).x);
             out += ' ';
-            out += format_coordinate(poly.vertex(i).y);
+            out += shortest_decimal(poly.vertex(i).y);
             out += ',';
         }
         const auto& first = poly.vertex(poly.ring_begin(r));
-        out += format_coordinate(first.x);
+        out += shortest_decimal(first.x);
         out += ' ';
-        out += format_coordinate(first.y);
+        out += shortest_decimal(first.y);
         out += ')';
     };
     for (std::size_t r = 0; r < rings; ++r) {

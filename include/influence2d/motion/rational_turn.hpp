@@ -26,6 +26,7 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/core/shortest_decimal.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/number/certified.hpp"
 #include "influence2d/number/double_word.hpp"
@@ -89,7 +90,7 @@ inline std::vector<rational_piece> rational_pieces(const pose& from, const pose&
     while (std::fabs(turn) / static_cast<double>(k) > quarter) {
         k *= 2;
         if (k > (std::size_t{1} << 20))
-            throw invalid_input("first_contact: the motion turns by " + std::to_string(turn) +
+            throw invalid_input("first_contact: the motion turns by " + shortest_decimal(turn) +
                                 " radians, more than the rational model's 2^20 quarter turns");
     }
     std::vector<rational_piece> out;

@@ -23,6 +23,7 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/core/shortest_decimal.hpp"
 #include "influence2d/distance/separation.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/number/certified.hpp"
@@ -459,7 +460,7 @@ struct motion {
         accepted_polygon<NT>(a, "static");
         accepted_polygon<NT>(b, "moving");
         if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance))
-            throw invalid_input("sweep_options: tolerance is " + std::to_string(options.tolerance) +
+            throw invalid_input("sweep_options: tolerance is " + shortest_decimal(options.tolerance) +
                                 ", not a finite number >= 0");
         rotation_pose::check(from);
         named_end([&] { rotation_pose::check(to); });

@@ -19,6 +19,7 @@
 #include "influence2d/core/point.hpp"
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/core/shortest_decimal.hpp"
 #include "influence2d/covering/covering.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/influence/edge_tree.hpp"
@@ -55,8 +56,8 @@ const polygon& accepted_polygon(const polygon& p, const char* which) {
         constexpr double top = static_cast<double>(std::numeric_limits<NT>::max());
         for (const point<double>& v : p.vertices())
             if (std::fabs(v.x) > top || std::fabs(v.y) > top)
-                throw invalid_input(std::string("the ") + which + " polygon's vertex (" + std::to_string(v.x) + ", " +
-                                    std::to_string(v.y) + ") is beyond the range of " + number_traits<NT>::name);
+                throw invalid_input(std::string("the ") + which + " polygon's vertex (" + shortest_decimal(v.x) + ", " +
+                                    shortest_decimal(v.y) + ") is beyond the range of " + number_traits<NT>::name);
     }
     return p;
 }

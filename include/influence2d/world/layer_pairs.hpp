@@ -17,6 +17,7 @@
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
 #include "influence2d/core/range_scaling.hpp"
+#include "influence2d/core/shortest_decimal.hpp"
 #include "influence2d/detect/convex_pair.hpp"
 #include "influence2d/predicates/convexity.hpp"
 #include "influence2d/predicates/filters.hpp"
@@ -349,7 +350,7 @@ std::vector<body_pair> within_of(const std::vector<polygon>& first, const layer_
 /// The distance, checked.
 inline double checked_distance(double within) {
     if (!(within >= 0) || !std::isfinite(within))
-        throw invalid_input("layer_pairs: the distance " + std::to_string(within) + " is not a finite number >= 0");
+        throw invalid_input("layer_pairs: the distance " + shortest_decimal(within) + " is not a finite number >= 0");
     return within;
 }
 

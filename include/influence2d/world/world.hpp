@@ -22,6 +22,7 @@
 #include "influence2d/core/pose.hpp"
 #include "influence2d/core/prefetch.hpp"
 #include "influence2d/core/range_scaling.hpp"
+#include "influence2d/core/shortest_decimal.hpp"
 #include "influence2d/influence/bounds.hpp"
 #include "influence2d/predicates/filters.hpp"
 #include "influence2d/query/batch.hpp"
@@ -204,7 +205,7 @@ public:
     /// NaN or infinite.
     explicit world(world_options options = {}) : options_(options) {
         if (!(options.within >= 0) || !std::isfinite(options.within))
-            throw invalid_input("world: the distance " + std::to_string(options.within) +
+            throw invalid_input("world: the distance " + shortest_decimal(options.within) +
                                 " is not a finite number >= 0");
     }
 
