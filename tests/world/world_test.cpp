@@ -21,6 +21,7 @@
 #include <CGAL/squared_distance_2.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -1141,6 +1142,14 @@ TEST_CASE("layer_pairs: a layer whose candidates hold enough vertices for thread
           show_pairs(layer_pairs<exact_rational>(layer, within)));
 }
 
+/// x moved by -2 to 2 units in the last place, the count drawn from g: a
+/// side a layer writes twice, once as the grid line and once a hair off it.
+double nudged(double x, rng& g) {
+    for (int n = static_cast<int>(g.index(5)) - 2; n != 0; n += n > 0 ? -1 : 1)
+        x = std::nextafter(x, n > 0 ? HUGE_VAL : -HUGE_VAL);
+    return x;
+}
+
 TEST_CASE("layer_pairs: a grid of rectangles whose shared sides are a unit in the last place apart", "[world]") {
     // Axis-parallel rectangles on a grid, as a field of plots is stored:
     // each side shared with a neighbour is written once as the grid line and
@@ -1158,18 +1167,13 @@ TEST_CASE("layer_pairs: a grid of rectangles whose shared sides are a unit in th
         const double scale = round % 3 == 0 ? 1 : round % 3 == 1 ? 0x1p-600 : 0x1p600;
         const int columns = 12, rows = 9;
         const auto line = [&](int k, double step, double origin) { return scale * (origin + step * k); };
-        const auto nudged = [&](double x) {
-            for (int n = static_cast<int>(g.index(5)) - 2; n != 0; n += n > 0 ? -1 : 1)
-                x = std::nextafter(x, n > 0 ? HUGE_VAL : -HUGE_VAL);
-            return x;
-        };
         std::vector<polygon> layer;
         std::vector<box> boxes;
         for (int r = 0; r < rows; ++r)
             for (int c = 0; c < columns; ++c) {
-                const double x0 = c == 0 ? line(c, 2.51, 1.255) : nudged(line(c, 2.51, 1.255));
+                const double x0 = c == 0 ? line(c, 2.51, 1.255) : nudged(line(c, 2.51, 1.255), g);
                 const double x1 = line(c + 1, 2.51, 1.255),
-                             y0 = r == 0 ? line(r, 3.3, 64.05) : nudged(line(r, 3.3, 64.05));
+                             y0 = r == 0 ? line(r, 3.3, 64.05) : nudged(line(r, 3.3, 64.05), g);
                 const double y1 = line(r + 1, 3.3, 64.05);
                 layer.push_back(polygon({ring_input{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}}}));
                 boxes.push_back(box{x0, y0, x1, y1});
@@ -1599,21 +1603,16 @@ TEST_CASE("world: real borders and plots a hair apart, as bodies translated by v
     // step tried there): the same pairs again.
     std::vector<polygon> plots;
     rng g(507);
-    const auto nudged = [&](double x) {
-        for (int n = static_cast<int>(g.index(5)) - 2; n != 0; n += n > 0 ? -1 : 1)
-            x = std::nextafter(x, n > 0 ? HUGE_VAL : -HUGE_VAL);
-        return x;
-    };
     for (int r = 0; r < 8; ++r)
         for (int c = 0; c < 10; ++c) {
-            const double x0 = nudged(1.255 + 2.51 * c), x1 = 1.255 + 2.51 * (c + 1);
-            const double y0 = nudged(64.05 + 3.3 * r), y1 = 64.05 + 3.3 * (r + 1);
+            const double x0 = nudged(1.255 + 2.51 * c, g), x1 = 1.255 + 2.51 * (c + 1);
+            const double y0 = nudged(64.05 + 3.3 * r, g), y1 = 64.05 + 3.3 * (r + 1);
             plots.push_back(polygon({ring_input{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}}}));
         }
     std::size_t double_differs = 0;
-    for (const std::vector<polygon>* layer : {&plots, static_cast<std::vector<polygon>*>(nullptr)}) {
-        const std::vector<polygon> counties = layer ? std::vector<polygon>{} : test_data::real_layer("nc_counties.wkt");
-        const std::vector<polygon>& shapes = layer ? *layer : counties;
+    const std::vector<polygon> counties = test_data::real_layer("nc_counties.wkt");
+    for (const std::vector<polygon>* layer : std::array<const std::vector<polygon>*, 2>{&plots, &counties}) {
+        const std::vector<polygon>& shapes = *layer;
         const std::size_t n = shapes.size();
         std::vector<body_state> as_given(n);
         for (std::size_t i = 0; i < n; ++i) as_given[i].shape = i;
@@ -1622,8 +1621,9 @@ TEST_CASE("world: real borders and plots a hair apart, as bodies translated by v
             REQUIRE(show_pairs(join) == show_pairs(reference_contacts(shapes, as_given, within)));
             for (const pose moved : {pose{1e6 + 0.1, -3.7, 0}, pose{-123.456789, 1e-7, 0}})
                 for (const bool half_fixed : {false, true}) {
-                    INFO((layer ? "plots" : "counties") << ", within " << within << ", moved by (" << moved.tx << ", "
-                                                        << moved.ty << "), half fixed " << half_fixed);
+                    INFO((layer == &plots ? "plots" : "counties")
+                         << ", within " << within << ", moved by (" << moved.tx << ", " << moved.ty << "), half fixed "
+                         << half_fixed);
                     world_options o;
                     o.within = within;
                     o.witness = true;
