@@ -5,7 +5,7 @@ or zero-area rings, holes outside their shell, coordinates beyond a number
 type's range...), where it is and what the library does with it; found with
 exact predicates, as ``influence2d audit`` finds them."""
 
-from . import _core
+from . import _core, _options
 from .polygon import Polygon, as_polygon
 
 __all__ = ["audit", "audit_report", "audit_layer"]
@@ -36,7 +36,8 @@ def audit_report(polygon, max_per_kind=50):
     >>> r["accepted"], r["counts"]
     (True, {'repeated_vertex': 1})
     """
-    return _core.audit([_item(polygon, "polygon")], "polygon", max_per_kind, 1)[0]
+    return _core.audit([_item(polygon, "polygon")], "polygon", _options.integer(max_per_kind, "max_per_kind", least=0),
+                       1)[0]
 
 
 def audit(polygon, max_per_kind=50):
@@ -66,7 +67,8 @@ def audit_layer(polygons, max_per_kind=50, threads=0):
     """
     import pandas as pd
     items = [_item(p, f"polygons[{k}]") for k, p in enumerate(polygons)]
-    reports = _core.audit(items, "polygons", max_per_kind, threads)
+    reports = _core.audit(items, "polygons", _options.integer(max_per_kind, "max_per_kind", least=0),
+                          _options.integer(threads, "threads"))
     rows = [dict(polygon=k, **f) for k, r in enumerate(reports) for f in r["findings"]]
     columns = ["polygon", "kind", "ring", "vertex", "other_ring", "other_vertex", "x", "y", "what", "effect",
                "rejects"]

@@ -16,7 +16,7 @@ import pickle
 
 import numpy as np
 
-from . import _core
+from . import _core, _options
 from .audit import _item, audit_layer
 from .pairs import pairs as _local_pairs
 from .polygon import Polygon, _core_polygons, as_polygons
@@ -25,7 +25,6 @@ from .world import _frame as _world_frame
 from .world import _Plan as _WorldPlan
 from .world import _plan_of as _world_plan_of
 from .world import _play as _world_play
-from .world import _within as _world_within
 
 __all__ = ["audit", "pairs", "study", "world_contacts"]
 
@@ -46,13 +45,6 @@ def _client(client):
     if not isinstance(client, Client):
         raise _core.InvalidInput(f"client: expected a distributed.Client, got {type(client).__name__}")
     return client
-
-
-def _count(value, name, least=1):
-    """An integer at least ``least`` (bools refused)."""
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < least:
-        raise _core.InvalidInput(f"{name} is {value!r}: expected an integer >= {least}")
-    return int(value)
 
 
 def _sequence(values, name):
@@ -138,9 +130,9 @@ def audit(geoms, client, chunk_size=1000, max_per_kind=50, threads=1):
     """
     import pandas as pd
     client = _client(client)
-    chunk_size = _count(chunk_size, "chunk_size")
-    max_per_kind = _count(max_per_kind, "max_per_kind", least=0)
-    threads = _count(threads, "threads", least=0)
+    chunk_size = _options.integer(chunk_size, "chunk_size", least=1)
+    max_per_kind = _options.integer(max_per_kind, "max_per_kind", least=0)
+    threads = _options.integer(threads, "threads", least=0)
     columns = list(audit_layer([]).columns)
     if _is_collection(geoms):
         import dask
@@ -415,10 +407,11 @@ def pairs(layer, other=None, client=None, within=0.0, number_type="certified", p
     True
     """
     client = _client(client)
-    threads = _count(threads, "threads", least=0)
+    threads = _options.integer(threads, "threads", least=0)
     _local_pairs([], None if other is None else [], within, number_type, 1)  # within and number_type checked
-    within = float(within)
-    count = max(1, 2 * sum(client.nthreads().values())) if partitions is None else _count(partitions, "partitions")
+    within = _options.number(within, "within")
+    count = (max(1, 2 * sum(client.nthreads().values())) if partitions is None
+             else _options.integer(partitions, "partitions", least=1))
     first = _source(client, layer, "layer")
     second = None if other is None else _source(client, other, "other")
     if not len(first[0]) or second is not None and not len(second[0]):
@@ -489,11 +482,12 @@ def world_contacts(shapes, steps, client, number_type="certified", within=0.0, e
     0     2  1  2  begin
     """
     client = _client(client)
-    threads = _count(threads, "threads", least=0)
-    count = max(1, 2 * sum(client.nthreads().values())) if parts is None else _count(parts, "parts")
+    threads = _options.integer(threads, "threads", least=0)
+    count = max(1, 2 * sum(client.nthreads().values())) if parts is None else _options.integer(parts, "parts", least=1)
     polygons = as_polygons(shapes, "shapes")
     plan = _world_plan_of(steps, len(polygons))
-    within, events = _world_within(within), bool(events)
+    within, events = _options.number(within, "within"), _options.flag(events, "events")
+    number_type = _options.name(number_type, "number_type")
     _core.World(number_type, within, False, True, threads)  # the number type and distance checked
     if not len(plan.step):
         return _world_frame(*_world_play([], plan, number_type, within, events, threads), events)
@@ -662,13 +656,14 @@ def study(families=None, types=None, decisions=None, queries=None, cases=1, fram
     client = _client(client)
     names = study_names()
     families = _study_families(families)
-    scenes_per_task = _count(scenes_per_task, "scenes_per_task")
+    scenes_per_task = _options.integer(scenes_per_task, "scenes_per_task", least=1)
     args = dict(types=_check_names(types, names["types"], "types"),
                 decisions=_check_names(decisions, names["decisions"], "decisions"),
                 queries=list(names["queries"]) if queries is None else _check_names(queries, names["queries"],
                                                                                     "queries"),
-                cases=_count(cases, "cases"), frames=_count(frames, "frames"),
-                query_frames=_count(query_frames, "query_frames", least=0), seed=_count(seed, "seed", least=0))
+                cases=_options.integer(cases, "cases", least=1), frames=_options.integer(frames, "frames", least=1),
+                query_frames=_options.integer(query_frames, "query_frames", least=0),
+                seed=_options.integer(seed, "seed", least=0, most=2**64 - 1))
     tasks = []
     for f in families:
         sizes = _core.study_scene_sizes(f, args["cases"], args["frames"], args["seed"])

@@ -5,7 +5,7 @@ candidate edges (its coherence)."""
 
 import numpy as np
 
-from . import _core
+from . import _core, _options
 from .polygon import as_polygon
 from .poses import as_poses
 
@@ -26,8 +26,9 @@ class Detector:
     """
 
     def __init__(self, a, b, number_type="double", witness=False, within=0.0):
-        self._d = _core.Detector(as_polygon(a, "a")._p, as_polygon(b, "b")._p, number_type, bool(witness),
-                                 float(within))
+        self._d = _core.Detector(as_polygon(a, "a")._p, as_polygon(b, "b")._p,
+                                 _options.name(number_type, "number_type"), _options.flag(witness, "witness"),
+                                 _options.number(within, "within"))
 
     def collide(self, poses):
         """Whether each pose's frame collides, answered in order (the GIL

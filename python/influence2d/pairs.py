@@ -5,7 +5,7 @@ layer_pairs: a box tree, then each candidate pair tested exactly)."""
 
 import numpy as np
 
-from . import _core
+from . import _core, _options
 from .polygon import _core_polygons
 
 __all__ = ["pairs"]
@@ -40,12 +40,10 @@ def pairs(layer, other=None, within=0.0, number_type="certified", threads=0, ret
     """
     first = _core_polygons(layer, "layer")
     second = None if other is None else _core_polygons(other, "other")
-    try:
-        within = float(within)
-    except (TypeError, ValueError):
-        raise _core.InvalidInput(f"within: expected a number, got {within!r}") from None
-    out, candidates, exact_pairs = _core.pairs(first, second, within, number_type, threads)
+    out, candidates, exact_pairs = _core.pairs(first, second, _options.number(within, "within"),
+                                               _options.name(number_type, "number_type"),
+                                               _options.integer(threads, "threads"))
     out = out.reshape(-1, 2).astype(np.int64, copy=False)
-    if not return_statistics:
+    if not _options.flag(return_statistics, "return_statistics"):
         return out
     return out, {"candidates": candidates, "exact_pairs": exact_pairs}

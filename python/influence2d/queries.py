@@ -12,7 +12,7 @@ near contact).
 
 import numpy as np
 
-from . import _core
+from . import _core, _options
 from .polygon import as_polygon
 from .poses import as_poses
 
@@ -32,7 +32,8 @@ def intersects(a, b, poses, number_type="certified", threads=0):
     >>> intersects(a, b, np.array([[2.0, 0.0, 0.0], [2.5, 0.0, 0.0], [0.5, 0.5, 0.8]]))
     array([ True, False,  True])
     """
-    return _core.intersects(as_polygon(a, "a")._p, as_polygon(b, "b")._p, as_poses(poses), number_type, threads)
+    return _core.intersects(as_polygon(a, "a")._p, as_polygon(b, "b")._p, as_poses(poses),
+                            _options.name(number_type, "number_type"), _options.integer(threads, "threads"))
 
 
 def separation(a, b, poses, number_type="certified", threads=0, features=False):
@@ -58,8 +59,8 @@ def separation(a, b, poses, number_type="certified", threads=0, features=False):
     """
     (distance, static_kind, static_index, moving_kind, moving_index, static_point,
      moving_point) = _core.separation(as_polygon(a, "a")._p, as_polygon(b, "b")._p, as_poses(poses),
-                                      number_type, threads)
-    if not features:
+                                      _options.name(number_type, "number_type"), _options.integer(threads, "threads"))
+    if not _options.flag(features, "features"):
         return distance
     return {
         "distance": distance,
@@ -108,7 +109,9 @@ def first_contact(a, b, start_poses, end_poses, number_type="certified", threads
     """
     contact, time, limited = _core.first_contact(as_polygon(a, "a")._p, as_polygon(b, "b")._p,
                                                  as_poses(start_poses, "start_poses"), as_poses(end_poses, "end_poses"),
-                                                 number_type, motion, threads, max_steps)
-    if undecided:
+                                                 _options.name(number_type, "number_type"),
+                                                 _options.name(motion, "motion"), _options.integer(threads, "threads"),
+                                                 _options.integer(max_steps, "max_steps"))
+    if _options.flag(undecided, "undecided"):
         return contact, time, limited
     return contact, np.where(limited, np.nan, time)

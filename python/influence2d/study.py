@@ -4,7 +4,7 @@
 reference, on generated scenes; its tables as pandas DataFrames (the
 columns of ``influence2d study``'s CSV files)."""
 
-from . import _core
+from . import _core, _options
 
 __all__ = ["study", "study_names"]
 
@@ -43,8 +43,10 @@ def study(families=None, types=None, decisions=None, queries=None, cases=1, fram
     """
     names = _core.study_names()
     r = _core.study(list(families or []), list(types or []), list(decisions or []),
-                    list(names["queries"] if queries is None else queries), int(cases), int(frames),
-                    int(query_frames), int(seed))
+                    list(names["queries"] if queries is None else queries),
+                    _options.integer(cases, "cases", least=1), _options.integer(frames, "frames", least=1),
+                    _options.integer(query_frames, "query_frames", least=0),
+                    _options.integer(seed, "seed", least=0, most=2**64 - 1))
     return _frames(r)
 
 

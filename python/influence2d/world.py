@@ -5,7 +5,7 @@ and poses go in as numpy arrays, pairs come out as (k, 2) arrays."""
 
 import numpy as np
 
-from . import _core
+from . import _core, _options
 from ._core import InvalidInput
 from .polygon import _core_polygons, as_polygon
 from .poses import as_poses
@@ -33,21 +33,6 @@ def _ids(values, name):
     if a.dtype.kind == "u" and a.max() > np.iinfo(np.int64).max:
         raise InvalidInput(f"{name}: id {a.max()} is beyond int64")
     return np.ascontiguousarray(a, dtype=np.int64)
-
-
-def _within(within):
-    """``within`` as a float (the world refuses a negative or NaN one)."""
-    try:
-        return float(within)
-    except (TypeError, ValueError):
-        raise InvalidInput(f"within: expected a number, got {within!r}") from None
-
-
-def _threads(threads):
-    """``threads`` as an int (the world refuses one below 0)."""
-    if not isinstance(threads, (int, np.integer)) or isinstance(threads, bool):
-        raise InvalidInput(f"threads: expected an integer, got {threads!r}")
-    return int(threads)
 
 
 class World:
@@ -85,7 +70,9 @@ class World:
     """
 
     def __init__(self, number_type="certified", within=0.0, witness=False, coherence=True, threads=1):
-        self._w = _core.World(number_type, _within(within), bool(witness), bool(coherence), _threads(threads))
+        self._w = _core.World(_options.name(number_type, "number_type"), _options.number(within, "within"),
+                              _options.flag(witness, "witness"), _options.flag(coherence, "coherence"),
+                              _options.integer(threads, "threads"))
         self._number_type = number_type
 
     @property
@@ -117,8 +104,8 @@ class World:
         part from the next step."""
         shapes = _ids(shapes, "shapes")
         poses = as_poses(poses)
-        if isinstance(fixed, (bool, np.bool_)):
-            flags = np.full(shapes.shape[0], bool(fixed))
+        if np.ndim(fixed) == 0:
+            flags = np.full(shapes.shape[0], _options.flag(fixed, "fixed"))
         else:
             flags = np.asarray(fixed)
             if flags.dtype != np.bool_:
@@ -388,6 +375,7 @@ def world_contacts(shapes, steps, number_type="certified", within=0.0, events=Fa
     """
     polygons = _core_polygons(shapes, "shapes")
     plan = _plan_of(steps, len(polygons))
-    return _frame(*_play(polygons, plan, number_type, _within(within), bool(events), _threads(threads)),
-                  bool(events))
+    events = _options.flag(events, "events")
+    return _frame(*_play(polygons, plan, _options.name(number_type, "number_type"), _options.number(within, "within"),
+                         events, _options.integer(threads, "threads")), events)
 

@@ -135,6 +135,61 @@ def test_bad_options():
     raises(r"poses\[1", influence2d.Detector(A, B).witnesses, np.array([[0.0, 0.0, 0.0], [math.inf, 0.0, 0.0]]))
 
 
+P1 = np.zeros((1, 3))
+
+
+@pytest.mark.parametrize("call, message", [
+    # numbers: a string is not read as one, nor is a bool
+    (lambda: influence2d.Detector(A, B, within="0.5"), "within: expected a number, got '0.5'"),
+    (lambda: influence2d.Detector(A, B, within=None), "within: expected a number, got None"),
+    (lambda: influence2d.Detector(A, B, within=True), "within: expected a number, got True"),
+    (lambda: influence2d.pairs([A, B], within=[1.0, 2.0]), "within: expected a number, got [1.0, 2.0]"),
+    (lambda: influence2d.pairs([A, B], within=10**400), "within: expected a number, got 1000"),
+    # integers: no float, bool or string, nor one beyond a C++ long
+    (lambda: influence2d.intersects(A, B, P1, threads=1.5), "threads is 1.5: expected an integer"),
+    (lambda: influence2d.intersects(A, B, P1, threads="2"), "threads is '2': expected an integer"),
+    (lambda: influence2d.separation(A, B, P1, threads=None), "threads is None: expected an integer"),
+    (lambda: influence2d.pairs([A, B], threads=True), "threads is True: expected an integer"),
+    (lambda: influence2d.intersects(A, B, P1, threads=2**70), f"threads is {2**70}: expected an integer from"),
+    (lambda: influence2d.first_contact(A, B, P1, P1, max_steps=2.0), "max_steps is 2.0: expected an integer"),
+    (lambda: influence2d.first_contact(A, B, P1, P1, max_steps=2**63), f"max_steps is {2**63}"),
+    (lambda: influence2d.first_contact(A, B, P1, P1, threads="all"), "threads is 'all'"),
+    (lambda: influence2d.audit_layer([A], threads=0.5), "threads is 0.5"),
+    (lambda: influence2d.audit_layer([A], max_per_kind=-1), "max_per_kind is -1: expected an integer >= 0"),
+    (lambda: influence2d.audit_report(A, max_per_kind="all"), "max_per_kind is 'all'"),
+    (lambda: influence2d.study(frames=2.5), "frames is 2.5"),
+    (lambda: influence2d.study(cases=0), "cases is 0: expected an integer >= 1"),
+    (lambda: influence2d.study(seed=-1), "seed is -1: expected an integer >= 0"),
+    (lambda: influence2d.study(seed=2**64), f"seed is {2**64}: expected an integer from 0 to {2**64 - 1}"),
+    # names
+    (lambda: influence2d.intersects(A, B, P1, number_type=None), "number_type is None: expected a name"),
+    (lambda: influence2d.Detector(A, B, number_type=1), "number_type is 1: expected a name"),
+    (lambda: influence2d.pairs([A, B], number_type=b"double"), "number_type is b'double': expected a name"),
+    (lambda: influence2d.first_contact(A, B, P1, P1, motion=0), "motion is 0: expected a name"),
+    # flags: "no" is not read as True
+    (lambda: influence2d.Detector(A, B, witness="no"), "witness is 'no': expected True or False"),
+    (lambda: influence2d.separation(A, B, P1, features=np.array([True, False])), "features is array"),
+    (lambda: influence2d.first_contact(A, B, P1, P1, undecided=2), "undecided is 2: expected True or False"),
+    (lambda: influence2d.pairs([A, B], return_statistics="yes"), "return_statistics is 'yes'"),
+])
+def test_bad_options_of_the_wrong_kind_are_named(call, message):
+    # (Each refused before the extension's own conversion, which would raise
+    # a TypeError listing its signatures, or read a string as a number.)
+    assert message in raises("", call)
+
+
+def test_options_of_numpy_kinds_are_taken():
+    expected = influence2d.intersects(A, B, np.array([[1.5, 0.0, 0.0], [3.0, 0.0, 0.0]]))
+    assert influence2d.intersects(A, B, np.array([[1.5, 0.0, 0.0], [3.0, 0.0, 0.0]]), threads=np.int64(1),
+                                  number_type=np.str_("certified")).tolist() == expected.tolist() == [True, False]
+    assert influence2d.Detector(A, B, within=np.float32(0.5), witness=np.bool_(True)).collide(
+        np.array([[2.25, 0.0, 0.0]])).tolist() == [True]
+    assert influence2d.pairs([A, "POLYGON ((3 0, 4 0, 4 1, 3 1, 3 0))"], within=np.int32(1),
+                             threads=np.uint8(1)).tolist() == [[0, 1]]
+    _, time = influence2d.first_contact(A, B, np.array([[4.0, 0.0, 0.0]]), P1, max_steps=np.int16(10), undecided=0)
+    assert time.tolist() == [0.5]
+
+
 def test_bad_layers_name_the_index():
     raises(r"layer\[2\]: ring 0 is not closed", influence2d.pairs, [A, B, "POLYGON ((0 0, 1 0, 0 1))"])
     raises(r"other\[1\]: expected a Polygon", influence2d.pairs, [A], [B, 42])

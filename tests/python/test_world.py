@@ -312,6 +312,7 @@ def test_refused_input_leaves_the_world_as_it_was():
         (lambda: w.add_bodies([0, 0], [[0.0, 0.0, 0.0], [0.0, np.inf, 0.0]]), "poses[1, 1] (ty) is inf"),
         (lambda: w.add_bodies([0, 0], [[0.0, 0.0, 0.0]]), "2 shape ids for 1 poses"),
         (lambda: w.add_bodies([0], [[0.0, 0.0, 0.0]], fixed=[1]), "fixed: expected a bool"),
+        (lambda: w.add_bodies([0], [[0.0, 0.0, 0.0]], fixed="yes"), "fixed is 'yes': expected True or False"),
         (lambda: w.add_bodies([0], [[0.0, 0.0, 0.0]], fixed=np.array([True, False])), "fixed: expected 1 flags"),
         (lambda: w.add_shapes(["POLYGON ((0 0, 1 0, 0 1, 0 0))", "POLYGON ((0 0, 1 0))"]), "shapes[1]"),
         (lambda: w.add_shape("POLYGON ((0 0, nan 0, 0 1, 0 0))"), "shape"),
@@ -333,7 +334,11 @@ def test_refused_input_leaves_the_world_as_it_was():
     ({"within": float("nan")}, "distance"),
     ({"within": "near"}, "within: expected a number"),
     ({"threads": -1}, "threads is -1"),
-    ({"threads": 1.5}, "threads: expected an integer"),
+    ({"threads": 1.5}, "threads is 1.5: expected an integer"),
+    ({"threads": 2**64}, f"threads is {2**64}: expected an integer from"),
+    ({"number_type": None}, "number_type is None: expected a name"),
+    ({"witness": "no"}, "witness is 'no': expected True or False"),
+    ({"coherence": None}, "coherence is None: expected True or False"),
 ])
 def test_refused_options(options, message):
     with pytest.raises(influence2d.InvalidInput, match=message):
