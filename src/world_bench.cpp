@@ -343,8 +343,8 @@ std::string plot_script(const std::vector<row>& rows, const std::vector<std::str
                         const std::string& data_dir) {
     std::map<std::string, std::map<std::string, std::vector<std::pair<std::size_t, double>>>> lines;
     for (const row& r : rows) lines[r.scene][r.method].push_back({r.bodies, r.step_us});
-    std::string g = "set terminal pngcairo size 1500,900 font ',9'\nset output '" + png +
-                    "'\nset multiplot layout 2,3\nset logscale xy\nset key top left\nset xlabel 'bodies'\n"
+    std::string g = "set terminal pngcairo size 2000,900 font ',9'\nset output '" + png +
+                    "'\nset multiplot layout 2,4\nset logscale xy\nset key top left\nset xlabel 'bodies'\n"
                     "set ylabel 'time per step (us)'\n";
     std::size_t file = 0;
     for (const std::string& scene : scenes) {
@@ -433,7 +433,7 @@ std::string coherence_study(std::size_t pairs, std::size_t steps) {
 }
 
 void run(const bench_options& o) {
-    const std::vector<std::string> scenes = {"falling", "convex", "parcels", "random", "mixed", "far"};
+    const std::vector<std::string> scenes = {"falling", "convex", "parcels", "random", "mixed", "far", "trajectories"};
     std::vector<std::size_t> sizes = o.sizes;
     if (sizes.empty())
         sizes = o.quick ? std::vector<std::size_t>{100, 1000} : std::vector<std::size_t>{100, 1000, 10000, 100000};

@@ -17,6 +17,13 @@
 // - far:       `falling` moved by (1e7, -1e7).
 // - convex:    `falling` with convex 8-gons only, onto a slab (the scene Box2D
 //              can take).
+// - trajectories: the paper's trajectories for many bodies (docs/method.md
+//              section 8): cells far apart, each a fixed polygon A of the
+//              paper's families and a polygon B that follows, 25 of the
+//              paper's frames a step, either the circular trajectory (B
+//              orbits A within the gap of 9, never touching) or the linear
+//              one (B approaches A and ends inside it, then rests): coherent,
+//              near but apart, and contacts that begin during the run.
 
 #include <cmath>
 #include <cstdint>
@@ -26,6 +33,8 @@
 
 #include "influence2d/core/polygon.hpp"
 #include "influence2d/core/pose.hpp"
+#include "influence2d/motion/trajectory.hpp"
+#include "verification/families.hpp"
 
 namespace influence2d::verification {
 
@@ -76,9 +85,39 @@ inline polygon comb(double width) {
 
 inline double snap(double x) { return std::round(x * 1024) / 1024; }
 
+/// Frames of the paper's trajectories for a world scene: its frame counts,
+/// its gap, and the frames a scene step advances.
+inline constexpr std::size_t circular_frames = 90000, linear_frames = 9000, frames_per_step = 25;
+inline constexpr double trajectory_gap = 9.0;
+
+/// Frame k of the circular trajectory that starts at `first` (frame 0 of
+/// circular_trajectory): that pose turned by 2 pi k / circular_frames about
+/// A's centroid `o`, as circular_trajectory makes each frame (the same
+/// motion, without making all 90,000 frames of every cell).
+inline pose circular_frame(const pose& first, const point<double>& o, std::size_t k) {
+    const double phi = 2 * M_PI * static_cast<double>(k % circular_frames) / static_cast<double>(circular_frames);
+    const double c = std::cos(phi), s = std::sin(phi), x = first.tx - o.x, y = first.ty - o.y;
+    return {o.x + c * x - s * y, o.y + s * x + c * y, first.theta + phi};
+}
+
+/// Frame k of the linear trajectory from `start` to `end` (its first and
+/// last frames), as linear_trajectory spaces them; past the last frame, the
+/// last.
+inline pose linear_frame(const pose& start, const pose& end, std::size_t k) {
+    if (k + 1 >= linear_frames) return end;
+    const double f = static_cast<double>(k) / static_cast<double>(linear_frames - 1);
+    return {start.tx + (end.tx - start.tx) * f, start.ty + (end.ty - start.ty) * f, 0};
+}
+
+/// A pose given in a cell's frame (A at the origin, unturned) placed in the
+/// world: turned by `turn` (cosine c, sine s) and moved to `at`.
+inline pose in_cell(const pose& q, const point<double>& at, double turn, double c, double s) {
+    return {at.x + c * q.tx - s * q.ty, at.y + s * q.tx + c * q.ty, q.theta + turn};
+}
+
 }  // namespace world_scenes_detail
 
-/// The scene `name` (falling, parcels, random, mixed, far, convex) with about
+/// The scene `name` (falling, parcels, random, mixed, far, convex, trajectories) with about
 /// `bodies` bodies and `steps` steps, from `seed`.
 inline world_scene make_world_scene(const std::string& name, std::size_t bodies, std::size_t steps,
                                     std::uint64_t seed) {
@@ -178,6 +217,67 @@ inline world_scene make_world_scene(const std::string& name, std::size_t bodies,
                         ? pose{q.tx + uniform(-0.05, 0.05), q.ty + uniform(-0.05, 0.05), q.theta + uniform(-0.01, 0.01)}
                         : pose{uniform(0, extent), uniform(0, extent), uniform(-M_PI, M_PI)};
             s.steps.push_back(at);
+        }
+    } else if (name == "trajectories") {
+        // Cells 700 apart on a grid (a linear B starts at most about 310
+        // from A's centroid): in cell c, body 2c is A (fixed, turned by the
+        // cell's angle) and body 2c + 1 is B, on the circular trajectory in
+        // even cells, the linear one in odd cells. A circular B starts at a
+        // frame anywhere on its orbit; a linear B within the last
+        // 2 * frames_per_step * steps frames, so that about half of them meet
+        // A during the run.
+        const family families[] = {family::convex, family::starred, family::irregular, family::contour,
+                                   family::with_hole};
+        const std::size_t sizes[] = {8, 16, 32, 64};
+        for (family f : families)
+            for (std::size_t n : sizes) s.shapes.push_back(make_family_polygon(f, n, default_family_seed));
+        const std::size_t cells = std::max<std::size_t>(1, bodies / 2);
+        const std::size_t side = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(cells))));
+        struct cell {
+            point<double> at;
+            double turn, c, s;
+            bool circular;
+            std::size_t first;
+            pose from, to;  // the circular trajectory's frame 0 (from); the linear one's first and last
+            point<double> o;
+        };
+        std::vector<cell> all;
+        for (std::size_t k = 0; k < cells; ++k) {
+            const auto a = static_cast<std::uint32_t>(g() % s.shapes.size()),
+                       b = static_cast<std::uint32_t>(g() % s.shapes.size());
+            cell c;
+            c.at = {700.0 * static_cast<double>(k % side), 700.0 * static_cast<double>(k / side)};
+            c.turn = uniform(-M_PI, M_PI);
+            c.c = std::cos(c.turn);
+            c.s = std::sin(c.turn);
+            c.circular = k % 2 == 0;
+            c.o = s.shapes[a].centroid();
+            if (c.circular) {
+                c.first = static_cast<std::size_t>(g() % d::circular_frames);
+                c.from = circular_trajectory(s.shapes[a], s.shapes[b], 1, d::trajectory_gap)[0];
+            } else {
+                const std::size_t window =
+                    std::min(d::linear_frames, 2 * d::frames_per_step * std::max<std::size_t>(1, steps));
+                c.first = d::linear_frames - 1 - static_cast<std::size_t>(g() % window);
+                const std::vector<pose> ends = linear_trajectory(s.shapes[a], s.shapes[b], 2, d::trajectory_gap);
+                c.from = ends[0];
+                c.to = ends[1];
+            }
+            s.shape_of.push_back(a);
+            s.fixed.push_back(true);
+            s.shape_of.push_back(b);
+            s.fixed.push_back(false);
+            all.push_back(c);
+        }
+        for (std::size_t t = 0; t < steps; ++t) {
+            std::vector<pose> at;
+            for (const cell& c : all) {
+                const std::size_t k = c.first + d::frames_per_step * t;
+                const pose here = c.circular ? d::circular_frame(c.from, c.o, k) : d::linear_frame(c.from, c.to, k);
+                at.push_back({c.at.x, c.at.y, c.turn});
+                at.push_back(d::in_cell(here, c.at, c.turn, c.c, c.s));
+            }
+            s.steps.push_back(std::move(at));
         }
     }
     return s;

@@ -45,8 +45,8 @@ TEST_CASE("cli world bench: every scene, every method, the answers compared", "[
         // on these scenes (no pose within rounding of a contact).
         CHECK(rest[3] == "0");
     }
-    CHECK(rows >= 6 * 6);
-    for (const char* scene : {"falling", "convex", "parcels", "random", "mixed", "far"}) {
+    CHECK(rows >= 7 * 6);
+    for (const char* scene : {"falling", "convex", "parcels", "random", "mixed", "far", "trajectories"}) {
         INFO(scene);
         CHECK(contacts[scene] > 0);  // each scene has contacts to compare
     }

@@ -36,6 +36,7 @@
 #include "influence2d/query/both_posed.hpp"
 #include "influence2d/world/layer_pairs.hpp"
 #include "influence2d/world/world.hpp"
+#include "verification/world_scenes.hpp"
 
 namespace {
 
@@ -336,6 +337,60 @@ TEST_CASE("world: small moves stay in the enlarged boxes and the contacts stay t
     world_options o;
     const world_statistics st = check_world_scene<certified_world>(502, {4e6, -2e6}, 0.25, 12, o, 0.05, 0.02);
     CHECK(st.escaped * 2 < st.moved);
+}
+
+TEST_CASE("world: the paper's trajectories for many bodies, the exact reference's at every step", "[world]") {
+    // The time study's scene (verification/world_scenes.hpp): cells of a
+    // fixed family polygon A and a polygon B on the paper's circular
+    // trajectory (within the gap of 9, never touching) or linear one (ending
+    // inside A), every cell turned. The certified world with and without
+    // coherence, and double (no pose of the scene lies within rounding of a
+    // contact), against the all-pairs exact reference at every step.
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+        const verification::world_scene s = verification::make_world_scene("trajectories", 120, 16, seed);
+        world_options coherent, fresh;
+        coherent.witness = true;
+        fresh.coherence = false;
+        certified_world a(coherent), b(fresh);
+        world<double> c(coherent);
+        std::vector<test_world::body_state> state;
+        for (const polygon& p : s.shapes) {
+            a.add_shape(p);
+            b.add_shape(p);
+            c.add_shape(p);
+        }
+        std::size_t most = 0, least = s.shape_of.size();
+        for (std::size_t t = 0; t < s.steps.size(); ++t) {
+            for (std::size_t k = 0; k < s.shape_of.size(); ++k) {
+                if (t == 0) {
+                    state.push_back({s.shape_of[k], s.steps[0][k], s.fixed[k], true});
+                    a.add_body(s.shape_of[k], s.steps[0][k], s.fixed[k]);
+                    b.add_body(s.shape_of[k], s.steps[0][k], s.fixed[k]);
+                    c.add_body(s.shape_of[k], s.steps[0][k], s.fixed[k]);
+                    continue;
+                }
+                const pose &now = s.steps[t][k], &was = s.steps[t - 1][k];
+                if (now.tx != was.tx || now.ty != was.ty || now.theta != was.theta) {
+                    state[k].where = s.steps[t][k];
+                    a.move(k, s.steps[t][k]);
+                    b.move(k, s.steps[t][k]);
+                    c.move(k, s.steps[t][k]);
+                }
+            }
+            const std::vector<body_pair> expected = test_world::reference_contacts(s.shapes, state, 0);
+            INFO("seed " << seed << ", step " << t);
+            CHECK(a.step() == expected);
+            CHECK(b.step() == expected);
+            CHECK(c.step() == expected);
+            most = std::max(most, expected.size());
+            least = std::min(least, expected.size());
+        }
+        INFO("seed " << seed << ": contacts from " << least << " to " << most);
+        CHECK(most > least);  // linear cells came into contact during the run
+        // Circular cells came near (their boxes met) and were kept apart by a
+        // separating edge from step to step.
+        CHECK(a.statistics().separated > 0);
+    }
 }
 
 TEST_CASE("world: the exact type alone gives the same contacts", "[world]") {
