@@ -1,6 +1,6 @@
-set terminal pngcairo size 1500,900 font ',9'
+set terminal pngcairo size 2000,900 font ',9'
 set output 'docs/bench/world_time.png'
-set multiplot layout 2,3
+set multiplot layout 2,4
 set logscale xy
 set key top left
 set xlabel 'bodies'
@@ -17,4 +17,6 @@ set title 'mixed'
 plot 'docs/bench/plot_29.dat' with linespoints title 'Boost.Geometry rtree', 'docs/bench/plot_30.dat' with linespoints title 'GEOS STRtree + prepared', 'docs/bench/plot_31.dat' with linespoints title 'all pairs, one-shot', 'docs/bench/plot_32.dat' with linespoints title 'certified', 'docs/bench/plot_33.dat' with linespoints title 'double', 'docs/bench/plot_34.dat' with linespoints title 'double, all cores', 'docs/bench/plot_35.dat' with linespoints title 'double, no witness'
 set title 'far'
 plot 'docs/bench/plot_36.dat' with linespoints title 'Boost.Geometry rtree', 'docs/bench/plot_37.dat' with linespoints title 'GEOS STRtree + prepared', 'docs/bench/plot_38.dat' with linespoints title 'all pairs, one-shot', 'docs/bench/plot_39.dat' with linespoints title 'certified', 'docs/bench/plot_40.dat' with linespoints title 'double', 'docs/bench/plot_41.dat' with linespoints title 'double, all cores', 'docs/bench/plot_42.dat' with linespoints title 'double, no witness'
+set title 'trajectories'
+plot 'docs/bench/plot_43.dat' with linespoints title 'Boost.Geometry rtree', 'docs/bench/plot_44.dat' with linespoints title 'GEOS STRtree + prepared', 'docs/bench/plot_45.dat' with linespoints title 'all pairs, one-shot', 'docs/bench/plot_46.dat' with linespoints title 'certified', 'docs/bench/plot_47.dat' with linespoints title 'double', 'docs/bench/plot_48.dat' with linespoints title 'double, all cores', 'docs/bench/plot_49.dat' with linespoints title 'double, no witness'
 unset multiplot
