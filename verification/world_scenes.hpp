@@ -132,8 +132,11 @@ inline world_scene make_world_scene(const std::string& name, std::size_t bodies,
             std::max<std::size_t>(1, static_cast<std::size_t>(std::sqrt(static_cast<double>(bodies) * 4.0)));
         const double width = 2.5 * static_cast<double>(columns) + 2;
         s.convex_only = name == "convex";
+        // (Rings' vertices moved in as vectors, not assigned from braced
+        // lists: GCC 12 at -O3 warns, wrongly, of a null argument to the
+        // memmove of a list's copy.)
         ring_input slab;  // the convex scene's floor: a slab as high as the comb
-        slab.vertices = {{0, 0}, {width, 0}, {width, 3}, {0, 3}};
+        slab.vertices = std::vector<point<double>>{{0, 0}, {width, 0}, {width, 3}, {0, 3}};
         s.shapes = {s.convex_only ? polygon({slab}) : d::comb(width), d::regular(8, 1, 0.1)};
         if (!s.convex_only) s.shapes.push_back(d::star(5, 0.5, 1.1));
         const point<double> shift = name == "far" ? point<double>{1e7, -1e7} : point<double>{0, 0};
@@ -174,7 +177,8 @@ inline world_scene make_world_scene(const std::string& name, std::size_t bodies,
         for (std::size_t i = 0; i < k; ++i)
             for (std::size_t j = 0; j < k; ++j) {
                 ring_input r;
-                r.vertices = {corner[i][j], corner[i + 1][j], corner[i + 1][j + 1], corner[i][j + 1]};
+                r.vertices =
+                    std::vector<point<double>>{corner[i][j], corner[i + 1][j], corner[i + 1][j + 1], corner[i][j + 1]};
                 s.shapes.push_back(polygon({r}));
                 s.shape_of.push_back(static_cast<std::uint32_t>(s.shapes.size() - 1));
                 const bool moves = g() % 3 == 0;

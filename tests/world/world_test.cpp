@@ -361,7 +361,7 @@ TEST_CASE("world: the paper's trajectories for many bodies, the exact reference'
         }
         std::size_t most = 0, least = s.shape_of.size();
         for (std::size_t t = 0; t < s.steps.size(); ++t) {
-            for (std::size_t k = 0; k < s.shape_of.size(); ++k) {
+            for (std::uint32_t k = 0; k < s.shape_of.size(); ++k) {
                 if (t == 0) {
                     state.push_back({s.shape_of[k], s.steps[0][k], s.fixed[k], true});
                     a.add_body(s.shape_of[k], s.steps[0][k], s.fixed[k]);
