@@ -484,10 +484,10 @@ def world_contacts(shapes, steps, client, number_type="certified", within=0.0, e
     client = _client(client)
     threads = _options.integer(threads, "threads", least=0)
     count = max(1, 2 * sum(client.nthreads().values())) if parts is None else _options.integer(parts, "parts", least=1)
-    polygons = as_polygons(shapes, "shapes")
-    plan = _world_plan_of(steps, len(polygons))
     within, events = _options.number(within, "within"), _options.flag(events, "events")
     number_type = _options.name(number_type, "number_type")
+    polygons = as_polygons(shapes, "shapes")
+    plan = _world_plan_of(steps, len(polygons))
     _core.World(number_type, within, False, True, threads)  # the number type and distance checked
     if not len(plan.step):
         return _world_frame(*_world_play([], plan, number_type, within, events, threads), events)

@@ -38,12 +38,13 @@ def pairs(layer, other=None, within=0.0, number_type="certified", threads=0, ret
     >>> pairs(layer, within=1.0, return_statistics=True)[1]
     {'candidates': 2, 'exact_pairs': 1}
     """
+    within, number_type = _options.number(within, "within"), _options.name(number_type, "number_type")
+    threads, return_statistics = _options.integer(threads, "threads"), _options.flag(return_statistics,
+                                                                                     "return_statistics")
     first = _core_polygons(layer, "layer")
     second = None if other is None else _core_polygons(other, "other")
-    out, candidates, exact_pairs = _core.pairs(first, second, _options.number(within, "within"),
-                                               _options.name(number_type, "number_type"),
-                                               _options.integer(threads, "threads"))
+    out, candidates, exact_pairs = _core.pairs(first, second, within, number_type, threads)
     out = out.reshape(-1, 2).astype(np.int64, copy=False)
-    if not _options.flag(return_statistics, "return_statistics"):
+    if not return_statistics:
         return out
     return out, {"candidates": candidates, "exact_pairs": exact_pairs}

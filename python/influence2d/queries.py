@@ -57,10 +57,11 @@ def separation(a, b, poses, number_type="certified", threads=0, features=False):
     >>> f["static_kind"][0], int(f["static_index"][0]), f["moving_kind"][0], int(f["moving_index"][0])
     ('edge', 1, 'vertex', 0)
     """
+    features = _options.flag(features, "features")
     (distance, static_kind, static_index, moving_kind, moving_index, static_point,
      moving_point) = _core.separation(as_polygon(a, "a")._p, as_polygon(b, "b")._p, as_poses(poses),
                                       _options.name(number_type, "number_type"), _options.integer(threads, "threads"))
-    if not _options.flag(features, "features"):
+    if not features:
         return distance
     return {
         "distance": distance,
@@ -107,11 +108,12 @@ def first_contact(a, b, start_poses, end_poses, number_type="certified", threads
     >>> first_contact(a, b, start, end, max_steps=2, undecided=True)  # two steps do not reach it
     (array([False]), array([0.12464294]), array([ True]))
     """
+    undecided = _options.flag(undecided, "undecided")
     contact, time, limited = _core.first_contact(as_polygon(a, "a")._p, as_polygon(b, "b")._p,
                                                  as_poses(start_poses, "start_poses"), as_poses(end_poses, "end_poses"),
                                                  _options.name(number_type, "number_type"),
                                                  _options.name(motion, "motion"), _options.integer(threads, "threads"),
                                                  _options.integer(max_steps, "max_steps"))
-    if _options.flag(undecided, "undecided"):
+    if undecided:
         return contact, time, limited
     return contact, np.where(limited, np.nan, time)

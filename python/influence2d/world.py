@@ -373,9 +373,9 @@ def world_contacts(shapes, steps, number_type="certified", within=0.0, events=Fa
     0     0  10  20  begin
     1     1  20  30  begin
     """
+    number_type, within = _options.name(number_type, "number_type"), _options.number(within, "within")
+    events, threads = _options.flag(events, "events"), _options.integer(threads, "threads")
     polygons = _core_polygons(shapes, "shapes")
     plan = _plan_of(steps, len(polygons))
-    events = _options.flag(events, "events")
-    return _frame(*_play(polygons, plan, _options.name(number_type, "number_type"), _options.number(within, "within"),
-                         events, _options.integer(threads, "threads")), events)
+    return _frame(*_play(polygons, plan, number_type, within, events, threads), events)
 

@@ -178,6 +178,14 @@ def test_bad_options_of_the_wrong_kind_are_named(call, message):
     assert message in raises("", call)
 
 
+def test_options_are_checked_before_the_layers_are_read():
+    # (A bad option is named even beside a bad polygon: nothing is read first.)
+    raises("threads is 1.5", influence2d.pairs, ["POLYGON ((0 0, 1 0))"], threads=1.5)
+    raises("return_statistics is 'no'", influence2d.pairs, ["POLYGON ((0 0, 1 0))"], return_statistics="no")
+    raises("events is 'no'", influence2d.world_contacts, ["POLYGON ((0 0, 1 0))"], {}, events="no")
+    raises("features is 'no'", influence2d.separation, "POLYGON ((0 0, 1 0))", B, P1, features="no")
+
+
 def test_options_of_numpy_kinds_are_taken():
     expected = influence2d.intersects(A, B, np.array([[1.5, 0.0, 0.0], [3.0, 0.0, 0.0]]))
     assert influence2d.intersects(A, B, np.array([[1.5, 0.0, 0.0], [3.0, 0.0, 0.0]]), threads=np.int64(1),
