@@ -2,13 +2,14 @@
 // The influence2d-world-bench program: the world's time study. For each scene
 // of verification/world_scenes.hpp and each body count, every method steps
 // through the same poses (posing included for every method), the methods
-// interleaved step by step in a rotating order; the time per step is the
+// interleaved step by step in a shuffled order; the time per step is the
 // mean over the steps after the first (which builds what each method keeps),
-// so that the steps that rebuild a tree count as often as they come; the
+// so that the steps that rebuild a tree count as often as they come (scenes
+// of 100 bodies or fewer run ten times over, each method made anew); the
 // median step is shown beside it. Every method's pairs are compared with the certified world's
 // (exact) at every step. Real layers (--layers DIR, from
 // scripts/real_layers.sh): all meeting pairs of each layer, the methods
-// interleaved over repeated runs, medians. A program of its own because it
+// interleaved over repeated runs in a shuffled order, medians. A program of its own because it
 // links the peers (one of them GPL through CGAL's Boolean_set_operations_2);
 // the influence2d tool links none.
 //
@@ -24,6 +25,8 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <numeric>
+#include <random>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -140,6 +143,21 @@ std::size_t differences(const std::vector<body_pair>& got, const std::vector<bod
     return d.size();
 }
 
+/// The order in which the n methods take round t (a step or a run of a
+/// layer's join): a permutation drawn anew each round (seeded by t), so that
+/// every method follows every other about equally often. In a rotating
+/// order a method always follows the same one: the two-thread world,
+/// always right after the serial one (the same code on the same poses),
+/// then ran 1.13x-1.31x faster than it at 100 bodies, where no pass ran in
+/// parallel (three runs of each scene).
+std::vector<std::size_t> round_order(std::size_t n, std::size_t t) {
+    std::vector<std::size_t> order(n);
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::mt19937_64 random(t);
+    std::shuffle(order.begin(), order.end(), random);
+    return order;
+}
+
 struct row {
     std::string scene;
     std::size_t bodies = 0;
@@ -152,36 +170,50 @@ struct row {
     std::size_t heap_kib = 0;  // peak heap of two steps, made anew (0: not measured)
 };
 
-std::vector<row> run_scene(const std::string& name, std::size_t bodies, std::size_t steps) {
+/// The scene run `runs` times over, each method made anew for each run:
+/// its steps after the first of every run make the mean and the median, its
+/// first steps' median the first step, its contacts the mean of its steps.
+/// (The study runs scenes of at most 100 bodies ten times: their steps take
+/// tens of microseconds, where one interruption of the process moves a mean
+/// over 20 steps by a third.)
+std::vector<row> run_scene(const std::string& name, std::size_t bodies, std::size_t steps, std::size_t runs) {
     const world_scene s = verification::make_world_scene(name, bodies, steps, 2026 + bodies);
-    std::vector<method> methods = methods_for(s);
-    const std::size_t n = methods.size();
-    std::vector<std::vector<double>> seconds(n);
-    std::vector<double> first(n, 0);
-    std::vector<std::size_t> wrong(n, 0), contacts(n, 0);
-    for (std::size_t t = 0; t < s.steps.size(); ++t) {
-        std::vector<std::vector<body_pair>> answers(n);
-        for (std::size_t k = 0; k < n; ++k) {
-            const std::size_t m = (k + t) % n;  // rotating order
-            const auto start = clock_type::now();
-            answers[m] = methods[m].step(s.steps[t]);
-            const double sec = std::chrono::duration<double>(clock_type::now() - start).count();
-            (t == 0 ? first[m] : seconds[m].emplace_back(sec)) = sec;
+    std::vector<std::string> names;
+    std::vector<std::vector<double>> seconds, first;
+    std::vector<std::size_t> wrong, contacts;
+    for (std::size_t run = 0; run < runs; ++run) {
+        std::vector<method> methods = methods_for(s);
+        const std::size_t n = methods.size();
+        if (run == 0) {
+            for (const method& m : methods) names.push_back(m.name);
+            seconds.resize(n);
+            first.resize(n);
+            wrong.resize(n, 0);
+            contacts.resize(n, 0);
         }
-        for (std::size_t m = 0; m < n; ++m) {
-            wrong[m] += differences(answers[m], answers[0]);
-            contacts[m] += answers[m].size();
+        for (std::size_t t = 0; t < s.steps.size(); ++t) {
+            std::vector<std::vector<body_pair>> answers(n);
+            for (const std::size_t m : round_order(n, run * s.steps.size() + t)) {
+                const auto start = clock_type::now();
+                answers[m] = methods[m].step(s.steps[t]);
+                (t == 0 ? first[m] : seconds[m])
+                    .push_back(std::chrono::duration<double>(clock_type::now() - start).count());
+            }
+            for (std::size_t m = 0; m < n; ++m) {
+                wrong[m] += differences(answers[m], answers[0]);
+                contacts[m] += answers[m].size();
+            }
         }
     }
     std::vector<row> out;
-    for (std::size_t m = 0; m < n; ++m) {
+    for (std::size_t m = 0; m < names.size(); ++m) {
         row r{name,
               s.steps.front().size(),
-              methods[m].name,
+              names[m],
               mean(seconds[m]) * 1e6,
               median(seconds[m]) * 1e6,
-              first[m] * 1e3,
-              static_cast<double>(contacts[m]) / static_cast<double>(s.steps.size()),
+              median(first[m]) * 1e3,
+              static_cast<double>(contacts[m]) / static_cast<double>(s.steps.size() * runs),
               wrong[m],
               0};
         if (verification::heap_meter::available()) {
@@ -200,7 +232,10 @@ std::vector<row> run_scene(const std::string& name, std::size_t bodies, std::siz
 }
 
 /// Real layers: all meeting pairs of one layer, each method run `runs` times,
-/// interleaved; medians.
+/// interleaved in shuffled orders; medians. (101 runs in the study: with 21,
+/// the two-thread join of the NC counties, serial below
+/// join_parallel_vertices, came out 0.74x the one-thread join in two runs,
+/// as the few orders drawn put it after GEOS more often.)
 std::vector<row> run_layer(const std::string& path, const std::string& name, int runs) {
     if (!std::filesystem::exists(path))
         throw std::invalid_argument(path + ": cannot be read (make it with scripts/real_layers.sh)");
@@ -277,8 +312,7 @@ std::vector<row> run_layer(const std::string& path, const std::string& name, int
     std::vector<std::vector<double>> seconds(n);
     std::vector<std::vector<body_pair>> answers(n);
     for (int r = 0; r < runs; ++r)
-        for (std::size_t k = 0; k < n; ++k) {
-            const std::size_t m = (k + static_cast<std::size_t>(r)) % n;
+        for (const std::size_t m : round_order(n, static_cast<std::size_t>(r))) {
             const auto start = clock_type::now();
             answers[m] = methods[m].second();
             seconds[m].push_back(std::chrono::duration<double>(clock_type::now() - start).count());
@@ -442,7 +476,7 @@ void run(const bench_options& o) {
         for (std::size_t n : sizes) {
             const std::size_t steps = o.steps ? o.steps : (n >= 10000 ? 11 : 21);
             std::cerr << "world bench: " << scene << ", " << n << " bodies, " << steps << " steps\n";
-            for (const row& r : run_scene(scene, n, steps)) rows.push_back(r);
+            for (const row& r : run_scene(scene, n, steps, n <= 100 ? 10 : 1)) rows.push_back(r);
         }
     if (!o.layers.empty())
         for (const auto& [file, name] : {std::pair<std::string, std::string>{"countries.wkt", "countries (177)"},
@@ -452,7 +486,7 @@ void run(const bench_options& o) {
                                          {"tracts.wkt", "Boston tracts (506)"},
                                          {"plots.wkt", "wheat plots (500)"}}) {
             std::cerr << "world bench: layer " << name << "\n";
-            for (const row& r : run_layer(o.layers + "/" + file, name, o.quick ? 5 : 21)) rows.push_back(r);
+            for (const row& r : run_layer(o.layers + "/" + file, name, o.quick ? 5 : 101)) rows.push_back(r);
         }
     const std::string coherence = coherence_study(o.quick ? 1000 : 10000, 21);
     const std::string text = table(rows) + "\n" + coherence;
@@ -463,8 +497,10 @@ void run(const bench_options& o) {
                      "# The world's time study\n\nMade by `influence2d-world-bench" +
                          std::string(o.quick ? " --quick" : "") +
                          "`: time per step (the mean over the steps after the first, so that a step that rebuilds a "
-                         "tree counts as often as it comes; the median step beside it; a layer's join: the median of "
-                         "its runs in both), the methods interleaved step by step; `x fastest peer` is the fastest "
+                         "tree counts as often as it comes; scenes of 100 bodies run ten times over, each method made "
+                         "anew; the median step beside it; a layer's join: the median of its runs in both, 101 (5 with "
+                         "--quick)), the methods interleaved step by step in an order shuffled at each step; "
+                         "`x fastest peer` is the fastest "
                          "peer's time per step over the method's (above 1: faster); "
                          "`wrong pairs` counts the pairs that differ from the certified world's over all steps.\n\n" +
                          text + "\n![time per step](world_time.png)\n");

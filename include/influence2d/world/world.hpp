@@ -740,14 +740,19 @@ private:
     }
 
     // The least work shared among threads. A parallel call costs about
-    // 4 us with oneTBB's waiting workers and 50 us when std::threads are
-    // started and joined (query/batch.hpp), so a call must bring many times
-    // that in work: 512 bodies to place, 2048 edge witnesses to retest (the
-    // cheapest test, four vertices posed) or 128 pairs for bodies_within
-    // (chosen on the time study's scenes of 1000 bodies: with 256, 1024 and
-    // 32, two threads were slower than one on more of them; on the falling
-    // scene they still are, docs/world.md "Measured").
-    static constexpr std::size_t parallel_placings = 512, parallel_witness_tests = 2048, parallel_pair_tests = 128;
+    // 4 us with oneTBB's workers still waiting from the call before and 50
+    // us when std::threads are started and joined (query/batch.hpp); the
+    // first call after the program did a millisecond of other work finds
+    // oneTBB's worker asleep and loses some 20 to 50 us in waking it (a
+    // scratch harness, 1,001 calls each way, medians: 20 us of work split
+    // in two ran 0.65x as fast as on one thread after such a pause, 100 us
+    // 1.13x, 200 us 1.35x). So a call must bring some hundred microseconds
+    // of work: 512 bodies to place, 2048 edge witnesses to retest (the
+    // cheapest test, four vertices posed) or 1024 pairs for bodies_within
+    // (a few hundred nanoseconds each). With 128 pairs the time study's
+    // 100 bodies of mixed sizes ran 0.64x-0.78x as fast on two threads as
+    // on one, 100 random bodies 0.71x-0.93x (docs/world.md, "All cores").
+    static constexpr std::size_t parallel_placings = 512, parallel_witness_tests = 2048, parallel_pair_tests = 1024;
     // Bodies from which the joins of a step where most bodies escaped are
     // shared among threads, and near pairs from which the candidates are
     // sought in parallel blocks: both are a few nanoseconds a body or pair.
