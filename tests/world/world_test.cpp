@@ -595,6 +595,38 @@ TEST_CASE("world: many escaped bodies among more that stay, their queries shared
     CHECK(w.parallel.statistics().rebuilds == w.serial.statistics().rebuilds);
 }
 
+TEST_CASE("world: more moved bodies than the box pass's bound, their boxes made on two threads, as on one", "[world]") {
+    // Over 16,384 bodies moved at every step (world.hpp: parallel_boxes):
+    // their boxes are made in parallel blocks and the escaped ones listed in
+    // the serial order; small moves (most bodies stay in their enlarged
+    // boxes) and a jump of every tenth body.
+    rng g(430);
+    const std::vector<polygon> shapes = random_shapes(g, 5);
+    const std::size_t n = 17000;
+    serial_and_parallel w(g, shapes, n, 460, 1000);
+    const int steps = 3;
+    std::size_t contacts = 0;
+    for (int step = 0; step < steps; ++step) {
+        INFO("step " << step);
+        contacts += w.step();
+        for (std::size_t i = 0; i < n; ++i) {
+            if (i % 1000 == 0) continue;  // (fixed)
+            const pose& at = w.where[i];
+            w.move(i, i % 10 == static_cast<std::size_t>(step)
+                          ? random_pose(g, {0, 0}, 460)
+                          : pose{at.tx + g.uniform(-0.3, 0.3), at.ty + g.uniform(-0.3, 0.3),
+                                 at.theta + g.uniform(-0.03, 0.03)});
+        }
+    }
+    contacts += w.step();
+    INFO("contacts " << contacts << ", moved " << w.serial.statistics().moved);
+    CHECK(contacts > 1000);
+    // Past the bound at every step after the first: 16,983 free bodies moved.
+    CHECK(w.serial.statistics().moved >= n + 16384 * static_cast<std::size_t>(steps));
+    CHECK(w.serial.statistics().escaped > 0);
+    CHECK(w.parallel.statistics().rebuilds == w.serial.statistics().rebuilds);
+}
+
 TEST_CASE("world: squares sharing edges and corners touch exactly", "[world]") {
     // A 6 x 6 grid of unit squares, every fourth one fixed: each touches its
     // 8 neighbours (edges and corners), none else; after a shift of the

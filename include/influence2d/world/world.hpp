@@ -747,19 +747,26 @@ private:
     // scratch harness, 1,001 calls each way, medians: 20 us of work split
     // in two ran 0.65x as fast as on one thread after such a pause, 100 us
     // 1.13x, 200 us 1.35x). So a call must bring some hundred microseconds
-    // of work: 512 bodies to place, 2048 edge witnesses to retest (the
-    // cheapest test, four vertices posed) or 1024 pairs for bodies_within
-    // (a few hundred nanoseconds each). With 128 pairs the time study's
-    // 100 bodies of mixed sizes ran 0.64x-0.78x as fast on two threads as
-    // on one, 100 random bodies 0.71x-0.93x (docs/world.md, "All cores").
-    static constexpr std::size_t parallel_placings = 512, parallel_witness_tests = 2048, parallel_pair_tests = 1024;
+    // of work: 512 bodies to place, 8192 edge witnesses to retest (the
+    // cheapest test, four vertices posed: tens of nanoseconds) or 1024
+    // pairs for bodies_within (a few hundred nanoseconds each). With 128
+    // pairs the time study's 100 bodies of mixed sizes ran 0.64x-0.78x as
+    // fast on two threads as on one, 100 random bodies 0.71x-0.93x; with
+    // 2048 witnesses (and boxes from 4096 bodies, below) its 10,000 bodies
+    // on the paper's trajectories 0.73x-0.89x (docs/world.md, "All
+    // cores").
+    static constexpr std::size_t parallel_placings = 512, parallel_witness_tests = 8192, parallel_pair_tests = 1024;
     // Bodies from which the joins of a step where most bodies escaped are
     // shared among threads, and near pairs from which the candidates are
     // sought in parallel blocks: both are a few nanoseconds a body or pair.
     static constexpr std::size_t parallel_join_bodies = 4096, parallel_near_pairs = 16384;
     // Moved bodies from which their boxes are made in parallel blocks (a
-    // box is a centre posed and a few products and comparisons).
-    static constexpr std::size_t parallel_boxes = 4096;
+    // box is a centre posed and a few products and comparisons, some tens
+    // of nanoseconds; the later serial passes then read the boxes the
+    // other core wrote). From 4096, the time study's scenes of 10,000
+    // bodies ran no faster on two threads than from 16384 and the
+    // trajectories' ran slower (docs/world.md, "All cores").
+    static constexpr std::size_t parallel_boxes = 16384;
     // Escaped bodies (at a step where most did not escape) from which their
     // queries of the trees are shared among threads: a query is a few
     // hundred nanoseconds (about 250 on the falling scene of 10,000
