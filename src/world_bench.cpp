@@ -178,19 +178,12 @@ struct row {
 /// over 20 steps by a third.)
 std::vector<row> run_scene(const std::string& name, std::size_t bodies, std::size_t steps, std::size_t runs) {
     const world_scene s = verification::make_world_scene(name, bodies, steps, 2026 + bodies);
-    std::vector<std::string> names;
-    std::vector<std::vector<double>> seconds, first;
-    std::vector<std::size_t> wrong, contacts;
+    std::vector<method> methods = methods_for(s);
+    const std::size_t n = methods.size();
+    std::vector<std::vector<double>> seconds(n), first(n);
+    std::vector<std::size_t> wrong(n, 0), contacts(n, 0);
     for (std::size_t run = 0; run < runs; ++run) {
-        std::vector<method> methods = methods_for(s);
-        const std::size_t n = methods.size();
-        if (run == 0) {
-            for (const method& m : methods) names.push_back(m.name);
-            seconds.resize(n);
-            first.resize(n);
-            wrong.resize(n, 0);
-            contacts.resize(n, 0);
-        }
+        if (run > 0) methods = methods_for(s);
         for (std::size_t t = 0; t < s.steps.size(); ++t) {
             std::vector<std::vector<body_pair>> answers(n);
             for (const std::size_t m : round_order(n, run * s.steps.size() + t)) {
@@ -206,10 +199,10 @@ std::vector<row> run_scene(const std::string& name, std::size_t bodies, std::siz
         }
     }
     std::vector<row> out;
-    for (std::size_t m = 0; m < names.size(); ++m) {
+    for (std::size_t m = 0; m < n; ++m) {
         row r{name,
               s.steps.front().size(),
-              names[m],
+              methods[m].name,
               mean(seconds[m]) * 1e6,
               median(seconds[m]) * 1e6,
               median(first[m]) * 1e3,
