@@ -143,14 +143,25 @@ TEST_CASE("box_tree: one tree rebuilt again and again, growing, shrinking and em
             if (g.chance(0.5)) std::reverse(ids.begin(), ids.end());
         }
         tree.rebuild(boxes, ids);
-        // Some boxes refitted: moved, or dropped (an empty box).
+        // Some boxes refitted: moved, or dropped (an empty box); one by one
+        // (refit), or in half the rounds all at once (refit_all), some of
+        // them twice.
+        const bool all_at_once = g.chance(0.5);
+        std::vector<std::uint32_t> refitted;
+        std::vector<std::size_t> place_of(ids.empty() ? 0 : *std::max_element(ids.begin(), ids.end()) + std::size_t{1});
+        for (std::size_t k = 0; k < n; ++k) place_of[ids[k]] = k;
         for (std::size_t r = 0; n > 0 && r < n / 10; ++r) {
             const std::size_t k = g.index(n);
             const double x = g.uniform(-100, 100), y = g.uniform(-100, 100);
             boxes[k] = g.chance(0.2) ? box{} : box{x, y, x + g.uniform(0, 6), y + g.uniform(0, 6)};
-            tree.refit(ids[k], boxes[k]);
+            if (all_at_once)
+                refitted.push_back(ids[k]);
+            else
+                tree.refit(ids[k], boxes[k]);
         }
-        INFO("round " << round << ", " << n << " boxes" << (moved_a_little ? ", moved a little" : ""));
+        if (all_at_once) tree.refit_all(refitted, [&](std::uint32_t id) { return boxes[place_of[id]]; });
+        INFO("round " << round << ", " << n << " boxes" << (moved_a_little ? ", moved a little" : "")
+                      << (all_at_once ? ", refitted all at once" : ""));
         for (std::size_t k = 0; k < n; ++k) CHECK(tree.holds(ids[k]));
         std::vector<id_pair> want, got;
         for (std::size_t i = 0; i < n; ++i)

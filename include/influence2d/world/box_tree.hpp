@@ -29,6 +29,8 @@ namespace influence2d {
 ///       each node's box the union of its children's
 ///   refit(id, b): the entry's box replaced, the nodes above it made anew
 ///     from their children, leaf to root
+///   refit_all(ids): the entries' boxes replaced, every node made anew from
+///     its children, level by level
 ///   query(q): descend from the root into the nodes whose box meets q
 ///
 /// Consecutive entries along the curve are near each other, so the nodes'
@@ -91,6 +93,17 @@ public:
                 grow(merged, level == 0 ? entries_[c].bounds : levels_[level - 1][c]);
             levels_[level][at] = merged;
         }
+    }
+
+    /// Replaces the boxes of many ids at once (box_of(id) for each id of
+    /// `ids`, each held; an empty box drops it) and makes every node anew
+    /// from its children, level by level: O(n) in sequence for n boxes,
+    /// where k calls of refit(id, b) make k * fan_out * log n unions at
+    /// places scattered over the levels. The same nodes as those calls.
+    template <class BoxOf>
+    void refit_all(const std::vector<std::uint32_t>& ids, BoxOf&& box_of) {
+        for (std::uint32_t id : ids) entries_[slot_[id]].bounds = box_of(id);
+        build_levels();
     }
 
     /// Calls found(id) for every box that meets q (closed boxes: touching
