@@ -179,12 +179,14 @@ struct world_statistics {
 ///       vertices, no body placed
 ///     the other candidates' bodies placed at their poses (vertices posed
 ///       in double, and in NT for another type), once each, in buffers
-///       kept from step to step
-///     each of them, in parallel blocks: bodies_within, the last step's
-///       witness tried first (narrow_phase.hpp; a pair whose bodies did not
-///       jump seeks two edges that meet, which the next step tests again
-///       from four vertices); a pair found apart (with within = 0, neither
-///       body having jumped) seeks a separating edge for the next step
+///       kept from step to step (on several threads only for pairs then
+///       tested on several)
+///     each of them, in parallel blocks when many: bodies_within, the
+///       last step's witness tried first (narrow_phase.hpp; a pair whose
+///       bodies did not jump seeks two edges that meet, which the next
+///       step tests again from four vertices); a pair found apart (with
+///       within = 0, neither body having jumped) seeks a separating edge
+///       for the next step
 ///     contacts <- the pairs within `within`, sorted; events: the
 ///       difference with the last step's contacts
 ///
@@ -752,16 +754,25 @@ private:
     // oneTBB's worker asleep and loses some 20 to 50 us in waking it (a
     // scratch harness, 1,001 calls each way, medians: 20 us of work split
     // in two ran 0.65x as fast as on one thread after such a pause, 100 us
-    // 1.13x, 200 us 1.35x). So a call must bring some hundred microseconds
-    // of work: 512 bodies to place, 8192 edge witnesses to retest (the
-    // cheapest test, four vertices posed: tens of nanoseconds) or 1024
-    // pairs for bodies_within (a few hundred nanoseconds each). With 128
-    // pairs the time study's 100 bodies of mixed sizes ran 0.64x-0.78x as
-    // fast on two threads as on one, 100 random bodies 0.71x-0.93x; with
-    // 2048 witnesses (and boxes from 4096 bodies, below) its 10,000 bodies
-    // on the paper's trajectories 0.73x-0.89x (docs/world.md, "All
-    // cores").
-    static constexpr std::size_t parallel_placings = 512, parallel_witness_tests = 8192, parallel_pair_tests = 1024;
+    // 1.13x, 200 us 1.35x). And what one core wrote the other reads slowly:
+    // 1,860 pairs a step of the time study's 1,000 bodies of mixed sizes
+    // took 229 us of work on one thread and 337 us in all on two (196 us
+    // wall), and the serial passes after them lost more than that (the
+    // step 0.79x-0.82x as fast on two threads). So a call must bring some
+    // hundred microseconds of work, and pairs more: 512 bodies to place
+    // (only when their pairs are then tested by several threads: placed on
+    // two threads for pairs tested on one, 10,000 falling bodies ran
+    // 0.92x as fast, 0.99x placed on one), 8192 edge witnesses to retest
+    // (the cheapest test, four vertices posed: tens of nanoseconds) or 4096
+    // pairs for bodies_within (a few hundred nanoseconds each; with 1024
+    // the mixed sizes above ran 0.79x-0.82x, with 4096 1.00x, the scenes of
+    // 1,000 random bodies and 10,000 parcels, random and mixed bodies
+    // unchanged or faster). With 128 pairs the time study's 100 bodies of
+    // mixed sizes ran 0.64x-0.78x as fast on two threads as on one, 100
+    // random bodies 0.71x-0.93x; with 2048 witnesses (and boxes from 4096
+    // bodies, below) its 10,000 bodies on the paper's trajectories
+    // 0.73x-0.89x (docs/world.md, "All cores").
+    static constexpr std::size_t parallel_placings = 512, parallel_witness_tests = 8192, parallel_pair_tests = 4096;
     // Bodies from which the joins of a step where most bodies escaped are
     // shared among threads, and near pairs from which the candidates are
     // sought in parallel blocks: both are a few nanoseconds a body or pair.
@@ -875,7 +886,10 @@ private:
                 asked.push_back({i, repose});
             }
         }
-        const unsigned threads = asked.size() < parallel_placings ? 1u : options_.threads;
+        // (Only for pairs then tested by several threads: placings made on
+        // the other core and tested here cost more in the tests' reads than
+        // their making saved; see parallel_placings.)
+        const unsigned threads = !shared || asked.size() < parallel_placings ? 1u : options_.threads;
         run_in_chunks(asked.size(), threads, 64, [&](std::size_t first, std::size_t last) {
             for (std::size_t k = first; k < last; ++k) {
                 // (Asked for ahead, without waiting, each read once the read
