@@ -7,7 +7,9 @@
 
 #include "support/effort.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <thread>
 #include <vector>
 
 #include "influence2d/detect/brute_force.hpp"
@@ -152,6 +154,8 @@ TEST_CASE("batch: errors reach the caller, and empty and tiny batches work", "[b
     CHECK_THROWS_AS(intersects_batch(queries, intersects<double>, 2), invalid_input);
     CHECK_THROWS_AS(detector<double>(std::shared_ptr<const static_scene<double>>(), prepare_moving<double>(b)),
                     invalid_input);
-    CHECK(batch_threads(0) >= 1);
+    // 0: the machine's hardware threads, asked once and kept.
+    CHECK(batch_threads(0) == std::max(1u, std::thread::hardware_concurrency()));
+    CHECK(batch_threads(0) == hardware_threads());
     CHECK(batch_threads(3) == 3);
 }
