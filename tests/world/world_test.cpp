@@ -90,10 +90,10 @@ void jittered_cells(rng& g, int n, std::vector<polygon>& shapes, std::vector<bod
 
 /// The jittered cells of an n x n grid (jittered_cells) stepped `steps`
 /// times in a certified world and a world in exact rationals, each step
-/// REQUIREd to give the exact reference's contacts, which are returned. At each step
-/// after the first each cell is, with chance 0.3, slid by `slide` (which
-/// moves its pose and says whether it did), else with chance 0.3 put back
-/// at its place, else left where it is.
+/// REQUIREd to give the exact reference's contacts, which are returned.
+/// At each step after the first each cell is, with chance 0.3, slid by
+/// `slide` (which moves its pose and says whether it did), else with
+/// chance 0.3 put back at its place, else left where it is.
 template <class Slide>
 std::vector<std::vector<body_pair>> slid_cells_as_the_reference(rng& g, int n, int steps, certified_world& certified,
                                                                 world<exact_rational>& exact, Slide slide) {
