@@ -29,7 +29,6 @@
 #include <random>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -108,7 +107,7 @@ std::vector<method> methods_for(const world_scene& s) {
     fresh.coherence = false;
     m.push_back(world_method<certified_world>("certified", s, serial));
     m.push_back(world_method<world<double>>("double", s, serial));
-    if (std::thread::hardware_concurrency() > 1)
+    if (hardware_threads() > 1)
         m.push_back(world_method<world<double>>("double, all cores", s, parallel));
     m.push_back(world_method<world<double>>("double, no witness", s, fresh));
 #if INFLUENCE2D_HAVE_GEOS
