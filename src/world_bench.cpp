@@ -107,8 +107,7 @@ std::vector<method> methods_for(const world_scene& s) {
     fresh.coherence = false;
     m.push_back(world_method<certified_world>("certified", s, serial));
     m.push_back(world_method<world<double>>("double", s, serial));
-    if (hardware_threads() > 1)
-        m.push_back(world_method<world<double>>("double, all cores", s, parallel));
+    if (hardware_threads() > 1) m.push_back(world_method<world<double>>("double, all cores", s, parallel));
     m.push_back(world_method<world<double>>("double, no witness", s, fresh));
 #if INFLUENCE2D_HAVE_GEOS
     m.push_back(peer_method<verification::geos_world>("GEOS STRtree + prepared", s));
