@@ -1812,15 +1812,7 @@ TEST_CASE("world: real borders recentred, then turned and slid by 2^-50 to 2^-8 
     for (const polygon& p : counties) {
         const box b = p.bounds();
         const point<double> c{b.min_x / 2 + b.max_x / 2, b.min_y / 2 + b.max_y / 2};
-        std::vector<ring_input> rings;
-        for (std::size_t r = 0; r < p.ring_count(); ++r) {
-            ring_input ring;
-            ring.role = p.role(r);
-            for (std::size_t i = p.ring_begin(r); i < p.ring_end(r); ++i)
-                ring.vertices.push_back({p.vertex(i).x - c.x, p.vertex(i).y - c.y});
-            rings.push_back(ring);
-        }
-        shapes.emplace_back(rings);
+        shapes.push_back(test_shapes::translated(p, -c.x, -c.y));  // (x + -c is x - c, rounded alike)
         centres.push_back(c);
     }
     const std::size_t n = shapes.size();
